@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Installs every tool cablenav needs, idempotently and pinned. Safe to run again: each step
+# checks first and does nothing when the right version is already there.
+#   scripts/install.sh            tools for the tests (wasm target, wasm-bindgen, wasm-pack, chromium, playwright-core)
+#   scripts/install.sh --serve    also trunk, for `scripts/serve.sh`
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+WASM_BINDGEN_VERSION=0.2.130   # must match the `wasm-bindgen = "=0.2.130"` pin in web/Cargo.toml
+WASM_PACK_VERSION=0.15.1
+TRUNK_VERSION=0.21.14          # 0.22 needs a newer rustc than these machines have
+PLAYWRIGHT_CORE_VERSION=1.64.1
+
+say() { printf '[install] %s\n' "$*" >&2; }
+export PATH="$HOME/.cargo/bin:$PATH"
+
+has_version() { # has_version CMD VERSION: CMD --version mentions VERSION
+  command -v "$1" >/dev/null 2>&1 && "$1" --version 2>/dev/null | grep -q "$2"
+}
+
+if ! rustup target list --installed | grep -q '^wasm32-unknown-unknown$'; then
+  say "adding rust target wasm32-unknown-unknown"
+  rustup target add wasm32-unknown-unknown
+fi
+
+if ! has_version wasm-bindgen "$WASM_BINDGEN_VERSION"; then
+  say "installing wasm-bindgen-cli $WASM_BINDGEN_VERSION (a few minutes)"
+  # no --locked: one locked dependency version is missing from the registry
+  cargo install wasm-bindgen-cli --version "$WASM_BINDGEN_VERSION" --force
+fi
+
+if ! has_version wasm-pack "$WASM_PACK_VERSION"; then
+  say "installing wasm-pack $WASM_PACK_VERSION (a few minutes)"
+  cargo install wasm-pack --version "$WASM_PACK_VERSION" --locked --force
+fi
+
+if [ "${1:-}" = "--serve" ]; then
+  if ! has_version trunk "$TRUNK_VERSION"; then
+    say "installing trunk $TRUNK_VERSION (about 13 minutes on 2 cores, once)"
+    cargo install trunk --version "$TRUNK_VERSION" --locked --force
+  fi
+  exit 0
+fi
+
+if ! command -v chromium >/dev/null 2>&1; then
+  say "installing chromium (Debian package) for the browser tests"
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq chromium >/dev/null
+fi
+
+if [ ! -f tests/browser/node_modules/playwright-core/package.json ] || \
+   ! grep -q "\"version\": \"$PLAYWRIGHT_CORE_VERSION\"" tests/browser/node_modules/playwright-core/package.json; then
+  say "installing playwright-core $PLAYWRIGHT_CORE_VERSION (npm; drives Debian's chromium, downloads no browser)"
+  (cd tests/browser && PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm install --no-audit --no-fund --silent)
+fi
+say "tools ready"

@@ -1,0 +1,198 @@
+//! The `cablenav` command line: argument parsing and output formatting over the core. Pure: it
+//! takes the arguments and a file reader and returns the text to print, so it is testable and the
+//! binary stays a thin wrapper.
+
+use crate::error::{Error, Result};
+use crate::model::Coord;
+use crate::report::{PoseReport, RayReport, Side, VerifyReport};
+use crate::verify::{check_pose, ray, verify_pointwise, verify_trajectory};
+use crate::Scenario;
+use serde::Serialize;
+
+/// Usage text.
+pub const USAGE: &str = "\
+usage:
+  cablenav verify SCENARIO [--trajectory NAME] [--pointwise DT] [--json]
+  cablenav ray    SCENARIO --pose NAME --vary x|y|z|phi|theta|sigma --range LO HI [--json]
+  cablenav check  SCENARIO --pose NAME [--json]
+
+SCENARIO is a cablenav-scenario/1 JSON file (docs/scenario-format.md).
+verify  feasible/infeasible t-sections of a trajectory (exact; --pointwise DT samples instead)
+ray     feasible intervals of one pose coordinate, the others fixed at the pose's values
+check   lengths, distances and violated conditions at one pose";
+
+/// Parsed options of one command.
+struct Opts {
+    positional: Vec<String>,
+    flags: Vec<(String, Vec<String>)>,
+}
+
+impl Opts {
+    fn parse(args: &[String]) -> Result<Opts> {
+        let takes = |f: &str| match f {
+            "--trajectory" | "--pointwise" | "--pose" | "--vary" => Some(1),
+            "--range" => Some(2),
+            "--json" => Some(0),
+            _ => None,
+        };
+        let mut o = Opts { positional: vec![], flags: vec![] };
+        let mut i = 0;
+        while i < args.len() {
+            let a = &args[i];
+            if a.starts_with("--") {
+                let n = takes(a).ok_or_else(|| Error::new(a.as_str(), "unknown option"))?;
+                if i + 1 + n > args.len() {
+                    return Err(Error::new(a.as_str(), format!("needs {n} value(s)")));
+                }
+                if o.flags.iter().any(|(f, _)| f == a) {
+                    return Err(Error::new(a.as_str(), "given twice"));
+                }
+                o.flags.push((a.clone(), args[i + 1..i + 1 + n].to_vec()));
+                i += 1 + n;
+            } else {
+                o.positional.push(a.clone());
+                i += 1;
+            }
+        }
+        Ok(o)
+    }
+
+    fn get(&self, flag: &str) -> Option<&[String]> {
+        self.flags.iter().find(|(f, _)| f == flag).map(|(_, v)| v.as_slice())
+    }
+
+    fn one(&self, flag: &str) -> Option<&str> {
+        self.get(flag).and_then(|v| v.first()).map(String::as_str)
+    }
+
+    fn required(&self, flag: &str) -> Result<&str> {
+        self.one(flag).ok_or_else(|| Error::new(flag, "is required"))
+    }
+
+    fn json(&self) -> bool {
+        self.get("--json").is_some()
+    }
+
+    fn allow(&self, allowed: &[&str]) -> Result<()> {
+        match self.flags.iter().find(|(f, _)| !allowed.contains(&f.as_str())) {
+            Some((f, _)) => Err(Error::new(f.as_str(), "is not an option of this command")),
+            None => Ok(()),
+        }
+    }
+}
+
+fn number(flag: &str, text: &str) -> Result<f64> {
+    let x: f64 = text.parse().map_err(|_| Error::new(flag, format!("not a number: {text:?}")))?;
+    crate::error::finite(flag, x)
+}
+
+fn to_json<T: Serialize>(v: &T) -> Result<String> {
+    serde_json::to_string_pretty(v).map_err(|e| Error::new("output", e.to_string()))
+}
+
+/// Runs one command. `read` loads a scenario file by path.
+pub fn run(args: &[String], read: &dyn Fn(&str) -> Result<String>) -> Result<String> {
+    let Some((command, rest)) = args.split_first() else {
+        return Err(Error::new("", format!("no command given\n{USAGE}")));
+    };
+    if command == "--help" || command == "-h" || command == "help" {
+        return Ok(USAGE.to_string());
+    }
+    let o = Opts::parse(rest)?;
+    let path = match o.positional.as_slice() {
+        [p] => p.as_str(),
+        [] => return Err(Error::new("SCENARIO", "no scenario file given")),
+        more => return Err(Error::new("SCENARIO", format!("expected one scenario file, got {}", more.len()))),
+    };
+    let scenario = Scenario::from_json(&read(path)?).map_err(|e| Error::new(format!("{path}: {}", e.field), e.reason))?;
+    match command.as_str() {
+        "verify" => {
+            o.allow(&["--trajectory", "--pointwise", "--json"])?;
+            let traj = scenario.trajectory(o.one("--trajectory"))?;
+            let report = match o.one("--pointwise") {
+                Some(dt) => verify_pointwise(&scenario, traj, number("--pointwise", dt)?)?,
+                None => verify_trajectory(&scenario, traj)?,
+            };
+            if o.json() { to_json(&report) } else { Ok(verify_text(&report)) }
+        }
+        "ray" => {
+            o.allow(&["--pose", "--vary", "--range", "--json"])?;
+            let pose = o.required("--pose")?;
+            let vary = o.required("--vary")?;
+            let coord = Coord::parse(vary).ok_or_else(|| Error::new("--vary", format!("{vary:?} is not one of x, y, z, phi, theta, sigma")))?;
+            let range = o.get("--range").ok_or_else(|| Error::new("--range", "is required"))?;
+            let report = ray(&scenario, pose, coord, number("--range", &range[0])?, number("--range", &range[1])?)?;
+            if o.json() { to_json(&report) } else { Ok(ray_text(&report)) }
+        }
+        "check" => {
+            o.allow(&["--pose", "--json"])?;
+            let name = o.required("--pose")?;
+            let report = check_pose(&scenario, name, scenario.pose(name)?);
+            if o.json() { to_json(&report) } else { Ok(check_text(&report)) }
+        }
+        other => Err(Error::new("", format!("unknown command {other:?}\n{USAGE}"))),
+    }
+}
+
+fn side(s: Side) -> &'static str {
+    match s {
+        Side::Feasible => "feasible",
+        Side::Infeasible => "infeasible",
+    }
+}
+
+fn intervals(v: &[[f64; 2]]) -> String {
+    if v.is_empty() {
+        return "none".to_string();
+    }
+    v.iter().map(|iv| format!("[{:.9}, {:.9}]", iv[0], iv[1])).collect::<Vec<_>>().join(" ∪ ")
+}
+
+fn verify_text(r: &VerifyReport) -> String {
+    let mut out = format!("trajectory {} ({}", r.trajectory, r.method);
+    if let Some(dt) = r.step {
+        out += &format!(", Δt = {dt}");
+    }
+    out += ")\n";
+    out += &format!("  feasible   t ∈ {}\n", intervals(&r.feasible));
+    out += &format!("  infeasible t ∈ {}\n", intervals(&r.infeasible));
+    out += &format!("  feasible   τ ∈ {}\n", intervals(&r.feasible_tau));
+    for b in &r.boundaries {
+        out += &format!("  boundary t = {:.9} (τ = {:.9}): {} → {}\n", b.t, b.tau, b.constraint, side(b.enters));
+    }
+    out += &format!("  uncertain  t ∈ {}\n", intervals(&r.uncertain));
+    if !r.conservative.is_empty() {
+        out += &format!("  conservative (enlarged shapes): {}\n", r.conservative.join(", "));
+    }
+    for w in &r.warnings {
+        out += &format!("  warning: {w}\n");
+    }
+    out
+}
+
+fn ray_text(r: &RayReport) -> String {
+    let mut out = format!("ray {} over [{}, {}] from pose {}\n", r.vary, r.range[0], r.range[1], r.pose);
+    out += &format!("  feasible   {} ∈ {}\n", r.vary, intervals(&r.feasible));
+    out += &format!("  infeasible {} ∈ {}\n", r.vary, intervals(&r.infeasible));
+    for b in &r.boundaries {
+        out += &format!("  boundary {} = {:.9}: {} → {}\n", r.vary, b.value, b.constraint, side(b.enters));
+    }
+    out += &format!("  uncertain  {} ∈ {}\n", r.vary, intervals(&r.uncertain));
+    if !r.conservative.is_empty() {
+        out += &format!("  conservative (enlarged shapes): {}\n", r.conservative.join(", "));
+    }
+    out
+}
+
+fn check_text(r: &PoseReport) -> String {
+    let mut out = format!("pose {}: {}\n", r.pose, if r.feasible { "feasible" } else { "infeasible" });
+    let lengths: Vec<String> = r.lengths.iter().map(|l| format!("{l:.6}")).collect();
+    out += &format!("  cable lengths: {}\n", lengths.join(" "));
+    for c in &r.checks {
+        let d = c.distance.map_or("-".to_string(), |d| format!("{d:.6}"));
+        let mark = if c.violated { "VIOLATED" } else { "ok" };
+        let exact = if c.exact { "" } else { " (conservative)" };
+        out += &format!("  {:<28} {:>12}  {}{}\n", c.constraint, d, mark, exact);
+    }
+    out
+}

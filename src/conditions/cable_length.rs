@@ -1,0 +1,40 @@
+//! Cable length bounds: ρ_min ≤ ‖s‖ ≤ ρ_max.
+
+use super::algebra::H;
+use super::primitives::{all_of, any_of, GT, LT};
+use super::{Condition, PoseCables, PoseCheck, Sweep};
+use crate::model::Bounds;
+use crate::poly::{Partition, Truth};
+
+/// Length bounds of one cable.
+#[derive(Debug, Clone)]
+pub struct CableLength {
+    /// The cable (0-based).
+    pub cable: usize,
+    /// Allowed length range.
+    pub bounds: Bounds,
+}
+
+impl Condition for CableLength {
+    fn label(&self) -> String {
+        format!("cable {} length", self.cable + 1)
+    }
+
+    fn violation(&self, sweep: &mut Sweep) -> Partition {
+        let Sweep { alg, cables, tol } = sweep;
+        let tol = *tol;
+        let s = &cables[self.cable].s;
+        let ss = alg.dot(s, s);
+        let (lo, hi) = (self.bounds.min, self.bounds.max);
+        any_of!(
+            if lo > 0.0 { all_of!(tol; alg.sub(&ss, &H::constant(lo * lo)) => LT) } else { Partition::constant(Truth::False) },
+            if hi.is_finite() { all_of!(tol; alg.sub(&ss, &H::constant(hi * hi)) => GT) } else { Partition::constant(Truth::False) },
+        )
+    }
+
+    fn check(&self, cables: &PoseCables) -> PoseCheck {
+        let (a, x) = cables[self.cable];
+        let len = (x - a).norm();
+        PoseCheck { violated: len < self.bounds.min || len > self.bounds.max, distance: Some(len) }
+    }
+}

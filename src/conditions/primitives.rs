@@ -1,0 +1,221 @@
+//! Exact violation sets of the geometric primitives along a motion, as three-valued partitions of
+//! λ ∈ [0, 1]. Each is a finite union of conjunctions of strict polynomial sign conditions; the
+//! derivations are in `docs/conditions.md`.
+//!
+//! Inputs are fractions over the motion's w (see [`super::algebra`]); a segment is a start point
+//! plus an offset vector, and a point is given by its offset `e` from the segment's start.
+
+use super::algebra::{hvec_const, Alg, HVec, H};
+use crate::poly::{Partition, Truth};
+use nalgebra::{Matrix3, Vector3};
+
+/// `p > 0`.
+pub const GT: bool = true;
+/// `p < 0`.
+pub const LT: bool = false;
+
+/// Conjunction of sign conditions, evaluated lazily: once the conjunction is false everywhere the
+/// remaining polynomials are not even built.
+macro_rules! all_of {
+    ($tol:expr; $($poly:expr => $side:expr),+ $(,)?) => {{
+        let mut acc = Partition::constant(Truth::True);
+        $(
+            if !acc.is_all(Truth::False) {
+                let h: H = $poly;
+                acc = acc.and(&Partition::atom(&h.p, $side, $tol));
+            }
+        )+
+        acc
+    }};
+}
+
+/// Disjunction of partitions built lazily: stops once the union is true everywhere.
+macro_rules! any_of {
+    ($($part:expr),+ $(,)?) => {{
+        let mut acc = Partition::constant(Truth::False);
+        $(
+            if !acc.is_all(Truth::True) {
+                let p: Partition = $part;
+                acc = acc.or(&p);
+            }
+        )+
+        acc
+    }};
+}
+pub(crate) use {all_of, any_of};
+
+/// Where the point at offset `e` from a segment's start lies within distance `r` of the segment
+/// start + λ·`s`, λ ∈ [0, 1] (in the metric `g`, or Euclidean). Exact: the closest segment point is
+/// the start, the end, or the interior foot of the perpendicular.
+pub fn point_segment(alg: &mut Alg, e: &HVec, s: &HVec, r: f64, g: Option<&Matrix3<f64>>, tol: f64) -> Partition {
+    let dot = |alg: &mut Alg, a: &HVec, b: &HVec| match g {
+        Some(g) => alg.dot_metric(a, g, b),
+        None => alg.dot(a, b),
+    };
+    let r2 = H::constant(r * r);
+    let ee = dot(alg, e, e);
+    let es = dot(alg, e, s);
+    let ss = dot(alg, s, s);
+    any_of!(
+        all_of!(tol; alg.sub(&ee, &r2) => LT),
+        {
+            // |e − s|² = |e|² − 2 e·s + |s|²
+            let t = alg.sub(&ss, &es.scale(2.0));
+            all_of!(tol; { let d = alg.add(&ee, &t); alg.sub(&d, &r2) } => LT)
+        },
+        all_of!(tol;
+            es.clone() => GT,
+            alg.sub(&ss, &es) => GT,
+            {
+                // Gram determinant |e|²|s|² − (e·s)² < r² |s|²
+                let gram = alg.sub(&ee.mul(&ss), &es.mul(&es));
+                alg.sub(&gram, &ss.scale(r * r))
+            } => LT,
+        ),
+    )
+}
+
+/// Where the segments a_i + u·s_i and a_i + r + v·s_j (u, v ∈ [0, 1]) come closer than `c`.
+/// `r` is the offset between the two starts. Exact: the closest pair is interior to both (the
+/// common perpendicular) or has an endpoint on one of them. When the two lines are parallel
+/// throughout (|s_i × s_j|² zero within its error bound) the interior case cannot give the
+/// minimum and is skipped.
+pub fn segment_segment(alg: &mut Alg, r: &HVec, si: &HVec, sj: &HVec, c: f64, tol: f64) -> Partition {
+    let neg_r: HVec = [r[0].scale(-1.0), r[1].scale(-1.0), r[2].scale(-1.0)];
+    any_of!(
+        point_segment(alg, r, si, c, None, tol),
+        point_segment(alg, &neg_r, sj, c, None, tol),
+        { let e = alg.vadd(r, sj); point_segment(alg, &e, si, c, None, tol) },
+        { let e = alg.vsub(si, r); point_segment(alg, &e, sj, c, None, tol) },
+        {
+            let n = alg.cross(si, sj);
+            let d = alg.dot(&n, &n);
+            if d.p.max_abs() <= d.p.err {
+                Partition::constant(Truth::False)
+            } else {
+                let rsj = alg.cross(r, sj);
+                let u = alg.dot(&rsj, &n);
+                let rsi = alg.cross(r, si);
+                let v = alg.dot(&rsi, &n);
+                all_of!(tol;
+                    d.clone() => GT,
+                    u.clone() => GT,
+                    alg.sub(&d, &u) => GT,
+                    v.clone() => GT,
+                    alg.sub(&d, &v) => GT,
+                    { let rn = alg.dot(r, &n); alg.sub(&rn.mul(&rn), &d.scale(c * c)) } => LT,
+                )
+            }
+        },
+    )
+}
+
+/// Where the segment a + λ·s comes closer than `c` to the triangle, or crosses it, given by its
+/// face only (the edges are checked separately, once per mesh edge): an endpoint projects inside
+/// the triangle within `c` of its plane, or the segment crosses the triangle's interior.
+pub fn segment_face(alg: &mut Alg, a: &Vector3<f64>, s: &HVec, tri: &[Vector3<f64>; 3], c: f64, tol: f64) -> Partition {
+    let n = (tri[1] - tri[0]).cross(&(tri[2] - tri[0]));
+    let nn = n.norm_squared();
+    let hn = hvec_const(&n);
+    let a_near = {
+        let h = (a - tri[0]).dot(&n);
+        let inside = (0..3).all(|k| n.cross(&(tri[(k + 1) % 3] - tri[k])).dot(&(a - tri[k])) > 0.0);
+        inside && h * h < c * c * nn
+    };
+    let o_a = (a - tri[0]).dot(&n);
+    any_of!(
+        Partition::constant(if a_near { Truth::True } else { Truth::False }),
+        {
+            // the moving end a + s: height² < c²|n|² and inside all three edges
+            let ns = alg.dot(&hn, s);
+            let edge_atom = |alg: &mut Alg, k: usize| {
+                let m = n.cross(&(tri[(k + 1) % 3] - tri[k]));
+                let ms = alg.dot(&hvec_const(&m), s);
+                alg.add(&ms, &H::constant(m.dot(&(a - tri[k]))))
+            };
+            all_of!(tol;
+                edge_atom(alg, 0) => GT,
+                edge_atom(alg, 1) => GT,
+                edge_atom(alg, 2) => GT,
+                { let h = alg.add(&ns, &H::constant(o_a)); alg.sub(&h.mul(&h), &H::constant(c * c * nn)) } => LT,
+            )
+        },
+        {
+            // crossing: the ends on opposite sides of the plane, the line through the triangle
+            if o_a == 0.0 {
+                Partition::constant(Truth::False)
+            } else {
+                let ns = alg.dot(&hn, s);
+                let o_x = alg.add(&ns, &H::constant(o_a));
+                let side = all_of!(tol; o_x => o_a < 0.0);
+                if side.is_all(Truth::False) {
+                    side
+                } else {
+                    let vol = |alg: &mut Alg, k: usize| {
+                        let m = (tri[k] - a).cross(&(tri[(k + 1) % 3] - a));
+                        alg.dot(&hvec_const(&m), s)
+                    };
+                    let through = any_of!(
+                        all_of!(tol; vol(alg, 0) => GT, vol(alg, 1) => GT, vol(alg, 2) => GT),
+                        all_of!(tol; vol(alg, 0) => LT, vol(alg, 1) => LT, vol(alg, 2) => LT),
+                    );
+                    side.and(&through)
+                }
+            }
+        },
+    )
+}
+
+/// A solid truncated cone {x : (x−A)·u ≥ |x−A| cos α, (x−A)·u ≤ H}.
+#[derive(Debug, Clone, Copy)]
+pub struct ConeSolid {
+    /// Apex A.
+    pub apex: Vector3<f64>,
+    /// Unit axis u.
+    pub axis: Vector3<f64>,
+    /// cos² α.
+    pub cos2: f64,
+    /// Height H.
+    pub height: f64,
+}
+
+/// Where the segment a + λ·s meets the solid cone. Exact: with g(λ) = (x−A)·u and
+/// f(λ) = g² − cos²α |x−A|² (a quadratic), the segment meets the cone iff the maximum of f over
+/// the λ ∈ [0, 1] with 0 ≤ g ≤ H is positive; that maximum is at λ = 0, λ = 1, where g = H, or
+/// at the vertex of f (f ≤ 0 where g = 0).
+pub fn segment_cone(alg: &mut Alg, a: &Vector3<f64>, s: &HVec, cone: &ConeSolid, tol: f64) -> Partition {
+    let e = a - cone.apex;
+    let (g0, hgt, k2) = (e.dot(&cone.axis), cone.height, cone.cos2);
+    let f0 = g0 * g0 - k2 * e.norm_squared();
+    let g1 = alg.dot(&hvec_const(&cone.axis), s);
+    let es = alg.dot(&hvec_const(&e), s);
+    let ss = alg.dot(s, s);
+    let f1 = alg.sub(&g1.scale(2.0 * g0), &es.scale(2.0 * k2));
+    let f2 = alg.sub(&g1.mul(&g1), &ss.scale(k2));
+    let d = hgt - g0;
+    let start_inside = f0 > 0.0 && g0 > 0.0 && d > 0.0;
+    any_of!(
+        Partition::constant(if start_inside { Truth::True } else { Truth::False }),
+        all_of!(tol;
+            { let t = alg.add(&f1, &f2); alg.add(&t, &H::constant(f0)) } => GT,
+            alg.add(&g1, &H::constant(g0)) => GT,
+            alg.sub(&H::constant(d), &g1) => GT,
+        ),
+        all_of!(tol;
+            g1.scale(d) => GT,
+            alg.sub(&g1.mul(&g1), &g1.scale(d)) => GT,
+            {
+                let t = alg.add(&g1.mul(&g1).scale(f0), &f1.mul(&g1).scale(d));
+                alg.add(&t, &f2.scale(d * d))
+            } => GT,
+        ),
+        all_of!(tol;
+            f2.clone() => LT,
+            f1.clone() => GT,
+            alg.add(&f1, &f2.scale(2.0)) => LT,
+            alg.sub(&f2.scale(4.0 * f0), &f1.mul(&f1)) => LT,
+            alg.sub(&f2.scale(2.0 * g0), &f1.mul(&g1)) => LT,
+            alg.sub(&f2.scale(2.0 * (g0 - hgt)), &f1.mul(&g1)) => GT,
+        ),
+    )
+}

@@ -1,0 +1,34 @@
+//! cablenav — exact feasibility of cable-driven parallel robot motions.
+//!
+//! Data flows through the modules in this order:
+//!
+//! `scenario` (JSON) → `model` (+ `shape`) → `conditions` → `verify` → `report`
+//!
+//! * [`scenario`] parses and validates the versioned scenario JSON into the model.
+//! * [`model`] holds the robot, poses, trajectories and the rational [`model::Motion`] the exact
+//!   conditions are written in; [`shape`] holds the obstacles.
+//! * [`poly`] is the certified polynomial machinery: Bernstein arithmetic with error bounds and
+//!   sign partitions (root isolation with error control).
+//! * [`query`] answers point-wise geometric questions (distances) for one pose.
+//! * [`conditions`] states each feasibility condition — cable–cable, cable–shape, cable length —
+//!   as one implementation of [`conditions::Condition`], usable exactly along a motion and
+//!   point-wise at a pose.
+//! * [`verify`] computes feasible intervals along trajectories and rays, exactly and point-wise,
+//!   and per-pose checks; [`report`] holds the serialisable results.
+//! * [`cli`] is the command line over all of it (the `cablenav` binary is a thin wrapper).
+//!
+//! The crate has no web dependency and builds for native targets and `wasm32-unknown-unknown`.
+
+pub mod cli;
+pub mod conditions;
+pub mod error;
+pub mod model;
+pub mod poly;
+pub mod query;
+pub mod report;
+pub mod scenario;
+pub mod shape;
+pub mod verify;
+
+pub use error::{Error, Result};
+pub use scenario::Scenario;

@@ -1,0 +1,12 @@
+//! The robot and its motions as the rest of the core sees them, after the scenario was validated:
+//! cables and their bounds, poses, trajectories, and the rational motions the exact conditions use.
+
+pub mod motion;
+pub mod pose;
+pub mod robot;
+pub mod trajectory;
+
+pub use motion::Motion;
+pub use pose::{Coord, Pose};
+pub use robot::{Bounds, Cable, Clearance, Robot};
+pub use trajectory::{Orientation, Trajectory, Translation};

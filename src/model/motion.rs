@@ -1,0 +1,284 @@
+//! Motions as rational polynomial curves in one parameter λ ∈ [0, 1]: the form every exact
+//! condition is written in.
+//!
+//! A [`Motion`] gives p(λ) = P̂(λ)/w(λ) and R(λ) = M̂(λ)/w(λ), where P̂, M̂ and w are polynomials in
+//! Bernstein form and w > 0. The rotation comes from a quaternion polynomial N(λ):
+//! M̂ = the quadratic-form rotation numerator of N and w = |N|², so R(λ) is exactly a rotation for
+//! every λ whatever the rounding of N's coefficients.
+//!
+//! * A trajectory (thesis §4.2): λ = τ. The slerp with T = tan(tθ/2) = hτ, h = tan(θ/2), is
+//!   Q ∝ Qs + τ (Qe − Qs cos θ)/cos²(θ/2) − τ² h² Qs (a form with no division by sin θ, stable
+//!   as θ → 0), and t = 2·atan(hτ)/θ.
+//! * A ray in x, y or z: λ maps linearly onto the range; w = 1.
+//! * A ray in an angle of tilt-and-torsion: the range is cut into pieces at most π/2 wide; on a
+//!   piece starting at γ0 the angle is γ0 + 2·atan(hλ), and a rotation by ψ about an axis k is the
+//!   quaternion (1, tan(ψ/2)·k) up to scale.
+
+use super::pose::{Coord, Pose};
+use super::trajectory::{Orientation, Trajectory, Translation};
+use crate::poly::Bern;
+use nalgebra::{Quaternion, UnitQuaternion};
+use std::f64::consts::FRAC_PI_2;
+
+/// How λ ∈ [0, 1] maps to the parameter a user sees.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Param {
+    /// A trajectory: λ = τ, t = 2·atan(hτ)/θ (t = τ when θ = 0).
+    Trajectory {
+        /// Slerp angle θ between the quaternions.
+        theta: f64,
+        /// tan(θ/2).
+        h: f64,
+    },
+    /// A linear coordinate: value = lo + (hi − lo)·λ.
+    Linear {
+        /// Value at λ = 0.
+        lo: f64,
+        /// Value at λ = 1.
+        hi: f64,
+    },
+    /// An angle: value = start + 2·atan(hλ).
+    Angle {
+        /// Value at λ = 0.
+        start: f64,
+        /// tan(piece width / 2).
+        h: f64,
+    },
+}
+
+impl Param {
+    /// The user-facing value (t for trajectories) at λ.
+    pub fn value(&self, lam: f64) -> f64 {
+        match *self {
+            Param::Trajectory { theta, h } => {
+                if theta < 1e-9 {
+                    lam
+                } else {
+                    2.0 * (h * lam).atan() / theta
+                }
+            }
+            Param::Linear { lo, hi } => lo + (hi - lo) * lam,
+            Param::Angle { start, h } => start + 2.0 * (h * lam).atan(),
+        }
+    }
+
+    /// An upper bound on |d value / dλ| over [0, 1].
+    pub fn max_slope(&self) -> f64 {
+        match *self {
+            Param::Trajectory { theta, h } => {
+                if theta < 1e-9 {
+                    1.0
+                } else {
+                    2.0 * h / theta
+                }
+            }
+            Param::Linear { lo, hi } => (hi - lo).abs(),
+            Param::Angle { h, .. } => 2.0 * h,
+        }
+    }
+}
+
+/// A pose moving with λ ∈ [0, 1] as a rational polynomial curve.
+#[derive(Debug, Clone)]
+pub struct Motion {
+    /// P̂ = p·w, per axis.
+    pub position: [Bern; 3],
+    /// M̂ = R·w, row-major.
+    pub rotation: [[Bern; 3]; 3],
+    /// The common positive denominator w.
+    pub weight: Bern,
+    /// λ → user parameter.
+    pub param: Param,
+}
+
+/// A quaternion whose components are polynomials in λ (ascending monomial coefficients).
+type QuatPoly = [Vec<f64>; 4];
+
+fn poly_mul(a: &[f64], b: &[f64]) -> Vec<f64> {
+    let mut c = vec![0.0; a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        for (j, y) in b.iter().enumerate() {
+            c[i + j] += x * y;
+        }
+    }
+    c
+}
+
+fn poly_add(a: &[f64], b: &[f64], sign: f64) -> Vec<f64> {
+    (0..a.len().max(b.len()))
+        .map(|k| a.get(k).copied().unwrap_or(0.0) + sign * b.get(k).copied().unwrap_or(0.0))
+        .collect()
+}
+
+/// Hamilton product of quaternion polynomials (w, x, y, z).
+fn quat_mul(a: &QuatPoly, b: &QuatPoly) -> QuatPoly {
+    let m = |i: usize, j: usize| poly_mul(&a[i], &b[j]);
+    let sum = |terms: [(f64, Vec<f64>); 4]| {
+        terms.iter().fold(vec![0.0], |acc, (s, p)| poly_add(&acc, p, *s))
+    };
+    [
+        sum([(1.0, m(0, 0)), (-1.0, m(1, 1)), (-1.0, m(2, 2)), (-1.0, m(3, 3))]),
+        sum([(1.0, m(0, 1)), (1.0, m(1, 0)), (1.0, m(2, 3)), (-1.0, m(3, 2))]),
+        sum([(1.0, m(0, 2)), (-1.0, m(1, 3)), (1.0, m(2, 0)), (1.0, m(3, 1))]),
+        sum([(1.0, m(0, 3)), (1.0, m(1, 2)), (-1.0, m(2, 1)), (1.0, m(3, 0))]),
+    ]
+}
+
+fn quat_const(q: &UnitQuaternion<f64>) -> QuatPoly {
+    let q = q.quaternion();
+    [vec![q.w], vec![q.i], vec![q.j], vec![q.k]]
+}
+
+/// Rotation by an angle growing with λ about coordinate axis `axis` (0 = x, 1 = y, 2 = z):
+/// (1, h·λ·e_axis), or its inverse when `inverse`.
+fn quat_axis_ramp(axis: usize, h: f64, inverse: bool) -> QuatPoly {
+    let mut q: QuatPoly = [vec![1.0], vec![0.0], vec![0.0], vec![0.0]];
+    q[axis + 1] = vec![0.0, if inverse { -h } else { h }];
+    q
+}
+
+/// Rotation numerator M̂ and weight w = |N|² of a quaternion polynomial.
+fn rotation_of(n: &QuatPoly) -> ([[Bern; 3]; 3], Bern) {
+    let [s, x, y, z] = [0, 1, 2, 3].map(|k| Bern::from_monomial(&n[k]));
+    let (ss, xx, yy, zz) = (s.mul(&s), x.mul(&x), y.mul(&y), z.mul(&z));
+    let (xy, xz, yz) = (x.mul(&y), x.mul(&z), y.mul(&z));
+    let (sx, sy, sz) = (s.mul(&x), s.mul(&y), s.mul(&z));
+    let rot = [
+        [ss.add(&xx).sub(&yy).sub(&zz), xy.sub(&sz).scale(2.0), xz.add(&sy).scale(2.0)],
+        [xy.add(&sz).scale(2.0), ss.sub(&xx).add(&yy).sub(&zz), yz.sub(&sx).scale(2.0)],
+        [xz.sub(&sy).scale(2.0), yz.add(&sx).scale(2.0), ss.sub(&xx).sub(&yy).add(&zz)],
+    ];
+    let w = ss.add(&xx).add(&yy).add(&zz);
+    (rot, w)
+}
+
+fn translation_bernstein(tr: &Translation) -> [Bern; 3] {
+    match tr {
+        Translation::Polynomial(c) => [0, 1, 2].map(|i| Bern::from_monomial(&c[i])),
+        Translation::Bezier(points) => [0, 1, 2].map(|i| Bern::from_bernstein(points.iter().map(|p| p[i]).collect())),
+        Translation::Line(a, b) => [0, 1, 2].map(|i| Bern::from_bernstein(vec![a[i], b[i]])),
+    }
+}
+
+impl Motion {
+    fn from_parts(position: [Bern; 3], n: &QuatPoly, param: Param) -> Motion {
+        let (rotation, weight) = rotation_of(n);
+        let position = position.map(|p| p.mul(&weight));
+        Motion { position, rotation, weight, param }
+    }
+
+    /// The motion of a trajectory, in λ = τ.
+    pub fn trajectory(traj: &Trajectory) -> Motion {
+        let Orientation::Slerp(qs, qe) = &traj.orientation;
+        let (s, e) = (qs.quaternion(), qe.quaternion());
+        let theta = traj.theta();
+        let cos = theta.cos();
+        let h = (theta / 2.0).tan();
+        let half_cos2 = (theta / 2.0).cos().powi(2);
+        let lin: Quaternion<f64> = (e - s * cos) / half_cos2;
+        let quad: Quaternion<f64> = -s * (h * h);
+        let n: QuatPoly = [
+            vec![s.w, lin.w, quad.w],
+            vec![s.i, lin.i, quad.i],
+            vec![s.j, lin.j, quad.j],
+            vec![s.k, lin.k, quad.k],
+        ];
+        Motion::from_parts(translation_bernstein(&traj.translation), &n, Param::Trajectory { theta, h })
+    }
+
+    /// The motions of a ray: `coord` runs from `lo` to `hi`, the other coordinates stay at
+    /// `pose`'s (x, y, z, φ, θ, σ). Linear coordinates give one piece; angles one piece per
+    /// π/2 or less of range.
+    pub fn ray(pose: &Pose, coord: Coord, lo: f64, hi: f64) -> Vec<Motion> {
+        let c = pose.coords();
+        if !coord.is_angle() {
+            let i = coord.index();
+            let position = [0, 1, 2].map(|k| {
+                if k == i {
+                    Bern::from_bernstein(vec![lo, hi])
+                } else {
+                    Bern::constant(c[k])
+                }
+            });
+            return vec![Motion::from_parts(position, &quat_const(&pose.rotation), Param::Linear { lo, hi })];
+        }
+        let pieces = (((hi - lo).abs() / FRAC_PI_2).ceil() as usize).max(1);
+        let position = [0, 1, 2].map(|k| Bern::constant(c[k]));
+        (0..pieces)
+            .map(|k| {
+                let start = lo + (hi - lo) * k as f64 / pieces as f64;
+                let width = (hi - lo) / pieces as f64;
+                let h = (width / 2.0).tan();
+                let mut at_start = c;
+                at_start[coord.index()] = start;
+                let [phi, theta, sigma] = [at_start[3], at_start[4], at_start[5]];
+                let qz = |a: f64| quat_const(&UnitQuaternion::from_axis_angle(&nalgebra::Vector3::z_axis(), a));
+                let qy = |a: f64| quat_const(&UnitQuaternion::from_axis_angle(&nalgebra::Vector3::y_axis(), a));
+                // q = qz(φ)·qy(θ)·qz(σ−φ), with the varied angle advanced by ψ(λ)
+                let n = match coord {
+                    Coord::Theta => quat_mul(&quat_mul(&quat_mul(&qz(phi), &qy(theta)), &quat_axis_ramp(1, h, false)), &qz(sigma - phi)),
+                    Coord::Sigma => quat_mul(&quat_mul(&qz(phi), &qy(theta)), &quat_mul(&qz(sigma - phi), &quat_axis_ramp(2, h, false))),
+                    _ => {
+                        let left = quat_mul(&quat_mul(&qz(phi), &quat_axis_ramp(2, h, false)), &qy(theta));
+                        quat_mul(&quat_mul(&left, &qz(sigma - phi)), &quat_axis_ramp(2, h, true))
+                    }
+                };
+                Motion::from_parts(position.clone(), &n, Param::Angle { start, h })
+            })
+            .collect()
+    }
+
+    /// Position and rotation matrix at λ (for checks; the exact conditions use the polynomials).
+    pub fn eval(&self, lam: f64) -> (nalgebra::Vector3<f64>, nalgebra::Matrix3<f64>) {
+        let w = self.weight.eval(lam).0;
+        let p = nalgebra::Vector3::from_fn(|i, _| self.position[i].eval(lam).0 / w);
+        let r = nalgebra::Matrix3::from_fn(|i, j| self.rotation[i][j].eval(lam).0 / w);
+        (p, r)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector3;
+
+    #[test]
+    fn trajectory_motion_matches_slerp_and_polynomial() {
+        let qs = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.9);
+        let qe = UnitQuaternion::from_euler_angles(-0.5, 0.4, -0.1);
+        let traj = Trajectory {
+            name: "t".into(),
+            translation: Translation::Polynomial([vec![1.0, 2.0, -1.0], vec![0.5, 0.0, 0.0, 3.0], vec![2.0]]),
+            orientation: Orientation::Slerp(qs, qe),
+        };
+        let m = Motion::trajectory(&traj);
+        for i in 0..=10 {
+            let tau = i as f64 / 10.0;
+            let t = m.param.value(tau);
+            let (p, r) = m.eval(tau);
+            let want_q = qs.slerp(&qe, t);
+            assert!((r - want_q.to_rotation_matrix().matrix()).norm() < 1e-12, "rotation at τ={tau}");
+            assert!((p - traj.translation.at(tau)).norm() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn angle_rays_follow_tilt_and_torsion() {
+        let pose = Pose::from_coords([1.0, 2.0, 3.0, 0.4, 0.7, -0.3]);
+        for coord in [Coord::Phi, Coord::Theta, Coord::Sigma] {
+            let pieces = Motion::ray(&pose, coord, -2.5, 2.0);
+            assert_eq!(pieces.len(), 3);
+            for m in &pieces {
+                for i in 0..=4 {
+                    let lam = i as f64 / 4.0;
+                    let mut c = pose.coords();
+                    c[coord.index()] = m.param.value(lam);
+                    let want = Pose::from_coords(c);
+                    let (p, r) = m.eval(lam);
+                    assert!((r - want.matrix()).norm() < 1e-12, "{coord:?} at λ={lam}");
+                    assert!((p - Vector3::new(1.0, 2.0, 3.0)).norm() < 1e-12);
+                }
+            }
+        }
+    }
+}

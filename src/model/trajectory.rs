@@ -1,0 +1,88 @@
+//! Trajectories as the scenario states them (thesis §4.2): a translation that is polynomial in
+//! τ ∈ [0, 1] and an orientation that is a slerp in t ∈ [0, 1], tied by τ = tan(tθ/2)/tan(θ/2).
+
+use super::pose::Pose;
+use nalgebra::{Quaternion, UnitQuaternion, Vector3};
+
+/// The translation part of a trajectory, a polynomial in τ ∈ [0, 1].
+#[derive(Debug, Clone, PartialEq)]
+pub enum Translation {
+    /// Ascending coefficients per axis: x(τ) = Σ cx[k] τ^k, and likewise y, z.
+    Polynomial([Vec<f64>; 3]),
+    /// Bézier control points: x(τ) = Σ P_k B_{k,n}(τ).
+    Bezier(Vec<Vector3<f64>>),
+    /// The segment from the first point (τ = 0) to the second (τ = 1).
+    Line(Vector3<f64>, Vector3<f64>),
+}
+
+/// The orientation part of a trajectory.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Orientation {
+    /// Spherical linear interpolation from the first to the second quaternion. The quaternions'
+    /// signs are kept as given: cos θ = Qs·Qe, so a negative dot product takes the long way round.
+    Slerp(UnitQuaternion<f64>, UnitQuaternion<f64>),
+}
+
+/// A named trajectory.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Trajectory {
+    /// Its name in the scenario.
+    pub name: String,
+    /// Translation in τ.
+    pub translation: Translation,
+    /// Orientation in t.
+    pub orientation: Orientation,
+}
+
+impl Translation {
+    /// The position at τ (direct evaluation, used by the point-wise baseline).
+    pub fn at(&self, tau: f64) -> Vector3<f64> {
+        match self {
+            Translation::Polynomial(c) => {
+                Vector3::from_fn(|i, _| c[i].iter().rev().fold(0.0, |acc, &a| acc * tau + a))
+            }
+            Translation::Bezier(points) => {
+                let mut pts = points.clone();
+                for level in (1..pts.len()).rev() {
+                    for k in 0..level {
+                        pts[k] = pts[k] * (1.0 - tau) + pts[k + 1] * tau;
+                    }
+                }
+                pts.first().copied().unwrap_or_else(Vector3::zeros)
+            }
+            Translation::Line(a, b) => a * (1.0 - tau) + b * tau,
+        }
+    }
+}
+
+impl Trajectory {
+    /// The slerp angle θ ∈ [0, π] with cos θ = Qs·Qe (the quaternions' signs as given).
+    pub fn theta(&self) -> f64 {
+        let Orientation::Slerp(qs, qe) = &self.orientation;
+        qs.quaternion().dot(qe.quaternion()).clamp(-1.0, 1.0).acos()
+    }
+
+    /// τ at slerp parameter t: τ = tan(tθ/2)/tan(θ/2), or t when θ = 0.
+    pub fn tau_of_t(&self, t: f64) -> f64 {
+        let theta = self.theta();
+        if theta < 1e-9 {
+            t
+        } else {
+            (t * theta / 2.0).tan() / (theta / 2.0).tan()
+        }
+    }
+
+    /// The pose at slerp parameter t, evaluated directly: p(τ(t)) and
+    /// Q(t) = (Qs sin((1−t)θ) + Qe sin(tθ)) / sin θ.
+    pub fn pose_at(&self, t: f64) -> Pose {
+        let Orientation::Slerp(qs, qe) = &self.orientation;
+        let theta = self.theta();
+        let (s, e) = (qs.quaternion(), qe.quaternion());
+        let q: Quaternion<f64> = if theta < 1e-9 {
+            s * (1.0 - t) + e * t
+        } else {
+            (s * ((1.0 - t) * theta).sin() + e * (t * theta).sin()) / theta.sin()
+        };
+        Pose { position: self.translation.at(self.tau_of_t(t)), rotation: UnitQuaternion::from_quaternion(q) }
+    }
+}

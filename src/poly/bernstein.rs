@@ -1,0 +1,272 @@
+//! Bernstein-form polynomials on [0, 1] with coefficient error bounds.
+//!
+//! A [`Bern`] of degree n stands for p(x) = Σ c_k C(n,k) x^k (1−x)^(n−k). Its field `err` bounds
+//! |c_k − c̃_k| for every k, where c̃ are the coefficients exact arithmetic would have produced from
+//! the same inputs. Because the Bernstein basis is non-negative and sums to 1, `err` also bounds the
+//! error of p(x) for every x in [0, 1], and every operation below (all of them convex or
+//! positively-weighted combinations) adds a small, explicitly bounded rounding term.
+
+use std::sync::OnceLock;
+
+/// Unit roundoff of f64.
+const U: f64 = f64::EPSILON * 0.5;
+
+/// Largest degree the binomial table covers.
+const MAX_DEGREE: usize = 320;
+
+fn pascal() -> &'static Vec<Vec<f64>> {
+    static TABLE: OnceLock<Vec<Vec<f64>>> = OnceLock::new();
+    TABLE.get_or_init(|| {
+        let mut rows: Vec<Vec<f64>> = Vec::with_capacity(MAX_DEGREE + 1);
+        for n in 0..=MAX_DEGREE {
+            let mut row = vec![1.0; n + 1];
+            for k in 1..n {
+                row[k] = rows[n - 1][k - 1] + rows[n - 1][k];
+            }
+            rows.push(row);
+        }
+        rows
+    })
+}
+
+/// Binomial coefficient C(n, k) (0 when k > n). Exact up to n = 56, correctly rounded-ish beyond.
+pub fn binomial(n: usize, k: usize) -> f64 {
+    if k > n {
+        0.0
+    } else if n <= MAX_DEGREE {
+        pascal()[n][k]
+    } else {
+        let k = k.min(n - k);
+        (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
+    }
+}
+
+/// A polynomial on [0, 1] in Bernstein form with a coefficient error bound.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Bern {
+    /// Bernstein coefficients c_0 … c_n (never empty).
+    pub c: Vec<f64>,
+    /// Bound on the absolute error of every coefficient.
+    pub err: f64,
+}
+
+fn max_abs(c: &[f64]) -> f64 {
+    c.iter().fold(0.0, |m, x| m.max(x.abs()))
+}
+
+impl Bern {
+    /// The constant `a`, exact.
+    pub fn constant(a: f64) -> Bern {
+        Bern { c: vec![a], err: 0.0 }
+    }
+
+    /// Exact Bernstein coefficients, taken as given.
+    pub fn from_bernstein(c: Vec<f64>) -> Bern {
+        let c = if c.is_empty() { vec![0.0] } else { c };
+        Bern { c, err: 0.0 }
+    }
+
+    /// From ascending monomial coefficients a_j (p(x) = Σ a_j x^j):
+    /// c_k = Σ_{j ≤ k} C(k, j) / C(n, j) · a_j.
+    pub fn from_monomial(a: &[f64]) -> Bern {
+        if a.is_empty() {
+            return Bern::constant(0.0);
+        }
+        let n = a.len() - 1;
+        let mut c = vec![0.0; n + 1];
+        let mut bound = 0.0f64;
+        for (k, ck) in c.iter_mut().enumerate() {
+            let mut s = 0.0;
+            let mut mag = 0.0;
+            for (j, aj) in a.iter().enumerate().take(k + 1) {
+                let t = binomial(k, j) / binomial(n, j) * aj;
+                s += t;
+                mag += t.abs();
+            }
+            *ck = s;
+            bound = bound.max(mag);
+        }
+        Bern { c, err: (2 * n + 4) as f64 * U * bound }
+    }
+
+    /// Degree n (number of coefficients − 1).
+    pub fn degree(&self) -> usize {
+        self.c.len() - 1
+    }
+
+    /// Largest coefficient magnitude: a bound on |p(x)| over [0, 1] (before adding `err`).
+    pub fn max_abs(&self) -> f64 {
+        max_abs(&self.c)
+    }
+
+    /// The same polynomial with degree raised to `n` (≥ current degree).
+    pub fn elevate(&self, n: usize) -> Bern {
+        let m = self.degree();
+        if n <= m {
+            return self.clone();
+        }
+        let r = n - m;
+        let mut c = vec![0.0; n + 1];
+        for (k, ck) in c.iter_mut().enumerate() {
+            let lo = k.saturating_sub(r);
+            let hi = k.min(m);
+            let mut s = 0.0;
+            for j in lo..=hi {
+                s += binomial(m, j) * binomial(r, k - j) / binomial(n, k) * self.c[j];
+            }
+            *ck = s;
+        }
+        Bern { c, err: self.err + (m + 4) as f64 * U * self.max_abs() }
+    }
+
+    fn combine(&self, other: &Bern, sign: f64) -> Bern {
+        let n = self.degree().max(other.degree());
+        let a = self.elevate(n);
+        let b = other.elevate(n);
+        let c: Vec<f64> = a.c.iter().zip(&b.c).map(|(x, y)| x + sign * y).collect();
+        let err = a.err + b.err + U * max_abs(&c);
+        Bern { c, err }
+    }
+
+    /// self + other.
+    pub fn add(&self, other: &Bern) -> Bern {
+        self.combine(other, 1.0)
+    }
+
+    /// self − other.
+    pub fn sub(&self, other: &Bern) -> Bern {
+        self.combine(other, -1.0)
+    }
+
+    /// self · k for a constant k (taken as exact).
+    pub fn scale(&self, k: f64) -> Bern {
+        let c: Vec<f64> = self.c.iter().map(|x| x * k).collect();
+        Bern { err: self.err * k.abs() + U * max_abs(&c), c }
+    }
+
+    /// self · other (degrees add). Computed as a convolution of the C(n,k)-scaled coefficients.
+    pub fn mul(&self, other: &Bern) -> Bern {
+        let (m, n) = (self.degree(), other.degree());
+        if m == 0 {
+            return other.scale_with_err(self.c[0], self.err);
+        }
+        if n == 0 {
+            return self.scale_with_err(other.c[0], other.err);
+        }
+        let bm = &pascal_row(m);
+        let bn = &pascal_row(n);
+        let bmn = &pascal_row(m + n);
+        let a: Vec<f64> = self.c.iter().zip(bm.iter()).map(|(x, b)| x * b).collect();
+        let b: Vec<f64> = other.c.iter().zip(bn.iter()).map(|(x, b)| x * b).collect();
+        let mut c = vec![0.0; m + n + 1];
+        for (i, ai) in a.iter().enumerate() {
+            for (j, bj) in b.iter().enumerate() {
+                c[i + j] += ai * bj;
+            }
+        }
+        for (k, ck) in c.iter_mut().enumerate() {
+            *ck /= bmn[k];
+        }
+        let (ma, mb) = (self.max_abs(), other.max_abs());
+        let err = self.err * mb + other.err * ma + self.err * other.err + (m.min(n) + 6) as f64 * U * ma * mb;
+        Bern { c, err }
+    }
+
+    fn scale_with_err(&self, k: f64, k_err: f64) -> Bern {
+        let mut r = self.scale(k);
+        r.err += k_err * (self.max_abs() + self.err);
+        r
+    }
+
+    /// Value at x ∈ [0, 1] and a bound on its error (de Casteljau).
+    pub fn eval(&self, x: f64) -> (f64, f64) {
+        let mut b = self.c.clone();
+        let n = self.degree();
+        for level in 1..=n {
+            for k in 0..=(n - level) {
+                b[k] = b[k] * (1.0 - x) + b[k + 1] * x;
+            }
+        }
+        (b[0], self.err + (2 * n + 2) as f64 * U * self.max_abs())
+    }
+
+    /// The two halves of the polynomial split at x, each re-parametrised to [0, 1].
+    pub fn split(&self, x: f64) -> (Bern, Bern) {
+        let n = self.degree();
+        let mut b = self.c.clone();
+        let mut left = Vec::with_capacity(n + 1);
+        let mut right = vec![0.0; n + 1];
+        left.push(b[0]);
+        right[n] = b[n];
+        for level in 1..=n {
+            for k in 0..=(n - level) {
+                b[k] = b[k] * (1.0 - x) + b[k + 1] * x;
+            }
+            left.push(b[0]);
+            right[n - level] = b[n - level];
+        }
+        let err = self.err + (2 * n + 2) as f64 * U * self.max_abs();
+        (Bern { c: left, err }, Bern { c: right, err })
+    }
+
+    /// Whether every coefficient is exactly zero and the error bound is zero.
+    pub fn is_exact_zero(&self) -> bool {
+        self.err == 0.0 && self.c.iter().all(|&x| x == 0.0)
+    }
+}
+
+fn pascal_row(n: usize) -> Vec<f64> {
+    if n <= MAX_DEGREE {
+        pascal()[n].clone()
+    } else {
+        (0..=n).map(|k| binomial(n, k)).collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn mono_eval(a: &[f64], x: f64) -> f64 {
+        a.iter().rev().fold(0.0, |acc, c| acc * x + c)
+    }
+
+    #[test]
+    fn monomial_round_trip_and_products() {
+        let a = [1.0, -3.0, 0.5, 2.0];
+        let b = [0.25, 4.0, -1.0];
+        let pa = Bern::from_monomial(&a);
+        let pb = Bern::from_monomial(&b);
+        let prod = pa.mul(&pb);
+        let sum = pa.add(&pb);
+        for i in 0..=20 {
+            let x = i as f64 / 20.0;
+            let (v, e) = prod.eval(x);
+            let want = mono_eval(&a, x) * mono_eval(&b, x);
+            assert!((v - want).abs() <= e + 1e-15, "product at {x}: {v} vs {want} (err {e})");
+            let (v, e) = sum.eval(x);
+            assert!((v - (mono_eval(&a, x) + mono_eval(&b, x))).abs() <= e + 1e-15);
+        }
+    }
+
+    #[test]
+    fn split_halves_agree_with_whole() {
+        let p = Bern::from_monomial(&[0.3, -2.0, 5.0, -1.0, 0.7]);
+        let (l, r) = p.split(0.3);
+        for i in 0..=10 {
+            let x = i as f64 / 10.0;
+            assert!((l.eval(x).0 - p.eval(0.3 * x).0).abs() < 1e-13);
+            assert!((r.eval(x).0 - p.eval(0.3 + 0.7 * x).0).abs() < 1e-13);
+        }
+    }
+
+    #[test]
+    fn elevation_keeps_values() {
+        let p = Bern::from_monomial(&[1.0, 2.0, -3.0]);
+        let q = p.elevate(7);
+        for i in 0..=10 {
+            let x = i as f64 / 10.0;
+            assert!((p.eval(x).0 - q.eval(x).0).abs() < 1e-14);
+        }
+    }
+}

@@ -1,0 +1,141 @@
+//! Three-valued truth over [0, 1], piecewise constant: the sets the conditions describe.
+
+use super::{sign_pieces, Bern, Sign};
+
+/// Truth of a statement on a piece of [0, 1].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Truth {
+    /// Certainly false throughout.
+    False,
+    /// Certainly true throughout.
+    True,
+    /// Not certified.
+    Unknown,
+}
+
+impl Truth {
+    fn and(self, o: Truth) -> Truth {
+        match (self, o) {
+            (Truth::False, _) | (_, Truth::False) => Truth::False,
+            (Truth::True, Truth::True) => Truth::True,
+            _ => Truth::Unknown,
+        }
+    }
+
+    fn or(self, o: Truth) -> Truth {
+        match (self, o) {
+            (Truth::True, _) | (_, Truth::True) => Truth::True,
+            (Truth::False, Truth::False) => Truth::False,
+            _ => Truth::Unknown,
+        }
+    }
+}
+
+/// A piecewise-constant three-valued truth over [0, 1]: `(end, truth)` pieces in increasing order,
+/// the first starting at 0 and the last ending at 1, adjacent pieces differing.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Partition {
+    /// The pieces.
+    pub pieces: Vec<(f64, Truth)>,
+}
+
+impl Partition {
+    /// The same truth everywhere.
+    pub fn constant(t: Truth) -> Partition {
+        Partition { pieces: vec![(1.0, t)] }
+    }
+
+    /// Where `p > 0` (`positive`) or `p < 0` (otherwise), certified to `tol`.
+    pub fn atom(p: &Bern, positive: bool, tol: f64) -> Partition {
+        let pieces = sign_pieces(p, tol)
+            .into_iter()
+            .map(|(end, s)| {
+                let t = match (s, positive) {
+                    (Sign::Unknown, _) => Truth::Unknown,
+                    (Sign::Pos, true) | (Sign::Neg, false) => Truth::True,
+                    _ => Truth::False,
+                };
+                (end, t)
+            })
+            .collect();
+        Partition::normalised(pieces)
+    }
+
+    fn normalised(pieces: Vec<(f64, Truth)>) -> Partition {
+        let mut out: Vec<(f64, Truth)> = Vec::with_capacity(pieces.len());
+        for (end, t) in pieces {
+            match out.last_mut() {
+                Some(last) if last.1 == t => last.0 = end,
+                _ => out.push((end, t)),
+            }
+        }
+        if let Some(last) = out.last_mut() {
+            last.0 = 1.0;
+        }
+        Partition { pieces: out }
+    }
+
+    fn zip(&self, other: &Partition, f: impl Fn(Truth, Truth) -> Truth) -> Partition {
+        let (mut i, mut j) = (0, 0);
+        let mut out = Vec::with_capacity(self.pieces.len() + other.pieces.len());
+        while i < self.pieces.len() && j < other.pieces.len() {
+            let (ea, ta) = self.pieces[i];
+            let (eb, tb) = other.pieces[j];
+            let end = ea.min(eb);
+            out.push((end, f(ta, tb)));
+            if ea <= end {
+                i += 1;
+            }
+            if eb <= end {
+                j += 1;
+            }
+        }
+        Partition::normalised(out)
+    }
+
+    /// Pointwise conjunction.
+    pub fn and(&self, other: &Partition) -> Partition {
+        self.zip(other, Truth::and)
+    }
+
+    /// Pointwise disjunction.
+    pub fn or(&self, other: &Partition) -> Partition {
+        self.zip(other, Truth::or)
+    }
+
+    /// Whether the truth is `t` on all of [0, 1].
+    pub fn is_all(&self, t: Truth) -> bool {
+        self.pieces.len() == 1 && self.pieces[0].1 == t
+    }
+
+    /// The pieces as `(start, end, truth)`.
+    pub fn intervals(&self) -> Vec<(f64, f64, Truth)> {
+        let mut start = 0.0;
+        self.pieces
+            .iter()
+            .map(|&(end, t)| {
+                let iv = (start, end, t);
+                start = end;
+                iv
+            })
+            .collect()
+    }
+
+    /// The truth at x (the piece containing x; at a piece end, the piece it ends).
+    pub fn at(&self, x: f64) -> Truth {
+        self.pieces.iter().find(|p| x <= p.0).map_or(Truth::Unknown, |p| p.1)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn and_or_merge_pieces() {
+        let a = Partition { pieces: vec![(0.3, Truth::True), (0.6, Truth::False), (1.0, Truth::Unknown)] };
+        let b = Partition { pieces: vec![(0.5, Truth::True), (1.0, Truth::False)] };
+        assert_eq!(a.and(&b).pieces, vec![(0.3, Truth::True), (1.0, Truth::False)]);
+        assert_eq!(a.or(&b).pieces, vec![(0.5, Truth::True), (0.6, Truth::False), (1.0, Truth::Unknown)]);
+    }
+}

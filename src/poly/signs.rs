@@ -1,0 +1,185 @@
+//! Certified sign pieces of a polynomial on [0, 1]: root isolation by Bernstein subdivision with
+//! error control.
+//!
+//! The result covers [0, 1] with pieces on which the polynomial is certainly positive, certainly
+//! negative, exactly zero, or `Unknown`. An `Unknown` piece contains every point where the sign
+//! could not be certified; it is at most `tol` wide unless the polynomial is indistinguishable from
+//! zero over a wider range (then it is reported as it is, never guessed).
+
+use super::Bern;
+
+/// The sign of a polynomial on a piece.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Sign {
+    /// Certainly < 0 throughout.
+    Neg,
+    /// Exactly 0 throughout (the polynomial is the exact zero).
+    Zero,
+    /// Certainly > 0 throughout.
+    Pos,
+    /// Not certified (a root, or values within rounding error of zero, may lie here).
+    Unknown,
+}
+
+/// Limits the work on one polynomial: past this many subdivisions the rest is reported Unknown.
+const MAX_NODES: usize = 20_000;
+
+/// Sign pieces of `p` over [0, 1]: `(end, sign)` pairs in increasing order, the first piece
+/// starting at 0, the last ending at 1. Unknown pieces are at most `tol` wide where certification
+/// succeeds.
+pub fn sign_pieces(p: &Bern, tol: f64) -> Vec<(f64, Sign)> {
+    if p.is_exact_zero() {
+        return vec![(1.0, Sign::Zero)];
+    }
+    let mut out: Vec<(f64, Sign)> = Vec::new();
+    let mut budget = MAX_NODES;
+    recurse(p, 0.0, 1.0, tol, &mut budget, &mut out);
+    out
+}
+
+fn push(out: &mut Vec<(f64, Sign)>, end: f64, s: Sign) {
+    if let Some(last) = out.last_mut() {
+        if last.1 == s {
+            last.0 = end;
+            return;
+        }
+    }
+    out.push((end, s));
+}
+
+/// Sign classification of each coefficient: +1, −1 or 0 (within error of zero).
+fn coefficient_signs(p: &Bern) -> Vec<i8> {
+    p.c.iter()
+        .map(|&c| if c > p.err { 1 } else if c < -p.err { -1 } else { 0 })
+        .collect()
+}
+
+/// Whether the coefficient signs have the pattern s…s ?…? (−s)…(−s) with certain first and last
+/// coefficients: then the polynomial has exactly one root, and it is simple.
+fn single_crossing(signs: &[i8]) -> bool {
+    let (first, last) = (signs[0], signs[signs.len() - 1]);
+    if first == 0 || last == 0 || first == last {
+        return false;
+    }
+    let mut phase = 0; // 0: leading sign, 1: unknowns, 2: trailing sign
+    for &s in signs {
+        phase = match (phase, s) {
+            (0, x) if x == first => 0,
+            (0 | 1, 0) => 1,
+            (_, x) if x == last => 2,
+            _ => return false,
+        };
+    }
+    true
+}
+
+fn recurse(p: &Bern, lo: f64, hi: f64, tol: f64, budget: &mut usize, out: &mut Vec<(f64, Sign)>) {
+    let signs = coefficient_signs(p);
+    if signs.iter().all(|&s| s == 1) {
+        return push(out, hi, Sign::Pos);
+    }
+    if signs.iter().all(|&s| s == -1) {
+        return push(out, hi, Sign::Neg);
+    }
+    // Half of tol: an Unknown piece on each side of a split point still merges to at most tol.
+    if hi - lo <= 0.5 * tol || *budget == 0 || p.max_abs() <= p.err {
+        return push(out, hi, Sign::Unknown);
+    }
+    *budget -= 1;
+    if single_crossing(&signs) {
+        return bisect_root(p, lo, hi, tol, signs[0], out);
+    }
+    let (left, right) = p.split(0.5);
+    let mid = 0.5 * (lo + hi);
+    recurse(&left, lo, mid, tol, budget, out);
+    recurse(&right, mid, hi, tol, budget, out);
+}
+
+/// Locates the single simple root of `p` on [lo, hi] (local parameter 0…1) by bisection on
+/// certified values; emits sign `s0` before it, Unknown around it, −s0 after.
+fn bisect_root(p: &Bern, lo: f64, hi: f64, tol: f64, s0: i8, out: &mut Vec<(f64, Sign)>) {
+    let sign_at = |x: f64| -> i8 {
+        let (v, e) = p.eval(x);
+        if v > e {
+            1
+        } else if v < -e {
+            -1
+        } else {
+            0
+        }
+    };
+    let width = hi - lo;
+    let (mut a, mut b) = (0.0f64, 1.0f64);
+    while (b - a) * width > tol {
+        let m = 0.5 * (a + b);
+        match sign_at(m) {
+            s if s == s0 => a = m,
+            0 => {
+                // The root is within rounding of m: try to pin it to a tol-wide bracket.
+                let h = 0.25 * tol / width;
+                if sign_at(m - h) == s0 && sign_at(m + h) == -s0 {
+                    a = m - h;
+                    b = m + h;
+                }
+                break;
+            }
+            _ => b = m,
+        }
+    }
+    let (s_before, s_after) = if s0 > 0 { (Sign::Pos, Sign::Neg) } else { (Sign::Neg, Sign::Pos) };
+    if a > 0.0 {
+        push(out, lo + a * width, s_before);
+    }
+    push(out, lo + b * width, Sign::Unknown);
+    if b < 1.0 {
+        push(out, hi, s_after);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn roots_of(pieces: &[(f64, Sign)]) -> Vec<(f64, f64)> {
+        let mut start = 0.0;
+        let mut out = vec![];
+        for &(end, s) in pieces {
+            if s == Sign::Unknown {
+                out.push((start, end));
+            }
+            start = end;
+        }
+        out
+    }
+
+    #[test]
+    fn isolates_simple_roots_to_tolerance() {
+        // (x − 0.2)(x − 0.5)(x − 0.9)
+        let a = [-0.09, 0.73, -1.6, 1.0];
+        let pieces = sign_pieces(&Bern::from_monomial(&a), 1e-12);
+        let roots = roots_of(&pieces);
+        assert_eq!(roots.len(), 3, "{pieces:?}");
+        for (r, want) in roots.iter().zip([0.2, 0.5, 0.9]) {
+            assert!(r.0 <= want + 1e-15 && want - 1e-15 <= r.1, "{r:?} vs {want}");
+            assert!(r.1 - r.0 <= 1e-12, "{r:?} {pieces:?}");
+        }
+        assert_eq!(pieces[0].1, Sign::Neg);
+        assert_eq!(pieces.last().unwrap().1, Sign::Pos);
+    }
+
+    #[test]
+    fn certifies_constant_signs_and_zero() {
+        assert_eq!(sign_pieces(&Bern::from_monomial(&[1.0, -1.0, 1.0]), 1e-12), vec![(1.0, Sign::Pos)]);
+        assert_eq!(sign_pieces(&Bern::constant(0.0), 1e-12), vec![(1.0, Sign::Zero)]);
+    }
+
+    #[test]
+    fn double_root_is_reported_unknown_not_guessed() {
+        // (x − 0.5)², touching zero at 0.5
+        let pieces = sign_pieces(&Bern::from_monomial(&[0.25, -1.0, 1.0]), 1e-10);
+        let roots = roots_of(&pieces);
+        assert_eq!(roots.len(), 1);
+        assert!(roots[0].0 <= 0.5 && 0.5 <= roots[0].1);
+        assert!(pieces.iter().all(|p| p.1 != Sign::Neg));
+    }
+}

@@ -1,0 +1,116 @@
+//! Serialisable results: what the CLI prints with `--json` and what the page draws.
+
+use serde::Serialize;
+
+/// Which side a boundary leads into, going forward.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Side {
+    /// Feasible after the boundary.
+    Feasible,
+    /// Infeasible after the boundary.
+    Infeasible,
+}
+
+/// A point along a trajectory where feasibility changes.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Boundary {
+    /// Slerp parameter t.
+    pub t: f64,
+    /// Translation parameter τ.
+    pub tau: f64,
+    /// The constraint(s) that change there, e.g. `"cables 2-5"`, `"cable 3 - plinth"`.
+    pub constraint: String,
+    /// Whether the motion enters the feasible or the infeasible set.
+    pub enters: Side,
+}
+
+/// Feasibility along one trajectory.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct VerifyReport {
+    /// The trajectory's name.
+    pub trajectory: String,
+    /// `"exact"`, or `"pointwise"` for the sampled baseline.
+    pub method: String,
+    /// The sampling step of the point-wise baseline.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub step: Option<f64>,
+    /// Feasible t-intervals, sorted and disjoint.
+    pub feasible: Vec<[f64; 2]>,
+    /// Infeasible t-intervals.
+    pub infeasible: Vec<[f64; 2]>,
+    /// The feasible intervals in τ.
+    pub feasible_tau: Vec<[f64; 2]>,
+    /// The infeasible intervals in τ.
+    pub infeasible_tau: Vec<[f64; 2]>,
+    /// Where feasibility changes, with the active constraint.
+    pub boundaries: Vec<Boundary>,
+    /// t-intervals that could not be certified either way (never guessed).
+    pub uncertain: Vec<[f64; 2]>,
+    /// Conditions tested conservatively (an enlarged shape): infeasible sections near them may be
+    /// feasible in truth.
+    pub conservative: Vec<String>,
+    /// Notes for the user (from the scenario and the verification).
+    pub warnings: Vec<String>,
+}
+
+/// A point along a ray where feasibility changes.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RayBoundary {
+    /// The coordinate's value.
+    pub value: f64,
+    /// The constraint(s) that change there.
+    pub constraint: String,
+    /// Whether increasing values enter the feasible or the infeasible set.
+    pub enters: Side,
+}
+
+/// Feasibility of one pose coordinate over a range, the others fixed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RayReport {
+    /// The varied coordinate: x, y, z, phi, theta or sigma.
+    pub vary: String,
+    /// The pose the other coordinates come from.
+    pub pose: String,
+    /// The range studied.
+    pub range: [f64; 2],
+    /// Feasible value intervals.
+    pub feasible: Vec<[f64; 2]>,
+    /// Infeasible value intervals.
+    pub infeasible: Vec<[f64; 2]>,
+    /// Where feasibility changes.
+    pub boundaries: Vec<RayBoundary>,
+    /// Value intervals that could not be certified.
+    pub uncertain: Vec<[f64; 2]>,
+    /// Conditions tested conservatively.
+    pub conservative: Vec<String>,
+}
+
+/// One condition at one pose.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CheckEntry {
+    /// The condition's label.
+    pub constraint: String,
+    /// Whether it is violated.
+    pub violated: bool,
+    /// The distance it is about (cable–cable, cable–obstacle surface, or the cable length), when
+    /// computed; for capsules (cylinders) the distance to the capsule.
+    pub distance: Option<f64>,
+    /// Whether the test is exact (false: conservative enlarged shape).
+    pub exact: bool,
+}
+
+/// All conditions at one pose.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PoseReport {
+    /// The pose's name.
+    pub pose: String,
+    /// Whether no condition is violated.
+    pub feasible: bool,
+    /// Cable lengths, in cable order.
+    pub lengths: Vec<f64>,
+    /// Every condition's result.
+    pub checks: Vec<CheckEntry>,
+    /// The labels of the violated conditions.
+    pub violated: Vec<String>,
+}

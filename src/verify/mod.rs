@@ -1,0 +1,134 @@
+//! Verification: where along a trajectory or a ray every condition holds, exactly (certified
+//! polynomial sign partitions) or point-wise (the sampled baseline), and all conditions at one pose.
+
+mod pointwise;
+mod sections;
+
+pub use pointwise::verify_pointwise;
+pub use sections::{sections, Labelled, Piece, Sections};
+
+use crate::conditions::{cables_at, for_scenario, Condition, Sweep};
+use crate::error::{Error, Result};
+use crate::model::motion::Param;
+use crate::model::{Coord, Motion, Pose, Trajectory};
+use crate::poly::{Partition, Truth};
+use crate::report::{Boundary, CheckEntry, PoseReport, RayBoundary, RayReport, VerifyReport};
+use crate::scenario::Scenario;
+
+/// Accuracy of reported boundaries, in the user's parameter (t, or the ray's coordinate).
+pub const BOUNDARY_TOL: f64 = 1e-10;
+
+/// Violation pieces along a list of motions, mapped to user units and concatenated: the overall
+/// union and each condition's own.
+fn violation_pieces(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[Motion], tol_user: f64) -> (Vec<Piece>, Vec<Labelled>) {
+    let mut per: Vec<Labelled> = conditions.iter().map(|c| Labelled { label: c.label(), pieces: vec![] }).collect();
+    let mut overall: Vec<Piece> = Vec::new();
+    for motion in motions {
+        let tol = tol_user / motion.param.max_slope().max(1e-300);
+        let mut sweep = Sweep::new(&s.robot, motion, tol);
+        let mut union = Partition::constant(Truth::False);
+        for (c, out) in conditions.iter().zip(per.iter_mut()) {
+            let v = c.violation(&mut sweep);
+            union = union.or(&v);
+            append_mapped(&mut out.pieces, &v, &motion.param);
+        }
+        append_mapped(&mut overall, &union, &motion.param);
+    }
+    (overall, per)
+}
+
+fn append_mapped(out: &mut Vec<Piece>, p: &Partition, param: &Param) {
+    for (a, b, t) in p.intervals() {
+        let (va, vb) = (param.value(a), param.value(b));
+        match out.last_mut() {
+            Some(last) if last.2 == t => last.1 = vb,
+            _ => out.push((va, vb, t)),
+        }
+    }
+}
+
+fn conservative_labels(conditions: &[Box<dyn Condition>]) -> Vec<String> {
+    conditions.iter().filter(|c| !c.exact()).map(|c| c.label()).collect()
+}
+
+/// Exact verification of a trajectory: feasible and infeasible t-intervals, each boundary certified
+/// to [`BOUNDARY_TOL`] in t with its active constraint, or reported in `uncertain`.
+pub fn verify_trajectory(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport> {
+    let conditions = for_scenario(s);
+    let motion = Motion::trajectory(traj);
+    let (overall, per) = violation_pieces(&conditions, s, std::slice::from_ref(&motion), BOUNDARY_TOL);
+    let sec = sections(&overall, &per, BOUNDARY_TOL);
+    let mut warnings = s.warnings.clone();
+    if !sec.uncertain.is_empty() {
+        warnings.push(format!("{} section(s) could not be certified either way; see \"uncertain\"", sec.uncertain.len()));
+    }
+    Ok(trajectory_report(traj, sec, "exact", None, conservative_labels(&conditions), warnings))
+}
+
+/// Builds the report of a trajectory from its sections in t.
+fn trajectory_report(traj: &Trajectory, sec: Sections, method: &str, step: Option<f64>, conservative: Vec<String>, warnings: Vec<String>) -> VerifyReport {
+    let to_tau = |v: &[[f64; 2]]| v.iter().map(|iv| [traj.tau_of_t(iv[0]), traj.tau_of_t(iv[1])]).collect();
+    VerifyReport {
+        trajectory: traj.name.clone(),
+        method: method.to_string(),
+        step,
+        feasible_tau: to_tau(&sec.feasible),
+        infeasible_tau: to_tau(&sec.infeasible),
+        boundaries: sec
+            .boundaries
+            .into_iter()
+            .map(|(t, constraint, enters)| Boundary { t, tau: traj.tau_of_t(t), constraint, enters })
+            .collect(),
+        feasible: sec.feasible,
+        infeasible: sec.infeasible,
+        uncertain: sec.uncertain,
+        conservative,
+        warnings,
+    }
+}
+
+/// Exact feasible intervals of one pose coordinate over [lo, hi], the others held at `pose`'s.
+pub fn ray(s: &Scenario, pose_name: &str, coord: Coord, lo: f64, hi: f64) -> Result<RayReport> {
+    let pose = s.pose(pose_name)?;
+    if !(lo.is_finite() && hi.is_finite()) || lo >= hi {
+        return Err(Error::new("--range", format!("needs finite LO < HI, got {lo} {hi}")));
+    }
+    if coord.is_angle() && hi - lo > 64.0 * std::f64::consts::PI {
+        return Err(Error::new("--range", "an angle range wider than 64π is not meaningful"));
+    }
+    let conditions = for_scenario(s);
+    let motions = Motion::ray(pose, coord, lo, hi);
+    let tol = BOUNDARY_TOL * (hi - lo).abs().max(1.0);
+    let (overall, per) = violation_pieces(&conditions, s, &motions, tol);
+    let sec = sections(&overall, &per, tol);
+    Ok(RayReport {
+        vary: coord.name().to_string(),
+        pose: pose_name.to_string(),
+        range: [lo, hi],
+        feasible: sec.feasible,
+        infeasible: sec.infeasible,
+        boundaries: sec.boundaries.into_iter().map(|(value, constraint, enters)| RayBoundary { value, constraint, enters }).collect(),
+        uncertain: sec.uncertain,
+        conservative: conservative_labels(&conditions),
+    })
+}
+
+/// Every condition at one pose, with lengths and distances.
+pub fn check_pose(s: &Scenario, name: &str, pose: &Pose) -> PoseReport {
+    let cables = cables_at(&s.robot, pose);
+    let checks: Vec<CheckEntry> = for_scenario(s)
+        .iter()
+        .map(|c| {
+            let r = c.check(&cables);
+            CheckEntry { constraint: c.label(), violated: r.violated, distance: r.distance, exact: c.exact() }
+        })
+        .collect();
+    let violated: Vec<String> = checks.iter().filter(|c| c.violated).map(|c| c.constraint.clone()).collect();
+    PoseReport {
+        pose: name.to_string(),
+        feasible: violated.is_empty(),
+        lengths: cables.iter().map(|(a, x)| (x - a).norm()).collect(),
+        checks,
+        violated,
+    }
+}
