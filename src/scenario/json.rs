@@ -1,0 +1,426 @@
+//! The raw scenario JSON as serde reads it, before validation.
+//!
+//! Every struct denies unknown fields, and the file is read through `serde_path_to_error`, so a
+//! mistake is reported at its JSON path (`robot.cables[2].base: expected 3 numbers, got 2`).
+//! Shapes that JSON alone cannot say (which obstacle fields go with which `type`, "exactly one of"
+//! choices, sizes of arrays that depend on other arrays) are checked in `validate`.
+//!
+//! Untagged and internally tagged serde enums are avoided on purpose: they buffer their input and
+//! lose both the path and the precise message. Alternatives are read with small hand-written
+//! visitors instead (a number or an array, a quaternion or a pose name).
+
+use serde::de::{self, Deserializer, IgnoredAny, MapAccess, SeqAccess, Visitor};
+use serde::Deserialize;
+use std::fmt;
+use std::marker::PhantomData;
+
+use crate::error::{Error, Result};
+
+/// The only scenario format this version reads.
+pub const FORMAT: &str = "cablenav-scenario/1";
+
+/// The whole file.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawScenario {
+    /// Must be [`FORMAT`] (checked before this struct is read).
+    #[allow(dead_code)]
+    pub format: String,
+    pub name: String,
+    pub robot: RawRobot,
+    /// Reserved for wrench data (a later version); kept as given.
+    #[serde(default)]
+    pub wrench: Option<serde_json::Value>,
+    #[serde(default)]
+    pub clearance: Option<RawClearance>,
+    #[serde(default)]
+    pub obstacles: Vec<RawObstacle>,
+    #[serde(default)]
+    pub poses: Ordered<RawPose>,
+    #[serde(default)]
+    pub trajectories: Vec<RawTrajectory>,
+    #[serde(default)]
+    pub queries: Vec<RawQuery>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawRobot {
+    pub cables: Vec<RawCable>,
+    #[serde(default)]
+    pub length: Option<RawBounds>,
+    #[serde(default)]
+    pub tension: Option<RawBounds>,
+    #[serde(default)]
+    pub diameter: Option<f64>,
+}
+
+/// Robot-level bounds: each end a number for all cables or an array with one number per cable.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawBounds {
+    #[serde(default)]
+    pub min: Option<ScalarOrList>,
+    #[serde(default)]
+    pub max: Option<ScalarOrList>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawCable {
+    pub base: Fixed<f64, 3>,
+    pub platform: Fixed<f64, 3>,
+    #[serde(default)]
+    pub length: Option<RawCableBounds>,
+    #[serde(default)]
+    pub tension: Option<RawCableBounds>,
+}
+
+/// Per-cable bounds, overriding the robot-level ones end by end.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawCableBounds {
+    #[serde(default)]
+    pub min: Option<f64>,
+    #[serde(default)]
+    pub max: Option<f64>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawClearance {
+    #[serde(default)]
+    pub cable_cable: Option<f64>,
+    #[serde(default)]
+    pub cable_obstacle: Option<f64>,
+}
+
+/// An obstacle with the union of all types' fields; `validate` checks that exactly the fields of
+/// its `type` are present.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawObstacle {
+    #[serde(default)]
+    pub name: Option<String>,
+    #[serde(rename = "type")]
+    pub kind: String,
+    #[serde(default)]
+    pub center: Option<Fixed<f64, 3>>,
+    #[serde(default)]
+    pub size: Option<Fixed<f64, 3>>,
+    #[serde(default)]
+    pub vertices: Option<Vec<Fixed<f64, 3>>>,
+    #[serde(default)]
+    pub triangles: Option<Vec<Fixed<usize, 3>>>,
+    #[serde(default)]
+    pub radius: Option<f64>,
+    #[serde(default)]
+    pub matrix: Option<Fixed<Fixed<f64, 3>, 3>>,
+    #[serde(default)]
+    pub from: Option<Fixed<f64, 3>>,
+    #[serde(default)]
+    pub to: Option<Fixed<f64, 3>>,
+    #[serde(default)]
+    pub apex: Option<Fixed<f64, 3>>,
+    #[serde(default)]
+    pub axis: Option<Fixed<f64, 3>>,
+    #[serde(default)]
+    pub half_angle: Option<f64>,
+    #[serde(default)]
+    pub height: Option<f64>,
+}
+
+impl RawObstacle {
+    /// The optional geometric fields that are present, by JSON name.
+    pub fn present_fields(&self) -> Vec<&'static str> {
+        let mut v = Vec::new();
+        let mut add = |name: &'static str, present: bool| {
+            if present {
+                v.push(name)
+            }
+        };
+        add("center", self.center.is_some());
+        add("size", self.size.is_some());
+        add("vertices", self.vertices.is_some());
+        add("triangles", self.triangles.is_some());
+        add("radius", self.radius.is_some());
+        add("matrix", self.matrix.is_some());
+        add("from", self.from.is_some());
+        add("to", self.to.is_some());
+        add("apex", self.apex.is_some());
+        add("axis", self.axis.is_some());
+        add("half_angle", self.half_angle.is_some());
+        add("height", self.height.is_some());
+        v
+    }
+}
+
+/// A pose: a position and exactly one orientation form (checked in `validate`).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawPose {
+    pub position: Fixed<f64, 3>,
+    #[serde(default)]
+    pub quaternion: Option<Fixed<f64, 4>>,
+    #[serde(default)]
+    pub tilt_torsion: Option<Fixed<f64, 3>>,
+    #[serde(default)]
+    pub euler_xyz_deg: Option<Fixed<f64, 3>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawTrajectory {
+    pub name: String,
+    pub translation: RawTranslation,
+    pub orientation: RawOrientation,
+}
+
+/// Exactly one of the three forms (checked in `validate`).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawTranslation {
+    #[serde(default)]
+    pub polynomial: Option<Vec<Vec<f64>>>,
+    #[serde(default)]
+    pub bezier: Option<Vec<Fixed<f64, 3>>>,
+    #[serde(default)]
+    pub line: Option<Fixed<Fixed<f64, 3>, 2>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawOrientation {
+    pub slerp: Fixed<QuatRef, 2>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawQuery {
+    pub name: String,
+    pub start: String,
+    pub goal: String,
+    #[serde(default)]
+    pub fixed: Vec<String>,
+}
+
+/// What a fixed-size array holds, for messages such as "expected 3 numbers".
+pub trait Noun {
+    /// Plural noun for the elements.
+    const NOUN: &'static str;
+}
+
+impl Noun for f64 {
+    const NOUN: &'static str = "numbers";
+}
+
+impl Noun for usize {
+    const NOUN: &'static str = "vertex indices";
+}
+
+impl Noun for Fixed<f64, 3> {
+    const NOUN: &'static str = "points [x, y, z]";
+}
+
+impl Noun for QuatRef {
+    const NOUN: &'static str = "orientations (quaternion [w, x, y, z] or pose name)";
+}
+
+/// An array of exactly `N` elements; the error for another length says how many were expected
+/// and how many were given.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Fixed<T, const N: usize>(pub [T; N]);
+
+impl<'de, T, const N: usize> Deserialize<'de> for Fixed<T, N>
+where
+    T: Deserialize<'de> + Noun,
+{
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> std::result::Result<Self, D::Error> {
+        struct V<T, const N: usize>(PhantomData<T>);
+        impl<'de, T, const N: usize> Visitor<'de> for V<T, N>
+        where
+            T: Deserialize<'de> + Noun,
+        {
+            type Value = Fixed<T, N>;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                write!(f, "an array of {N} {}", T::NOUN)
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> std::result::Result<Self::Value, A::Error> {
+                let mut out: Vec<T> = Vec::with_capacity(N);
+                while out.len() < N {
+                    match seq.next_element::<T>()? {
+                        Some(x) => out.push(x),
+                        None => {
+                            return Err(de::Error::custom(format!("expected {N} {}, got {}", T::NOUN, out.len())));
+                        }
+                    }
+                }
+                let mut extra = 0usize;
+                while seq.next_element::<IgnoredAny>()?.is_some() {
+                    extra += 1;
+                }
+                if extra > 0 {
+                    return Err(de::Error::custom(format!("expected {N} {}, got {}", T::NOUN, N + extra)));
+                }
+                let n = out.len();
+                <[T; N]>::try_from(out)
+                    .map(Fixed)
+                    .map_err(|_| de::Error::custom(format!("expected {N} {}, got {n}", T::NOUN)))
+            }
+        }
+        deserializer.deserialize_seq(V::<T, N>(PhantomData))
+    }
+}
+
+/// A number (the same for every cable) or an array of numbers (one per cable).
+#[derive(Debug, Clone, PartialEq)]
+pub enum ScalarOrList {
+    /// One value for all cables.
+    Scalar(f64),
+    /// One value per cable.
+    List(Vec<f64>),
+}
+
+impl<'de> Deserialize<'de> for ScalarOrList {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> std::result::Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = ScalarOrList;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a number or an array of numbers (one per cable)")
+            }
+            fn visit_f64<E: de::Error>(self, v: f64) -> std::result::Result<Self::Value, E> {
+                Ok(ScalarOrList::Scalar(v))
+            }
+            fn visit_i64<E: de::Error>(self, v: i64) -> std::result::Result<Self::Value, E> {
+                Ok(ScalarOrList::Scalar(v as f64))
+            }
+            fn visit_u64<E: de::Error>(self, v: u64) -> std::result::Result<Self::Value, E> {
+                Ok(ScalarOrList::Scalar(v as f64))
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> std::result::Result<Self::Value, A::Error> {
+                let mut v = Vec::new();
+                while let Some(x) = seq.next_element::<f64>()? {
+                    v.push(x);
+                }
+                Ok(ScalarOrList::List(v))
+            }
+        }
+        deserializer.deserialize_any(V)
+    }
+}
+
+/// A slerp end: a quaternion `[w, x, y, z]` or the name of a pose whose orientation is used.
+#[derive(Debug, Clone, PartialEq)]
+pub enum QuatRef {
+    /// An explicit quaternion (not yet normalised).
+    Quat([f64; 4]),
+    /// A pose name.
+    Pose(String),
+}
+
+impl<'de> Deserialize<'de> for QuatRef {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> std::result::Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = QuatRef;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a quaternion [w, x, y, z] or a pose name")
+            }
+            fn visit_str<E: de::Error>(self, v: &str) -> std::result::Result<Self::Value, E> {
+                Ok(QuatRef::Pose(v.to_owned()))
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> std::result::Result<Self::Value, A::Error> {
+                let Fixed(q) = <Fixed<f64, 4> as Deserialize>::deserialize(de::value::SeqAccessDeserializer::new(seq))?;
+                Ok(QuatRef::Quat(q))
+            }
+        }
+        deserializer.deserialize_any(V)
+    }
+}
+
+/// A JSON object read as a list of (key, value) pairs in file order. Repeated keys are kept, so
+/// `validate` can report them by name.
+#[derive(Debug)]
+pub struct Ordered<T>(pub Vec<(String, T)>);
+
+impl<T> Default for Ordered<T> {
+    fn default() -> Self {
+        Ordered(Vec::new())
+    }
+}
+
+impl<'de, T: Deserialize<'de>> Deserialize<'de> for Ordered<T> {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> std::result::Result<Self, D::Error> {
+        struct V<T>(PhantomData<T>);
+        impl<'de, T: Deserialize<'de>> Visitor<'de> for V<T> {
+            type Value = Ordered<T>;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("an object mapping names to values")
+            }
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> std::result::Result<Self::Value, A::Error> {
+                let mut v = Vec::new();
+                while let Some((k, x)) = map.next_entry::<String, T>()? {
+                    v.push((k, x));
+                }
+                Ok(Ordered(v))
+            }
+        }
+        deserializer.deserialize_map(V(PhantomData))
+    }
+}
+
+/// Only the `format` field, read first so that a file of another format version gets that
+/// message instead of a list of unknown fields.
+#[derive(Deserialize)]
+struct FormatOnly {
+    #[serde(default)]
+    format: Option<serde_json::Value>,
+}
+
+/// Converts a serde error (with its path) into the crate's error.
+fn convert(err: serde_path_to_error::Error<serde_json::Error>) -> Error {
+    let path = err.path().to_string();
+    let mut path = if path == "." { String::new() } else { path };
+    let inner = err.into_inner();
+    let message = inner.to_string();
+    let reason = match inner.classify() {
+        // `1e999` is a syntax error to serde_json, but the JSON is well formed: say what it is.
+        serde_json::error::Category::Syntax if message.starts_with("number out of range") => {
+            format!("{message} (numbers must be finite double-precision values)")
+        }
+        serde_json::error::Category::Syntax => format!("malformed JSON: {inner}"),
+        serde_json::error::Category::Eof => format!("truncated JSON: {inner}"),
+        _ => inner.to_string(),
+    };
+    // serde reports a missing field at the object that lacks it; name the field itself.
+    if let Some(rest) = reason.strip_prefix("missing field `") {
+        if let Some(end) = rest.find('`') {
+            let field = rest.get(..end).unwrap_or_default();
+            path = if path.is_empty() { field.to_owned() } else { format!("{path}.{field}") };
+        }
+    }
+    Error::new(path, reason)
+}
+
+fn read<'a, T: Deserialize<'a>>(text: &'a str) -> Result<T> {
+    let mut de = serde_json::Deserializer::from_str(text);
+    let value = serde_path_to_error::deserialize(&mut de).map_err(convert)?;
+    de.end().map_err(|e| Error::new("", format!("malformed JSON: {e}")))?;
+    Ok(value)
+}
+
+/// Reads the text: checks it is JSON of the supported format, then reads the whole scenario.
+pub fn parse(text: &str) -> Result<RawScenario> {
+    let head: FormatOnly = read(text)?;
+    match head.format {
+        None => {
+            return Err(Error::new("format", format!("missing; this version reads \"{FORMAT}\"")));
+        }
+        Some(serde_json::Value::String(s)) if s == FORMAT => {}
+        Some(other) => {
+            return Err(Error::new("format", format!("unsupported format {other}; this version reads \"{FORMAT}\"")));
+        }
+    }
+    read(text)
+}

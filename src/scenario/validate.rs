@@ -1,0 +1,680 @@
+//! Validation of the raw JSON into the model. Every check names the JSON path of the offending
+//! value; nothing here indexes user data unchecked or unwraps it, so no input can panic.
+
+use nalgebra::{Cholesky, Matrix3, Quaternion, UnitQuaternion, Vector3};
+use std::collections::HashMap;
+use std::f64::consts::FRAC_PI_2;
+
+use super::json::{
+    Fixed, QuatRef, RawBounds, RawCable, RawCableBounds, RawObstacle, RawOrientation, RawPose, RawQuery, RawRobot,
+    RawScenario, RawTrajectory, RawTranslation, ScalarOrList,
+};
+use super::{Query, Scenario};
+use crate::error::{finite, Error, Result};
+use crate::model::{Bounds, Cable, Clearance, Coord, Orientation, Pose, Robot, Trajectory, Translation};
+use crate::shape::{Mesh, Obstacle, Shape};
+
+/// Fewest cables of a 6-DoF robot.
+pub const MIN_CABLES: usize = 6;
+/// Most cables supported.
+pub const MAX_CABLES: usize = 64;
+/// Most obstacles in one scenario.
+pub const MAX_OBSTACLES: usize = 1000;
+/// Most mesh triangles in one scenario, over all obstacles (a box counts 12).
+pub const MAX_TRIANGLES: usize = 100_000;
+/// Highest polynomial degree of a translation (and so at most `MAX_DEGREE + 1` Bézier points):
+/// the exact conditions multiply the translation with itself and with the rotation, so their
+/// degree grows several times faster than this, and the limit keeps exact verification tractable.
+pub const MAX_DEGREE: usize = 10;
+/// Largest deviation of a quaternion's norm from 1 accepted without a warning.
+pub const UNIT_TOLERANCE: f64 = 1e-9;
+
+/// Validates a raw scenario; warnings go into the result.
+pub fn scenario(raw: RawScenario) -> Result<Scenario> {
+    let mut warnings = Vec::new();
+    let robot = robot(&raw.robot)?;
+    let clearance = clearance(&raw)?;
+    let obstacles = obstacles(&raw.obstacles)?;
+    let poses = poses(&raw.poses.0, &mut warnings)?;
+    check_cable_lengths(&robot, &poses)?;
+    let trajectories = trajectories(&raw.trajectories, &poses, &mut warnings)?;
+    let queries = queries(&raw.queries, &poses)?;
+    let wrench = match raw.wrench {
+        None => None,
+        Some(v) if v.is_object() => {
+            warnings.push(
+                "wrench: reserved for wrench-feasibility data of a later version; kept but not used yet".to_owned(),
+            );
+            Some(v)
+        }
+        Some(_) => return Err(Error::new("wrench", "must be an object (reserved for wrench data)")),
+    };
+    Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses, trajectories, queries, wrench, warnings })
+}
+
+/// A finite number at `field`.
+fn num(field: &str, x: f64) -> Result<f64> {
+    finite(field, x)
+}
+
+/// A finite, non-negative number at `field`.
+fn non_negative(field: &str, x: f64) -> Result<f64> {
+    let x = num(field, x)?;
+    if x < 0.0 {
+        return Err(Error::new(field, format!("must not be negative, got {x}")));
+    }
+    Ok(x)
+}
+
+/// A finite, positive number at `field`.
+fn positive(field: &str, x: f64) -> Result<f64> {
+    let x = num(field, x)?;
+    if x <= 0.0 {
+        return Err(Error::new(field, format!("must be positive, got {x}")));
+    }
+    Ok(x)
+}
+
+/// A point or vector of three finite numbers at `field`.
+fn vec3(field: &str, v: &Fixed<f64, 3>) -> Result<Vector3<f64>> {
+    let [x, y, z] = v.0;
+    Ok(Vector3::new(num(&format!("{field}[0]"), x)?, num(&format!("{field}[1]"), y)?, num(&format!("{field}[2]"), z)?))
+}
+
+/// Largest absolute component.
+fn max_abs(v: &[f64]) -> f64 {
+    v.iter().fold(0.0f64, |m, x| m.max(x.abs()))
+}
+
+/// The unit quaternion for `[w, x, y, z]` at `field`: zero is an error, a non-unit one is
+/// normalised with a warning.
+fn unit_quaternion(field: &str, q: [f64; 4], warnings: &mut Vec<String>) -> Result<UnitQuaternion<f64>> {
+    for (i, x) in q.iter().enumerate() {
+        num(&format!("{field}[{i}]"), *x)?;
+    }
+    let m = max_abs(&q);
+    if m == 0.0 {
+        return Err(Error::new(field, "zero quaternion: it describes no rotation"));
+    }
+    // Scale first so that the norm neither overflows nor underflows.
+    let s = q.map(|x| x / m);
+    let ns = s.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let norm = ns * m;
+    if (norm - 1.0).abs() > UNIT_TOLERANCE {
+        warnings.push(format!("{field}: quaternion of norm {norm} is not unit; normalised"));
+    }
+    let u = s.map(|x| x / ns);
+    Ok(UnitQuaternion::from_quaternion(Quaternion::new(u[0], u[1], u[2], u[3])))
+}
+
+fn robot(raw: &RawRobot) -> Result<Robot> {
+    let n = raw.cables.len();
+    if n < MIN_CABLES {
+        return Err(Error::new("robot.cables", format!("a 6-DoF robot needs at least {MIN_CABLES} cables, got {n}")));
+    }
+    if n > MAX_CABLES {
+        return Err(Error::new("robot.cables", format!("at most {MAX_CABLES} cables are supported, got {n}")));
+    }
+    let mut anchors = Vec::with_capacity(n);
+    for (i, c) in raw.cables.iter().enumerate() {
+        let base = vec3(&format!("robot.cables[{i}].base"), &c.base)?;
+        let platform = vec3(&format!("robot.cables[{i}].platform"), &c.platform)?;
+        for (j, (b, p)) in anchors.iter().enumerate() {
+            if *b == base && *p == platform {
+                return Err(Error::new(
+                    format!("robot.cables[{i}]"),
+                    format!(
+                        "coincident anchors: cable {} has the same base and platform anchors as cable {} \
+                         (robot.cables[{j}])",
+                        i + 1,
+                        j + 1
+                    ),
+                ));
+            }
+        }
+        anchors.push((base, platform));
+    }
+    let length = bounds("length", raw.length.as_ref(), &raw.cables, |c| c.length.as_ref())?;
+    let tension = bounds("tension", raw.tension.as_ref(), &raw.cables, |c| c.tension.as_ref())?;
+    let diameter = match raw.diameter {
+        Some(d) => non_negative("robot.diameter", d)?,
+        None => 0.0,
+    };
+    let cables = anchors
+        .into_iter()
+        .zip(length)
+        .zip(tension)
+        .map(|(((base, platform), length), tension)| Cable { base, platform, length, tension })
+        .collect();
+    Ok(Robot { cables, diameter })
+}
+
+/// One value of a bound and the JSON path it came from (empty for the default).
+type Sourced = (f64, String);
+
+/// Per-cable bounds for `what` ("length" or "tension"): robot-level defaults (a number or an
+/// array per cable), overridden end by end by a cable's own object.
+fn bounds(
+    what: &str,
+    robot_level: Option<&RawBounds>,
+    cables: &[RawCable],
+    own: impl Fn(&RawCable) -> Option<&RawCableBounds>,
+) -> Result<Vec<Bounds>> {
+    let n = cables.len();
+    let end = |name: &str, default: f64, v: Option<&ScalarOrList>| -> Result<Vec<Sourced>> {
+        let field = format!("robot.{what}.{name}");
+        Ok(match v {
+            None => vec![(default, String::new()); n],
+            Some(ScalarOrList::Scalar(x)) => vec![(*x, field); n],
+            Some(ScalarOrList::List(xs)) => {
+                if xs.len() != n {
+                    return Err(Error::new(
+                        field,
+                        format!("expected a number or {n} numbers (one per cable), got {} numbers", xs.len()),
+                    ));
+                }
+                xs.iter().enumerate().map(|(i, x)| (*x, format!("{field}[{i}]"))).collect()
+            }
+        })
+    };
+    let mut mins = end("min", 0.0, robot_level.and_then(|b| b.min.as_ref()))?;
+    let mut maxs = end("max", f64::INFINITY, robot_level.and_then(|b| b.max.as_ref()))?;
+    let mut out = Vec::with_capacity(n);
+    for (i, cable) in cables.iter().enumerate() {
+        let (Some(lo), Some(hi)) = (mins.get_mut(i), maxs.get_mut(i)) else {
+            return Err(Error::new(format!("robot.{what}"), "internal: bound count mismatch"));
+        };
+        if let Some(b) = own(cable) {
+            if let Some(x) = b.min {
+                *lo = (x, format!("robot.cables[{i}].{what}.min"));
+            }
+            if let Some(x) = b.max {
+                *hi = (x, format!("robot.cables[{i}].{what}.max"));
+            }
+        }
+        for (x, src) in [&*lo, &*hi] {
+            if src.is_empty() {
+                continue; // a default: 0 or +inf
+            }
+            non_negative(src, *x)?;
+        }
+        if lo.0 > hi.0 {
+            let field = if lo.1.starts_with("robot.cables") || hi.1.starts_with("robot.cables") {
+                format!("robot.cables[{i}].{what}")
+            } else {
+                format!("robot.{what}")
+            };
+            return Err(Error::new(field, format!("min {} is greater than max {} for cable {}", lo.0, hi.0, i + 1)));
+        }
+        out.push(Bounds { min: lo.0, max: hi.0 });
+    }
+    Ok(out)
+}
+
+fn clearance(raw: &RawScenario) -> Result<Clearance> {
+    let (cc, co) = match &raw.clearance {
+        Some(c) => (c.cable_cable, c.cable_obstacle),
+        None => (None, None),
+    };
+    Ok(Clearance {
+        cable_cable: match cc {
+            Some(x) => non_negative("clearance.cable_cable", x)?,
+            None => 0.0,
+        },
+        cable_obstacle: match co {
+            Some(x) => non_negative("clearance.cable_obstacle", x)?,
+            None => 0.0,
+        },
+    })
+}
+
+/// Obstacle types and the geometric fields each takes (besides `name` and `type`).
+const OBSTACLE_FIELDS: [(&str, &[&str]); 6] = [
+    ("box", &["center", "size"]),
+    ("mesh", &["vertices", "triangles"]),
+    ("sphere", &["center", "radius"]),
+    ("ellipsoid", &["center", "matrix"]),
+    ("cylinder", &["from", "to", "radius"]),
+    ("cone", &["apex", "axis", "half_angle", "height"]),
+];
+
+/// A field that the obstacle's type requires.
+fn required<'a, T>(path: &str, kind: &str, name: &str, v: &'a Option<T>) -> Result<&'a T> {
+    v.as_ref()
+        .ok_or_else(|| Error::new(format!("{path}.{name}"), format!("missing field `{name}` (required for a {kind})")))
+}
+
+fn obstacles(raw: &[RawObstacle]) -> Result<Vec<Obstacle>> {
+    if raw.len() > MAX_OBSTACLES {
+        return Err(Error::new(
+            "obstacles",
+            format!("at most {MAX_OBSTACLES} obstacles are supported, got {}", raw.len()),
+        ));
+    }
+    let mut out = Vec::with_capacity(raw.len());
+    let mut names: HashMap<String, usize> = HashMap::new();
+    let mut triangles = 0usize;
+    for (k, o) in raw.iter().enumerate() {
+        let path = format!("obstacles[{k}]");
+        let name = match &o.name {
+            Some(s) if s.trim().is_empty() => {
+                return Err(Error::new(format!("{path}.name"), "must not be empty"));
+            }
+            Some(s) => s.clone(),
+            None => format!("obstacle {}", k + 1),
+        };
+        if let Some(j) = names.get(&name) {
+            let field = if o.name.is_some() { format!("{path}.name") } else { path.clone() };
+            return Err(Error::new(field, format!("duplicate obstacle name \"{name}\" (also obstacles[{j}])")));
+        }
+        names.insert(name.clone(), k);
+        let Some((kind, allowed)) = OBSTACLE_FIELDS.iter().find(|(t, _)| *t == o.kind) else {
+            let types: Vec<&str> = OBSTACLE_FIELDS.iter().map(|(t, _)| *t).collect();
+            return Err(Error::new(
+                format!("{path}.type"),
+                format!("unknown obstacle type \"{}\"; expected one of {}", o.kind, types.join(", ")),
+            ));
+        };
+        for f in o.present_fields() {
+            if !allowed.contains(&f) {
+                return Err(Error::new(
+                    format!("{path}.{f}"),
+                    format!("not a field of a {kind} obstacle (its fields: name, type, {})", allowed.join(", ")),
+                ));
+            }
+        }
+        let what = format!("{kind} obstacle");
+        let shape = match *kind {
+            "box" => {
+                let center = vec3(&format!("{path}.center"), required(&path, &what, "center", &o.center)?)?;
+                let size = vec3(&format!("{path}.size"), required(&path, &what, "size", &o.size)?)?;
+                for i in 0..3 {
+                    positive(&format!("{path}.size[{i}]"), size[i])?;
+                }
+                Shape::Mesh(Mesh::cuboid(center, size))
+            }
+            "mesh" => Shape::Mesh(mesh(&path, o)?),
+            "sphere" => Shape::Sphere {
+                center: vec3(&format!("{path}.center"), required(&path, &what, "center", &o.center)?)?,
+                radius: positive(&format!("{path}.radius"), *required(&path, &what, "radius", &o.radius)?)?,
+            },
+            "ellipsoid" => {
+                let center = vec3(&format!("{path}.center"), required(&path, &what, "center", &o.center)?)?;
+                let m = required(&path, &what, "matrix", &o.matrix)?;
+                Shape::Ellipsoid { center, matrix: spd(&format!("{path}.matrix"), m)? }
+            }
+            "cylinder" => {
+                let from = vec3(&format!("{path}.from"), required(&path, &what, "from", &o.from)?)?;
+                let to = vec3(&format!("{path}.to"), required(&path, &what, "to", &o.to)?)?;
+                if from == to {
+                    return Err(Error::new(format!("{path}.to"), "equals `from`: the cylinder axis has zero length"));
+                }
+                let radius = positive(&format!("{path}.radius"), *required(&path, &what, "radius", &o.radius)?)?;
+                Shape::Cylinder { from, to, radius }
+            }
+            _ => {
+                // "cone", the last entry of OBSTACLE_FIELDS.
+                let apex = vec3(&format!("{path}.apex"), required(&path, &what, "apex", &o.apex)?)?;
+                let axis = vec3(&format!("{path}.axis"), required(&path, &what, "axis", &o.axis)?)?;
+                let m = max_abs(axis.as_slice());
+                if m == 0.0 {
+                    return Err(Error::new(format!("{path}.axis"), "zero vector: the cone axis needs a direction"));
+                }
+                let axis = (axis / m).normalize();
+                let field = format!("{path}.half_angle");
+                let half_angle = num(&field, *required(&path, &what, "half_angle", &o.half_angle)?)?;
+                if !(half_angle > 0.0 && half_angle < FRAC_PI_2) {
+                    return Err(Error::new(field, format!("must be in (0, π/2) radians, got {half_angle}")));
+                }
+                let height = positive(&format!("{path}.height"), *required(&path, &what, "height", &o.height)?)?;
+                Shape::Cone { apex, axis, half_angle, height }
+            }
+        };
+        if let Shape::Mesh(m) = &shape {
+            triangles += m.triangles.len();
+            if triangles > MAX_TRIANGLES {
+                return Err(Error::new(
+                    path,
+                    format!(
+                        "the scenario's meshes have more than {MAX_TRIANGLES} triangles in total (a box counts 12)"
+                    ),
+                ));
+            }
+        }
+        out.push(Obstacle { name, shape });
+    }
+    Ok(out)
+}
+
+fn mesh(path: &str, o: &RawObstacle) -> Result<Mesh> {
+    let what = "mesh obstacle";
+    let raw_vertices = required(path, what, "vertices", &o.vertices)?;
+    let raw_triangles = required(path, what, "triangles", &o.triangles)?;
+    if raw_triangles.is_empty() {
+        return Err(Error::new(format!("{path}.triangles"), "a mesh needs at least one triangle"));
+    }
+    if raw_triangles.len() > MAX_TRIANGLES {
+        return Err(Error::new(
+            format!("{path}.triangles"),
+            format!("at most {MAX_TRIANGLES} triangles are supported, got {}", raw_triangles.len()),
+        ));
+    }
+    let vertices = raw_vertices
+        .iter()
+        .enumerate()
+        .map(|(i, v)| vec3(&format!("{path}.vertices[{i}]"), v))
+        .collect::<Result<Vec<_>>>()?;
+    let nv = vertices.len();
+    let mut triangles = Vec::with_capacity(raw_triangles.len());
+    for (t, tri) in raw_triangles.iter().enumerate() {
+        let mut corners = [Vector3::zeros(); 3];
+        for (c, &idx) in tri.0.iter().enumerate() {
+            match vertices.get(idx) {
+                Some(v) => corners[c] = *v,
+                None => {
+                    return Err(Error::new(
+                        format!("{path}.triangles[{t}][{c}]"),
+                        format!("vertex index {idx} out of range: the mesh has {nv} vertices (indices from 0)"),
+                    ))
+                }
+            }
+        }
+        let [a, b, c] = corners;
+        let scale = (b - a).norm().max((c - a).norm()).max((c - b).norm());
+        let area2 = (b - a).cross(&(c - a)).norm();
+        if area2.is_nan() || area2 <= 1e-12 * scale * scale {
+            return Err(Error::new(
+                format!("{path}.triangles[{t}]"),
+                "degenerate triangle (zero area): its corners coincide or are collinear",
+            ));
+        }
+        triangles.push(tri.0);
+    }
+    Ok(Mesh { vertices, triangles })
+}
+
+/// A symmetric positive definite 3×3 matrix at `field`; symmetric up to a relative 1e-9 (then
+/// symmetrised), definiteness by Cholesky.
+fn spd(field: &str, m: &Fixed<Fixed<f64, 3>, 3>) -> Result<Matrix3<f64>> {
+    let mut a = Matrix3::zeros();
+    for (i, row) in m.0.iter().enumerate() {
+        for (j, x) in row.0.iter().enumerate() {
+            a[(i, j)] = num(&format!("{field}[{i}][{j}]"), *x)?;
+        }
+    }
+    let scale = max_abs(a.as_slice());
+    for i in 0..3 {
+        for j in (i + 1)..3 {
+            if (a[(i, j)] - a[(j, i)]).abs() > 1e-9 * scale {
+                return Err(Error::new(
+                    field,
+                    format!("not symmetric: [{i}][{j}] = {} but [{j}][{i}] = {}", a[(i, j)], a[(j, i)]),
+                ));
+            }
+        }
+    }
+    let sym = (a + a.transpose()) * 0.5;
+    if scale == 0.0 || Cholesky::new(sym).is_none() || !sym.iter().all(|x| x.is_finite()) {
+        return Err(Error::new(
+            field,
+            "not positive definite (its Cholesky factorisation fails): an ellipsoid {x : (x−c)ᵀM(x−c) ≤ 1} \
+             needs M with positive eigenvalues",
+        ));
+    }
+    Ok(sym)
+}
+
+fn poses(raw: &[(String, RawPose)], warnings: &mut Vec<String>) -> Result<Vec<(String, Pose)>> {
+    let mut out: Vec<(String, Pose)> = Vec::with_capacity(raw.len());
+    for (name, p) in raw {
+        let path = format!("poses.{name}");
+        if name.is_empty() {
+            return Err(Error::new("poses", "a pose name must not be empty"));
+        }
+        if out.iter().any(|(n, _)| n == name) {
+            return Err(Error::new(path, format!("duplicate pose name \"{name}\"")));
+        }
+        let position = vec3(&format!("{path}.position"), &p.position)?;
+        let given: Vec<&str> = [
+            ("quaternion", p.quaternion.is_some()),
+            ("tilt_torsion", p.tilt_torsion.is_some()),
+            ("euler_xyz_deg", p.euler_xyz_deg.is_some()),
+        ]
+        .iter()
+        .filter(|(_, present)| *present)
+        .map(|(n, _)| *n)
+        .collect();
+        if given.len() != 1 {
+            let got = if given.is_empty() { "none".to_owned() } else { given.join(" and ") };
+            return Err(Error::new(
+                path,
+                format!("give the orientation as exactly one of quaternion, tilt_torsion, euler_xyz_deg; got {got}"),
+            ));
+        }
+        let pose = if let Some(q) = &p.quaternion {
+            Pose { position, rotation: unit_quaternion(&format!("{path}.quaternion"), q.0, warnings)? }
+        } else if let Some(a) = &p.tilt_torsion {
+            canonical(Pose::from_tilt_torsion(position, angles(&format!("{path}.tilt_torsion"), a)?))
+        } else if let Some(a) = &p.euler_xyz_deg {
+            canonical(Pose::from_euler_xyz_deg(position, angles(&format!("{path}.euler_xyz_deg"), a)?))
+        } else {
+            return Err(Error::new(path, "no orientation given"));
+        };
+        out.push((name.clone(), pose));
+    }
+    Ok(out)
+}
+
+fn angles(field: &str, a: &Fixed<f64, 3>) -> Result<[f64; 3]> {
+    let v = vec3(field, a)?;
+    Ok([v.x, v.y, v.z])
+}
+
+/// The quaternion of an orientation given by angles, with its sign chosen so that w ≥ 0 (the
+/// sign is otherwise an artefact of the conversion, and slerps between named poses should
+/// not take the long way round because of it).
+fn canonical(p: Pose) -> Pose {
+    if p.rotation.quaternion().w < 0.0 {
+        Pose { position: p.position, rotation: UnitQuaternion::new_unchecked(-p.rotation.into_inner()) }
+    } else {
+        p
+    }
+}
+
+/// A cable of zero length at a named pose has no direction: an error.
+fn check_cable_lengths(robot: &Robot, poses: &[(String, Pose)]) -> Result<()> {
+    for (name, pose) in poses {
+        for (i, c) in robot.cables.iter().enumerate() {
+            let end = pose.transform(&c.platform);
+            let scale = 1.0 + c.base.norm().max(end.norm());
+            if (end - c.base).norm() <= 1e-12 * scale {
+                return Err(Error::new(
+                    format!("poses.{name}"),
+                    format!("cable {} has zero length at pose {name}", i + 1),
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+fn find_pose<'a>(poses: &'a [(String, Pose)], name: &str) -> Option<&'a Pose> {
+    poses.iter().find(|(n, _)| n == name).map(|(_, p)| p)
+}
+
+fn known_poses(poses: &[(String, Pose)]) -> String {
+    if poses.is_empty() {
+        "the scenario has no poses".to_owned()
+    } else {
+        let names: Vec<&str> = poses.iter().map(|(n, _)| n.as_str()).collect();
+        format!("known poses: {}", names.join(", "))
+    }
+}
+
+fn trajectories(
+    raw: &[RawTrajectory],
+    poses: &[(String, Pose)],
+    warnings: &mut Vec<String>,
+) -> Result<Vec<Trajectory>> {
+    let mut out: Vec<Trajectory> = Vec::with_capacity(raw.len());
+    for (k, t) in raw.iter().enumerate() {
+        let path = format!("trajectories[{k}]");
+        if t.name.trim().is_empty() {
+            return Err(Error::new(format!("{path}.name"), "must not be empty"));
+        }
+        if let Some(j) = out.iter().position(|o| o.name == t.name) {
+            return Err(Error::new(
+                format!("{path}.name"),
+                format!("duplicate trajectory name \"{}\" (also trajectories[{j}])", t.name),
+            ));
+        }
+        let translation = translation(&format!("{path}.translation"), &t.translation)?;
+        let orientation = orientation(&format!("{path}.orientation"), &t.orientation, poses, warnings)?;
+        out.push(Trajectory { name: t.name.clone(), translation, orientation });
+    }
+    Ok(out)
+}
+
+fn translation(path: &str, t: &RawTranslation) -> Result<Translation> {
+    let count = [t.polynomial.is_some(), t.bezier.is_some(), t.line.is_some()].iter().filter(|b| **b).count();
+    if count != 1 {
+        return Err(Error::new(path, format!("give exactly one of polynomial, bezier, line; got {count}")));
+    }
+    if let Some(rows) = &t.polynomial {
+        let field = format!("{path}.polynomial");
+        if rows.len() != 3 {
+            return Err(Error::new(field, format!("expected 3 rows of coefficients (x, y, z), got {}", rows.len())));
+        }
+        let mut out: [Vec<f64>; 3] = Default::default();
+        for (i, (row, slot)) in rows.iter().zip(out.iter_mut()).enumerate() {
+            let rf = format!("{field}[{i}]");
+            if row.is_empty() {
+                return Err(Error::new(rf, "empty row: give at least the constant coefficient"));
+            }
+            let mut coeffs =
+                row.iter().enumerate().map(|(j, x)| num(&format!("{rf}[{j}]"), *x)).collect::<Result<Vec<f64>>>()?;
+            // Trailing zero coefficients do not raise the degree.
+            while coeffs.len() > 1 && coeffs.last() == Some(&0.0) {
+                coeffs.pop();
+            }
+            let degree = coeffs.len() - 1;
+            if degree > MAX_DEGREE {
+                return Err(Error::new(
+                    rf,
+                    format!(
+                        "degree {degree} is above the maximum {MAX_DEGREE}: the exact interference conditions \
+                         have several times the trajectory's degree, and the limit keeps exact verification \
+                         tractable"
+                    ),
+                ));
+            }
+            *slot = coeffs;
+        }
+        return Ok(Translation::Polynomial(out));
+    }
+    if let Some(points) = &t.bezier {
+        let field = format!("{path}.bezier");
+        let n = points.len();
+        if n < 2 {
+            return Err(Error::new(field, format!("a Bézier curve needs at least 2 control points, got {n}")));
+        }
+        if n > MAX_DEGREE + 1 {
+            return Err(Error::new(
+                field,
+                format!(
+                    "at most {} control points (degree {MAX_DEGREE}) are supported, got {n}: the exact \
+                     interference conditions have several times the trajectory's degree, and the limit keeps \
+                     exact verification tractable",
+                    MAX_DEGREE + 1
+                ),
+            ));
+        }
+        let pts =
+            points.iter().enumerate().map(|(i, p)| vec3(&format!("{field}[{i}]"), p)).collect::<Result<Vec<_>>>()?;
+        return Ok(Translation::Bezier(pts));
+    }
+    if let Some(Fixed([a, b])) = &t.line {
+        let field = format!("{path}.line");
+        return Ok(Translation::Line(vec3(&format!("{field}[0]"), a)?, vec3(&format!("{field}[1]"), b)?));
+    }
+    Err(Error::new(path, "give exactly one of polynomial, bezier, line"))
+}
+
+fn orientation(
+    path: &str,
+    o: &RawOrientation,
+    poses: &[(String, Pose)],
+    warnings: &mut Vec<String>,
+) -> Result<Orientation> {
+    let field = format!("{path}.slerp");
+    let mut ends = Vec::with_capacity(2);
+    for (i, r) in o.slerp.0.iter().enumerate() {
+        let f = format!("{field}[{i}]");
+        let q = match r {
+            QuatRef::Quat(q) => unit_quaternion(&f, *q, warnings)?,
+            QuatRef::Pose(name) => match find_pose(poses, name) {
+                Some(p) => p.rotation,
+                None => {
+                    return Err(Error::new(f, format!("unknown pose \"{name}\"; {}", known_poses(poses))));
+                }
+            },
+        };
+        ends.push(q);
+    }
+    let (Some(qs), Some(qe)) = (ends.first().copied(), ends.get(1).copied()) else {
+        return Err(Error::new(field, "expected 2 orientations"));
+    };
+    let dot = qs.coords.dot(&qe.coords);
+    if dot <= -1.0 + 1e-12 {
+        return Err(Error::new(
+            field,
+            "Qs·Qe = −1: the two quaternions are the same rotation with opposite signs, so the slerp between \
+             them is undefined; give both with the same sign",
+        ));
+    }
+    if dot < 0.0 {
+        warnings.push(format!(
+            "{field}: Qs·Qe = {dot} is negative, so the slerp takes the long way round (cos θ = Qs·Qe is used as \
+             given); negate one quaternion for the short way"
+        ));
+    }
+    Ok(Orientation::Slerp(qs, qe))
+}
+
+fn queries(raw: &[RawQuery], poses: &[(String, Pose)]) -> Result<Vec<Query>> {
+    let mut out: Vec<Query> = Vec::with_capacity(raw.len());
+    for (k, q) in raw.iter().enumerate() {
+        let path = format!("queries[{k}]");
+        if q.name.trim().is_empty() {
+            return Err(Error::new(format!("{path}.name"), "must not be empty"));
+        }
+        if let Some(j) = out.iter().position(|o| o.name == q.name) {
+            return Err(Error::new(
+                format!("{path}.name"),
+                format!("duplicate query name \"{}\" (also queries[{j}])", q.name),
+            ));
+        }
+        for (field, name) in [("start", &q.start), ("goal", &q.goal)] {
+            if find_pose(poses, name).is_none() {
+                return Err(Error::new(
+                    format!("{path}.{field}"),
+                    format!("unknown pose \"{name}\"; {}", known_poses(poses)),
+                ));
+            }
+        }
+        let mut fixed = Vec::with_capacity(q.fixed.len());
+        for (i, s) in q.fixed.iter().enumerate() {
+            let f = format!("{path}.fixed[{i}]");
+            let Some(c) = Coord::parse(s) else {
+                let names: Vec<&str> = Coord::ALL.iter().map(|c| c.name()).collect();
+                return Err(Error::new(f, format!("unknown coordinate \"{s}\"; expected one of {}", names.join(", "))));
+            };
+            if fixed.contains(&c) {
+                return Err(Error::new(f, format!("coordinate \"{s}\" is listed twice")));
+            }
+            fixed.push(c);
+        }
+        out.push(Query { name: q.name.clone(), start: q.start.clone(), goal: q.goal.clone(), fixed });
+    }
+    Ok(out)
+}
