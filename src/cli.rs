@@ -181,6 +181,9 @@ fn ray_text(r: &RayReport) -> String {
     if !r.conservative.is_empty() {
         out += &format!("  conservative (enlarged shapes): {}\n", r.conservative.join(", "));
     }
+    for w in &r.warnings {
+        out += &format!("  warning: {w}\n");
+    }
     out
 }
 
@@ -193,6 +196,16 @@ fn check_text(r: &PoseReport) -> String {
         let mark = if c.violated { "VIOLATED" } else { "ok" };
         let exact = if c.exact { "" } else { " (conservative)" };
         out += &format!("  {:<28} {:>12}  {}{}\n", c.constraint, d, mark, exact);
+    }
+    if let Some(w) = &r.wrench {
+        let verdict = if w.feasible { "feasible" } else { "infeasible" };
+        match w.margin {
+            Some(m) => out += &format!("  wrench: {verdict}, margin {m:.6}, active: {}\n", w.active),
+            None => out += &format!("  wrench: {verdict} ({})\n", w.active),
+        }
+        for (i, (lo, hi)) in w.tension_min.iter().zip(&w.tension_max).enumerate() {
+            out += &format!("    cable {} tension ∈ [{lo:.6}, {hi:.6}]\n", i + 1);
+        }
     }
     out
 }

@@ -84,6 +84,8 @@ pub struct RayReport {
     pub uncertain: Vec<[f64; 2]>,
     /// Conditions tested conservatively.
     pub conservative: Vec<String>,
+    /// Notes for the user.
+    pub warnings: Vec<String>,
 }
 
 /// One condition at one pose.
@@ -100,6 +102,26 @@ pub struct CheckEntry {
     pub exact: bool,
 }
 
+/// Wrench feasibility at one pose (6 cables): the tension range of each cable over the wrench set.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct WrenchReport {
+    /// Non-singular, every tension range strictly inside its bounds, every length inside its bounds.
+    pub feasible: bool,
+    /// Whether the structure matrix is singular here (then no tensions are given).
+    pub singular: bool,
+    /// min over cables of min(f0 − v − f_min, f_max − f0 − v); `None` at a singular pose.
+    pub margin: Option<f64>,
+    /// Least tension of each cable over the wrench set, f0 − v.
+    pub tension_min: Vec<f64>,
+    /// Greatest tension of each cable over the wrench set, f0 + v.
+    pub tension_max: Vec<f64>,
+    /// Tension balancing the nominal wrench, f0.
+    pub tension_nominal: Vec<f64>,
+    /// The bound closest to being violated (or violated): `"cable 5 tension lower bound"`,
+    /// `"cable 2 length"`, or `"singular"`.
+    pub active: String,
+}
+
 /// All conditions at one pose.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct PoseReport {
@@ -113,4 +135,7 @@ pub struct PoseReport {
     pub checks: Vec<CheckEntry>,
     /// The labels of the violated conditions.
     pub violated: Vec<String>,
+    /// Wrench feasibility, when the scenario has a wrench section.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wrench: Option<WrenchReport>,
 }

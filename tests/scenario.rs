@@ -351,11 +351,43 @@ fn pose_order_is_file_order() {
 }
 
 #[test]
-fn wrench_is_reserved_and_kept() {
-    let s = ok_with(|v| v["wrench"] = json!({"anything": [1, 2, 3]}));
-    assert_eq!(s.wrench, Some(json!({"anything": [1, 2, 3]})));
-    assert!(s.warnings.iter().any(|w| w.starts_with("wrench:")));
-    expect(|v| v["wrench"] = json!([1, 2]), "wrench", "object");
+fn wrench_section_is_validated() {
+    let six = |v: &mut Value| {
+        v["robot"]["cables"].as_array_mut().unwrap().pop();
+    };
+    let s = ok_with(|v| {
+        six(v);
+        v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 0.01, "point": [0.2, 0.2, 0], "point_frame": "world"});
+    });
+    let w = s.wrench.expect("a wrench");
+    assert!((w.ellipsoid[(0, 0)] - 1e4).abs() < 1e-6 && w.ellipsoid[(0, 1)] == 0.0);
+    assert_eq!(w.frame, cablenav::model::PointFrame::World);
+    let full = |e: Value| {
+        move |v: &mut Value| {
+            six(v);
+            v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "ellipsoid": e});
+        }
+    };
+    let mut e = vec![vec![0.0; 6]; 6];
+    for i in 0..6 {
+        e[i][i] = 2.0;
+    }
+    let s = ok_with(full(json!(e.clone())));
+    assert_eq!(s.wrench.unwrap().frame, cablenav::model::PointFrame::Platform);
+    let mut asym = e.clone();
+    asym[0][1] = 1.0;
+    expect(full(json!(asym)), "wrench.ellipsoid", "not symmetric");
+    let mut indefinite = e.clone();
+    indefinite[3][3] = -1.0;
+    expect(full(json!(indefinite)), "wrench.ellipsoid", "positive definite");
+    expect(full(json!([[1, 0], [0, 1]])), "wrench.ellipsoid[0]", "expected 6");
+    expect(|v| { six(v); v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0]}); }, "wrench", "radius");
+    expect(|v| { six(v); v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1, "ellipsoid": e}); }, "wrench", "not both");
+    expect(|v| { six(v); v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": -1}); }, "wrench.radius", "");
+    expect(|v| { six(v); v["wrench"] = json!({"nominal": [0, 0, 1], "radius": 1}); }, "wrench.nominal", "expected 6");
+    expect(|v| { six(v); v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1, "point_frame": "moon"}); }, "wrench.point_frame", "moon");
+    expect(|v| { six(v); v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1, "mass": 3}); }, "wrench.mass", "unknown field");
+    expect(|v| v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1}), "wrench", "exactly 6 cables");
 }
 
 #[test]

@@ -5,8 +5,10 @@ pub mod motion;
 pub mod pose;
 pub mod robot;
 pub mod trajectory;
+pub mod wrench;
 
 pub use motion::Motion;
 pub use pose::{Coord, Pose};
 pub use robot::{Bounds, Cable, Clearance, Robot};
 pub use trajectory::{Orientation, Trajectory, Translation};
+pub use wrench::{PointFrame, Wrench};

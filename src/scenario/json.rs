@@ -28,9 +28,8 @@ pub struct RawScenario {
     pub format: String,
     pub name: String,
     pub robot: RawRobot,
-    /// Reserved for wrench data (a later version); kept as given.
     #[serde(default)]
-    pub wrench: Option<serde_json::Value>,
+    pub wrench: Option<RawWrench>,
     #[serde(default)]
     pub clearance: Option<RawClearance>,
     #[serde(default)]
@@ -41,6 +40,21 @@ pub struct RawScenario {
     pub trajectories: Vec<RawTrajectory>,
     #[serde(default)]
     pub queries: Vec<RawQuery>,
+}
+
+/// The wrench set: nominal wrench, ellipsoid (a 6×6 matrix or a radius), application point.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawWrench {
+    pub nominal: Fixed<f64, 6>,
+    #[serde(default)]
+    pub ellipsoid: Option<Fixed<Fixed<f64, 6>, 6>>,
+    #[serde(default)]
+    pub radius: Option<f64>,
+    #[serde(default)]
+    pub point: Option<Fixed<f64, 3>>,
+    #[serde(default)]
+    pub point_frame: Option<String>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -220,6 +234,10 @@ impl Noun for usize {
 
 impl Noun for Fixed<f64, 3> {
     const NOUN: &'static str = "points [x, y, z]";
+}
+
+impl Noun for Fixed<f64, 6> {
+    const NOUN: &'static str = "rows of 6 numbers";
 }
 
 impl Noun for QuatRef {

@@ -5,7 +5,7 @@ pub mod json;
 pub mod validate;
 
 use crate::error::{Error, Result};
-use crate::model::{Clearance, Coord, Pose, Robot, Trajectory};
+use crate::model::{Clearance, Coord, Pose, Robot, Trajectory, Wrench};
 use crate::shape::Obstacle;
 
 pub use json::FORMAT;
@@ -41,9 +41,8 @@ pub struct Scenario {
     pub trajectories: Vec<Trajectory>,
     /// Planning queries.
     pub queries: Vec<Query>,
-    /// The `wrench` object, reserved for wrench-feasibility data that a later version defines;
-    /// kept as given (an object) and not interpreted yet.
-    pub wrench: Option<serde_json::Value>,
+    /// The wrench set the robot must withstand, if any.
+    pub wrench: Option<Wrench>,
     /// Things the user should know that did not stop parsing (e.g. a quaternion normalised).
     pub warnings: Vec<String>,
 }

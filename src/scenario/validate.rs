@@ -1,17 +1,17 @@
 //! Validation of the raw JSON into the model. Every check names the JSON path of the offending
 //! value; nothing here indexes user data unchecked or unwraps it, so no input can panic.
 
-use nalgebra::{Cholesky, Matrix3, Quaternion, UnitQuaternion, Vector3};
+use nalgebra::{Cholesky, Const, Matrix6, Quaternion, SMatrix, UnitQuaternion, Vector3, Vector6};
 use std::collections::HashMap;
 use std::f64::consts::FRAC_PI_2;
 
 use super::json::{
     Fixed, QuatRef, RawBounds, RawCable, RawCableBounds, RawObstacle, RawOrientation, RawPose, RawQuery, RawRobot,
-    RawScenario, RawTrajectory, RawTranslation, ScalarOrList,
+    RawScenario, RawTrajectory, RawTranslation, RawWrench, ScalarOrList,
 };
 use super::{Query, Scenario};
 use crate::error::{finite, Error, Result};
-use crate::model::{Bounds, Cable, Clearance, Coord, Orientation, Pose, Robot, Trajectory, Translation};
+use crate::model::{Bounds, Cable, Clearance, Coord, Orientation, PointFrame, Pose, Robot, Trajectory, Translation, Wrench};
 use crate::shape::{Mesh, Obstacle, Shape};
 
 /// Fewest cables of a 6-DoF robot.
@@ -39,16 +39,17 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
     check_cable_lengths(&robot, &poses)?;
     let trajectories = trajectories(&raw.trajectories, &poses, &mut warnings)?;
     let queries = queries(&raw.queries, &poses)?;
-    let wrench = match raw.wrench {
-        None => None,
-        Some(v) if v.is_object() => {
-            warnings.push(
-                "wrench: reserved for wrench-feasibility data of a later version; kept but not used yet".to_owned(),
-            );
-            Some(v)
-        }
-        Some(_) => return Err(Error::new("wrench", "must be an object (reserved for wrench data)")),
-    };
+    let wrench = raw.wrench.as_ref().map(wrench).transpose()?;
+    if wrench.is_some() && robot.cables.len() != 6 {
+        return Err(Error::new(
+            "wrench",
+            format!(
+                "the ellipsoidal wrench test needs exactly 6 cables (a square structure matrix); this robot has {}. \
+                 Wrench conditions for more cables are not supported yet",
+                robot.cables.len()
+            ),
+        ));
+    }
     Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses, trajectories, queries, wrench, warnings })
 }
 
@@ -301,7 +302,7 @@ fn obstacles(raw: &[RawObstacle]) -> Result<Vec<Obstacle>> {
             "ellipsoid" => {
                 let center = vec3(&format!("{path}.center"), required(&path, &what, "center", &o.center)?)?;
                 let m = required(&path, &what, "matrix", &o.matrix)?;
-                Shape::Ellipsoid { center, matrix: spd(&format!("{path}.matrix"), m)? }
+                Shape::Ellipsoid { center, matrix: spd(&format!("{path}.matrix"), m, "an ellipsoid {x : (x−c)ᵀM(x−c) ≤ 1} needs M with positive eigenvalues")? }
             }
             "cylinder" => {
                 let from = vec3(&format!("{path}.from"), required(&path, &what, "from", &o.from)?)?;
@@ -393,18 +394,18 @@ fn mesh(path: &str, o: &RawObstacle) -> Result<Mesh> {
     Ok(Mesh { vertices, triangles })
 }
 
-/// A symmetric positive definite 3×3 matrix at `field`; symmetric up to a relative 1e-9 (then
+/// A symmetric positive definite N×N matrix at `field`; symmetric up to a relative 1e-9 (then
 /// symmetrised), definiteness by Cholesky.
-fn spd(field: &str, m: &Fixed<Fixed<f64, 3>, 3>) -> Result<Matrix3<f64>> {
-    let mut a = Matrix3::zeros();
+fn spd<const N: usize>(field: &str, m: &Fixed<Fixed<f64, N>, N>, what: &str) -> Result<SMatrix<f64, N, N>> {
+    let mut a = SMatrix::<f64, N, N>::zeros();
     for (i, row) in m.0.iter().enumerate() {
         for (j, x) in row.0.iter().enumerate() {
             a[(i, j)] = num(&format!("{field}[{i}][{j}]"), *x)?;
         }
     }
     let scale = max_abs(a.as_slice());
-    for i in 0..3 {
-        for j in (i + 1)..3 {
+    for i in 0..N {
+        for j in (i + 1)..N {
             if (a[(i, j)] - a[(j, i)]).abs() > 1e-9 * scale {
                 return Err(Error::new(
                     field,
@@ -414,14 +415,38 @@ fn spd(field: &str, m: &Fixed<Fixed<f64, 3>, 3>) -> Result<Matrix3<f64>> {
         }
     }
     let sym = (a + a.transpose()) * 0.5;
-    if scale == 0.0 || Cholesky::new(sym).is_none() || !sym.iter().all(|x| x.is_finite()) {
-        return Err(Error::new(
-            field,
-            "not positive definite (its Cholesky factorisation fails): an ellipsoid {x : (x−c)ᵀM(x−c) ≤ 1} \
-             needs M with positive eigenvalues",
-        ));
+    if scale == 0.0 || Cholesky::<f64, Const<N>>::new(sym).is_none() || !sym.iter().all(|x| x.is_finite()) {
+        return Err(Error::new(field, format!("not positive definite (its Cholesky factorisation fails): {what}")));
     }
     Ok(sym)
+}
+
+/// The wrench section: E from `ellipsoid` or from `radius` (E = I/radius²), exactly one of them.
+fn wrench(raw: &RawWrench) -> Result<Wrench> {
+    let nominal = Vector6::from_fn(|i, _| raw.nominal.0[i]);
+    for i in 0..6 {
+        num(&format!("wrench.nominal[{i}]"), nominal[i])?;
+    }
+    let ellipsoid = match (&raw.ellipsoid, raw.radius) {
+        (Some(m), None) => spd("wrench.ellipsoid", m, "the wrench set {w : (w−w0)ᵀE(w−w0) ≤ 1} needs E with positive eigenvalues")?,
+        (None, Some(r)) => Matrix6::identity() / positive("wrench.radius", r)?.powi(2),
+        (Some(_), Some(_)) => return Err(Error::new("wrench", "give either \"ellipsoid\" or \"radius\", not both")),
+        (None, None) => return Err(Error::new("wrench", "needs \"ellipsoid\" (a 6×6 SPD matrix E) or \"radius\"")),
+    };
+    let ellipsoid_inv = ellipsoid
+        .try_inverse()
+        .filter(|m| m.iter().all(|x| x.is_finite()))
+        .ok_or_else(|| Error::new("wrench.ellipsoid", "cannot be inverted in floating point"))?;
+    let point = match &raw.point {
+        Some(p) => vec3("wrench.point", p)?,
+        None => Vector3::zeros(),
+    };
+    let frame = match raw.point_frame.as_deref() {
+        None | Some("platform") => PointFrame::Platform,
+        Some("world") => PointFrame::World,
+        Some(other) => return Err(Error::new("wrench.point_frame", format!("{other:?} is not \"platform\" or \"world\""))),
+    };
+    Ok(Wrench { nominal, ellipsoid, ellipsoid_inv, point, frame })
 }
 
 fn poses(raw: &[(String, RawPose)], warnings: &mut Vec<String>) -> Result<Vec<(String, Pose)>> {

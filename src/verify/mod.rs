@@ -12,7 +12,8 @@ use crate::error::{Error, Result};
 use crate::model::motion::Param;
 use crate::model::{Coord, Motion, Pose, Trajectory};
 use crate::poly::{Partition, Truth};
-use crate::report::{Boundary, CheckEntry, PoseReport, RayBoundary, RayReport, VerifyReport};
+use crate::query::wrench::tension_ranges;
+use crate::report::{Boundary, CheckEntry, PoseReport, RayBoundary, RayReport, VerifyReport, WrenchReport};
 use crate::scenario::Scenario;
 
 /// Accuracy of reported boundaries, in the user's parameter (t, or the ray's coordinate).
@@ -59,6 +60,7 @@ pub fn verify_trajectory(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport
     let (overall, per) = violation_pieces(&conditions, s, std::slice::from_ref(&motion), BOUNDARY_TOL);
     let sec = sections(&overall, &per, BOUNDARY_TOL);
     let mut warnings = s.warnings.clone();
+    warnings.extend(wrench_not_along_motions(s));
     if !sec.uncertain.is_empty() {
         warnings.push(format!("{} section(s) could not be certified either way; see \"uncertain\"", sec.uncertain.len()));
     }
@@ -110,6 +112,58 @@ pub fn ray(s: &Scenario, pose_name: &str, coord: Coord, lo: f64, hi: f64) -> Res
         boundaries: sec.boundaries.into_iter().map(|(value, constraint, enters)| RayBoundary { value, constraint, enters }).collect(),
         uncertain: sec.uncertain,
         conservative: conservative_labels(&conditions),
+        warnings: wrench_not_along_motions(s).into_iter().collect(),
+    })
+}
+
+/// The warning that sections along motions do not include the wrench set yet.
+fn wrench_not_along_motions(s: &Scenario) -> Option<String> {
+    s.wrench.as_ref().map(|_| {
+        "the wrench set is checked per pose (`check`), not yet along trajectories and rays: these sections cover \
+         interference and cable lengths only"
+            .to_string()
+    })
+}
+
+/// Wrench feasibility of the scenario's 6-cable robot at `pose` (Bohigas et al. §3), if the
+/// scenario has a wrench section.
+pub fn wrench_at(s: &Scenario, pose: &Pose) -> Option<WrenchReport> {
+    let wrench = s.wrench.as_ref()?;
+    let cables = &s.robot.cables;
+    let lengths: Vec<f64> = cables_at(&s.robot, pose).iter().map(|(a, x)| (x - a).norm()).collect();
+    let bad_length = cables.iter().zip(&lengths).position(|(c, &l)| !(l > c.length.min && l < c.length.max));
+    let Some(ranges) = tension_ranges(&s.robot, pose, wrench) else {
+        return Some(WrenchReport {
+            feasible: false,
+            singular: true,
+            margin: None,
+            tension_min: vec![],
+            tension_max: vec![],
+            tension_nominal: vec![],
+            active: "singular".to_string(),
+        });
+    };
+    let mut margin = f64::INFINITY;
+    let mut active = String::new();
+    for (i, (r, c)) in ranges.iter().zip(cables).enumerate() {
+        for (m, bound) in [(r.nominal - r.spread - c.tension.min, "lower"), (c.tension.max - r.nominal - r.spread, "upper")] {
+            if m < margin {
+                margin = m;
+                active = format!("cable {} tension {bound} bound", i + 1);
+            }
+        }
+    }
+    if let Some(i) = bad_length {
+        active = format!("cable {} length", i + 1);
+    }
+    Some(WrenchReport {
+        feasible: margin > 0.0 && bad_length.is_none(),
+        singular: false,
+        margin: Some(margin),
+        tension_min: ranges.iter().map(|r| r.nominal - r.spread).collect(),
+        tension_max: ranges.iter().map(|r| r.nominal + r.spread).collect(),
+        tension_nominal: ranges.iter().map(|r| r.nominal).collect(),
+        active,
     })
 }
 
@@ -130,5 +184,6 @@ pub fn check_pose(s: &Scenario, name: &str, pose: &Pose) -> PoseReport {
         lengths: cables.iter().map(|(a, x)| (x - a).norm()).collect(),
         checks,
         violated,
+        wrench: wrench_at(s, pose),
     }
 }

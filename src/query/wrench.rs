@@ -1,0 +1,53 @@
+//! Per-pose wrench feasibility of a 6-cable robot (Bohigas et al. §3).
+//!
+//! The structure matrix J has one column per cable, [e_i ; (x_i − c) × e_i], where e_i is the unit
+//! vector from the base anchor to the platform anchor x_i and c the wrench's application point.
+//! Tensions f ≥ 0 pull the platform towards the base anchors and balance the applied wrench when
+//! J f = w. Over the ellipsoid W the tensions form the ellipsoid f0 + J⁻¹(w − w0), so cable i
+//! ranges over f0,i ± v_ii with f0 = J⁻¹ w0 and v_ii = sqrt((J⁻¹ E⁻¹ J⁻ᵀ)_ii).
+
+use crate::model::{Pose, Robot, Wrench};
+use nalgebra::{Matrix6, Vector3};
+
+/// Below this |det J| / Π‖column‖ (Hadamard ratio) a pose counts as singular.
+pub const SINGULAR_RATIO: f64 = 1e-10;
+
+/// The structure matrix of `robot` at `pose` with moments about `point`.
+pub fn structure_matrix(robot: &Robot, pose: &Pose, point: &Vector3<f64>) -> Matrix6<f64> {
+    let mut j = Matrix6::zeros();
+    for (i, cable) in robot.cables.iter().take(6).enumerate() {
+        let x = pose.transform(&cable.platform);
+        let d = x - cable.base;
+        let e = d / d.norm();
+        let m = (x - point).cross(&e);
+        for k in 0..3 {
+            j[(k, i)] = e[k];
+            j[(k + 3, i)] = m[k];
+        }
+    }
+    j
+}
+
+/// Tension range of one cable over the wrench set.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TensionRange {
+    /// Tension balancing the nominal wrench, f0,i.
+    pub nominal: f64,
+    /// Half-width v_ii of the range over the ellipsoid.
+    pub spread: f64,
+}
+
+/// The tension ranges of the six cables at `pose`, or `None` at a singular pose (J not
+/// invertible to within [`SINGULAR_RATIO`]).
+pub fn tension_ranges(robot: &Robot, pose: &Pose, wrench: &Wrench) -> Option<[TensionRange; 6]> {
+    let j = structure_matrix(robot, pose, &wrench.point_at(pose));
+    let scale: f64 = (0..6).map(|i| j.column(i).norm()).product();
+    let lu = j.lu();
+    if !(lu.determinant().abs() > SINGULAR_RATIO * scale) {
+        return None;
+    }
+    let inv = lu.try_inverse()?;
+    let f0 = inv * wrench.nominal;
+    let v = inv * wrench.ellipsoid_inv * inv.transpose();
+    Some(std::array::from_fn(|i| TensionRange { nominal: f0[i], spread: v[(i, i)].max(0.0).sqrt() }))
+}
