@@ -5,7 +5,8 @@
 use crate::error::{Error, Result};
 use crate::model::Coord;
 use crate::report::{PoseReport, RayReport, Side, VerifyReport};
-use crate::verify::{check_pose, ray, verify_pointwise, verify_trajectory};
+use crate::verify::slice::{default_range, Class, SliceMap};
+use crate::verify::{check_pose, ray, slice, verify_pointwise, verify_trajectory};
 use crate::Scenario;
 use serde::Serialize;
 
@@ -15,11 +16,14 @@ usage:
   cablenav verify SCENARIO [--trajectory NAME] [--pointwise DT] [--json]
   cablenav ray    SCENARIO --pose NAME --vary x|y|z|phi|theta|sigma --range LO HI [--json]
   cablenav check  SCENARIO --pose NAME [--json]
+  cablenav slice  SCENARIO --pose NAME --axes A,B --res N [--range LO HI LO HI] [--png FILE] [--json]
 
 SCENARIO is a cablenav-scenario/1 JSON file (docs/scenario-format.md).
 verify  feasible/infeasible t-sections of a trajectory (exact; --pointwise DT samples instead)
 ray     feasible intervals of one pose coordinate, the others fixed at the pose's values
-check   lengths, distances and violated conditions at one pose";
+check   lengths, distances, violated conditions and the wrench set's tension ranges at one pose
+slice   classify a res×res grid over two coordinates (others from the pose) and find the
+        connected components of its feasible cells; angles default to [-pi, pi]";
 
 /// Parsed options of one command.
 struct Opts {
@@ -28,10 +32,10 @@ struct Opts {
 }
 
 impl Opts {
-    fn parse(args: &[String]) -> Result<Opts> {
+    fn parse(args: &[String], slice: bool) -> Result<Opts> {
         let takes = |f: &str| match f {
-            "--trajectory" | "--pointwise" | "--pose" | "--vary" => Some(1),
-            "--range" => Some(2),
+            "--trajectory" | "--pointwise" | "--pose" | "--vary" | "--axes" | "--res" | "--png" => Some(1),
+            "--range" => Some(if slice { 4 } else { 2 }),
             "--json" => Some(0),
             _ => None,
         };
@@ -90,15 +94,20 @@ fn to_json<T: Serialize>(v: &T) -> Result<String> {
     serde_json::to_string_pretty(v).map_err(|e| Error::new("output", e.to_string()))
 }
 
-/// Runs one command. `read` loads a scenario file by path.
-pub fn run(args: &[String], read: &dyn Fn(&str) -> Result<String>) -> Result<String> {
+/// Reads a scenario file by path.
+pub type Read<'a> = &'a dyn Fn(&str) -> Result<String>;
+/// Writes an output file (`--png`) by path.
+pub type Write<'a> = &'a dyn Fn(&str, &[u8]) -> Result<()>;
+
+/// Runs one command and returns what to print.
+pub fn run(args: &[String], read: Read, write: Write) -> Result<String> {
     let Some((command, rest)) = args.split_first() else {
         return Err(Error::new("", format!("no command given\n{USAGE}")));
     };
     if command == "--help" || command == "-h" || command == "help" {
         return Ok(USAGE.to_string());
     }
-    let o = Opts::parse(rest)?;
+    let o = Opts::parse(rest, command == "slice")?;
     let path = match o.positional.as_slice() {
         [p] => p.as_str(),
         [] => return Err(Error::new("SCENARIO", "no scenario file given")),
@@ -129,6 +138,31 @@ pub fn run(args: &[String], read: &dyn Fn(&str) -> Result<String>) -> Result<Str
             let name = o.required("--pose")?;
             let report = check_pose(&scenario, name, scenario.pose(name)?);
             if o.json() { to_json(&report) } else { Ok(check_text(&report)) }
+        }
+        "slice" => {
+            o.allow(&["--pose", "--axes", "--res", "--range", "--png", "--json"])?;
+            let pose = o.required("--pose")?;
+            let axes_text = o.required("--axes")?;
+            let axes: Vec<Coord> = axes_text.split(',').map(|a| Coord::parse(a.trim())).collect::<Option<_>>().filter(|v: &Vec<Coord>| v.len() == 2).ok_or_else(|| {
+                Error::new("--axes", format!("{axes_text:?} is not two of x, y, z, phi, theta, sigma separated by a comma"))
+            })?;
+            let res_text = o.required("--res")?;
+            let res: usize = res_text.parse().map_err(|_| Error::new("--res", format!("not a whole number: {res_text:?}")))?;
+            let range = match o.get("--range") {
+                Some(r) => {
+                    let v = r.iter().map(|x| number("--range", x)).collect::<Result<Vec<f64>>>()?;
+                    [[v[0], v[1]], [v[2], v[3]]]
+                }
+                None => {
+                    let pick = |c: Coord| default_range(c).ok_or_else(|| Error::new("--range", format!("is required for the position axis {}", c.name())));
+                    [pick(axes[0])?, pick(axes[1])?]
+                }
+            };
+            let map = slice(&scenario, pose, [axes[0], axes[1]], res, range)?;
+            if let Some(path) = o.one("--png") {
+                write(path, &map.png())?;
+            }
+            if o.json() { to_json(&map) } else { Ok(slice_text(&map)) }
         }
         other => Err(Error::new("", format!("unknown command {other:?}\n{USAGE}"))),
     }
@@ -205,6 +239,33 @@ fn check_text(r: &PoseReport) -> String {
         }
         for (i, (lo, hi)) in w.tension_min.iter().zip(&w.tension_max).enumerate() {
             out += &format!("    cable {} tension ∈ [{lo:.6}, {hi:.6}]\n", i + 1);
+        }
+    }
+    out
+}
+
+fn slice_text(m: &SliceMap) -> String {
+    let mut out = format!(
+        "slice over ({}, {}) ∈ [{}, {}] × [{}, {}], {}×{} cells\n  feasible: {:.2}% in {} component(s)\n",
+        m.axes[0], m.axes[1], m.range[0][0], m.range[0][1], m.range[1][0], m.range[1][1], m.res, m.res,
+        100.0 * m.fraction_feasible, m.components
+    );
+    for (name, c) in &m.pose_components {
+        out += &format!("  pose {name}: {}\n", c.map_or("infeasible".to_string(), |c| format!("component {c}")));
+    }
+    if m.res <= 100 {
+        out += &format!("  map ({} to the right, {} upwards; . feasible, T tension, L length, S singular, X interference):\n", m.axes[0], m.axes[1]);
+        for j in (0..m.res).rev() {
+            let row: String = (0..m.res)
+                .map(|i| match m.classes[j * m.res + i] {
+                    Class::Feasible => '.',
+                    Class::Tension => 'T',
+                    Class::Length => 'L',
+                    Class::Singular => 'S',
+                    Class::Interference => 'X',
+                })
+                .collect();
+            out += &format!("  {row}\n");
         }
     }
     out

@@ -5,7 +5,8 @@ use std::process::ExitCode;
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let read = |path: &str| std::fs::read_to_string(path).map_err(|e| cablenav::Error::new(path, format!("cannot read: {e}")));
-    match std::panic::catch_unwind(|| cablenav::cli::run(&args, &read)) {
+    let write = |path: &str, bytes: &[u8]| std::fs::write(path, bytes).map_err(|e| cablenav::Error::new(path, format!("cannot write: {e}")));
+    match std::panic::catch_unwind(|| cablenav::cli::run(&args, &read, &write)) {
         Ok(Ok(out)) => {
             println!("{}", out.trim_end());
             ExitCode::SUCCESS

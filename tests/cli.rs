@@ -11,6 +11,7 @@ fn files(path: &str) -> cablenav::Result<String> {
         "cdpr7.json" => Ok(include_str!("../static/scenarios/cdpr7.json").to_string()),
         "box.json" => Ok(include_str!("../static/scenarios/cdpr7-box.json").to_string()),
         "tree.json" => Ok(include_str!("../static/scenarios/cdpr7-tree.json").to_string()),
+        "robocrane.json" => Ok(include_str!("../static/scenarios/robocrane.json").to_string()),
         "broken.json" => Ok("{\"format\": \"cablenav-scenario/1\", \"robot\": ".to_string()),
         other => Err(Error::new(other, "cannot read: no such file")),
     }
@@ -18,7 +19,7 @@ fn files(path: &str) -> cablenav::Result<String> {
 
 fn cli(args: &str) -> cablenav::Result<String> {
     let args: Vec<String> = args.split_whitespace().map(String::from).collect();
-    run(&args, &files)
+    run(&args, &files, &|_, _| Ok(()))
 }
 
 fn json(args: &str) -> serde_json::Value {
@@ -77,6 +78,34 @@ fn bad_command_lines_name_the_culprit() {
         ("check cdpr7.json --pose start --trajectory linear", "--trajectory"),
     ];
     for (args, field) in cases {
+        let e = cli(args).expect_err(args);
+        assert!(e.to_string().contains(field), "{args:?} → {e}");
+    }
+}
+
+#[test]
+fn slice_json_png_and_errors() {
+    let v = json("slice robocrane.json --pose q1 --axes phi,theta --res 40 --json");
+    assert_eq!(v["axes"], serde_json::json!(["phi", "theta"]));
+    assert_eq!(v["res"], 40);
+    assert_eq!(v["classes"].as_array().unwrap().len(), 1600);
+    assert!(v["pose_components"]["q1"].is_u64());
+    assert_eq!(v["pose_components"]["q1"], v["pose_components"]["q2"]);
+    let written = std::cell::RefCell::new(Vec::new());
+    let args: Vec<String> = "slice robocrane.json --pose q1 --axes phi,theta --res 20 --png out.png".split(' ').map(String::from).collect();
+    let text = run(&args, &files, &|path, bytes| {
+        written.borrow_mut().push((path.to_string(), bytes.len()));
+        Ok(())
+    })
+    .unwrap();
+    assert!(text.contains("component"));
+    assert_eq!(written.borrow()[0].0, "out.png");
+    for (args, field) in [
+        ("slice robocrane.json --pose q1 --axes phi --res 10", "--axes"),
+        ("slice robocrane.json --pose q1 --axes phi,theta --res ten", "--res"),
+        ("slice robocrane.json --pose q1 --axes x,y --res 10", "--range"),
+        ("slice robocrane.json --pose q1 --axes x,y --res 10 --range 0 1 2", "--range"),
+    ] {
         let e = cli(args).expect_err(args);
         assert!(e.to_string().contains(field), "{args:?} → {e}");
     }

@@ -3,9 +3,11 @@
 
 mod pointwise;
 mod sections;
+pub mod slice;
 
 pub use pointwise::verify_pointwise;
 pub use sections::{sections, Labelled, Piece, Sections};
+pub use slice::{slice, SliceMap};
 
 use crate::conditions::{cables_at, for_scenario, Condition, Sweep};
 use crate::error::{Error, Result};

@@ -1,0 +1,231 @@
+//! Slice maps: a cell-centred res × res grid over two pose coordinates, the others fixed from a
+//! pose, each cell classified by the conditions at its centre; and the 4-neighbour connected
+//! components of the feasible cells (Bohigas et al. Fig. 5).
+
+use super::wrench_at;
+use crate::conditions::{cables_at, for_scenario, Condition};
+use crate::error::{Error, Result};
+use crate::model::{Coord, Pose};
+use crate::scenario::Scenario;
+use serde::Serialize;
+use std::f64::consts::PI;
+
+/// Largest grid side accepted.
+pub const MAX_RES: usize = 2000;
+
+/// What holds at a cell centre.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Class {
+    /// Every condition holds.
+    Feasible,
+    /// Some cable's tension range leaves its bounds over the wrench set.
+    Tension,
+    /// Some cable length is out of its bounds.
+    Length,
+    /// The structure matrix is singular.
+    Singular,
+    /// A clearance (cable–cable or cable–obstacle) is violated.
+    Interference,
+}
+
+/// A classified slice.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SliceMap {
+    /// The two coordinates, first along the columns (i), second along the rows (j).
+    pub axes: [String; 2],
+    /// The ranges [lo, hi] of the two axes.
+    pub range: [[f64; 2]; 2],
+    /// Grid side.
+    pub res: usize,
+    /// The six coordinates of the fixed pose (the axes' entries are overwritten per cell).
+    pub fixed: [f64; 6],
+    /// Share of feasible cells.
+    pub fraction_feasible: f64,
+    /// Number of connected components of feasible cells.
+    pub components: usize,
+    /// Cell classes, row-major: index j·res + i, i along the first axis.
+    pub classes: Vec<Class>,
+    /// Component id (0-based) of each cell, `None` where infeasible.
+    pub component: Vec<Option<usize>>,
+    /// For every scenario pose on the slice, the component of its cell (`None` if infeasible);
+    /// serialised as an object `{"q1": id, …}` in file order.
+    #[serde(serialize_with = "as_object")]
+    pub pose_components: Vec<(String, Option<usize>)>,
+}
+
+fn as_object<S: serde::Serializer>(v: &[(String, Option<usize>)], ser: S) -> std::result::Result<S::Ok, S::Error> {
+    use serde::ser::SerializeMap;
+    let mut m = ser.serialize_map(Some(v.len()))?;
+    for (k, c) in v {
+        m.serialize_entry(k, c)?;
+    }
+    m.end()
+}
+
+impl SliceMap {
+    /// The map as an RGB image, one pixel per cell, the second axis growing upwards: feasible
+    /// green, tension out of range blue, length out of range red, singular black, interference
+    /// orange (the colours of paper 1 Fig. 5, plus two).
+    pub fn png(&self) -> Vec<u8> {
+        let colour = |c: Class| match c {
+            Class::Feasible => [46, 160, 67],
+            Class::Tension => [59, 111, 216],
+            Class::Length => [208, 59, 59],
+            Class::Singular => [0, 0, 0],
+            Class::Interference => [230, 145, 30],
+        };
+        let pixels: Vec<[u8; 3]> = (0..self.res).rev().flat_map(|j| (0..self.res).map(move |i| (i, j))).map(|(i, j)| colour(self.classes[j * self.res + i])).collect();
+        crate::png::encode_rgb(self.res as u32, self.res as u32, &pixels)
+    }
+
+    /// Centre value of cell `k` along axis `a` (0 or 1).
+    pub fn center(&self, a: usize, k: usize) -> f64 {
+        let [lo, hi] = self.range[a];
+        lo + (hi - lo) * (k as f64 + 0.5) / self.res as f64
+    }
+
+    /// The cell holding `value` along axis `a`, if inside the range.
+    fn cell(&self, a: usize, value: f64) -> Option<usize> {
+        let [lo, hi] = self.range[a];
+        if !(value >= lo && value <= hi) {
+            return None;
+        }
+        Some((((value - lo) / (hi - lo)) * self.res as f64).floor().min(self.res as f64 - 1.0) as usize)
+    }
+}
+
+/// Default range of a coordinate: [−π, π] for angles; none for positions.
+pub fn default_range(c: Coord) -> Option<[f64; 2]> {
+    c.is_angle().then_some([-PI, PI])
+}
+
+fn classify(s: &Scenario, conditions: &[Box<dyn Condition>], pose: &Pose) -> Class {
+    let cables = cables_at(&s.robot, pose);
+    let length_bad = s.robot.cables.iter().zip(&cables).any(|(c, (a, x))| {
+        let l = (x - a).norm();
+        !(l >= c.length.min && l <= c.length.max)
+    });
+    if length_bad {
+        return Class::Length;
+    }
+    if let Some(w) = wrench_at(s, pose) {
+        if w.singular {
+            return Class::Singular;
+        }
+        if !w.feasible {
+            return Class::Tension;
+        }
+    }
+    if conditions.iter().any(|c| c.check(&cables).violated) {
+        return Class::Interference;
+    }
+    Class::Feasible
+}
+
+/// Classifies the slice of `s` through pose `pose_name` over `axes` with `res` cells per side.
+pub fn slice(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range: [[f64; 2]; 2]) -> Result<SliceMap> {
+    if axes[0] == axes[1] {
+        return Err(Error::new("--axes", "the two axes must differ"));
+    }
+    if res == 0 || res > MAX_RES {
+        return Err(Error::new("--res", format!("must be between 1 and {MAX_RES}, got {res}")));
+    }
+    for r in range {
+        if !(r[0].is_finite() && r[1].is_finite() && r[0] < r[1]) {
+            return Err(Error::new("--range", format!("needs finite LO < HI, got {} {}", r[0], r[1])));
+        }
+    }
+    let fixed = s.pose(pose_name)?.coords();
+    let conditions = for_scenario(s);
+    let mut map = SliceMap {
+        axes: [axes[0].name().to_string(), axes[1].name().to_string()],
+        range,
+        res,
+        fixed,
+        fraction_feasible: 0.0,
+        components: 0,
+        classes: Vec::with_capacity(res * res),
+        component: vec![None; res * res],
+        pose_components: vec![],
+    };
+    for j in 0..res {
+        for i in 0..res {
+            let mut c = fixed;
+            c[axes[0].index()] = map.center(0, i);
+            c[axes[1].index()] = map.center(1, j);
+            map.classes.push(classify(s, &conditions, &Pose::from_coords(c)));
+        }
+    }
+    label_components(&mut map);
+    map.fraction_feasible = map.classes.iter().filter(|&&c| c == Class::Feasible).count() as f64 / (res * res) as f64;
+    map.pose_components = poses_on_slice(s, &map, axes);
+    Ok(map)
+}
+
+/// 4-neighbour flood fill of the feasible cells.
+fn label_components(map: &mut SliceMap) {
+    let res = map.res;
+    let mut next = 0;
+    let mut stack = Vec::new();
+    for start in 0..res * res {
+        if map.classes[start] != Class::Feasible || map.component[start].is_some() {
+            continue;
+        }
+        map.component[start] = Some(next);
+        stack.push(start);
+        while let Some(k) = stack.pop() {
+            let (i, j) = (k % res, k / res);
+            let mut visit = |n: usize| {
+                if map.classes[n] == Class::Feasible && map.component[n].is_none() {
+                    map.component[n] = Some(next);
+                    stack.push(n);
+                }
+            };
+            if i > 0 {
+                visit(k - 1);
+            }
+            if i + 1 < res {
+                visit(k + 1);
+            }
+            if j > 0 {
+                visit(k - res);
+            }
+            if j + 1 < res {
+                visit(k + res);
+            }
+        }
+        next += 1;
+    }
+    map.components = next;
+}
+
+/// The scenario's poses that lie on the slice (their other coordinates equal the fixed ones to
+/// 1e-9) and inside its square, with the component of their cell. A tilt-and-torsion orientation
+/// has two coordinate triples, (φ, θ, σ) and (φ + π, −θ, σ): the first inside the square is used.
+fn poses_on_slice(s: &Scenario, map: &SliceMap, axes: [Coord; 2]) -> Vec<(String, Option<usize>)> {
+    let wrap = crate::model::pose::wrap_angle;
+    let same = |a: f64, b: f64, angle: bool| if angle { wrap(a - b).abs() < 1e-9 } else { (a - b).abs() < 1e-9 };
+    let mut out = vec![];
+    for (name, pose) in &s.poses {
+        let c = pose.coords();
+        let alt = [c[0], c[1], c[2], wrap(c[3] + PI), -c[4], c[5]];
+        for cand in [c, alt] {
+            let on_slice = Coord::ALL.iter().filter(|k| !axes.contains(k)).all(|&k| same(cand[k.index()], map.fixed[k.index()], k.is_angle()));
+            // an angle axis may hold the value shifted by a whole turn
+            let value = |a: usize| {
+                let v = cand[axes[a].index()];
+                if axes[a].is_angle() && map.cell(a, v).is_none() {
+                    [v - 2.0 * PI, v + 2.0 * PI].into_iter().find(|&w| map.cell(a, w).is_some()).unwrap_or(v)
+                } else {
+                    v
+                }
+            };
+            if let (true, Some(i), Some(j)) = (on_slice, map.cell(0, value(0)), map.cell(1, value(1))) {
+                out.push((name.clone(), map.component[j * map.res + i]));
+                break;
+            }
+        }
+    }
+    out
+}

@@ -1,0 +1,81 @@
+//! Slice maps on the Robocrane (Bohigas et al. Fig. 5): classes, components, poses on the slice.
+
+#[cfg(target_arch = "wasm32")]
+use wasm_bindgen_test::wasm_bindgen_test as test;
+
+use cablenav::model::{Coord, Pose};
+use cablenav::verify::slice::Class;
+use cablenav::verify::{slice, wrench_at};
+use cablenav::Scenario;
+use std::f64::consts::PI;
+
+const ROBOCRANE: &str = include_str!("../static/scenarios/robocrane.json");
+
+#[test]
+fn robocrane_phi_theta_slice_components() {
+    let s = Scenario::from_json(ROBOCRANE).unwrap();
+    let res = if cfg!(target_arch = "wasm32") { 100 } else { 200 };
+    let m = slice(&s, "q1", [Coord::Phi, Coord::Theta], res, [[-PI, PI], [-PI, PI]]).unwrap();
+    let comp = |name: &str| m.pose_components.iter().find(|(n, _)| n == name).unwrap_or_else(|| panic!("{name} not on the slice")).1;
+    assert!(comp("q1").is_some() && comp("q1") == comp("q2"), "{:?}", m.pose_components);
+    assert!(comp("q3").is_some() && comp("q3") == comp("q4"), "{:?}", m.pose_components);
+    assert!(m.pose_components.iter().all(|(n, _)| n != "q5"), "q5 has z = 1.2, off the slice");
+    // every cell's class agrees with the per-pose test at its centre
+    for j in (0..res).step_by(7) {
+        for i in (0..res).step_by(5) {
+            let mut c = m.fixed;
+            c[3] = m.center(0, i);
+            c[4] = m.center(1, j);
+            let w = wrench_at(&s, &Pose::from_coords(c)).unwrap();
+            let class = m.classes[j * res + i];
+            assert_eq!(class == Class::Feasible, w.feasible, "cell ({i}, {j})");
+            assert_eq!(m.component[j * res + i].is_some(), w.feasible);
+        }
+    }
+    let feasible = m.classes.iter().filter(|&&c| c == Class::Feasible).count();
+    assert!((m.fraction_feasible - feasible as f64 / (res * res) as f64).abs() < 1e-15);
+    assert!(m.components >= 2);
+}
+
+#[test]
+fn components_are_four_connected_and_maximal() {
+    let s = Scenario::from_json(ROBOCRANE).unwrap();
+    let res = 80;
+    let m = slice(&s, "q1", [Coord::Phi, Coord::Theta], res, [[-PI, PI], [-PI, PI]]).unwrap();
+    for j in 0..res {
+        for i in 0..res {
+            let k = j * res + i;
+            // 4-neighbours that are both feasible share a component
+            if i + 1 < res && m.component[k].is_some() && m.component[k + 1].is_some() {
+                assert_eq!(m.component[k], m.component[k + 1]);
+            }
+            if j + 1 < res && m.component[k].is_some() && m.component[k + res].is_some() {
+                assert_eq!(m.component[k], m.component[k + res]);
+            }
+        }
+    }
+    let ids: std::collections::BTreeSet<usize> = m.component.iter().flatten().copied().collect();
+    assert_eq!(ids.len(), m.components);
+    assert_eq!(ids.iter().copied().max().map_or(0, |x| x + 1), m.components);
+}
+
+#[test]
+fn slice_png_is_a_png_of_the_grid() {
+    let s = Scenario::from_json(ROBOCRANE).unwrap();
+    let m = slice(&s, "q1", [Coord::Phi, Coord::Theta], 30, [[-PI, PI], [-PI, PI]]).unwrap();
+    let png = m.png();
+    assert_eq!(&png[..8], &[0x89, b'P', b'N', b'G', 0x0D, 0x0A, 0x1A, 0x0A]);
+    assert_eq!(u32::from_be_bytes(png[16..20].try_into().unwrap()), 30);
+    assert_eq!(u32::from_be_bytes(png[20..24].try_into().unwrap()), 30);
+}
+
+#[test]
+fn bad_slice_requests() {
+    let s = Scenario::from_json(ROBOCRANE).unwrap();
+    let r = [[-PI, PI], [-PI, PI]];
+    assert_eq!(slice(&s, "q1", [Coord::Phi, Coord::Phi], 10, r).unwrap_err().field, "--axes");
+    assert_eq!(slice(&s, "q1", [Coord::Phi, Coord::Theta], 0, r).unwrap_err().field, "--res");
+    assert_eq!(slice(&s, "q1", [Coord::Phi, Coord::Theta], 100_000, r).unwrap_err().field, "--res");
+    assert_eq!(slice(&s, "q1", [Coord::Phi, Coord::Theta], 10, [[1.0, 0.0], [0.0, 1.0]]).unwrap_err().field, "--range");
+    assert_eq!(slice(&s, "nobody", [Coord::Phi, Coord::Theta], 10, r).unwrap_err().field, "pose");
+}
