@@ -4,9 +4,9 @@
 
 use crate::error::{Error, Result};
 use crate::model::Coord;
-use crate::report::{PoseReport, RayReport, Side, VerifyReport};
+use crate::report::{PoseReport, RayReport, Side, TensionEnvelope, VerifyReport};
 use crate::verify::slice::{default_range, Class, SliceMap};
-use crate::verify::{check_pose, ray, slice, verify_pointwise, verify_trajectory};
+use crate::verify::{check_pose, ray, slice, tension_envelope, verify_pointwise, verify_trajectory};
 use crate::Scenario;
 use serde::Serialize;
 
@@ -16,12 +16,14 @@ usage:
   cablenav verify SCENARIO [--trajectory NAME] [--pointwise DT] [--json]
   cablenav ray    SCENARIO --pose NAME --vary x|y|z|phi|theta|sigma --range LO HI [--json]
   cablenav check  SCENARIO --pose NAME [--json]
+  cablenav envelope SCENARIO [--trajectory NAME] [--samples N] [--json]
   cablenav slice  SCENARIO --pose NAME --axes A,B --res N [--range LO HI LO HI] [--png FILE] [--json]
 
 SCENARIO is a cablenav-scenario/1 JSON file (docs/scenario-format.md).
 verify  feasible/infeasible t-sections of a trajectory (exact; --pointwise DT samples instead)
 ray     feasible intervals of one pose coordinate, the others fixed at the pose's values
 check   lengths, distances, violated conditions and the wrench set's tension ranges at one pose
+envelope  each cable's least and greatest tension over the wrench set along a trajectory
 slice   classify a res×res grid over two coordinates (others from the pose) and find the
         connected components of its feasible cells; angles default to [-pi, pi]";
 
@@ -34,7 +36,7 @@ struct Opts {
 impl Opts {
     fn parse(args: &[String], slice: bool) -> Result<Opts> {
         let takes = |f: &str| match f {
-            "--trajectory" | "--pointwise" | "--pose" | "--vary" | "--axes" | "--res" | "--png" => Some(1),
+            "--trajectory" | "--pointwise" | "--pose" | "--vary" | "--axes" | "--res" | "--png" | "--samples" => Some(1),
             "--range" => Some(if slice { 4 } else { 2 }),
             "--json" => Some(0),
             _ => None,
@@ -138,6 +140,16 @@ pub fn run(args: &[String], read: Read, write: Write) -> Result<String> {
             let name = o.required("--pose")?;
             let report = check_pose(&scenario, name, scenario.pose(name)?);
             if o.json() { to_json(&report) } else { Ok(check_text(&report)) }
+        }
+        "envelope" => {
+            o.allow(&["--trajectory", "--samples", "--json"])?;
+            let traj = scenario.trajectory(o.one("--trajectory"))?;
+            let samples = match o.one("--samples") {
+                Some(n) => n.parse().map_err(|_| Error::new("--samples", format!("not a whole number: {n:?}")))?,
+                None => 100,
+            };
+            let env = tension_envelope(&scenario, traj, samples)?;
+            if o.json() { to_json(&env) } else { Ok(envelope_text(&env)) }
         }
         "slice" => {
             o.allow(&["--pose", "--axes", "--res", "--range", "--png", "--json"])?;
@@ -267,6 +279,18 @@ fn slice_text(m: &SliceMap) -> String {
                 .collect();
             out += &format!("  {row}\n");
         }
+    }
+    out
+}
+
+fn envelope_text(e: &TensionEnvelope) -> String {
+    let mut out = format!("tension envelope along {} ({} samples): t, then [min, max] per cable\n", e.trajectory, e.t.len());
+    for (k, t) in e.t.iter().enumerate() {
+        let row = match (&e.tension_min[k], &e.tension_max[k]) {
+            (Some(lo), Some(hi)) => lo.iter().zip(hi).map(|(a, b)| format!("[{a:.4}, {b:.4}]")).collect::<Vec<_>>().join(" "),
+            _ => "singular".to_string(),
+        };
+        out += &format!("  {t:.4}  {row}\n");
     }
     out
 }

@@ -139,3 +139,18 @@ pub struct PoseReport {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub wrench: Option<WrenchReport>,
 }
+
+/// Each cable's tension range over the wrench set along a trajectory, for a plot.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TensionEnvelope {
+    /// The trajectory's name.
+    pub trajectory: String,
+    /// Sample parameters t.
+    pub t: Vec<f64>,
+    /// Per sample, each cable's least tension (`None` at a singular pose).
+    pub tension_min: Vec<Option<Vec<f64>>>,
+    /// Per sample, each cable's greatest tension (`None` at a singular pose).
+    pub tension_max: Vec<Option<Vec<f64>>>,
+    /// Each cable's tension bounds [min, max].
+    pub bounds: Vec<[f64; 2]>,
+}

@@ -5,7 +5,7 @@
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
 use cablenav::model::{PointFrame, Pose};
-use cablenav::verify::wrench_at;
+use cablenav::verify::{tension_envelope, wrench_at};
 use cablenav::Scenario;
 use nalgebra::{Matrix6, Vector3, Vector6};
 
@@ -162,3 +162,18 @@ fn singular_pose_is_reported_as_such() {
     assert_eq!(w.active, "singular");
 }
 
+
+#[test]
+fn tension_envelope_follows_the_per_pose_test() {
+    let s = Scenario::from_json(ROBOCRANE).unwrap();
+    let traj = s.trajectory(Some("slerp q1-q2")).unwrap();
+    let env = tension_envelope(&s, traj, 50).unwrap();
+    assert_eq!(env.t.len(), 51);
+    assert_eq!(env.bounds, vec![[0.0, 1.0]; 6]);
+    for (k, &t) in env.t.iter().enumerate() {
+        let w = wrench_at(&s, &traj.pose_at(t)).unwrap();
+        assert_eq!(env.tension_min[k].as_ref().unwrap(), &w.tension_min);
+        assert_eq!(env.tension_max[k].as_ref().unwrap(), &w.tension_max);
+    }
+    assert_eq!(tension_envelope(&s, traj, 0).unwrap_err().field, "--samples");
+}

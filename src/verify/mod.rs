@@ -15,7 +15,7 @@ use crate::model::motion::Param;
 use crate::model::{Coord, Motion, Pose, Trajectory};
 use crate::poly::{Partition, Truth};
 use crate::query::wrench::tension_ranges;
-use crate::report::{Boundary, CheckEntry, PoseReport, RayBoundary, RayReport, VerifyReport, WrenchReport};
+use crate::report::{Boundary, CheckEntry, PoseReport, RayBoundary, RayReport, TensionEnvelope, VerifyReport, WrenchReport};
 use crate::scenario::Scenario;
 
 /// Accuracy of reported boundaries, in the user's parameter (t, or the ray's coordinate).
@@ -167,6 +167,28 @@ pub fn wrench_at(s: &Scenario, pose: &Pose) -> Option<WrenchReport> {
         tension_nominal: ranges.iter().map(|r| r.nominal).collect(),
         active,
     })
+}
+
+/// The tension envelope along a trajectory (Bohigas et al. Fig. 6, bottom): at `samples` + 1
+/// evenly spaced t, each cable's least and greatest tension over the wrench set — data for a plot.
+/// `None` entries mark singular poses.
+pub fn tension_envelope(s: &Scenario, traj: &Trajectory, samples: usize) -> Result<TensionEnvelope> {
+    if s.wrench.is_none() {
+        return Err(Error::new("wrench", "the scenario has no wrench section"));
+    }
+    if samples == 0 || samples > 100_000 {
+        return Err(Error::new("--samples", format!("must be between 1 and 100000, got {samples}")));
+    }
+    let mut env = TensionEnvelope { trajectory: traj.name.clone(), t: vec![], tension_min: vec![], tension_max: vec![], bounds: vec![] };
+    env.bounds = s.robot.cables.iter().map(|c| [c.tension.min, c.tension.max]).collect();
+    for k in 0..=samples {
+        let t = k as f64 / samples as f64;
+        let w = wrench_at(s, &traj.pose_at(t)).ok_or_else(|| Error::new("wrench", "missing"))?;
+        env.t.push(t);
+        env.tension_min.push((!w.singular).then_some(w.tension_min));
+        env.tension_max.push((!w.singular).then_some(w.tension_max));
+    }
+    Ok(env)
 }
 
 /// Every condition at one pose, with lengths and distances.
