@@ -1,0 +1,111 @@
+//! The benchmark cases, shared by the native benchmark (`examples/bench/main.rs`) and the
+//! wasm-in-node one (`tests/bench_wasm.rs`, which includes this file by path), so both time
+//! exactly the same work. The clock is passed in: `std::time::Instant` natively,
+//! `performance.now()` under node.
+//!
+//! Each case prints one machine-readable line that `scripts/bench.sh` collects:
+//! `BENCH <platform> <case> <median_us> <best_us> <calls> <samples> <summary>`.
+
+use cablenav::model::Coord;
+use cablenav::verify::{ray, verify_pointwise, verify_trajectory};
+use cablenav::Scenario;
+
+const CDPR7: &str = include_str!("../../static/scenarios/cdpr7.json");
+const CDPR7_TREE: &str = include_str!("../../static/scenarios/cdpr7-tree.json");
+const CDPR7_BOX: &str = include_str!("../../static/scenarios/cdpr7-box.json");
+
+/// Wall time spent measuring each case (after warm-up), in milliseconds.
+pub const CASE_MS: f64 = 1000.0;
+/// Each sample repeats the call until it lasts at least this long (timer resolution), in ms.
+const SAMPLE_MS: f64 = 2.0;
+/// Warm-up before measuring each case (also finds the calls per sample), in milliseconds.
+const WARMUP_MS: f64 = 200.0;
+/// Fewest samples per case, whatever their length.
+const MIN_SAMPLES: usize = 15;
+
+/// One measured case.
+pub struct Measured {
+    /// Case id, e.g. `tree/quadratic/exact`.
+    pub case: String,
+    /// Median time of one call, in microseconds.
+    pub median_us: f64,
+    /// Fastest sample's time per call, in microseconds (least disturbed by other load).
+    pub best_us: f64,
+    /// Calls made while measuring.
+    pub calls: usize,
+    /// Samples the median is taken over.
+    pub samples: usize,
+    /// What the call found (interval counts), to show that both methods did the same job.
+    pub summary: String,
+}
+
+/// Times `f`: a warm-up of WARMUP_MS, then samples of `k` calls each (k chosen so a sample lasts ≥ SAMPLE_MS)
+/// until CASE_MS have passed and at least MIN_SAMPLES were taken; returns the median per call.
+fn measure(now: &dyn Fn() -> f64, case: &str, f: &mut dyn FnMut() -> String) -> Measured {
+    let summary = f();
+    // Warm-up and calibration: how many calls make one sample.
+    let t0 = now();
+    let mut k = 1usize;
+    loop {
+        let s = now();
+        for _ in 0..k {
+            std::hint::black_box(f());
+        }
+        if now() - s < SAMPLE_MS {
+            k *= 2;
+        } else if now() - t0 >= WARMUP_MS {
+            break;
+        }
+    }
+    let mut per_call: Vec<f64> = Vec::new();
+    let mut calls = 0usize;
+    let start = now();
+    while now() - start < CASE_MS || per_call.len() < MIN_SAMPLES {
+        let s = now();
+        for _ in 0..k {
+            std::hint::black_box(f());
+        }
+        per_call.push((now() - s) / k as f64);
+        calls += k;
+    }
+    per_call.sort_by(|a, b| a.total_cmp(b));
+    let n = per_call.len();
+    let median_ms = if n % 2 == 1 { per_call[n / 2] } else { 0.5 * (per_call[n / 2 - 1] + per_call[n / 2]) };
+    Measured { case: case.to_string(), median_us: median_ms * 1000.0, best_us: per_call[0] * 1000.0, calls, samples: n, summary }
+}
+
+fn summary_of(r: &cablenav::report::VerifyReport) -> String {
+    format!("feasible={};infeasible={};boundaries={};uncertain={}", r.feasible.len(), r.infeasible.len(), r.boundaries.len(), r.uncertain.len())
+}
+
+/// Runs every case with the clock `now` (milliseconds) and reports each through `out`.
+pub fn run_all(platform: &str, now: &dyn Fn() -> f64, out: &mut dyn FnMut(&str)) -> Vec<Measured> {
+    let parse = |text: &str| Scenario::from_json(text).expect("bundled scenario parses");
+    let (plain, tree, boxed) = (parse(CDPR7), parse(CDPR7_TREE), parse(CDPR7_BOX));
+    let traj = |s: &Scenario, name: &str| s.trajectory(Some(name)).expect("bundled trajectory").clone();
+    let (tree_q, plain_q, box_l) = (traj(&tree, "quadratic"), traj(&plain, "quadratic"), traj(&boxed, "linear"));
+
+    let exact = |s: &Scenario, t: &cablenav::model::Trajectory| summary_of(&verify_trajectory(s, t).expect("exact verification"));
+    let pointwise = |s: &Scenario, t: &cablenav::model::Trajectory, dt: f64| summary_of(&verify_pointwise(s, t, dt).expect("point-wise verification"));
+
+    let mut results = Vec::new();
+    let mut record = |m: Measured, out: &mut dyn FnMut(&str)| {
+        out(&format!("BENCH {platform} {} {:.3} {:.3} {} {} {}", m.case, m.median_us, m.best_us, m.calls, m.samples, m.summary));
+        results.push(m);
+    };
+    record(measure(now, "tree/quadratic/exact", &mut || exact(&tree, &tree_q)), out);
+    record(measure(now, "tree/quadratic/pointwise-0.01", &mut || pointwise(&tree, &tree_q, 0.01)), out);
+    record(measure(now, "tree/quadratic/pointwise-0.001", &mut || pointwise(&tree, &tree_q, 0.001)), out);
+    record(measure(now, "cdpr7/quadratic/exact", &mut || exact(&plain, &plain_q)), out);
+    record(measure(now, "cdpr7/quadratic/pointwise-0.001", &mut || pointwise(&plain, &plain_q, 0.001)), out);
+    record(measure(now, "box/linear/exact", &mut || exact(&boxed, &box_l)), out);
+    record(measure(now, "box/linear/pointwise-0.001", &mut || pointwise(&boxed, &box_l, 0.001)), out);
+    record(
+        measure(now, "box/ray-fig310-x/exact", &mut || {
+            let r = ray(&boxed, "fig310", Coord::X, 0.2, 3.8).expect("ray");
+            format!("feasible={};infeasible={};boundaries={};uncertain={}", r.feasible.len(), r.infeasible.len(), r.boundaries.len(), r.uncertain.len())
+        }),
+        out,
+    );
+    results
+}

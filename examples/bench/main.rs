@@ -1,0 +1,22 @@
+//! Native benchmark: exact verification versus the point-wise baseline on the bundled scenarios.
+//!
+//!     cargo run --release --example bench
+//!
+//! `scripts/bench.sh` runs it together with the wasm-in-node benchmark (`tests/bench_wasm.rs`,
+//! same cases from `cases.rs`) and writes `docs/benchmarks.md`.
+
+mod cases;
+
+fn main() {
+    let origin = std::time::Instant::now();
+    let now = move || origin.elapsed().as_secs_f64() * 1000.0;
+    let results = cases::run_all("native", &now, &mut |line| println!("{line}"));
+    let get = |c: &str| results.iter().find(|m| m.case == c).map(|m| m.median_us).unwrap_or(f64::NAN);
+    eprintln!();
+    for m in &results {
+        eprintln!("{:34} median {:>10.1} µs, best {:>10.1} µs  ({} calls, {} samples; {})", m.case, m.median_us, m.best_us, m.calls, m.samples, m.summary);
+    }
+    let exact = get("tree/quadratic/exact");
+    eprintln!("\npoint-wise / exact, cdpr7-tree quadratic: Δt=0.01 {:.1}×, Δt=0.001 {:.1}×",
+        get("tree/quadratic/pointwise-0.01") / exact, get("tree/quadratic/pointwise-0.001") / exact);
+}
