@@ -48,6 +48,9 @@ pub(crate) use {all_of, any_of};
 /// start + λ·`s`, λ ∈ [0, 1] (in the metric `g`, or Euclidean). Exact: the closest segment point is
 /// the start, the end, or the interior foot of the perpendicular.
 pub fn point_segment(alg: &mut Alg, e: &HVec, s: &HVec, r: f64, g: Option<&Matrix3<f64>>, tol: f64) -> Partition {
+    if r <= 0.0 {
+        return Partition::constant(Truth::False); // no distance is below 0
+    }
     let dot = |alg: &mut Alg, a: &HVec, b: &HVec| match g {
         Some(g) => alg.dot_metric(a, g, b),
         None => alg.dot(a, b),
@@ -81,6 +84,9 @@ pub fn point_segment(alg: &mut Alg, e: &HVec, s: &HVec, r: f64, g: Option<&Matri
 /// throughout (|s_i × s_j|² zero within its error bound) the interior case cannot give the
 /// minimum and is skipped.
 pub fn segment_segment(alg: &mut Alg, r: &HVec, si: &HVec, sj: &HVec, c: f64, tol: f64) -> Partition {
+    if c <= 0.0 {
+        return Partition::constant(Truth::False); // no distance is below 0
+    }
     let neg_r: HVec = [r[0].scale(-1.0), r[1].scale(-1.0), r[2].scale(-1.0)];
     any_of!(
         point_segment(alg, r, si, c, None, tol),

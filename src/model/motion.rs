@@ -41,24 +41,32 @@ pub enum Param {
     Angle {
         /// Value at λ = 0.
         start: f64,
-        /// tan(piece width / 2).
+        /// Value at λ = 1.
+        end: f64,
+        /// tan((end − start) / 2).
         h: f64,
     },
 }
 
 impl Param {
-    /// The user-facing value (t for trajectories) at λ.
+    /// The user-facing value (t for trajectories) at λ; exactly the range's ends at λ = 0 and 1.
     pub fn value(&self, lam: f64) -> f64 {
         match *self {
             Param::Trajectory { theta, h } => {
-                if theta < 1e-9 {
-                    lam
+                if theta < 1e-9 || lam <= 0.0 || lam >= 1.0 {
+                    lam.clamp(0.0, 1.0)
                 } else {
-                    2.0 * (h * lam).atan() / theta
+                    (2.0 * (h * lam).atan() / theta).clamp(0.0, 1.0)
                 }
             }
-            Param::Linear { lo, hi } => lo + (hi - lo) * lam,
-            Param::Angle { start, h } => start + 2.0 * (h * lam).atan(),
+            Param::Linear { lo, hi } => lo * (1.0 - lam) + hi * lam,
+            Param::Angle { start, end, h } => {
+                if lam >= 1.0 {
+                    end
+                } else {
+                    (start + 2.0 * (h * lam).atan()).min(end)
+                }
+            }
         }
     }
 
@@ -207,7 +215,8 @@ impl Motion {
         (0..pieces)
             .map(|k| {
                 let start = lo + (hi - lo) * k as f64 / pieces as f64;
-                let width = (hi - lo) / pieces as f64;
+                let end = if k + 1 == pieces { hi } else { lo + (hi - lo) * (k + 1) as f64 / pieces as f64 };
+                let width = end - start;
                 let h = (width / 2.0).tan();
                 let mut at_start = c;
                 at_start[coord.index()] = start;
@@ -223,7 +232,7 @@ impl Motion {
                         quat_mul(&quat_mul(&left, &qz(sigma - phi)), &quat_axis_ramp(2, h, true))
                     }
                 };
-                Motion::from_parts(position.clone(), &n, Param::Angle { start, h })
+                Motion::from_parts(position.clone(), &n, Param::Angle { start, end, h })
             })
             .collect()
     }

@@ -62,13 +62,14 @@ impl Trajectory {
         qs.quaternion().dot(qe.quaternion()).clamp(-1.0, 1.0).acos()
     }
 
-    /// τ at slerp parameter t: τ = tan(tθ/2)/tan(θ/2), or t when θ = 0.
+    /// τ at slerp parameter t: τ = tan(tθ/2)/tan(θ/2), or t when θ = 0; exactly 0 and 1 at the
+    /// ends.
     pub fn tau_of_t(&self, t: f64) -> f64 {
         let theta = self.theta();
-        if theta < 1e-9 {
-            t
+        if theta < 1e-9 || t <= 0.0 || t >= 1.0 {
+            t.clamp(0.0, 1.0)
         } else {
-            (t * theta / 2.0).tan() / (theta / 2.0).tan()
+            ((t * theta / 2.0).tan() / (theta / 2.0).tan()).clamp(0.0, 1.0)
         }
     }
 
