@@ -194,6 +194,18 @@ fn intervals(v: &[[f64; 2]]) -> String {
     v.iter().map(|iv| format!("[{:.9}, {:.9}]", iv[0], iv[1])).collect::<Vec<_>>().join(" ∪ ")
 }
 
+/// The closing lines of a report: conservative conditions and warnings.
+fn notes(conservative: &[String], warnings: &[String]) -> String {
+    let mut out = String::new();
+    if !conservative.is_empty() {
+        out += &format!("  conservative (enlarged shapes): {}\n", conservative.join(", "));
+    }
+    for w in warnings {
+        out += &format!("  warning: {w}\n");
+    }
+    out
+}
+
 fn verify_text(r: &VerifyReport) -> String {
     let mut out = format!("trajectory {} ({}", r.trajectory, r.method);
     if let Some(dt) = r.step {
@@ -207,13 +219,7 @@ fn verify_text(r: &VerifyReport) -> String {
         out += &format!("  boundary t = {:.9} (τ = {:.9}): {} → {}\n", b.t, b.tau, b.constraint, side(b.enters));
     }
     out += &format!("  uncertain  t ∈ {}\n", intervals(&r.uncertain));
-    if !r.conservative.is_empty() {
-        out += &format!("  conservative (enlarged shapes): {}\n", r.conservative.join(", "));
-    }
-    for w in &r.warnings {
-        out += &format!("  warning: {w}\n");
-    }
-    out
+    out + &notes(&r.conservative, &r.warnings)
 }
 
 fn ray_text(r: &RayReport) -> String {
@@ -224,13 +230,7 @@ fn ray_text(r: &RayReport) -> String {
         out += &format!("  boundary {} = {:.9}: {} → {}\n", r.vary, b.value, b.constraint, side(b.enters));
     }
     out += &format!("  uncertain  {} ∈ {}\n", r.vary, intervals(&r.uncertain));
-    if !r.conservative.is_empty() {
-        out += &format!("  conservative (enlarged shapes): {}\n", r.conservative.join(", "));
-    }
-    for w in &r.warnings {
-        out += &format!("  warning: {w}\n");
-    }
-    out
+    out + &notes(&r.conservative, &r.warnings)
 }
 
 fn check_text(r: &PoseReport) -> String {
