@@ -29,29 +29,41 @@ if ! has_version wasm-bindgen "$WASM_BINDGEN_VERSION"; then
   cargo install wasm-bindgen-cli --version "$WASM_BINDGEN_VERSION" --force
 fi
 
+if [ "${1:-}" = "--serve" ]; then
+  # serving needs only the target, wasm-bindgen and trunk
+  if ! has_version trunk "$TRUNK_VERSION"; then
+    say "installing trunk $TRUNK_VERSION (about 13 minutes on 2 cores, once)"
+    cargo install trunk --version "$TRUNK_VERSION" --locked --force
+  fi
+  say "tools ready"
+  exit 0
+fi
+
 if ! has_version wasm-pack "$WASM_PACK_VERSION"; then
   say "installing wasm-pack $WASM_PACK_VERSION (a few minutes)"
   cargo install wasm-pack --version "$WASM_PACK_VERSION" --locked --force
 fi
 
-if [ "${1:-}" = "--serve" ]; then
-  if ! has_version trunk "$TRUNK_VERSION"; then
-    say "installing trunk $TRUNK_VERSION (about 13 minutes on 2 cores, once)"
-    cargo install trunk --version "$TRUNK_VERSION" --locked --force
-  fi
-  exit 0
-fi
+SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+APT_UPDATED=""
+apt_install() { # apt_install PACKAGE...: Debian packages, non-interactively
+  if [ -z "$APT_UPDATED" ]; then $SUDO apt-get update -qq; APT_UPDATED=1; fi
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "$@" >/dev/null
+}
 
 if ! command -v chromium >/dev/null 2>&1; then
   say "installing chromium (Debian package) for the browser tests"
-  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq chromium >/dev/null
+  apt_install chromium
+fi
+
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  say "installing node and npm (Debian packages) for the browser tests"
+  apt_install nodejs npm
 fi
 
 if [ ! -f tests/browser/node_modules/playwright-core/package.json ] || \
    ! grep -q "\"version\": \"$PLAYWRIGHT_CORE_VERSION\"" tests/browser/node_modules/playwright-core/package.json; then
   say "installing playwright-core $PLAYWRIGHT_CORE_VERSION (npm; drives Debian's chromium, downloads no browser)"
-  (cd tests/browser && PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm install --no-audit --no-fund --silent)
+  (cd tests/browser && PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm install --no-audit --no-fund --no-package-lock --silent)
 fi
 say "tools ready"

@@ -1,0 +1,281 @@
+//! Everything the page shows, computed by plain functions over the core's results (no Leptos
+//! here, so all of it is unit-tested natively). No maths either: the intervals come from
+//! `cablenav::verify`; this module only sorts and formats them.
+
+use cablenav::report::{Side, VerifyReport};
+use cablenav::Scenario;
+
+/// What a t-section of the strip is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// Every constraint holds.
+    Feasible,
+    /// Some constraint is violated.
+    Infeasible,
+    /// The core could not decide.
+    Uncertain,
+}
+
+impl Kind {
+    /// The name used in `data-kind`, CSS classes and the table.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Kind::Feasible => "feasible",
+            Kind::Infeasible => "infeasible",
+            Kind::Uncertain => "uncertain",
+        }
+    }
+}
+
+/// One drawn section of the strip: `t ∈ [t0, t1]`, with the τ range where the core gives one.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Section {
+    /// What it is.
+    pub kind: Kind,
+    /// Start in t.
+    pub t0: f64,
+    /// End in t.
+    pub t1: f64,
+    /// The same section in τ, for feasible and infeasible sections.
+    pub tau: Option<[f64; 2]>,
+}
+
+/// One boundary tick: where the motion enters or leaves the feasible set.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Tick {
+    /// Where, in t.
+    pub t: f64,
+    /// Where, in τ.
+    pub tau: f64,
+    /// The constraint that becomes (in)active there.
+    pub constraint: String,
+    /// The side entered at `t`: `"feasible"` or `"infeasible"`.
+    pub enters: &'static str,
+    /// The tooltip text.
+    pub label: String,
+}
+
+/// The strip, the tables and the notes for one verified trajectory.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StripModel {
+    /// Sections sorted by start.
+    pub sections: Vec<Section>,
+    /// Boundaries sorted by t.
+    pub ticks: Vec<Tick>,
+    /// Parts of [0, 1] that no section covers (should be empty; shown if not).
+    pub gaps: Vec<[f64; 2]>,
+}
+
+/// Parses scenario JSON with the core; the error is the core's "field: reason" text.
+pub fn parse_scenario(text: &str) -> Result<Scenario, String> {
+    Scenario::from_json(text).map_err(|e| e.to_string())
+}
+
+/// Verifies trajectory `index` of `scenario` with the core.
+pub fn verify(scenario: &Scenario, index: usize) -> Result<VerifyReport, String> {
+    let traj = scenario
+        .trajectories
+        .get(index)
+        .ok_or_else(|| format!("trajectory #{index}: the scenario has no such trajectory"))?;
+    cablenav::verify::verify_trajectory(scenario, traj).map_err(|e| e.to_string())
+}
+
+/// Names of the scenario's trajectories, in file order.
+pub fn trajectory_names(scenario: &Scenario) -> Vec<String> {
+    scenario.trajectories.iter().map(|t| t.name.clone()).collect()
+}
+
+/// A number for people: up to 4 decimals, trailing zeros dropped ("0.25", "1", "0.3333").
+pub fn fmt_num(x: f64) -> String {
+    if !x.is_finite() {
+        return x.to_string();
+    }
+    let s = format!("{x:.4}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" { "0".to_string() } else { s.to_string() }
+}
+
+/// A number for machines (`data-t0` etc.): the shortest text that parses back to the same f64.
+pub fn fmt_exact(x: f64) -> String {
+    format!("{x:?}")
+}
+
+/// Builds the strip from a report: feasible, infeasible and uncertain sections sorted by t,
+/// boundary ticks with their tooltips, and any gaps in the cover of [0, 1].
+pub fn strip(report: &VerifyReport) -> StripModel {
+    let mut sections = Vec::new();
+    for (i, &[t0, t1]) in report.feasible.iter().enumerate() {
+        sections.push(Section { kind: Kind::Feasible, t0, t1, tau: report.feasible_tau.get(i).copied() });
+    }
+    for (i, &[t0, t1]) in report.infeasible.iter().enumerate() {
+        sections.push(Section { kind: Kind::Infeasible, t0, t1, tau: report.infeasible_tau.get(i).copied() });
+    }
+    for &[t0, t1] in &report.uncertain {
+        sections.push(Section { kind: Kind::Uncertain, t0, t1, tau: None });
+    }
+    sections.sort_by(|a, b| a.t0.total_cmp(&b.t0).then(a.t1.total_cmp(&b.t1)));
+
+    let mut ticks: Vec<Tick> = report
+        .boundaries
+        .iter()
+        .map(|b| {
+            let enters = match b.enters {
+                Side::Feasible => "feasible",
+                Side::Infeasible => "infeasible",
+            };
+            let label = format!(
+                "t = {} (τ = {}): {} — enters {}",
+                fmt_num(b.t),
+                fmt_num(b.tau),
+                b.constraint,
+                enters
+            );
+            Tick { t: b.t, tau: b.tau, constraint: b.constraint.clone(), enters, label }
+        })
+        .collect();
+    ticks.sort_by(|a, b| a.t.total_cmp(&b.t));
+
+    let gaps = gaps(&sections);
+    StripModel { sections, ticks, gaps }
+}
+
+/// Parts of [0, 1] not covered by `sections` (sorted by start), ignoring gaps below 1e-12.
+pub fn gaps(sections: &[Section]) -> Vec<[f64; 2]> {
+    const EPS: f64 = 1e-12;
+    let mut out = Vec::new();
+    let mut reached = 0.0_f64;
+    for s in sections {
+        if s.t0 > reached + EPS {
+            out.push([reached, s.t0]);
+        }
+        reached = reached.max(s.t1);
+    }
+    if reached < 1.0 - EPS {
+        out.push([reached, 1.0]);
+    }
+    out
+}
+
+/// The notes shown under the strip: the scenario's warnings, then the report's, then one line
+/// naming the conditions the core tested conservatively; duplicates dropped.
+pub fn notes(scenario_warnings: &[String], report: Option<&VerifyReport>) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    let report_warnings = report.map(|r| r.warnings.as_slice()).unwrap_or_default();
+    for w in scenario_warnings.iter().chain(report_warnings) {
+        if !out.contains(w) {
+            out.push(w.clone());
+        }
+    }
+    if let Some(r) = report.filter(|r| !r.conservative.is_empty()) {
+        out.push(format!(
+            "Tested conservatively, with an enlarged shape (infeasible sections near these may be \
+             feasible in truth): {}",
+            r.conservative.join(", ")
+        ));
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cablenav::report::Boundary;
+
+    fn report() -> VerifyReport {
+        VerifyReport {
+            trajectory: "line".into(),
+            method: "exact".into(),
+            step: None,
+            feasible: vec![[0.5, 1.0], [0.0, 0.25]],
+            infeasible: vec![[0.25, 0.4]],
+            feasible_tau: vec![[0.6, 1.0], [0.0, 0.2]],
+            infeasible_tau: vec![[0.2, 0.3]],
+            boundaries: vec![
+                Boundary { t: 0.4, tau: 0.3, constraint: "cables 2–5".into(), enters: Side::Feasible },
+                Boundary { t: 0.25, tau: 0.2, constraint: "cable 1 vs box".into(), enters: Side::Infeasible },
+            ],
+            uncertain: vec![[0.4, 0.5]],
+            conservative: vec!["cable 3 vs tree".into()],
+            warnings: vec!["w".into()],
+        }
+    }
+
+    #[test]
+    fn sections_are_sorted_and_keep_their_tau() {
+        let m = strip(&report());
+        let kinds: Vec<_> = m.sections.iter().map(|s| s.kind).collect();
+        assert_eq!(kinds, [Kind::Feasible, Kind::Infeasible, Kind::Uncertain, Kind::Feasible]);
+        assert_eq!(m.sections[0].tau, Some([0.0, 0.2]));
+        assert_eq!(m.sections[2].tau, None);
+        assert_eq!(m.sections[3].tau, Some([0.6, 1.0]));
+        assert!(m.gaps.is_empty());
+    }
+
+    #[test]
+    fn ticks_are_sorted_and_labelled() {
+        let m = strip(&report());
+        assert_eq!(m.ticks.len(), 2);
+        assert_eq!(m.ticks[0].t, 0.25);
+        assert_eq!(m.ticks[0].enters, "infeasible");
+        assert_eq!(m.ticks[0].label, "t = 0.25 (τ = 0.2): cable 1 vs box — enters infeasible");
+        assert_eq!(m.ticks[1].enters, "feasible");
+    }
+
+    #[test]
+    fn gaps_are_found() {
+        let s = |t0, t1| Section { kind: Kind::Feasible, t0, t1, tau: None };
+        assert_eq!(gaps(&[]), vec![[0.0, 1.0]]);
+        assert_eq!(gaps(&[s(0.0, 0.5), s(0.6, 1.0)]), vec![[0.5, 0.6]]);
+        assert_eq!(gaps(&[s(0.1, 0.9)]), vec![[0.0, 0.1], [0.9, 1.0]]);
+        assert!(gaps(&[s(0.0, 0.5), s(0.2, 0.7), s(0.7, 1.0)]).is_empty());
+    }
+
+    #[test]
+    fn numbers_format() {
+        assert_eq!(fmt_num(0.25), "0.25");
+        assert_eq!(fmt_num(1.0), "1");
+        assert_eq!(fmt_num(1.0 / 3.0), "0.3333");
+        assert_eq!(fmt_num(-0.00001), "0");
+        assert_eq!(fmt_exact(0.1), "0.1");
+        assert_eq!(fmt_exact(1.0), "1.0");
+        assert_eq!(fmt_exact(1.0 / 3.0).parse::<f64>().unwrap(), 1.0 / 3.0);
+    }
+
+    #[test]
+    fn notes_merge_without_duplicates() {
+        let r = report();
+        let n = notes(&["w".into(), "s".into()], Some(&r));
+        assert_eq!(n.len(), 3);
+        assert_eq!(n[..2], ["w", "s"]);
+        assert!(n[2].starts_with("Tested conservatively") && n[2].ends_with(": cable 3 vs tree"));
+        assert_eq!(notes(&[], None), Vec::<String>::new());
+    }
+
+    #[test]
+    fn parse_errors_are_text() {
+        let e = parse_scenario("{").unwrap_err();
+        assert!(!e.is_empty());
+        let e = parse_scenario("").unwrap_err();
+        assert!(!e.is_empty());
+    }
+
+    #[test]
+    fn every_preset_parses_and_verifies_covering_0_1() {
+        for p in crate::presets::PRESETS {
+            let s = parse_scenario(p.json).unwrap_or_else(|e| panic!("{}: {e}", p.id));
+            assert!(!s.trajectories.is_empty(), "{} has no trajectory", p.id);
+            for i in 0..s.trajectories.len() {
+                let r = verify(&s, i).unwrap_or_else(|e| panic!("{} #{i}: {e}", p.id));
+                let m = strip(&r);
+                assert!(!m.sections.is_empty(), "{} #{i}: no section", p.id);
+                assert!(m.gaps.is_empty(), "{} #{i}: gaps {:?}", p.id, m.gaps);
+            }
+        }
+    }
+
+    #[test]
+    fn a_missing_trajectory_is_an_error_not_a_panic() {
+        let s = parse_scenario(crate::presets::PRESETS[0].json).unwrap();
+        assert!(verify(&s, usize::MAX).is_err());
+    }
+}
