@@ -23,5 +23,5 @@ extern "C" {
 #[wasm_bindgen_test]
 fn bench_wasm() {
     let now = || performance_now();
-    cases::run_all("wasm", &now, &mut |line| console_log!("{line}"));
+    cases::run_all("wasm", "", &now, &mut |line| console_log!("{line}"));
 }

@@ -39,9 +39,12 @@ pub struct Measured {
     pub summary: String,
 }
 
-/// Times `f`: a warm-up of WARMUP_MS, then samples of `k` calls each (k chosen so a sample lasts ≥ SAMPLE_MS)
+/// Times `f` if `case` contains `filter`: a warm-up of WARMUP_MS, then samples of `k` calls each (k chosen so a sample lasts ≥ SAMPLE_MS)
 /// until CASE_MS have passed and at least MIN_SAMPLES were taken; returns the median per call.
-fn measure(now: &dyn Fn() -> f64, case: &str, f: &mut dyn FnMut() -> String) -> Measured {
+fn measure(now: &dyn Fn() -> f64, filter: &str, case: &str, f: &mut dyn FnMut() -> String) -> Option<Measured> {
+    if !case.contains(filter) {
+        return None;
+    }
     let summary = f();
     // Warm-up and calibration: how many calls make one sample.
     let t0 = now();
@@ -71,15 +74,16 @@ fn measure(now: &dyn Fn() -> f64, case: &str, f: &mut dyn FnMut() -> String) -> 
     per_call.sort_by(|a, b| a.total_cmp(b));
     let n = per_call.len();
     let median_ms = if n % 2 == 1 { per_call[n / 2] } else { 0.5 * (per_call[n / 2 - 1] + per_call[n / 2]) };
-    Measured { case: case.to_string(), median_us: median_ms * 1000.0, best_us: per_call[0] * 1000.0, calls, samples: n, summary }
+    Some(Measured { case: case.to_string(), median_us: median_ms * 1000.0, best_us: per_call[0] * 1000.0, calls, samples: n, summary })
 }
 
 fn summary_of(r: &cablenav::report::VerifyReport) -> String {
     format!("feasible={};infeasible={};boundaries={};uncertain={}", r.feasible.len(), r.infeasible.len(), r.boundaries.len(), r.uncertain.len())
 }
 
-/// Runs every case with the clock `now` (milliseconds) and reports each through `out`.
-pub fn run_all(platform: &str, now: &dyn Fn() -> f64, out: &mut dyn FnMut(&str)) -> Vec<Measured> {
+/// Runs every case whose id contains `filter` (all for "") with the clock `now` (milliseconds)
+/// and reports each through `out`.
+pub fn run_all(platform: &str, filter: &str, now: &dyn Fn() -> f64, out: &mut dyn FnMut(&str)) -> Vec<Measured> {
     let parse = |text: &str| Scenario::from_json(text).expect("bundled scenario parses");
     let (plain, tree, boxed) = (parse(CDPR7), parse(CDPR7_TREE), parse(CDPR7_BOX));
     let traj = |s: &Scenario, name: &str| s.trajectory(Some(name)).expect("bundled trajectory").clone();
@@ -89,19 +93,20 @@ pub fn run_all(platform: &str, now: &dyn Fn() -> f64, out: &mut dyn FnMut(&str))
     let pointwise = |s: &Scenario, t: &cablenav::model::Trajectory, dt: f64| summary_of(&verify_pointwise(s, t, dt).expect("point-wise verification"));
 
     let mut results = Vec::new();
-    let mut record = |m: Measured, out: &mut dyn FnMut(&str)| {
+    let mut record = |m: Option<Measured>, out: &mut dyn FnMut(&str)| {
+        let Some(m) = m else { return };
         out(&format!("BENCH {platform} {} {:.3} {:.3} {} {} {}", m.case, m.median_us, m.best_us, m.calls, m.samples, m.summary));
         results.push(m);
     };
-    record(measure(now, "tree/quadratic/exact", &mut || exact(&tree, &tree_q)), out);
-    record(measure(now, "tree/quadratic/pointwise-0.01", &mut || pointwise(&tree, &tree_q, 0.01)), out);
-    record(measure(now, "tree/quadratic/pointwise-0.001", &mut || pointwise(&tree, &tree_q, 0.001)), out);
-    record(measure(now, "cdpr7/quadratic/exact", &mut || exact(&plain, &plain_q)), out);
-    record(measure(now, "cdpr7/quadratic/pointwise-0.001", &mut || pointwise(&plain, &plain_q, 0.001)), out);
-    record(measure(now, "box/linear/exact", &mut || exact(&boxed, &box_l)), out);
-    record(measure(now, "box/linear/pointwise-0.001", &mut || pointwise(&boxed, &box_l, 0.001)), out);
+    record(measure(now, filter, "tree/quadratic/exact", &mut || exact(&tree, &tree_q)), out);
+    record(measure(now, filter, "tree/quadratic/pointwise-0.01", &mut || pointwise(&tree, &tree_q, 0.01)), out);
+    record(measure(now, filter, "tree/quadratic/pointwise-0.001", &mut || pointwise(&tree, &tree_q, 0.001)), out);
+    record(measure(now, filter, "cdpr7/quadratic/exact", &mut || exact(&plain, &plain_q)), out);
+    record(measure(now, filter, "cdpr7/quadratic/pointwise-0.001", &mut || pointwise(&plain, &plain_q, 0.001)), out);
+    record(measure(now, filter, "box/linear/exact", &mut || exact(&boxed, &box_l)), out);
+    record(measure(now, filter, "box/linear/pointwise-0.001", &mut || pointwise(&boxed, &box_l, 0.001)), out);
     record(
-        measure(now, "box/ray-fig310-x/exact", &mut || {
+        measure(now, filter, "box/ray-fig310-x/exact", &mut || {
             let r = ray(&boxed, "fig310", Coord::X, 0.2, 3.8).expect("ray");
             format!("feasible={};infeasible={};boundaries={};uncertain={}", r.feasible.len(), r.infeasible.len(), r.boundaries.len(), r.uncertain.len())
         }),

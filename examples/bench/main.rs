@@ -1,6 +1,7 @@
 //! Native benchmark: exact verification versus the point-wise baseline on the bundled scenarios.
 //!
-//!     cargo run --release --example bench
+//!     cargo run --release --example bench            # every case
+//!     cargo run --release --example bench -- tree/   # the cases whose id contains "tree/"
 //!
 //! `scripts/bench.sh` runs it together with the wasm-in-node benchmark (`tests/bench_wasm.rs`,
 //! same cases from `cases.rs`) and writes `docs/benchmarks.md`.
@@ -10,7 +11,8 @@ mod cases;
 fn main() {
     let origin = std::time::Instant::now();
     let now = move || origin.elapsed().as_secs_f64() * 1000.0;
-    let results = cases::run_all("native", &now, &mut |line| println!("{line}"));
+    let filter = std::env::args().nth(1).unwrap_or_default();
+    let results = cases::run_all("native", &filter, &now, &mut |line| println!("{line}"));
     let get = |c: &str| results.iter().find(|m| m.case == c).map(|m| m.median_us).unwrap_or(f64::NAN);
     eprintln!();
     for m in &results {
