@@ -26,10 +26,8 @@ impl Condition for CableCable {
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let Sweep { alg, cables, tol } = sweep;
         let (ci, cj) = (&cables[self.i], &cables[self.j]);
-        if let (Some(bi), Some(bj)) = (&ci.bounds, &cj.bounds) {
-            if bi.apart(bj, self.clearance) {
-                return Partition::constant(Truth::False);
-            }
+        if ci.tube.clear_of_tube(&cj.tube, self.clearance) {
+            return Partition::constant(Truth::False);
         }
         let r: HVec = hvec_const(&(cj.base - ci.base));
         segment_segment(alg, &r, &ci.s, &cj.s, self.clearance, *tol)

@@ -14,7 +14,8 @@
 
 use super::algebra::{hvec_const, HVec};
 use super::primitives::{point_segment, segment_cone, segment_face, segment_segment, ConeSolid};
-use super::{Aabb, Condition, PoseCables, PoseCheck, Sweep};
+use super::tube::Bound;
+use super::{Condition, PoseCables, PoseCheck, Sweep};
 use crate::poly::{Partition, Truth};
 use crate::query::{point_segment_dist2, segment_crosses_triangle, segment_meets_cone, segment_segment_dist, segment_triangle_dist};
 use crate::shape::{Obstacle, Shape};
@@ -26,7 +27,7 @@ type V = Vector3<f64>;
 /// The tested geometry, with the clearance already applied where the shape is enlarged.
 #[derive(Debug, Clone)]
 enum Geom {
-    Mesh { faces: Vec<[V; 3]>, edges: Vec<(V, V)> },
+    Mesh { faces: Vec<([V; 3], Bound)>, edges: Vec<(V, V)> },
     Sphere { center: V, radius: f64, reach: f64 },
     Ellipsoid { center: V, metric: Matrix3<f64> },
     Capsule { from: V, to: V, radius: f64, reach: f64 },
@@ -41,15 +42,20 @@ pub struct CableShape {
     clearance: f64,
     exact: bool,
     geom: Geom,
-    bounds: Aabb,
+    bound: Bound,
 }
 
 impl CableShape {
     /// The condition for cable `cable` (0-based) against `obstacle` with clearance `c`.
     pub fn new(cable: usize, obstacle: &Obstacle, c: f64) -> CableShape {
-        let (geom, bounds, exact) = match &obstacle.shape {
+        let (geom, bound, exact) = match &obstacle.shape {
             Shape::Mesh(mesh) => {
-                let faces: Vec<[V; 3]> = (0..mesh.triangles.len()).map(|k| mesh.triangle(k)).collect();
+                let faces: Vec<([V; 3], Bound)> = (0..mesh.triangles.len())
+                    .map(|k| {
+                        let tri = mesh.triangle(k);
+                        (tri, Bound::ball_around(&tri, c))
+                    })
+                    .collect();
                 let mut seen = BTreeSet::new();
                 let mut edges = Vec::new();
                 for t in &mesh.triangles {
@@ -60,11 +66,11 @@ impl CableShape {
                         }
                     }
                 }
-                (Geom::Mesh { faces, edges }, Aabb::around(mesh.vertices.iter()).inflate(c), true)
+                (Geom::Mesh { faces, edges }, Bound::ball_around(&mesh.vertices, c), true)
             }
             Shape::Sphere { center, radius } => {
                 let reach = radius + c;
-                (Geom::Sphere { center: *center, radius: *radius, reach }, Aabb { min: center.add_scalar(-reach), max: center.add_scalar(reach) }, true)
+                (Geom::Sphere { center: *center, radius: *radius, reach }, Bound::Ball(*center, reach), true)
             }
             Shape::Ellipsoid { center, matrix } => {
                 let inv = matrix.try_inverse().unwrap_or_else(Matrix3::identity);
@@ -76,26 +82,25 @@ impl CableShape {
                     inv
                 };
                 let metric = inv_c.try_inverse().unwrap_or(*matrix);
-                let half = V::from_fn(|i, _| inv_c[(i, i)].max(0.0).sqrt());
-                (Geom::Ellipsoid { center: *center, metric }, Aabb { min: center - half, max: center + half }, c == 0.0)
+                // the largest semi-axis is at most √(trace M_c⁻¹)
+                let reach = inv_c.trace().max(0.0).sqrt();
+                (Geom::Ellipsoid { center: *center, metric }, Bound::Ball(*center, reach), c == 0.0)
             }
             Shape::Cylinder { from, to, radius } => {
                 let reach = radius + c;
-                let b = Aabb::around([from, to]).inflate(reach);
-                (Geom::Capsule { from: *from, to: *to, radius: *radius, reach }, b, false)
+                (Geom::Capsule { from: *from, to: *to, radius: *radius, reach }, Bound::Capsule(*from, *to, reach), false)
             }
             Shape::Cone { apex, axis, half_angle, height } => {
                 let sin = half_angle.sin();
                 let apex = apex - axis * (c / sin);
                 let height = height + c / sin + c;
                 let base = apex + axis * height;
+                // the cone lies in the capsule around its axis with the base radius
                 let r = height * half_angle.tan();
-                let half = V::from_fn(|i, _| r * (1.0 - axis[i] * axis[i]).max(0.0).sqrt());
-                let b = Aabb::around([&apex, &(base - half), &(base + half)]);
-                (Geom::Cone(ConeSolid { apex, axis: *axis, cos2: half_angle.cos().powi(2), height }), b, c == 0.0)
+                (Geom::Cone(ConeSolid { apex, axis: *axis, cos2: half_angle.cos().powi(2), height }), Bound::Capsule(apex, base, r), c == 0.0)
             }
         };
-        CableShape { cable, name: obstacle.name.clone(), clearance: c, exact, geom, bounds }
+        CableShape { cable, name: obstacle.name.clone(), clearance: c, exact, geom, bound }
     }
 }
 
@@ -112,9 +117,8 @@ impl Condition for CableShape {
         let Sweep { alg, cables, tol } = sweep;
         let tol = *tol;
         let cable = &cables[self.cable];
-        let cable_box = cable.bounds;
-        let far = |b: &Aabb| cable_box.is_some_and(|cb| cb.apart(b, 0.0));
-        if far(&self.bounds) {
+        let far = |b: &Bound| cable.tube.clear_of(b);
+        if far(&self.bound) {
             return Partition::constant(Truth::False);
         }
         let a = cable.base;
@@ -124,15 +128,15 @@ impl Condition for CableShape {
             Geom::Mesh { faces, edges } => {
                 let mut acc = Partition::constant(Truth::False);
                 for (p, q) in edges {
-                    if acc.is_all(Truth::True) || far(&Aabb::around([p, q]).inflate(c)) {
+                    if acc.is_all(Truth::True) || far(&Bound::Capsule(*p, *q, c)) {
                         continue;
                     }
                     let r: HVec = hvec_const(&(p - a));
                     let t: HVec = hvec_const(&(q - p));
                     acc = acc.or(&segment_segment(alg, &r, s, &t, c, tol));
                 }
-                for tri in faces {
-                    if acc.is_all(Truth::True) || far(&Aabb::around(tri.iter()).inflate(c)) {
+                for (tri, bound) in faces {
+                    if acc.is_all(Truth::True) || far(bound) {
                         continue;
                     }
                     acc = acc.or(&segment_face(alg, &a, s, tri, c, tol));
@@ -156,8 +160,8 @@ impl Condition for CableShape {
         let c = self.clearance;
         match &self.geom {
             Geom::Mesh { faces, .. } => {
-                let d = faces.iter().map(|t| segment_triangle_dist(&a, &s, t)).fold(f64::INFINITY, f64::min);
-                let crosses = faces.iter().any(|t| segment_crosses_triangle(&a, &s, t));
+                let d = faces.iter().map(|(t, _)| segment_triangle_dist(&a, &s, t)).fold(f64::INFINITY, f64::min);
+                let crosses = faces.iter().any(|(t, _)| segment_crosses_triangle(&a, &s, t));
                 PoseCheck { violated: d < c || crosses, distance: Some(d) }
             }
             Geom::Sphere { center, radius, reach } => {

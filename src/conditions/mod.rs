@@ -13,6 +13,7 @@ mod cable_cable;
 mod cable_length;
 mod cable_shape;
 pub mod primitives;
+pub mod tube;
 
 pub use cable_cable::CableCable;
 pub use cable_length::CableLength;
@@ -22,39 +23,8 @@ use crate::model::{Motion, Pose, Robot};
 use crate::poly::Partition;
 use crate::scenario::Scenario;
 use algebra::{Alg, HVec};
+use tube::Tube;
 use nalgebra::Vector3;
-
-/// An axis-aligned box.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Aabb {
-    /// Lower corner.
-    pub min: Vector3<f64>,
-    /// Upper corner.
-    pub max: Vector3<f64>,
-}
-
-impl Aabb {
-    /// The smallest box holding all the points.
-    pub fn around<'a>(points: impl IntoIterator<Item = &'a Vector3<f64>>) -> Aabb {
-        let mut b = Aabb { min: Vector3::repeat(f64::INFINITY), max: Vector3::repeat(f64::NEG_INFINITY) };
-        for p in points {
-            b.min = b.min.inf(p);
-            b.max = b.max.sup(p);
-        }
-        b
-    }
-
-    /// Grown by `r` on every side.
-    pub fn inflate(&self, r: f64) -> Aabb {
-        Aabb { min: self.min.add_scalar(-r), max: self.max.add_scalar(r) }
-    }
-
-    /// Whether the boxes are farther apart than `gap` along some axis (so every pair of points
-    /// in them is farther apart than `gap`).
-    pub fn apart(&self, o: &Aabb, gap: f64) -> bool {
-        (0..3).any(|k| self.min[k] - o.max[k] > gap || o.min[k] - self.max[k] > gap)
-    }
-}
 
 /// One cable along a motion: the segment base → base + s(λ), with s as a fraction over w.
 #[derive(Debug, Clone)]
@@ -63,8 +33,8 @@ pub struct SweptCable {
     pub base: Vector3<f64>,
     /// The cable vector s = p + R b − a (one power of w).
     pub s: HVec,
-    /// A box holding the cable for every λ, when one could be certified.
-    pub bounds: Option<Aabb>,
+    /// Balls holding its moving end piece by piece, for pruning.
+    pub tube: Tube,
 }
 
 /// Everything the exact conditions share along one motion.
@@ -95,28 +65,12 @@ impl Sweep {
                     acc
                 });
                 let s: HVec = [0, 1, 2].map(|i| algebra::H { p: tip[i].sub(&w.scale(cable.base[i])), k: 1 });
-                let bounds = hull_box(&tip, w).map(|b| {
-                    let with_base = Aabb { min: b.min.inf(&cable.base), max: b.max.sup(&cable.base) };
-                    with_base.inflate(1e-9 * (1.0 + with_base.max.abs().max() + with_base.min.abs().max()))
-                });
-                SweptCable { base: cable.base, s, bounds }
+                let tube = Tube::new(cable.base, &tip, w);
+                SweptCable { base: cable.base, s, tube }
             })
             .collect();
         Sweep { alg: Alg::new(w), cables, tol }
     }
-}
-
-/// A box around the rational curve X̂/w when every weight coefficient is certainly positive (the
-/// curve then stays in the convex hull of the points X̂_k/w_k).
-fn hull_box(tip: &[crate::poly::Bern; 3], w: &crate::poly::Bern) -> Option<Aabb> {
-    let n = tip.iter().map(|p| p.degree()).max().unwrap_or(0).max(w.degree());
-    let w = w.elevate(n);
-    if w.c.iter().any(|&x| x <= 2.0 * w.err) {
-        return None;
-    }
-    let tip = tip.clone().map(|p| p.elevate(n));
-    let pts: Vec<Vector3<f64>> = (0..=n).map(|k| Vector3::new(tip[0].c[k], tip[1].c[k], tip[2].c[k]) / w.c[k]).collect();
-    Some(Aabb::around(pts.iter()))
 }
 
 /// The outcome of a condition at one pose.

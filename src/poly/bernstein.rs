@@ -178,16 +178,20 @@ impl Bern {
         r
     }
 
-    /// Value at x ∈ [0, 1] and a bound on its error (de Casteljau).
+    /// Value at x ∈ [0, 1] and a bound on its error. Horner's scheme in x/(1−x) (or (1−x)/x past
+    /// the middle) on the C(n,k)-scaled coefficients: O(n), no allocation. The rounding bound is
+    /// taken relative to Σ|c_k|B_k(x) ≤ max|c|.
     pub fn eval(&self, x: f64) -> (f64, f64) {
-        let mut b = self.c.clone();
         let n = self.degree();
-        for level in 1..=n {
-            for k in 0..=(n - level) {
-                b[k] = b[k] * (1.0 - x) + b[k + 1] * x;
-            }
+        let row = &pascal_row_ref(n);
+        let (r, scale, forward) = if x <= 0.5 { (x / (1.0 - x), (1.0 - x).powi(n as i32), false) } else { ((1.0 - x) / x, x.powi(n as i32), true) };
+        let mut acc = 0.0;
+        for k in 0..=n {
+            // highest power first: c_n (or c_0 when running backwards)
+            let j = if forward { k } else { n - k };
+            acc = acc * r + self.c[j] * row.get(j).copied().unwrap_or_else(|| binomial(n, j));
         }
-        (b[0], self.err + (2 * n + 2) as f64 * U * self.max_abs())
+        (acc * scale, self.err + (5 * n + 5) as f64 * U * self.max_abs())
     }
 
     /// The two halves of the polynomial split at x, each re-parametrised to [0, 1].
@@ -209,9 +213,28 @@ impl Bern {
         (Bern { c: left, err }, Bern { c: right, err })
     }
 
+    /// The polynomial on [a, b] ⊆ [0, 1], re-parametrised to [0, 1].
+    pub fn restrict(&self, a: f64, b: f64) -> Bern {
+        let upto_b = if b < 1.0 { self.split(b).0 } else { self.clone() };
+        if a > 0.0 {
+            upto_b.split(a / b).1
+        } else {
+            upto_b
+        }
+    }
+
     /// Whether every coefficient is exactly zero and the error bound is zero.
     pub fn is_exact_zero(&self) -> bool {
         self.err == 0.0 && self.c.iter().all(|&x| x == 0.0)
+    }
+}
+
+/// Row n of the binomial table, borrowed (empty past the table: callers then compute entries).
+fn pascal_row_ref(n: usize) -> &'static [f64] {
+    if n <= MAX_DEGREE {
+        &pascal()[n]
+    } else {
+        &[]
     }
 }
 
@@ -257,6 +280,16 @@ mod tests {
             let x = i as f64 / 10.0;
             assert!((l.eval(x).0 - p.eval(0.3 * x).0).abs() < 1e-13);
             assert!((r.eval(x).0 - p.eval(0.3 + 0.7 * x).0).abs() < 1e-13);
+        }
+    }
+
+    #[test]
+    fn restriction_keeps_values() {
+        let p = Bern::from_monomial(&[0.3, -2.0, 5.0, -1.0]);
+        let q = p.restrict(0.25, 0.75);
+        for i in 0..=10 {
+            let x = i as f64 / 10.0;
+            assert!((q.eval(x).0 - p.eval(0.25 + 0.5 * x).0).abs() < 1e-13);
         }
     }
 

@@ -95,35 +95,56 @@ fn recurse(p: &Bern, lo: f64, hi: f64, tol: f64, budget: &mut usize, out: &mut V
     recurse(&right, mid, hi, tol, budget, out);
 }
 
-/// Locates the single simple root of `p` on [lo, hi] (local parameter 0…1) by bisection on
-/// certified values; emits sign `s0` before it, Unknown around it, −s0 after.
+/// Locates the single simple root of `p` on [lo, hi] (local parameter 0…1) on certified values:
+/// Illinois false position, with a bisection step every third iteration so the bracket always
+/// shrinks. Emits sign `s0` before the root, Unknown around it, −s0 after.
 fn bisect_root(p: &Bern, lo: f64, hi: f64, tol: f64, s0: i8, out: &mut Vec<(f64, Sign)>) {
-    let sign_at = |x: f64| -> i8 {
+    let sign_at = |x: f64| -> (i8, f64) {
         let (v, e) = p.eval(x);
-        if v > e {
-            1
-        } else if v < -e {
-            -1
-        } else {
-            0
-        }
+        (if v > e { 1 } else if v < -e { -1 } else { 0 }, v)
     };
     let width = hi - lo;
     let (mut a, mut b) = (0.0f64, 1.0f64);
-    while (b - a) * width > tol {
-        let m = 0.5 * (a + b);
+    let (mut fa, mut fb) = (p.c[0], p.c[p.degree()]);
+    let mut last_side = 0i8;
+    let mut step = 0usize;
+    while (b - a) * width > tol && step < 200 {
+        step += 1;
+        let secant = (a * fb - b * fa) / (fb - fa);
+        let m = if step % 3 == 0 || !(secant > a && secant < b) { 0.5 * (a + b) } else { secant };
         match sign_at(m) {
-            s if s == s0 => a = m,
-            0 => {
-                // The root is within rounding of m: try to pin it to a tol-wide bracket.
-                let h = 0.25 * tol / width;
-                if sign_at(m - h) == s0 && sign_at(m + h) == -s0 {
-                    a = m - h;
-                    b = m + h;
+            (s, v) if s == s0 => {
+                a = m;
+                fa = v;
+                if last_side == 1 {
+                    fb *= 0.5;
                 }
+                last_side = 1;
+            }
+            (0, _) => {
+                // The root is within rounding of m: widen a bracket around m step by step until
+                // both ends are certified (the narrowest such bracket, within a factor 2).
+                let h = 0.25 * tol / width;
+                let mut d = h;
+                while m - d > a && sign_at(m - d).0 != s0 {
+                    d *= 2.0;
+                }
+                a = a.max(m - d);
+                let mut d = h;
+                while m + d < b && sign_at(m + d).0 != -s0 {
+                    d *= 2.0;
+                }
+                b = b.min(m + d);
                 break;
             }
-            _ => b = m,
+            (_, v) => {
+                b = m;
+                fb = v;
+                if last_side == -1 {
+                    fa *= 0.5;
+                }
+                last_side = -1;
+            }
         }
     }
     let (s_before, s_after) = if s0 > 0 { (Sign::Pos, Sign::Neg) } else { (Sign::Neg, Sign::Pos) };
