@@ -8,6 +8,7 @@ use cablenav::model::{PointFrame, Pose};
 use cablenav::verify::{tension_envelope, wrench_at};
 use cablenav::Scenario;
 use nalgebra::{Matrix6, Vector3, Vector6};
+use std::f64::consts::PI;
 
 const ROBOCRANE: &str = include_str!("../static/scenarios/robocrane.json");
 
@@ -69,9 +70,9 @@ fn tension_ranges_match_brute_force_over_the_wrench_sphere() {
             rng.range(-1.0, 1.0),
             rng.range(-1.0, 1.0),
             rng.range(0.5, 3.0),
-            rng.range(-3.14, 3.14),
+            rng.range(-PI, PI),
             rng.range(-3.0, 3.0),
-            rng.range(-3.14, 3.14),
+            rng.range(-PI, PI),
         ]);
         let report = wrench_at(&s, &pose).unwrap();
         if report.singular {

@@ -15,6 +15,9 @@ use std::cell::OnceCell;
 
 type V = Vector3<f64>;
 
+/// Centre and radius.
+type Ball = (V, f64);
+
 /// Numbers of sub-intervals of the successive levels.
 pub const LEVELS: [usize; 3] = [1, 4, 16];
 
@@ -57,7 +60,7 @@ pub struct Tube {
     pub base: V,
     tip: [Bern; 3],
     w: Bern,
-    levels: [OnceCell<Option<Vec<(V, f64)>>>; 3],
+    levels: [OnceCell<Option<Vec<Ball>>>; 3],
 }
 
 /// Slack covering the rounding of the distance computations.
@@ -99,7 +102,7 @@ impl Tube {
         Tube { base, tip: tip.clone().map(|p| p.elevate(n)), w: w.elevate(n), levels: Default::default() }
     }
 
-    fn level(&self, l: usize) -> Option<&Vec<(V, f64)>> {
+    fn level(&self, l: usize) -> Option<&Vec<Ball>> {
         self.levels[l]
             .get_or_init(|| {
                 let n = LEVELS[l];

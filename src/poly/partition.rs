@@ -120,11 +120,6 @@ impl Partition {
             })
             .collect()
     }
-
-    /// The truth at x (the piece containing x; at a piece end, the piece it ends).
-    pub fn at(&self, x: f64) -> Truth {
-        self.pieces.iter().find(|p| x <= p.0).map_or(Truth::Unknown, |p| p.1)
-    }
 }
 
 #[cfg(test)]

@@ -111,7 +111,7 @@ fn bisect_root(p: &Bern, lo: f64, hi: f64, tol: f64, s0: i8, out: &mut Vec<(f64,
     while (b - a) * width > tol && step < 200 {
         step += 1;
         let secant = (a * fb - b * fa) / (fb - fa);
-        let m = if step % 3 == 0 || !(secant > a && secant < b) { 0.5 * (a + b) } else { secant };
+        let m = if step.is_multiple_of(3) || !(secant > a && secant < b) { 0.5 * (a + b) } else { secant };
         match sign_at(m) {
             (s, v) if s == s0 => {
                 a = m;

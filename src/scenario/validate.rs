@@ -536,6 +536,17 @@ fn known_poses(poses: &[(String, Pose)]) -> String {
     }
 }
 
+/// The name of list entry `path` must be non-empty and differ from the `earlier` entries' names.
+fn unique_name<'a>(path: &str, name: &str, kind: &str, list: &str, earlier: impl Iterator<Item = &'a str>) -> Result<()> {
+    if name.trim().is_empty() {
+        return Err(Error::new(format!("{path}.name"), "must not be empty"));
+    }
+    match earlier.enumerate().find(|(_, o)| *o == name) {
+        Some((j, _)) => Err(Error::new(format!("{path}.name"), format!("duplicate {kind} name \"{name}\" (also {list}[{j}])"))),
+        None => Ok(()),
+    }
+}
+
 fn trajectories(
     raw: &[RawTrajectory],
     poses: &[(String, Pose)],
@@ -544,15 +555,7 @@ fn trajectories(
     let mut out: Vec<Trajectory> = Vec::with_capacity(raw.len());
     for (k, t) in raw.iter().enumerate() {
         let path = format!("trajectories[{k}]");
-        if t.name.trim().is_empty() {
-            return Err(Error::new(format!("{path}.name"), "must not be empty"));
-        }
-        if let Some(j) = out.iter().position(|o| o.name == t.name) {
-            return Err(Error::new(
-                format!("{path}.name"),
-                format!("duplicate trajectory name \"{}\" (also trajectories[{j}])", t.name),
-            ));
-        }
+        unique_name(&path, &t.name, "trajectory", "trajectories", out.iter().map(|o| o.name.as_str()))?;
         let translation = translation(&format!("{path}.translation"), &t.translation)?;
         let orientation = orientation(&format!("{path}.orientation"), &t.orientation, poses, warnings)?;
         out.push(Trajectory { name: t.name.clone(), translation, orientation });
@@ -670,15 +673,7 @@ fn queries(raw: &[RawQuery], poses: &[(String, Pose)]) -> Result<Vec<Query>> {
     let mut out: Vec<Query> = Vec::with_capacity(raw.len());
     for (k, q) in raw.iter().enumerate() {
         let path = format!("queries[{k}]");
-        if q.name.trim().is_empty() {
-            return Err(Error::new(format!("{path}.name"), "must not be empty"));
-        }
-        if let Some(j) = out.iter().position(|o| o.name == q.name) {
-            return Err(Error::new(
-                format!("{path}.name"),
-                format!("duplicate query name \"{}\" (also queries[{j}])", q.name),
-            ));
-        }
+        unique_name(&path, &q.name, "query", "queries", out.iter().map(|o| o.name.as_str()))?;
         for (field, name) in [("start", &q.start), ("goal", &q.goal)] {
             if find_pose(poses, name).is_none() {
                 return Err(Error::new(

@@ -6,7 +6,7 @@ mod sections;
 pub mod slice;
 
 pub use pointwise::verify_pointwise;
-pub use sections::{sections, Labelled, Piece, Sections};
+pub use sections::{push_merged, sections, Labelled, Piece, Sections};
 pub use slice::{slice, SliceMap};
 
 use crate::conditions::{cables_at, for_scenario, Condition, Sweep};
@@ -42,11 +42,7 @@ fn violation_pieces(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[
 
 fn append_mapped(out: &mut Vec<Piece>, p: &Partition, param: &Param) {
     for (a, b, t) in p.intervals() {
-        let (va, vb) = (param.value(a), param.value(b));
-        match out.last_mut() {
-            Some(last) if last.2 == t => last.1 = vb,
-            _ => out.push((va, vb, t)),
-        }
+        push_merged(out, (param.value(a), param.value(b), t));
     }
 }
 

@@ -2,7 +2,7 @@
 //! what exact verification replaces, kept for tests and benchmarks. Boundaries are placed halfway
 //! between the samples that disagree, so they are only as good as Δt.
 
-use super::sections::{sections, Labelled, Piece};
+use super::sections::{push_merged, sections, Labelled, Piece};
 use super::{conservative_labels, trajectory_report};
 use crate::conditions::{cables_at, for_scenario};
 use crate::error::{Error, Result};
@@ -39,11 +39,7 @@ pub fn verify_pointwise(s: &Scenario, traj: &Trajectory, dt: f64) -> Result<Veri
         let mut out: Vec<Piece> = Vec::new();
         for k in 0..=n {
             let (a, b) = cell(k);
-            let t = if f(k) { Truth::True } else { Truth::False };
-            match out.last_mut() {
-                Some(last) if last.2 == t => last.1 = b,
-                _ => out.push((a, b, t)),
-            }
+            push_merged(&mut out, (a, b, if f(k) { Truth::True } else { Truth::False }));
         }
         out
     };

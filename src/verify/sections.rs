@@ -28,7 +28,8 @@ pub struct Sections {
     pub boundaries: Vec<(f64, String, Side)>,
 }
 
-fn push_merged(out: &mut Vec<Piece>, p: Piece) {
+/// Appends a piece, extending the last one instead when it has the same truth.
+pub fn push_merged(out: &mut Vec<Piece>, p: Piece) {
     match out.last_mut() {
         Some(last) if last.2 == p.2 => last.1 = p.1,
         _ => out.push(p),
