@@ -14,10 +14,16 @@ pub const SINGULAR_RATIO: f64 = 1e-10;
 
 /// The structure matrix of `robot` at `pose` with moments about `point`.
 pub fn structure_matrix(robot: &Robot, pose: &Pose, point: &Vector3<f64>) -> Matrix6<f64> {
+    let cables: Vec<_> = robot.cables.iter().take(6).map(|c| (c.base, pose.transform(&c.platform))).collect();
+    structure_matrix_of(&cables, point)
+}
+
+/// The structure matrix of the first six (base anchor, platform anchor) pairs, in the world
+/// frame, with moments about `point`.
+pub fn structure_matrix_of(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>) -> Matrix6<f64> {
     let mut j = Matrix6::zeros();
-    for (i, cable) in robot.cables.iter().take(6).enumerate() {
-        let x = pose.transform(&cable.platform);
-        let d = x - cable.base;
+    for (i, &(base, x)) in cables.iter().take(6).enumerate() {
+        let d = x - base;
         let e = d / d.norm();
         let m = (x - point).cross(&e);
         for k in 0..3 {
@@ -40,7 +46,17 @@ pub struct TensionRange {
 /// The tension ranges of the six cables at `pose`, or `None` at a singular pose (J not
 /// invertible to within [`SINGULAR_RATIO`]).
 pub fn tension_ranges(robot: &Robot, pose: &Pose, wrench: &Wrench) -> Option<[TensionRange; 6]> {
-    let j = structure_matrix(robot, pose, &wrench.point_at(pose));
+    let cables: Vec<_> = robot.cables.iter().map(|c| (c.base, pose.transform(&c.platform))).collect();
+    tension_ranges_at(&cables, &wrench.point_at(pose), wrench)
+}
+
+/// [`tension_ranges`] from the cables' world anchors and the wrench's application point; `None`
+/// also when there are not exactly six cables.
+pub fn tension_ranges_at(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, wrench: &Wrench) -> Option<[TensionRange; 6]> {
+    if cables.len() != 6 {
+        return None;
+    }
+    let j = structure_matrix_of(cables, point);
     let scale: f64 = (0..6).map(|i| j.column(i).norm()).product();
     let lu = j.lu();
     if !(lu.determinant().abs() > SINGULAR_RATIO * scale) {

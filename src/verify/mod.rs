@@ -14,7 +14,6 @@ use crate::error::{Error, Result};
 use crate::model::motion::Param;
 use crate::model::{Coord, Motion, Pose, Trajectory};
 use crate::poly::{Partition, Truth};
-use crate::query::wrench::tension_ranges;
 use crate::report::{Boundary, CheckEntry, PoseReport, RayBoundary, RayReport, TensionEnvelope, VerifyReport, WrenchReport};
 use crate::scenario::Scenario;
 
@@ -58,7 +57,6 @@ pub fn verify_trajectory(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport
     let (overall, per) = violation_pieces(&conditions, s, std::slice::from_ref(&motion), BOUNDARY_TOL);
     let sec = sections(&overall, &per, BOUNDARY_TOL);
     let mut warnings = s.warnings.clone();
-    warnings.extend(wrench_not_along_motions(s));
     if !sec.uncertain.is_empty() {
         warnings.push(format!("{} section(s) could not be certified either way; see \"uncertain\"", sec.uncertain.len()));
     }
@@ -110,16 +108,7 @@ pub fn ray(s: &Scenario, pose_name: &str, coord: Coord, lo: f64, hi: f64) -> Res
         boundaries: sec.boundaries.into_iter().map(|(value, constraint, enters)| RayBoundary { value, constraint, enters }).collect(),
         uncertain: sec.uncertain,
         conservative: conservative_labels(&conditions),
-        warnings: wrench_not_along_motions(s).into_iter().collect(),
-    })
-}
-
-/// The warning that sections along motions do not include the wrench set yet.
-fn wrench_not_along_motions(s: &Scenario) -> Option<String> {
-    s.wrench.as_ref().map(|_| {
-        "the wrench set is checked per pose (`check`), not yet along trajectories and rays: these sections cover \
-         interference and cable lengths only"
-            .to_string()
+        warnings: s.warnings.clone(),
     })
 }
 
@@ -128,9 +117,9 @@ fn wrench_not_along_motions(s: &Scenario) -> Option<String> {
 pub fn wrench_at(s: &Scenario, pose: &Pose) -> Option<WrenchReport> {
     let wrench = s.wrench.as_ref()?;
     let cables = &s.robot.cables;
-    let lengths: Vec<f64> = cables_at(&s.robot, pose).iter().map(|(a, x)| (x - a).norm()).collect();
-    let bad_length = cables.iter().zip(&lengths).position(|(c, &l)| !(l > c.length.min && l < c.length.max));
-    let Some(ranges) = tension_ranges(&s.robot, pose, wrench) else {
+    let at = cables_at(&s.robot, pose);
+    let bad_length = cables.iter().zip(at.iter()).position(|(c, (a, x))| !c.length.contains((x - a).norm()));
+    let Some(ranges) = at.tension_ranges(wrench) else {
         return Some(WrenchReport {
             feasible: false,
             singular: true,
