@@ -387,7 +387,21 @@ fn wrench_section_is_validated() {
     expect(|v| { six(v); v["wrench"] = json!({"nominal": [0, 0, 1], "radius": 1}); }, "wrench.nominal", "expected 6");
     expect(|v| { six(v); v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1, "point_frame": "moon"}); }, "wrench.point_frame", "moon");
     expect(|v| { six(v); v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1, "mass": 3}); }, "wrench.mass", "unknown field");
-    expect(|v| v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1}), "wrench", "exactly 6 cables");
+    // The 7-cable base scenario takes a wrench section (closure and static feasibility) with a
+    // warning that the ellipsoid is not used; 11 cables are too many.
+    let s = ok_with(|v| v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1}));
+    assert!(s.warnings.iter().any(|w| w.contains("wrench closure")), "{:?}", s.warnings);
+    expect(
+        |v| {
+            for k in 0..4 {
+                let cable = json!({"base": [4, k, 4], "platform": [0.1 * k as f64, 0, 0]});
+                v["robot"]["cables"].as_array_mut().unwrap().push(cable);
+            }
+            v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1});
+        },
+        "wrench",
+        "up to 10 cables",
+    );
 }
 
 #[test]

@@ -13,12 +13,15 @@ mod cable_cable;
 mod cable_length;
 mod cable_shape;
 pub mod primitives;
+mod closure;
+mod structure;
 mod tension;
 pub mod tube;
 
 pub use cable_cable::CableCable;
 pub use cable_length::CableLength;
 pub use cable_shape::CableShape;
+pub use closure::{FacetPolys, StaticFeasibility, WrenchClosure};
 pub use tension::{CableTension, Side, TensionPolys};
 
 use std::cell::OnceCell;
@@ -56,6 +59,8 @@ pub struct Sweep {
     pub motion: Motion,
     /// The wrench polynomials, built by the first tension condition that needs them.
     pub tension: Option<Rc<TensionPolys>>,
+    /// The facet polynomials of robots with more than six cables, built likewise.
+    pub facets: Option<Rc<FacetPolys>>,
 }
 
 impl Sweep {
@@ -79,7 +84,7 @@ impl Sweep {
                 SweptCable { base: cable.base, s, tube }
             })
             .collect();
-        Sweep { alg: Alg::new(w), cables, tol, motion: motion.clone(), tension: None }
+        Sweep { alg: Alg::new(w), cables, tol, motion: motion.clone(), tension: None, facets: None }
     }
 }
 
@@ -185,14 +190,18 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
         }
     }
     if let Some(wrench) = &s.wrench {
+        let wrench = Rc::new(wrench.clone());
         if m == 6 {
-            let wrench = Rc::new(wrench.clone());
             for (i, cable) in robot.cables.iter().enumerate() {
                 let bounds = [(Side::Lower, cable.tension.min), (Side::Upper, cable.tension.max)];
                 for (side, bound) in bounds.into_iter().filter(|(_, b)| b.is_finite()) {
                     out.push(Box::new(CableTension { cable: i, side, bound, wrench: Rc::clone(&wrench) }));
                 }
             }
+        } else {
+            out.push(Box::new(WrenchClosure { wrench: Rc::clone(&wrench) }));
+            let bounds = robot.cables.iter().map(|c| c.tension).collect();
+            out.push(Box::new(StaticFeasibility { wrench, bounds }));
         }
     }
     out

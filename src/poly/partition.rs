@@ -61,6 +61,12 @@ impl Partition {
         Partition::normalised(pieces)
     }
 
+    /// From `(end, truth)` pieces in increasing order, the last ending at 1 (adjacent equal
+    /// pieces are merged).
+    pub fn from_pieces(pieces: Vec<(f64, Truth)>) -> Partition {
+        Partition::normalised(pieces)
+    }
+
     fn normalised(pieces: Vec<(f64, Truth)>) -> Partition {
         let mut out: Vec<(f64, Truth)> = Vec::with_capacity(pieces.len());
         for (end, t) in pieces {

@@ -9,7 +9,9 @@ pub use pointwise::verify_pointwise;
 pub use sections::{push_merged, sections, Labelled, Piece, Sections};
 pub use slice::{slice, SliceMap};
 
-use crate::conditions::{cables_at, for_scenario, Condition, Sweep};
+use crate::conditions::{cables_at, for_scenario, Condition, PoseCables, Sweep};
+use crate::model::{Bounds, Wrench};
+use crate::query::wrench::{closure_holds, static_margin};
 use crate::error::{Error, Result};
 use crate::model::motion::Param;
 use crate::model::{Coord, Motion, Pose, Trajectory};
@@ -119,6 +121,9 @@ pub fn wrench_at(s: &Scenario, pose: &Pose) -> Option<WrenchReport> {
     let cables = &s.robot.cables;
     let at = cables_at(&s.robot, pose);
     let bad_length = cables.iter().zip(at.iter()).position(|(c, (a, x))| !c.length.contains((x - a).norm()));
+    if cables.len() != 6 {
+        return Some(static_report(s, &at, wrench, bad_length));
+    }
     let Some(ranges) = at.tension_ranges(wrench) else {
         return Some(WrenchReport {
             feasible: false,
@@ -152,6 +157,34 @@ pub fn wrench_at(s: &Scenario, pose: &Pose) -> Option<WrenchReport> {
         tension_nominal: ranges.iter().map(|r| r.nominal).collect(),
         active,
     })
+}
+
+/// The per-pose wrench report of a robot with more than six cables: wrench closure, and the
+/// static-feasibility LP's margin and tensions for the nominal wrench (the ellipsoid is not used;
+/// `tension_min`/`tension_max` stay empty).
+fn static_report(s: &Scenario, at: &PoseCables, wrench: &Wrench, bad_length: Option<usize>) -> WrenchReport {
+    let point = wrench.point_at(&at.pose);
+    let bounds: Vec<Bounds> = s.robot.cables.iter().map(|c| c.tension).collect();
+    let closed = closure_holds(&at.cables, &point);
+    let solved = static_margin(&at.cables, &point, &wrench.nominal, &bounds);
+    let margin = solved.as_ref().map(|(m, _)| *m);
+    let tensions = solved.map(|(_, f)| f).unwrap_or_default();
+    let active = if let Some(i) = bad_length {
+        format!("cable {} length", i + 1)
+    } else if !closed {
+        "wrench closure".to_string()
+    } else {
+        "static feasibility".to_string()
+    };
+    WrenchReport {
+        feasible: closed && margin.is_some_and(|m| m > 0.0) && bad_length.is_none(),
+        singular: margin.is_none(),
+        margin,
+        tension_min: vec![],
+        tension_max: vec![],
+        tension_nominal: tensions,
+        active,
+    }
 }
 
 /// The tension envelope along a trajectory (Bohigas et al. Fig. 6, bottom): at `samples` + 1
