@@ -39,8 +39,8 @@ LOAD_AFTER=$(cut -d' ' -f1-3 /proc/loadavg)
 grep -h '^BENCH ' "$TMP/native.txt" "$TMP/wasm.txt" > "$TMP/all.txt"
 n_native=$(grep -c '^BENCH native ' "$TMP/all.txt" || true)
 n_wasm=$(grep -c '^BENCH wasm ' "$TMP/all.txt" || true)
-if [ "$n_native" -ne 8 ] || [ "$n_wasm" -ne 8 ]; then
-  say "expected 8 native and 8 wasm results, got $n_native and $n_wasm:"
+if [ "$n_native" -ne 14 ] || [ "$n_wasm" -ne 14 ]; then
+  say "expected 14 native and 14 wasm results, got $n_native and $n_wasm:"
   cat "$TMP/native.txt" "$TMP/wasm.txt" >&2
   exit 1
 fi
@@ -67,7 +67,7 @@ function ratio(a, b) { return (b > 0) ? sprintf("%.2f×", a / b) : "–" }
 function yes(ok) { return ok ? "**met**" : "**missed**" }
 { med[$2, $3] = $4; best[$2, $3] = $5; calls[$2, $3] = $6; samples[$2, $3] = $7; summ[$3] = $8 }
 END {
-  n = split("tree/quadratic/exact tree/quadratic/pointwise-0.01 tree/quadratic/pointwise-0.001 cdpr7/quadratic/exact cdpr7/quadratic/pointwise-0.001 box/linear/exact box/linear/pointwise-0.001 box/ray-fig310-x/exact", cases, " ")
+  n = split("tree/quadratic/exact tree/quadratic/pointwise-0.01 tree/quadratic/pointwise-0.001 cdpr7/quadratic/exact cdpr7/quadratic/pointwise-0.001 box/linear/exact box/linear/pointwise-0.001 box/ray-fig310-x/exact crane/pose-wrench crane/q1-q2/exact crane/q1-q2/pointwise-0.001 crane/tilt/exact crane/tilt/pointwise-0.001 crane/slice-400", cases, " ")
   what["tree/quadratic/exact"] = "cdpr7-tree.json, \"quadratic\": exact (`verify_trajectory`)"
   what["tree/quadratic/pointwise-0.01"] = "cdpr7-tree.json, \"quadratic\": point-wise, Δt = 0.01"
   what["tree/quadratic/pointwise-0.001"] = "cdpr7-tree.json, \"quadratic\": point-wise, Δt = 0.001"
@@ -76,6 +76,12 @@ END {
   what["box/linear/exact"] = "cdpr7-box.json, \"linear\": exact"
   what["box/linear/pointwise-0.001"] = "cdpr7-box.json, \"linear\": point-wise, Δt = 0.001"
   what["box/ray-fig310-x/exact"] = "cdpr7-box.json, Fig. 3.10 ray: `ray(\"fig310\", x, 0.2, 3.8)`, exact"
+  what["crane/pose-wrench"] = "robocrane.json, q1: per-pose wrench test (`tension_ranges`)"
+  what["crane/q1-q2/exact"] = "robocrane.json, \"slerp q1-q2\": exact, wrench + lengths + interference"
+  what["crane/q1-q2/pointwise-0.001"] = "robocrane.json, \"slerp q1-q2\": point-wise, Δt = 0.001"
+  what["crane/tilt/exact"] = "robocrane.json + slerp q1 → θ = 1.4 (crosses a tension bound): exact"
+  what["crane/tilt/pointwise-0.001"] = "the same tilt: point-wise, Δt = 0.001"
+  what["crane/slice-400"] = "robocrane.json, 400×400 slice over (φ, θ) through q1"
 
   print "# Benchmarks"
   print ""
@@ -137,7 +143,7 @@ END {
   print ""
   print "| trajectory | Δt | native | wasm |"
   print "|---|---:|---:|---:|"
-  nr = split("tree/quadratic/pointwise-0.01:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.01;tree/quadratic/pointwise-0.001:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.001;cdpr7/quadratic/pointwise-0.001:cdpr7/quadratic/exact:cdpr7 \"quadratic\":0.001;box/linear/pointwise-0.001:box/linear/exact:cdpr7-box \"linear\":0.001", rows, ";")
+  nr = split("tree/quadratic/pointwise-0.01:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.01;tree/quadratic/pointwise-0.001:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.001;cdpr7/quadratic/pointwise-0.001:cdpr7/quadratic/exact:cdpr7 \"quadratic\":0.001;box/linear/pointwise-0.001:box/linear/exact:cdpr7-box \"linear\":0.001;crane/q1-q2/pointwise-0.001:crane/q1-q2/exact:robocrane \"slerp q1-q2\" (wrench):0.001;crane/tilt/pointwise-0.001:crane/tilt/exact:robocrane tilt past the bound (wrench):0.001", rows, ";")
   for (i = 1; i <= nr; i++) {
     split(rows[i], f, ":")
     printf "| %s | %s | %s | %s |\n", f[3], f[4], ratio(med["native", f[1]], med["native", f[2]]), ratio(med["wasm", f[1]], med["wasm", f[2]])
@@ -153,6 +159,10 @@ END {
   printf "| exact, cdpr7-tree \"quadratic\", native: ≤ 100 µs | %s median (best %s) | %s%s |\n", us(ex), us(best["native", "tree/quadratic/exact"]), yes(ex <= 100), (ex > 100 ? sprintf(" (%.0f× over)", ex / 100) : "")
   printf "| exact faster than point-wise at Δt = 0.01 (same trajectory) | point-wise / exact = %s native, %s wasm | %s |\n", ratio(pw, ex), ratio(pww, exw), yes(pw > ex)
   printf "| wasm ≤ 2× native (exact, same trajectory) | wasm / native = %s | %s |\n", ratio(exw, ex), yes(exw <= 2 * ex)
+  pp = med["native", "crane/pose-wrench"]; sl = med["wasm", "crane/slice-400"]
+  printf "| per-pose wrench test (6 cables), native: ≤ 2 µs | %s median (best %s) | %s |\n", us(pp), us(best["native", "crane/pose-wrench"]), yes(pp <= 2)
+  printf "| 400×400 slice, wasm: ≤ 0.5 s | %s median (native %s) | %s |\n", us(sl), us(med["native", "crane/slice-400"]), yes(sl <= 500000)
+  printf "| exact wrench verification vs point-wise at Δt = 0.001 (Robocrane tilt) | point-wise / exact = %s native, %s wasm | %s |\n", ratio(med["native", "crane/tilt/pointwise-0.001"], med["native", "crane/tilt/exact"]), ratio(med["wasm", "crane/tilt/pointwise-0.001"], med["wasm", "crane/tilt/exact"]), "(a comparison, no target)"
   print ""
   print "For comparison, the thesis reported 0.60 s exact against 4.89 s point-wise in MATLAB (point-wise /"
   print "exact ≈ 8.2×). Here the exact verification of cdpr7-tree \"quadratic\" takes " us(ex) " natively, about 1/" sprintf("%.0f", 600000 / ex)

@@ -130,7 +130,8 @@ fn static_feasibility_lp_matches_a_null_space_search() {
     let bounds: Vec<Bounds> = s.robot.cables.iter().map(|c| c.tension).collect();
     let mut rng = Rng(5);
     let (mut feasible, mut infeasible) = (0, 0);
-    for _ in 0..if cfg!(target_arch = "wasm32") { 200 } else { 2000 } {
+    let poses = if cfg!(target_arch = "wasm32") { 200 } else { 2000 };
+    for _ in 0..poses {
         let pose = random_pose(&mut rng);
         let at = cables_at(&s.robot, &pose);
         let j = structure_matrix_m(&at.cables, &pose.position);
@@ -147,7 +148,8 @@ fn static_feasibility_lp_matches_a_null_space_search() {
         assert!(f.iter().all(|&fk| fk >= bounds[0].min + got - 1e-8 && fk <= bounds[0].max - got + 1e-8));
         if got > 0.0 { feasible += 1 } else { infeasible += 1 }
     }
-    assert!(feasible > 50 && infeasible > 50, "feasible {feasible}, infeasible {infeasible}");
+    // A few percent of these poses are statically feasible: both answers must be exercised.
+    assert!(feasible >= poses / 40 && infeasible >= poses / 40, "feasible {feasible}, infeasible {infeasible}");
 }
 
 /// Exact closure and static-feasibility sections along random motions of the 7-cable robot agree

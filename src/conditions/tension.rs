@@ -53,10 +53,9 @@ pub struct TensionPolys {
     local: Local,
     /// Δ = det Ñ.
     delta: Bern,
-    /// α_i per cable.
-    alpha: Vec<Bern>,
-    /// β_i per cable.
-    beta: Vec<Bern>,
+    /// (i, α_i, β_i) for the cables expanded here (all six on a whole motion, one on a refined
+    /// piece).
+    columns: Vec<(usize, Bern, Bern)>,
     /// P_i = ‖s̃_i‖² per cable.
     len2: Vec<Bern>,
 }
@@ -64,26 +63,30 @@ pub struct TensionPolys {
 impl TensionPolys {
     /// The shared polynomials of `sweep` (whose robot has exactly 6 cables) for `wrench`.
     pub fn new(sweep: &Sweep, wrench: &Wrench) -> TensionPolys {
-        TensionPolys::on(Local::of(sweep), (0.0, 1.0), wrench)
+        TensionPolys::on(Local::of(sweep), (0.0, 1.0), wrench, &[0, 1, 2, 3, 4, 5])
     }
 
-    /// The same polynomials re-expanded on [c, d] ⊆ [0, 1].
-    fn refined(&self, (c, d): (f64, f64), wrench: &Wrench) -> TensionPolys {
+    /// α_i and β_i of cable i, if expanded here.
+    fn column(&self, i: usize) -> Option<(&Bern, &Bern)> {
+        self.columns.iter().find(|c| c.0 == i).map(|c| (&c.1, &c.2))
+    }
+
+    /// Cable i's polynomials (and Δ) re-expanded on [c, d] ⊆ [0, 1].
+    fn refined(&self, (c, d): (f64, f64), wrench: &Wrench, i: usize) -> TensionPolys {
         let (c0, d0) = self.span;
         let local = self.local.restrict((c - c0) / (d0 - c0), (d - c0) / (d0 - c0));
-        TensionPolys::on(local, (c, d), wrench)
+        TensionPolys::on(local, (c, d), wrench, &[i])
     }
 
-    fn on(local: Local, span: (f64, f64), wrench: &Wrench) -> TensionPolys {
+    fn on(local: Local, span: (f64, f64), wrench: &Wrench, cables: &[usize]) -> TensionPolys {
         let w = &local.weight;
         let n = structure_numerators(&local, wrench);
         let w2 = w.mul(w);
         // D_w w0 and the row weights w^{k_j}.
         let row_weight = |j: usize| if j < 3 { w } else { &w2 };
         let mut delta: Option<Bern> = None;
-        let mut alpha = Vec::with_capacity(6);
-        let mut beta = Vec::with_capacity(6);
-        for i in 0..6 {
+        let mut columns = Vec::with_capacity(cables.len());
+        for &i in cables {
             let others: Vec<usize> = (0..6).filter(|&c| c != i).collect();
             let minors = minors5(&n, &[others[0], others[1], others[2], others[3], others[4]]);
             // Cofactors C_ji = (−1)^{i+j} M_ji, and g_j = w^{k_j} C_ji.
@@ -111,11 +114,10 @@ impl TensionPolys {
                 }
                 b = b.add(&g[j].mul(&row));
             }
-            alpha.push(a);
-            beta.push(b);
+            columns.push((i, a, b));
         }
         let len2 = local.cables.iter().map(|(_, s)| s[0].mul(&s[0]).add(&s[1].mul(&s[1])).add(&s[2].mul(&s[2]))).collect();
-        TensionPolys { span, delta: delta.unwrap_or_else(|| Bern::constant(0.0)), alpha, beta, len2, local }
+        TensionPolys { span, delta: delta.unwrap_or_else(|| Bern::constant(0.0)), columns, len2, local }
     }
 }
 
@@ -152,9 +154,10 @@ impl CableTension {
     /// restricts to those pieces).
     fn holds(&self, t: &TensionPolys, sigma: f64, tol: f64) -> Partition {
         let i = self.cable;
-        let a = t.alpha[i].scale(sigma);
+        let Some((alpha, beta)) = t.column(i) else { return Partition::constant(Truth::Unknown) };
+        let a = alpha.scale(sigma);
         let abs_delta = t.delta.scale(sigma);
-        let (p, beta) = (&t.len2[i], &t.beta[i]);
+        let p = &t.len2[i];
         // 4 P² a² β, the square of the cross term 2 P a √β.
         let cross = || {
             let pa = p.mul(&a);
@@ -232,7 +235,7 @@ impl Condition for CableTension {
             }
             for (a, b) in wide {
                 let span = ((a - (b - a)).max(0.0), (b + (b - a)).min(1.0));
-                let local = polys.refined(span, &self.wrench);
+                let local = polys.refined(span, &self.wrench, self.cable);
                 let inner = self.violated_on(&local, tol / (span.1 - span.0));
                 out = out.splice((a, b), &inner, span);
             }
