@@ -11,6 +11,8 @@ use wasm_bindgen_test::wasm_bindgen_test as test;
 
 mod support;
 
+use support::env_usize;
+
 use cablenav::report::{Side, VerifyReport};
 use cablenav::verify::verify_trajectory;
 use cablenav::Scenario;
@@ -234,14 +236,6 @@ fn exact_wrench_intervals_match_dense_sampling_on_random_robots() {
     assert!(boundaries >= n / 2 && compared > n * SAMPLES / 2, "{boundaries} boundaries, {compared} samples");
 }
 
-fn env_usize(name: &str, default: usize) -> usize {
-    #[cfg(not(target_arch = "wasm32"))]
-    if let Some(v) = std::env::var(name).ok().and_then(|v| v.parse().ok()) {
-        return v;
-    }
-    let _ = name;
-    default
-}
 
 const ROBOCRANE: &str = include_str!("../static/scenarios/robocrane.json");
 
