@@ -367,8 +367,14 @@ fn plan_text(r: &PlanReport) -> String {
     if r.expansion_failures > 0 {
         out += &format!("  warning: {} expansion direction(s) failed; a no_path here is not certified\n", r.expansion_failures);
     }
+    if r.blocked_charts > 0 {
+        out += &format!("  note: {} chart(s) blocked by a clearance violation at their centre\n", r.blocked_charts);
+    }
     if r.broken_edges > 0 {
-        out += &format!("  note: {} chart pair(s) dropped because their dense edge could not be followed\n", r.broken_edges);
+        out += &format!("  warning: {} chart pair(s) dropped because their dense edge could not be followed; a no_path here is not certified\n", r.broken_edges);
+    }
+    if r.rejected_edges > 0 {
+        out += &format!("  note: {} chart pair(s) dropped because the exact verifier rejected their edge (interference)\n", r.rejected_edges);
     }
     out
 }

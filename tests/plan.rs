@@ -10,7 +10,8 @@ use cablenav::model::{Coord, Pose};
 use cablenav::plan::atlas::AtlasParams;
 use cablenav::plan::manifold::{BoundKind, CableManifold, Manifold};
 use cablenav::plan::search::{Continuation, Ended};
-use cablenav::plan::{plan, PlanParams, PlanStatus, Planner};
+use cablenav::plan::{plan, verify_path, PlanParams, PlanStatus, Planner};
+use cablenav::shape::{Obstacle, Shape};
 use cablenav::query::wrench::tension_ranges;
 use cablenav::scenario::Query;
 use cablenav::verify::wrench_at;
@@ -412,9 +413,57 @@ fn robocrane_other_component_is_no_path() {
     s.queries.push(Query { name: "island-q1".to_string(), start: "island".to_string(), goal: "q1".to_string(), fixed: vec![Coord::X, Coord::Y, Coord::Z, Coord::Sigma] });
     let out = plan(&s, "island-q1", PlanParams::default()).unwrap();
     assert_eq!(out.status, PlanStatus::NoPath);
-    assert_eq!(out.expansion_failures, 0);
+    assert_eq!((out.expansion_failures, out.broken_edges), (0, 0), "a certified no_path");
     assert!(out.path.is_empty());
     assert!(out.charts > 1);
+}
+
+/// The obstacle-free q1 → q2 path, and the slice with a ball of radius 0.05 put 0.03 beyond cable
+/// 1's platform anchor (along the cable) at the pose `fraction` of the way along that path.
+fn with_ball(s: &Scenario, free: &[Pose], fraction: f64) -> Scenario {
+    let pose = free[(free.len() as f64 * fraction) as usize];
+    let cable = &s.robot.cables[0];
+    let anchor = pose.transform(&cable.platform);
+    let centre = anchor + (anchor - cable.base).normalize() * 0.03;
+    let mut blocked = s.clone();
+    blocked.obstacles.push(Obstacle { name: "ball".to_string(), shape: Shape::Sphere { center: centre, radius: 0.05 } });
+    blocked
+}
+
+/// The grid components (slice map, 120 × 120 over (φ, θ)) of q1 and q2.
+fn grid_components(s: &Scenario) -> [Option<usize>; 2] {
+    let map = cablenav::verify::slice(s, "q1", [Coord::Phi, Coord::Theta], 120, [[-PI, PI], [-PI, PI]]).unwrap();
+    let comp = |name: &str| map.pose_components.iter().find(|(n, _)| n == name).and_then(|(_, c)| *c);
+    [comp("q1"), comp("q2")]
+}
+
+/// Interference: a ball in the way of the obstacle-free q1 → q2 path (which the verifier then
+/// finds infeasible) but leaving q1 and q2 connected on the slice map: the planner's motion
+/// validator (the exact verifier on each path step) rejects the edges through it and the new path
+/// is re-verified clean. A ball near the middle of the path, where θ ≈ 0, cuts the slice in two on
+/// the slice map: there the planner's atlas is exhausted (`no_path`), with charts blocked at its
+/// centres.
+#[test]
+fn robocrane_paths_avoid_obstacles() {
+    let s = robocrane();
+    let free = plan(&s, "q1-q2", PlanParams::default()).unwrap().path;
+
+    let around = with_ball(&s, &free, 0.7);
+    let [a, b] = grid_components(&around);
+    assert!(a.is_some() && a == b, "precondition: q1 and q2 connected on the grid");
+    assert!(verify_path(&around, &free).infeasible_sections > 0, "the ball must be in the old path's way");
+    let out = plan(&around, "q1-q2", PlanParams::default()).unwrap();
+    assert_eq!(out.status, PlanStatus::Found);
+    assert!(out.rejected_edges > 0, "edges through the ball are rejected");
+    assert_eq!((out.verification.infeasible_sections, out.verification.uncertain_sections, out.verification.wrench_infeasible_poses), (0, 0, 0));
+
+    let wall = with_ball(&s, &free, 0.5);
+    let [a, b] = grid_components(&wall);
+    assert!(a.is_some() && b.is_some() && a != b, "precondition: the grid separates q1 and q2");
+    let out = plan(&wall, "q1-q2", PlanParams::default()).unwrap();
+    assert_eq!(out.status, PlanStatus::NoPath);
+    assert!(out.blocked_charts > 0);
+    assert_eq!((out.expansion_failures, out.broken_edges), (0, 0), "a certified no_path");
 }
 
 /// The full 6-D space (nothing fixed) between two feasible poses ends with a path or, within a
@@ -497,4 +546,50 @@ fn bad_input_is_reported() {
     let mut nowrench = robocrane();
     nowrench.wrench = None;
     assert_eq!(err(&nowrench, "q1-q2", PlanParams::default()).field, "wrench");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Command line
+
+fn cli(args: &str) -> cablenav::Result<String> {
+    let args: Vec<String> = args.split_whitespace().map(String::from).collect();
+    let read = |path: &str| match path {
+        "robocrane.json" => Ok(ROBOCRANE.to_string()),
+        other => Err(cablenav::Error::new(other, "cannot read: no such file")),
+    };
+    cablenav::cli::run(&args, &read, &|_, _| Ok(()))
+}
+
+/// `cablenav plan --json` prints the documented fields, the path from the start pose exactly to
+/// the goal pose exactly, and the verification; bad options are errors naming the option.
+#[test]
+fn cli_plan_prints_the_documented_report() {
+    let v: serde_json::Value = serde_json::from_str(&cli("plan robocrane.json --query q1-q2 --json").unwrap()).unwrap();
+    assert_eq!(v["status"], "found");
+    assert!(v["charts"].as_u64().unwrap() > 1);
+    assert!(v["seconds"].is_number() || v["seconds"].is_null());
+    assert_eq!(v["verification"]["infeasible_sections"], 0);
+    let path = v["path"].as_array().unwrap();
+    let s = robocrane();
+    let (start, goal) = (s.pose("q1").unwrap(), s.pose("q2").unwrap());
+    let first = &path[0];
+    let last = &path[path.len() - 1];
+    assert_eq!(first["quaternion"], serde_json::json!(start.quaternion()));
+    assert_eq!(last["quaternion"], serde_json::json!(goal.quaternion()));
+    assert_eq!(first["position"], serde_json::json!([0.0, 0.0, 2.0]));
+    assert_eq!(first["tilt_torsion"].as_array().unwrap().len(), 3);
+    let text = cli("plan robocrane.json --query q1-q2 --radius 0.3 --epsilon 0.3 --max-charts 5000").unwrap();
+    assert!(text.starts_with("plan q1-q2: found"), "{text}");
+    let budget = cli("plan robocrane.json --query q5-q6 --max-charts 3").unwrap();
+    assert!(budget.starts_with("plan q5-q6: budget (3 charts"), "{budget}");
+    for (args, field) in [
+        ("plan robocrane.json", "--query"),
+        ("plan robocrane.json --query q1-q2 --radius -1", "--radius"),
+        ("plan robocrane.json --query q1-q2 --epsilon x", "--epsilon"),
+        ("plan robocrane.json --query q1-q2 --max-charts 0", "--max-charts"),
+        ("plan robocrane.json --query q1-q2 --pose q1", "--pose"),
+    ] {
+        assert_eq!(cli(args).unwrap_err().field, field, "{args}");
+    }
+    assert_eq!(cli("plan robocrane.json --query q9").unwrap_err().field, "query");
 }

@@ -26,6 +26,10 @@ const NEWTON_TOL: f64 = 1e-10;
 const SHRINK: f64 = 0.7;
 /// … down to this fraction of r, below which the expansion direction counts as a failure.
 const MIN_STEP: f64 = 1e-3;
+/// Where the point at step α is inadmissible (interference), the step is halved down to this
+/// fraction of r before a blocked chart of that radius is placed: the resolution at which the
+/// atlas approaches obstacles.
+const OBSTACLE_STEP: f64 = 1.0 / 8.0;
 /// Two points of the manifold count as the same one within this distance.
 const SAME_POINT: f64 = 1e-7;
 
@@ -52,7 +56,8 @@ impl<M: Manifold> Atlas<M> {
         }
         let mut atlas = Atlas { manifold, charts: Vec::new(), params, failures: 0 };
         let basis = atlas.chart_basis(start, 1e-8)?;
-        atlas.add_chart(start.to_vec(), basis, None);
+        let state = if atlas.manifold.admissible(start) { ChartState::Open } else { ChartState::Blocked };
+        atlas.add_chart(start.to_vec(), basis, None, params.radius, state);
         Ok(atlas)
     }
 
@@ -124,9 +129,12 @@ impl<M: Manifold> Atlas<M> {
     }
 
     /// Expands chart `c` by at most one new chart, towards its polytope's farthest vertex outside
-    /// its ball. Returns `false` (and marks the chart expanded) when there is no such vertex.
+    /// its ball: the step shrinks until the new chart is valid; where its centre is inadmissible
+    /// the step is halved down to r/8 and, still inadmissible there, a blocked chart of that
+    /// radius is placed. Returns `false` (and marks the chart expanded) when there is no open
+    /// vertex.
     pub fn expand_once(&mut self, c: usize) -> bool {
-        let r = self.params.radius;
+        let r = self.charts[c].radius;
         let Some(vertex) = self.charts[c].polytope.open_vertex(r) else {
             self.charts[c].state = ChartState::Expanded;
             return false;
@@ -139,8 +147,16 @@ impl<M: Manifold> Atlas<M> {
             let predicted = self.predict(c, &u);
             if let Some(x) = self.project(c, &u, &predicted) {
                 if let Some(basis) = self.valid_successor(c, &x, &predicted) {
-                    self.add_chart(x, basis, Some(c));
-                    return true;
+                    if self.manifold.admissible(&x) {
+                        self.add_chart(x, basis, Some(c), r, ChartState::Open);
+                        return true;
+                    }
+                    if alpha <= OBSTACLE_STEP * r {
+                        self.add_chart(x, basis, Some(c), alpha, ChartState::Blocked);
+                        return true;
+                    }
+                    alpha *= 0.5;
+                    continue;
                 }
             }
             alpha *= SHRINK;
@@ -170,24 +186,21 @@ impl<M: Manifold> Atlas<M> {
         (cos >= 1.0 - eps).then_some(basis)
     }
 
-    /// Adds a chart, links it with its parent and with every chart it neighbours, and crops the
-    /// polytopes of each linked pair by the bisector of their centres. Returns its index.
-    fn add_chart(&mut self, centre: Vec<f64>, basis: DMatrix<f64>, parent: Option<usize>) -> usize {
-        let r = self.params.radius;
+    /// Adds a chart of radius `radius` in state `state` (an open chart beyond the auxiliary
+    /// bounds becomes [`ChartState::OutOfBounds`]), links it with its parent and with every chart
+    /// it neighbours, and crops the polytopes of each linked pair by the bisector of their
+    /// centres. Returns its index.
+    fn add_chart(&mut self, centre: Vec<f64>, basis: DMatrix<f64>, parent: Option<usize>, radius: f64, state: ChartState) -> usize {
         let k = basis.ncols();
-        let state = if !self.manifold.admissible(&centre) {
-            ChartState::Blocked
-        } else if !self.manifold.within_bounds(&centre) {
-            ChartState::OutOfBounds
-        } else {
-            ChartState::Open
-        };
+        let state = if state == ChartState::Open && !self.manifold.within_bounds(&centre) { ChartState::OutOfBounds } else { state };
         let j = self.charts.len();
-        self.charts.push(Chart { centre, basis, polytope: Polytope::cube(k, 1.01 * r), neighbours: Vec::new(), state });
+        let polytope = Polytope::cube(k, 1.01 * radius);
+        self.charts.push(Chart { centre, basis, polytope, neighbours: Vec::new(), radius, state });
         let near: Vec<usize> = (0..j)
             .filter(|&c| {
                 let d = self.diff(&self.charts[j].centre, &self.charts[c].centre);
-                d.iter().map(|a| a * a).sum::<f64>() < 4.0 * r * r
+                let reach = self.charts[c].radius + radius;
+                d.iter().map(|a| a * a).sum::<f64>() < reach * reach
             })
             .collect();
         for c in near {
@@ -226,7 +239,7 @@ impl<M: Manifold> Atlas<M> {
     /// sheet (the chart's map at those coordinates gives x back).
     pub fn locate(&self, c: usize, x: &[f64]) -> Option<Vec<f64>> {
         let t = self.coordinates(c, x);
-        if t.iter().map(|v| v * v).sum::<f64>() > self.params.radius * self.params.radius {
+        if t.iter().map(|v| v * v).sum::<f64>() > self.charts[c].radius * self.charts[c].radius {
             return None;
         }
         let predicted = self.predict(c, &t);

@@ -12,7 +12,8 @@ pub enum ChartState {
     Expanded,
     /// Its centre is beyond the auxiliary bounds: never expanded, but a node of the search.
     OutOfBounds,
-    /// Its centre fails a validity condition (interference): never expanded nor entered.
+    /// Its centre fails a validity condition (interference): never expanded nor entered; its
+    /// radius is the step at which it was found, so it claims only the region around it.
     Blocked,
 }
 
@@ -27,6 +28,8 @@ pub struct Chart {
     pub polytope: Polytope,
     /// Indices of the neighbouring charts (mutual, cropping each other).
     pub neighbours: Vec<usize>,
+    /// The radius of its ball (the atlas's r; smaller for a blocked chart found by shrinking).
+    pub radius: f64,
     /// What may still be done with it.
     pub state: ChartState,
 }

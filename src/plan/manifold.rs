@@ -23,6 +23,7 @@ use crate::model::pose::{rot_y, rot_z, wrap_angle};
 use crate::model::{Coord, PointFrame, Pose, Robot, Wrench};
 use crate::query::wrench::structure_matrix;
 use crate::scenario::Scenario;
+use crate::verify::verify_trajectory;
 use nalgebra::{DMatrix, Matrix3, Matrix6, Vector3, Vector6};
 
 /// A k-manifold implicitly defined in ℝⁿ by m = n − k smooth equations, with what the
@@ -65,6 +66,12 @@ pub trait Manifold {
 
     /// Whether a chart centred at x may be used at all (e.g. no interference there).
     fn admissible(&self, _x: &[f64]) -> bool {
+        true
+    }
+
+    /// The motion validator: whether the motion between two consecutive points of a dense path
+    /// is valid (e.g. free of interference all along).
+    fn motion_valid(&self, _a: &[f64], _b: &[f64]) -> bool {
         true
     }
 }
@@ -113,6 +120,7 @@ pub struct Margins {
 
 /// The wrench-feasible C-space of a 6-cable robot (optionally a slice), as a [`Manifold`].
 pub struct CableManifold {
+    scenario: Scenario,
     robot: Robot,
     wrench: Wrench,
     /// Value of each coordinate that is held fixed.
@@ -164,6 +172,7 @@ impl CableManifold {
         }
         let free = (0..6).filter(|&c| fixed[c].is_none()).collect();
         Ok(CableManifold {
+            scenario: scenario.clone(),
             conditions: for_scenario(scenario),
             robot,
             wrench,
@@ -372,5 +381,15 @@ impl Manifold for CableManifold {
     fn admissible(&self, x: &[f64]) -> bool {
         let cables = cables_at(&self.robot, &Pose::from_coords(self.coords(x)));
         self.conditions.iter().all(|c| !c.check(&cables).violated)
+    }
+
+    /// The exact verifier on the slerp + linear motion between the two poses: valid if it finds
+    /// no infeasible and no uncertain section.
+    fn motion_valid(&self, a: &[f64], b: &[f64]) -> bool {
+        if self.conditions.is_empty() {
+            return true;
+        }
+        let (pa, pb) = (Pose::from_coords(self.coords(a)), Pose::from_coords(self.coords(b)));
+        verify_trajectory(&self.scenario, &super::edge_trajectory(0, &pa, &pb)).is_ok_and(|r| r.infeasible.is_empty() && r.uncertain.is_empty())
     }
 }

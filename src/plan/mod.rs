@@ -151,8 +151,13 @@ pub struct PlanOutcome {
     pub dimension: usize,
     /// Expansion directions where no valid chart could be made (0 for a certified `no_path`).
     pub expansion_failures: usize,
-    /// Chart pairs dropped from the search because their dense edge could not be built.
+    /// Chart pairs dropped from the search because their dense edge could not be followed (a
+    /// numerical failure: 0 for a certified `no_path`).
     pub broken_edges: usize,
+    /// Chart pairs dropped because the exact verifier rejected a step of their dense edge.
+    pub rejected_edges: usize,
+    /// Charts whose centre violates a clearance (never expanded nor entered).
+    pub blocked_charts: usize,
     /// The parameters used.
     pub params: PlanParams,
     /// The re-verification of the path (empty for no path).
@@ -187,8 +192,12 @@ pub struct PlanReport {
     pub dimension: usize,
     /// Expansion failures (0 for a certified `no_path`).
     pub expansion_failures: usize,
-    /// Dropped chart pairs.
+    /// Chart pairs dropped because their dense edge could not be followed.
     pub broken_edges: usize,
+    /// Chart pairs dropped because the exact verifier rejected their dense edge.
+    pub rejected_edges: usize,
+    /// Charts blocked by a clearance violation at their centre.
+    pub blocked_charts: usize,
     /// The parameters used.
     pub params: PlanParams,
     /// The exact re-verification of the path.
@@ -211,6 +220,8 @@ impl PlanOutcome {
             dimension: self.dimension,
             expansion_failures: self.expansion_failures,
             broken_edges: self.broken_edges,
+            rejected_edges: self.rejected_edges,
+            blocked_charts: self.blocked_charts,
             params: self.params,
             verification: self.verification.clone(),
         }
@@ -327,6 +338,8 @@ impl Planner {
             dimension: manifold.free().len(),
             expansion_failures: self.search.atlas.failures,
             broken_edges: self.search.broken_edges(),
+            rejected_edges: self.search.rejected_edges(),
+            blocked_charts: self.search.atlas.charts.iter().filter(|c| c.state == chart::ChartState::Blocked).count(),
             params: self.params,
             verification,
         })
@@ -342,7 +355,7 @@ fn status(e: Ended) -> PlanStatus {
 }
 
 /// The trajectory between two consecutive path poses: linear translation and the short slerp.
-fn edge_trajectory(index: usize, a: &Pose, b: &Pose) -> Trajectory {
+pub(crate) fn edge_trajectory(index: usize, a: &Pose, b: &Pose) -> Trajectory {
     let qb = if a.rotation.quaternion().dot(b.rotation.quaternion()) < 0.0 {
         UnitQuaternion::new_unchecked(-b.rotation.into_inner())
     } else {

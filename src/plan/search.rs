@@ -2,8 +2,9 @@
 //! chart with least f = g + h is popped, tested for the goal, and expanded fully before its
 //! neighbours are relaxed. g sums the manifold's distance between consecutive centres and h is the
 //! distance to the nearest goal point, so h is admissible. Edges are checked lazily: when a chart
-//! path is found its dense path is built edge by edge, and an edge whose walks do not meet is
-//! removed and the search restarted on the atlas built so far.
+//! path is found its dense path is built edge by edge, and an edge whose walks do not meet or
+//! whose motions the manifold's motion validator rejects is removed and the search restarted on
+//! the atlas built so far.
 //!
 //! Generic over [`Manifold`] and resumable: [`Continuation::step`] does a bounded amount of work.
 
@@ -11,7 +12,7 @@ use super::atlas::{Atlas, AtlasParams};
 use super::chart::ChartState;
 use super::manifold::Manifold;
 use std::cmp::Ordering;
-use std::collections::{BinaryHeap, HashSet};
+use std::collections::{BinaryHeap, HashMap, HashSet};
 
 /// How a search ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -73,8 +74,13 @@ pub struct Continuation<M: Manifold> {
     popped: Vec<bool>,
     open: BinaryHeap<Entry>,
     expanding: Option<usize>,
-    /// Chart pairs whose dense edge could not be built (removed from the graph).
+    /// Chart pairs whose dense edge could not be built or failed the motion validator (removed
+    /// from the graph).
     broken: HashSet<(usize, usize)>,
+    /// Of those, the pairs whose dense edge was built but rejected by the motion validator.
+    rejected: usize,
+    /// Dense edges built so far, by (from, to) chart; `None` for a broken one.
+    edges: HashMap<(usize, usize), Option<Vec<Vec<f64>>>>,
     ended: Option<Ended>,
     path: Vec<Vec<f64>>,
 }
@@ -94,6 +100,8 @@ impl<M: Manifold> Continuation<M> {
             open: BinaryHeap::new(),
             expanding: None,
             broken: HashSet::new(),
+            rejected: 0,
+            edges: HashMap::new(),
             ended: None,
             path: vec![],
         };
@@ -133,9 +141,15 @@ impl<M: Manifold> Continuation<M> {
         &self.path
     }
 
-    /// Chart pairs removed from the graph because their dense edge could not be built.
+    /// Chart pairs removed from the graph because their dense edge could not be followed (the
+    /// two walks did not meet: a numerical failure, like an expansion failure).
     pub fn broken_edges(&self) -> usize {
-        self.broken.len()
+        self.broken.len() - self.rejected
+    }
+
+    /// Chart pairs removed from the graph because the motion validator rejected their dense edge.
+    pub fn rejected_edges(&self) -> usize {
+        self.rejected
     }
 
     /// The current progress.
@@ -220,8 +234,17 @@ impl<M: Manifold> Continuation<M> {
         chain.reverse();
         let mut path: Vec<Vec<f64>> = vec![self.atlas.charts[chain[0]].centre.clone()];
         for w in chain.windows(2) {
-            match self.atlas.edge(w[0], w[1]) {
-                Some(e) => path.extend(e.into_iter().skip(1)),
+            let key = (w[0], w[1]);
+            if !self.edges.contains_key(&key) {
+                let dense = self.atlas.edge(w[0], w[1]);
+                let rejected = dense.as_ref().is_some_and(|e| !self.motions_valid(e));
+                if rejected && !self.broken.contains(&(w[0].min(w[1]), w[0].max(w[1]))) {
+                    self.rejected += 1;
+                }
+                self.edges.insert(key, dense.filter(|_| !rejected));
+            }
+            match &self.edges[&key] {
+                Some(e) => path.extend(e.iter().skip(1).cloned()),
                 None => {
                     self.broken.insert((w[0].min(w[1]), w[0].max(w[1])));
                     self.restart();
@@ -229,7 +252,7 @@ impl<M: Manifold> Continuation<M> {
                 }
             }
         }
-        match self.atlas.walk(c, &t) {
+        match self.atlas.walk(c, &t).filter(|e| self.motions_valid(e)) {
             Some(last) => {
                 path.extend(last.into_iter().skip(1));
                 if let Some(end) = path.last_mut() {
@@ -243,5 +266,10 @@ impl<M: Manifold> Continuation<M> {
             // chart may hold it.
             None => false,
         }
+    }
+
+    /// Whether the motion validator accepts every step of a dense path.
+    fn motions_valid(&self, dense: &[Vec<f64>]) -> bool {
+        dense.windows(2).all(|w| self.atlas.manifold.motion_valid(&w[0], &w[1]))
     }
 }
