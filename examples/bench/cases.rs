@@ -7,12 +7,14 @@
 //! `BENCH <platform> <case> <median_us> <best_us> <calls> <samples> <summary>`.
 
 use cablenav::model::Coord;
+use cablenav::plan::{plan, PlanParams};
 use cablenav::verify::{ray, verify_pointwise, verify_trajectory};
 use cablenav::Scenario;
 
 const CDPR7: &str = include_str!("../../static/scenarios/cdpr7.json");
 const CDPR7_TREE: &str = include_str!("../../static/scenarios/cdpr7-tree.json");
 const CDPR7_BOX: &str = include_str!("../../static/scenarios/cdpr7-box.json");
+const ROBOCRANE: &str = include_str!("../../static/scenarios/robocrane.json");
 
 /// Wall time spent measuring each case (after warm-up), in milliseconds.
 pub const CASE_MS: f64 = 1000.0;
@@ -112,5 +114,17 @@ pub fn run_all(platform: &str, filter: &str, now: &dyn Fn() -> f64, out: &mut dy
         }),
         out,
     );
+    // The planner (default parameters) on the Robocrane queries of Bohigas et al. §5, including
+    // the edge-by-edge re-verification of the path.
+    let crane = parse(ROBOCRANE);
+    for query in ["q1-q2", "q3-q4", "q5-q6"] {
+        record(
+            measure(now, filter, &format!("robocrane/plan-{query}"), &mut || {
+                let o = plan(&crane, query, PlanParams::default()).expect("planning");
+                format!("status={:?};charts={};poses={};infeasible={}", o.status, o.charts, o.path.len(), o.verification.infeasible_sections)
+            }),
+            out,
+        );
+    }
     results
 }

@@ -137,16 +137,9 @@ pub struct PathVerification {
     pub notes: Vec<String>,
 }
 
-/// The result of planning.
-#[derive(Debug, Clone, PartialEq)]
-pub struct PlanOutcome {
-    /// How it ended.
-    pub status: PlanStatus,
-    /// The path (when found): dense poses, each consecutive pair at most δ apart in the pose
-    /// metric; the first is exactly the query's start pose and the last exactly its goal pose.
-    pub path: Vec<Pose>,
-    /// Charts in the atlas.
-    pub charts: usize,
+/// What the atlas looked like at the end, and what a `no_path` claim rests on.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AtlasSummary {
     /// The manifold's dimension (free coordinates).
     pub dimension: usize,
     /// Expansion directions where no valid chart could be made (0 for a certified `no_path`).
@@ -160,6 +153,20 @@ pub struct PlanOutcome {
     pub blocked_charts: usize,
     /// The parameters used.
     pub params: PlanParams,
+}
+
+/// The result of planning.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlanOutcome {
+    /// How it ended.
+    pub status: PlanStatus,
+    /// The path (when found): dense poses, each consecutive pair at most δ apart in the pose
+    /// metric; the first is exactly the query's start pose and the last exactly its goal pose.
+    pub path: Vec<Pose>,
+    /// Charts in the atlas.
+    pub charts: usize,
+    /// The atlas's dimension, failures, dropped edges, blocked charts and parameters.
+    pub atlas: AtlasSummary,
     /// The re-verification of the path (empty for no path).
     pub verification: PathVerification,
 }
@@ -188,18 +195,9 @@ pub struct PlanReport {
     pub charts: usize,
     /// Wall-clock seconds, as measured by the caller.
     pub seconds: f64,
-    /// Manifold dimension.
-    pub dimension: usize,
-    /// Expansion failures (0 for a certified `no_path`).
-    pub expansion_failures: usize,
-    /// Chart pairs dropped because their dense edge could not be followed.
-    pub broken_edges: usize,
-    /// Chart pairs dropped because the exact verifier rejected their dense edge.
-    pub rejected_edges: usize,
-    /// Charts blocked by a clearance violation at their centre.
-    pub blocked_charts: usize,
-    /// The parameters used.
-    pub params: PlanParams,
+    /// The atlas summary (its fields appear at the top level of the JSON).
+    #[serde(flatten)]
+    pub atlas: AtlasSummary,
     /// The exact re-verification of the path.
     pub verification: PathVerification,
 }
@@ -217,12 +215,7 @@ impl PlanOutcome {
                 .collect(),
             charts: self.charts,
             seconds,
-            dimension: self.dimension,
-            expansion_failures: self.expansion_failures,
-            broken_edges: self.broken_edges,
-            rejected_edges: self.rejected_edges,
-            blocked_charts: self.blocked_charts,
-            params: self.params,
+            atlas: self.atlas.clone(),
             verification: self.verification.clone(),
         }
     }
@@ -335,12 +328,14 @@ impl Planner {
             status: st,
             path,
             charts: self.search.atlas.charts.len(),
-            dimension: manifold.free().len(),
-            expansion_failures: self.search.atlas.failures,
-            broken_edges: self.search.broken_edges(),
-            rejected_edges: self.search.rejected_edges(),
-            blocked_charts: self.search.atlas.charts.iter().filter(|c| c.state == chart::ChartState::Blocked).count(),
-            params: self.params,
+            atlas: AtlasSummary {
+                dimension: manifold.free().len(),
+                expansion_failures: self.search.atlas.failures,
+                broken_edges: self.search.broken_edges(),
+                rejected_edges: self.search.rejected_edges(),
+                blocked_charts: self.search.atlas.charts.iter().filter(|c| c.state == chart::ChartState::Blocked).count(),
+                params: self.params,
+            },
             verification,
         })
     }
