@@ -50,7 +50,7 @@ fn jacobian_matches_finite_differences() {
     let s = robocrane();
     let mut rng = Rng::new(11);
     for fixed in [[None; 6], [Some(0.0), Some(0.0), Some(2.0), None, None, Some(35f64.to_radians())]] {
-        let m = CableManifold::new(&s, fixed, 0.1, 1e-3, 1.0).unwrap();
+        let m = CableManifold::new(&s, fixed, true, 0.1, 1e-3, 1.0).unwrap();
         let (n, eqs) = (m.ambient(), m.equations());
         assert_eq!(eqs, 18, "6 cables × (tension low, tension high, length)");
         for mut q in feasible_coords(&s, &mut rng, 6) {
@@ -90,7 +90,7 @@ fn jacobian_matches_finite_differences() {
 #[test]
 fn margins_agree_with_the_per_pose_wrench_test() {
     let s = robocrane();
-    let m = CableManifold::new(&s, [None; 6], 0.1, 1e-3, 1.0).unwrap();
+    let m = CableManifold::new(&s, [None; 6], true, 0.1, 1e-3, 1.0).unwrap();
     let mut rng = Rng::new(5);
     for q in feasible_coords(&s, &mut rng, 20) {
         let pose = Pose::from_coords(q);
@@ -374,6 +374,28 @@ fn robocrane_slice_queries_find_verified_paths() {
     }
 }
 
+/// q3 → q4 as paper 1 posed it: from (φ, θ) = (0.8, −2.4) to (−2.4, 2.4) with the angles as
+/// plain coordinates (`identify_angles: false`). The rotations are only 0.11 rad apart but the
+/// path in coordinates must go the long way round (the straight segment leaves the feasible set):
+/// it is found, verified clean, and is more than ten times longer than the direct rotation.
+#[test]
+fn robocrane_q3_q4_in_the_paper_coordinates() {
+    let s = robocrane();
+    let (a, b) = paper_coords("q3-q4");
+    let params = PlanParams { identify_angles: false, ..PlanParams::default() };
+    let mut p = Planner::between_coords(&s, a, b, &[Coord::X, Coord::Y, Coord::Z, Coord::Sigma], params).unwrap();
+    while p.step(500).done.is_none() {}
+    let out = p.outcome().unwrap();
+    assert_eq!(out.status, PlanStatus::Found);
+    assert_eq!(out.path.first(), Some(&Pose::from_coords(a)));
+    assert_eq!(out.path.last(), Some(&Pose::from_coords(b)));
+    let v = &out.verification;
+    assert_eq!((v.infeasible_sections, v.uncertain_sections, v.wrench_infeasible_poses), (0, 0, 0));
+    let length: f64 = out.path.windows(2).map(|w| w[0].rotation.angle_to(&w[1].rotation)).sum();
+    let direct = Pose::from_coords(a).rotation.angle_to(&Pose::from_coords(b).rotation);
+    assert!(direct < 0.12 && length > 10.0 * direct, "direct {direct}, path {length}");
+}
+
 /// A pose in a component of the slice p = [0, 0, 2], σ = 35° other than q1's: the small region
 /// around (φ, θ) = (2.66, 2.23) that `cablenav slice robocrane.json --pose q1 --axes phi,theta
 /// --res 72` shows apart from the band holding q1 (the test takes the centre of one of its grid
@@ -530,6 +552,8 @@ fn bad_input_is_reported() {
     assert!(e.field.ends_with(".goal") && e.reason.contains("z = 1.5"), "{e}");
     let e = err(&s, "singular-goal", PlanParams::default());
     assert!(e.field.ends_with(".goal") && e.reason.contains("singular"), "{e}");
+    let nan = [f64::NAN, 0.0, 2.0, 0.0, 0.5, 0.0];
+    assert_eq!(Planner::between_coords(&s, nan, [0.0, 0.0, 2.0, 0.0, 0.5, 0.0], &[], PlanParams::default()).err().unwrap().field, "start[0]");
     // A scenario without a wrench section cannot be planned on.
     let mut nowrench = robocrane();
     nowrench.wrench = None;
