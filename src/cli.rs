@@ -341,10 +341,10 @@ fn plan_text(r: &PlanReport) -> String {
         PlanStatus::NoPath => "no_path",
         PlanStatus::Budget => "budget",
     };
-    let p = &r.params;
+    let (a, p) = (&r.atlas, &r.atlas.params);
     let mut out = format!(
         "plan {}: {status} ({} charts, {}-D, {:.3} s; r = {}, ε = {}, δ = {}, κ = {}, margins ≥ {}, ≤ {} charts)\n",
-        r.query, r.charts, r.dimension, r.seconds, p.radius, p.epsilon, p.delta, p.barrier, p.min_margin, p.max_charts
+        r.query, r.charts, a.dimension, r.seconds, p.radius, p.epsilon, p.delta, p.barrier, p.min_margin, p.max_charts
     );
     match r.status {
         PlanStatus::Found => {
@@ -364,17 +364,17 @@ fn plan_text(r: &PlanReport) -> String {
         PlanStatus::NoPath => out += "  the atlas of the start's connected component is exhausted without reaching the goal: no path at this resolution\n",
         PlanStatus::Budget => out += "  the chart budget ran out: nothing is claimed (raise --max-charts)\n",
     }
-    if r.expansion_failures > 0 {
-        out += &format!("  warning: {} expansion direction(s) failed; a no_path here is not certified\n", r.expansion_failures);
+    if a.expansion_failures > 0 {
+        out += &format!("  warning: {} expansion direction(s) failed; a no_path here is not certified\n", a.expansion_failures);
     }
-    if r.blocked_charts > 0 {
-        out += &format!("  note: {} chart(s) blocked by a clearance violation at their centre\n", r.blocked_charts);
+    if a.blocked_charts > 0 {
+        out += &format!("  note: {} chart(s) blocked by a clearance violation at their centre\n", a.blocked_charts);
     }
-    if r.broken_edges > 0 {
-        out += &format!("  warning: {} chart pair(s) dropped because their dense edge could not be followed; a no_path here is not certified\n", r.broken_edges);
+    if a.broken_edges > 0 {
+        out += &format!("  warning: {} chart pair(s) dropped because their dense edge could not be followed; a no_path here is not certified\n", a.broken_edges);
     }
-    if r.rejected_edges > 0 {
-        out += &format!("  note: {} chart pair(s) dropped because the exact verifier rejected their edge (interference)\n", r.rejected_edges);
+    if a.rejected_edges > 0 {
+        out += &format!("  note: {} chart pair(s) dropped because the exact verifier rejected their edge (interference)\n", a.rejected_edges);
     }
     out
 }

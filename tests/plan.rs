@@ -6,6 +6,8 @@
 #[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
+mod support;
+
 use cablenav::model::{Coord, Pose};
 use cablenav::plan::atlas::AtlasParams;
 use cablenav::plan::manifold::{BoundKind, CableManifold, Manifold};
@@ -18,26 +20,12 @@ use cablenav::verify::wrench_at;
 use cablenav::Scenario;
 use nalgebra::DMatrix;
 use std::f64::consts::PI;
+use support::reference::Rng;
 
 const ROBOCRANE: &str = include_str!("../static/scenarios/robocrane.json");
 
 fn robocrane() -> Scenario {
     Scenario::from_json(ROBOCRANE).expect("robocrane preset parses")
-}
-
-/// A small deterministic generator (splitmix64).
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -60,9 +48,9 @@ fn feasible_coords(s: &Scenario, rng: &mut Rng, count: usize) -> Vec<[f64; 6]> {
 #[test]
 fn jacobian_matches_finite_differences() {
     let s = robocrane();
-    let mut rng = Rng(11);
+    let mut rng = Rng::new(11);
     for fixed in [[None; 6], [Some(0.0), Some(0.0), Some(2.0), None, None, Some(35f64.to_radians())]] {
-        let m = CableManifold::new(&s, fixed, 0.1, 1e-3, 1.0).unwrap();
+        let m = CableManifold::new(&s, fixed, true, 0.1, 1e-3, 1.0).unwrap();
         let (n, eqs) = (m.ambient(), m.equations());
         assert_eq!(eqs, 18, "6 cables × (tension low, tension high, length)");
         for mut q in feasible_coords(&s, &mut rng, 6) {
@@ -102,8 +90,8 @@ fn jacobian_matches_finite_differences() {
 #[test]
 fn margins_agree_with_the_per_pose_wrench_test() {
     let s = robocrane();
-    let m = CableManifold::new(&s, [None; 6], 0.1, 1e-3, 1.0).unwrap();
-    let mut rng = Rng(5);
+    let m = CableManifold::new(&s, [None; 6], true, 0.1, 1e-3, 1.0).unwrap();
+    let mut rng = Rng::new(5);
     for q in feasible_coords(&s, &mut rng, 20) {
         let pose = Pose::from_coords(q);
         let ranges = tension_ranges(&s.robot, &pose, s.wrench.as_ref().unwrap()).unwrap();
@@ -256,7 +244,7 @@ fn sphere_atlas_is_exhausted_and_covers_it() {
     // Area 4π, each chart's polytope covers between the inscribed hexagon of a disc of radius r/2
     // … and the disc of radius r.
     assert!(n >= 4.0 * PI / (PI * PARAMS.radius.powi(2)) && n <= 4.0 * PI / (0.5 * PARAMS.radius.powi(2)), "{n} charts");
-    let mut rng = Rng(3);
+    let mut rng = Rng::new(3);
     let samples: Vec<Vec<f64>> = (0..500)
         .map(|_| {
             let (z, a) = (rng.range(-1.0, 1.0), rng.range(0.0, 2.0 * PI));
@@ -273,7 +261,7 @@ fn torus_atlas_is_exhausted_covers_it_and_connects_opposite_points() {
     let c = run(torus(), &[1.5, 0.0, 0.0], vec![], 20_000);
     assert_eq!(c.ended(), Some(Ended::Exhausted));
     assert_eq!(c.atlas.failures, 0);
-    let mut rng = Rng(9);
+    let mut rng = Rng::new(9);
     let samples: Vec<Vec<f64>> = (0..500)
         .map(|_| {
             let (u, v) = (rng.range(0.0, 2.0 * PI), rng.range(0.0, 2.0 * PI));
@@ -386,6 +374,28 @@ fn robocrane_slice_queries_find_verified_paths() {
     }
 }
 
+/// q3 → q4 as paper 1 posed it: from (φ, θ) = (0.8, −2.4) to (−2.4, 2.4) with the angles as
+/// plain coordinates (`identify_angles: false`). The rotations are only 0.11 rad apart but the
+/// path in coordinates must go the long way round (the straight segment leaves the feasible set):
+/// it is found, verified clean, and is more than ten times longer than the direct rotation.
+#[test]
+fn robocrane_q3_q4_in_the_paper_coordinates() {
+    let s = robocrane();
+    let (a, b) = paper_coords("q3-q4");
+    let params = PlanParams { identify_angles: false, ..PlanParams::default() };
+    let mut p = Planner::between_coords(&s, a, b, &[Coord::X, Coord::Y, Coord::Z, Coord::Sigma], params).unwrap();
+    while p.step(500).done.is_none() {}
+    let out = p.outcome().unwrap();
+    assert_eq!(out.status, PlanStatus::Found);
+    assert_eq!(out.path.first(), Some(&Pose::from_coords(a)));
+    assert_eq!(out.path.last(), Some(&Pose::from_coords(b)));
+    let v = &out.verification;
+    assert_eq!((v.infeasible_sections, v.uncertain_sections, v.wrench_infeasible_poses), (0, 0, 0));
+    let length: f64 = out.path.windows(2).map(|w| w[0].rotation.angle_to(&w[1].rotation)).sum();
+    let direct = Pose::from_coords(a).rotation.angle_to(&Pose::from_coords(b).rotation);
+    assert!(direct < 0.12 && length > 10.0 * direct, "direct {direct}, path {length}");
+}
+
 /// A pose in a component of the slice p = [0, 0, 2], σ = 35° other than q1's: the small region
 /// around (φ, θ) = (2.66, 2.23) that `cablenav slice robocrane.json --pose q1 --axes phi,theta
 /// --res 72` shows apart from the band holding q1 (the test takes the centre of one of its grid
@@ -413,7 +423,7 @@ fn robocrane_other_component_is_no_path() {
     s.queries.push(Query { name: "island-q1".to_string(), start: "island".to_string(), goal: "q1".to_string(), fixed: vec![Coord::X, Coord::Y, Coord::Z, Coord::Sigma] });
     let out = plan(&s, "island-q1", PlanParams::default()).unwrap();
     assert_eq!(out.status, PlanStatus::NoPath);
-    assert_eq!((out.expansion_failures, out.broken_edges), (0, 0), "a certified no_path");
+    assert_eq!((out.atlas.expansion_failures, out.atlas.broken_edges), (0, 0), "a certified no_path");
     assert!(out.path.is_empty());
     assert!(out.charts > 1);
 }
@@ -454,7 +464,7 @@ fn robocrane_paths_avoid_obstacles() {
     assert!(verify_path(&around, &free).infeasible_sections > 0, "the ball must be in the old path's way");
     let out = plan(&around, "q1-q2", PlanParams::default()).unwrap();
     assert_eq!(out.status, PlanStatus::Found);
-    assert!(out.rejected_edges > 0, "edges through the ball are rejected");
+    assert!(out.atlas.rejected_edges > 0, "edges through the ball are rejected");
     assert_eq!((out.verification.infeasible_sections, out.verification.uncertain_sections, out.verification.wrench_infeasible_poses), (0, 0, 0));
 
     let wall = with_ball(&s, &free, 0.5);
@@ -462,8 +472,8 @@ fn robocrane_paths_avoid_obstacles() {
     assert!(a.is_some() && b.is_some() && a != b, "precondition: the grid separates q1 and q2");
     let out = plan(&wall, "q1-q2", PlanParams::default()).unwrap();
     assert_eq!(out.status, PlanStatus::NoPath);
-    assert!(out.blocked_charts > 0);
-    assert_eq!((out.expansion_failures, out.broken_edges), (0, 0), "a certified no_path");
+    assert!(out.atlas.blocked_charts > 0);
+    assert_eq!((out.atlas.expansion_failures, out.atlas.broken_edges), (0, 0), "a certified no_path");
 }
 
 /// The full 6-D space (nothing fixed) between two feasible poses ends with a path or, within a
@@ -474,7 +484,7 @@ fn robocrane_full_6d_query_ends_honestly() {
     s.queries.push(Query { name: "6d".to_string(), start: "q1".to_string(), goal: "q2".to_string(), fixed: vec![] });
     let params = PlanParams { max_charts: 20, ..PlanParams::default() };
     let out = plan(&s, "6d", params).unwrap();
-    assert_eq!(out.dimension, 6);
+    assert_eq!(out.atlas.dimension, 6);
     match out.status {
         PlanStatus::Found => assert_eq!(out.verification.infeasible_sections, 0),
         PlanStatus::Budget => {
@@ -542,6 +552,8 @@ fn bad_input_is_reported() {
     assert!(e.field.ends_with(".goal") && e.reason.contains("z = 1.5"), "{e}");
     let e = err(&s, "singular-goal", PlanParams::default());
     assert!(e.field.ends_with(".goal") && e.reason.contains("singular"), "{e}");
+    let nan = [f64::NAN, 0.0, 2.0, 0.0, 0.5, 0.0];
+    assert_eq!(Planner::between_coords(&s, nan, [0.0, 0.0, 2.0, 0.0, 0.5, 0.0], &[], PlanParams::default()).err().unwrap().field, "start[0]");
     // A scenario without a wrench section cannot be planned on.
     let mut nowrench = robocrane();
     nowrench.wrench = None;

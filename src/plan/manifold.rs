@@ -127,6 +127,8 @@ pub struct CableManifold {
     fixed: [Option<f64>; 6],
     /// Indices (into x, y, z, φ, θ, σ) of the free coordinates, in order.
     free: Vec<usize>,
+    /// Whether angle differences are wrapped.
+    periodic: bool,
     barriers: Vec<Barrier>,
     kappa: f64,
     w_max: f64,
@@ -138,11 +140,12 @@ pub struct CableManifold {
 const SINGULAR: f64 = crate::query::wrench::SINGULAR_RATIO;
 
 impl CableManifold {
-    /// The C-space of `scenario`'s robot with `fixed` coordinates held at the given values.
+    /// The C-space of `scenario`'s robot with `fixed` coordinates held at the given values; with
+    /// `periodic`, differences of angle coordinates are wrapped to (−π, π].
     /// `kappa` is the barrier scale κ, `min_margin` the least normalised margin the atlas explores
     /// (w ≤ −κ ln min_margin), `rotation_length` the length that one radian of rotation counts
     /// as in the path metric. The scenario must have exactly six cables and a wrench section.
-    pub fn new(scenario: &Scenario, fixed: [Option<f64>; 6], kappa: f64, min_margin: f64, rotation_length: f64) -> crate::Result<CableManifold> {
+    pub fn new(scenario: &Scenario, fixed: [Option<f64>; 6], periodic: bool, kappa: f64, min_margin: f64, rotation_length: f64) -> crate::Result<CableManifold> {
         use crate::error::Error;
         let robot = scenario.robot.clone();
         if robot.cables.len() != 6 {
@@ -178,6 +181,7 @@ impl CableManifold {
             wrench,
             fixed,
             free,
+            periodic,
             barriers,
             kappa,
             w_max: -kappa * min_margin.ln(),
@@ -360,7 +364,7 @@ impl Manifold for CableManifold {
     fn difference(&self, a: &[f64], b: &[f64], out: &mut [f64]) {
         for (i, o) in out.iter_mut().enumerate() {
             let d = a[i] - b[i];
-            *o = if i < self.free.len() && Coord::ALL[self.free[i]].is_angle() { wrap_angle(d) } else { d };
+            *o = if self.periodic && i < self.free.len() && Coord::ALL[self.free[i]].is_angle() { wrap_angle(d) } else { d };
         }
     }
 

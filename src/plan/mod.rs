@@ -47,13 +47,18 @@ pub struct PlanParams {
     pub min_margin: f64,
     /// Length that one radian of rotation counts as in the pose metric (path length, heuristic).
     pub rotation_length: f64,
+    /// Treat angle coordinates as angles: differences wrapped to (−π, π] and the goal accepted in
+    /// both tilt-and-torsion triples of its rotation. Off: the angles are plain coordinates, as in
+    /// paper 1 (only for comparing with it: the atlas of a component that winds around an angle
+    /// then never ends).
+    pub identify_angles: bool,
 }
 
 impl Default for PlanParams {
-    /// r = 0.4, ε = 0.4, δ = 0.04 (CuikSuite's defaults), 100 000 charts, κ = 0.1, μ ≥ 1e-3, and
-    /// one radian counted as one length unit.
+    /// r = 0.4, ε = 0.4, δ = 0.04 (CuikSuite's defaults), 100 000 charts, κ = 0.1, μ ≥ 1e-3, one
+    /// radian counted as one length unit, angles identified.
     fn default() -> PlanParams {
-        PlanParams { radius: 0.4, epsilon: 0.4, delta: 0.04, max_charts: 100_000, barrier: 0.1, min_margin: 1e-3, rotation_length: 1.0 }
+        PlanParams { radius: 0.4, epsilon: 0.4, delta: 0.04, max_charts: 100_000, barrier: 0.1, min_margin: 1e-3, rotation_length: 1.0, identify_angles: true }
     }
 }
 
@@ -137,16 +142,9 @@ pub struct PathVerification {
     pub notes: Vec<String>,
 }
 
-/// The result of planning.
-#[derive(Debug, Clone, PartialEq)]
-pub struct PlanOutcome {
-    /// How it ended.
-    pub status: PlanStatus,
-    /// The path (when found): dense poses, each consecutive pair at most δ apart in the pose
-    /// metric; the first is exactly the query's start pose and the last exactly its goal pose.
-    pub path: Vec<Pose>,
-    /// Charts in the atlas.
-    pub charts: usize,
+/// What the atlas looked like at the end, and what a `no_path` claim rests on.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AtlasSummary {
     /// The manifold's dimension (free coordinates).
     pub dimension: usize,
     /// Expansion directions where no valid chart could be made (0 for a certified `no_path`).
@@ -160,6 +158,20 @@ pub struct PlanOutcome {
     pub blocked_charts: usize,
     /// The parameters used.
     pub params: PlanParams,
+}
+
+/// The result of planning.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlanOutcome {
+    /// How it ended.
+    pub status: PlanStatus,
+    /// The path (when found): dense poses, each consecutive pair at most δ apart in the pose
+    /// metric; the first is exactly the query's start pose and the last exactly its goal pose.
+    pub path: Vec<Pose>,
+    /// Charts in the atlas.
+    pub charts: usize,
+    /// The atlas's dimension, failures, dropped edges, blocked charts and parameters.
+    pub atlas: AtlasSummary,
     /// The re-verification of the path (empty for no path).
     pub verification: PathVerification,
 }
@@ -188,18 +200,9 @@ pub struct PlanReport {
     pub charts: usize,
     /// Wall-clock seconds, as measured by the caller.
     pub seconds: f64,
-    /// Manifold dimension.
-    pub dimension: usize,
-    /// Expansion failures (0 for a certified `no_path`).
-    pub expansion_failures: usize,
-    /// Chart pairs dropped because their dense edge could not be followed.
-    pub broken_edges: usize,
-    /// Chart pairs dropped because the exact verifier rejected their dense edge.
-    pub rejected_edges: usize,
-    /// Charts blocked by a clearance violation at their centre.
-    pub blocked_charts: usize,
-    /// The parameters used.
-    pub params: PlanParams,
+    /// The atlas summary (its fields appear at the top level of the JSON).
+    #[serde(flatten)]
+    pub atlas: AtlasSummary,
     /// The exact re-verification of the path.
     pub verification: PathVerification,
 }
@@ -217,12 +220,7 @@ impl PlanOutcome {
                 .collect(),
             charts: self.charts,
             seconds,
-            dimension: self.dimension,
-            expansion_failures: self.expansion_failures,
-            broken_edges: self.broken_edges,
-            rejected_edges: self.rejected_edges,
-            blocked_charts: self.blocked_charts,
-            params: self.params,
+            atlas: self.atlas.clone(),
             verification: self.verification.clone(),
         }
     }
@@ -252,6 +250,20 @@ fn same_value(c: Coord, a: f64, b: f64) -> bool {
     d.abs() <= 1e-9
 }
 
+/// The two ends of a planning problem, as [`Planner`]'s constructors resolve them.
+struct Ends<'a> {
+    /// Prefix of error fields (`queries[q1-q2]`).
+    field: String,
+    /// Names of the start and goal poses, for messages.
+    names: [&'a str; 2],
+    /// The exact start and goal poses the path begins and ends with.
+    poses: [Pose; 2],
+    /// Their coordinates (x, y, z, φ, θ, σ).
+    coords: [[f64; 6]; 2],
+    /// The fixed coordinates, held at the start's values.
+    fixed: &'a [Coord],
+}
+
 impl Planner {
     /// Prepares planning for scenario query `query` (its name in `scenario.queries`): checks the
     /// parameters, that start and goal are wrench-feasible, non-singular, interference-free and
@@ -263,55 +275,75 @@ impl Planner {
             let known = if names.is_empty() { "the scenario has no queries".to_string() } else { format!("known queries: {}", names.join(", ")) };
             Error::new("query", format!("no query named \"{query}\"; {known}"))
         })?;
-        let start = *scenario.pose(&q.start)?;
-        let goal = *scenario.pose(&q.goal)?;
-        let start_coords = start.coords();
+        let (start, goal) = (*scenario.pose(&q.start)?, *scenario.pose(&q.goal)?);
+        let ends = Ends { field: format!("queries[{query}]"), names: [&q.start, &q.goal], poses: [start, goal], coords: [start.coords(), goal.coords()], fixed: &q.fixed };
+        Planner::build(scenario, ends, params)
+    }
+
+    /// Prepares planning between two poses given by their coordinates (x, y, z, φ, θ, σ) as they
+    /// are — not as the canonical tilt-and-torsion angles of their rotations — with `fixed` held at
+    /// the start's values. With `params.identify_angles` off this is paper 1's own setting (the
+    /// angles as plain coordinates); the benchmark uses it to plan q3 → q4 as the paper did.
+    pub fn between_coords(scenario: &Scenario, start: [f64; 6], goal: [f64; 6], fixed: &[Coord], params: PlanParams) -> Result<Planner> {
+        params.validate()?;
+        for (role, c) in [("start", &start), ("goal", &goal)] {
+            if let Some(bad) = c.iter().position(|v| !v.is_finite()) {
+                return Err(Error::new(format!("{role}[{bad}]"), format!("must be a finite number, got {}", c[bad])));
+            }
+        }
+        let ends = Ends { field: "coords".to_string(), names: ["start", "goal"], poses: [Pose::from_coords(start), Pose::from_coords(goal)], coords: [start, goal], fixed };
+        Planner::build(scenario, ends, params)
+    }
+
+    /// The common part of the constructors.
+    fn build(scenario: &Scenario, ends: Ends, params: PlanParams) -> Result<Planner> {
+        let Ends { field, names, poses: [start, goal], coords: [start_coords, goal_coords], fixed: fixed_coords } = ends;
+        if fixed_coords.len() >= 6 {
+            return Err(Error::new(format!("{field}.fixed"), "every coordinate is fixed: nothing is left to plan over"));
+        }
         let mut fixed = [None; 6];
-        for c in &q.fixed {
+        for c in fixed_coords {
             fixed[c.index()] = Some(start_coords[c.index()]);
         }
-        if q.fixed.len() == 6 {
-            return Err(Error::new(format!("queries[{query}].fixed"), "every coordinate is fixed: nothing is left to plan over"));
-        }
-        let goal_copies: Vec<[f64; 6]> = equivalent_coords(goal.coords())
-            .into_iter()
-            .filter(|g| q.fixed.iter().all(|&c| same_value(c, g[c.index()], start_coords[c.index()])))
-            .collect();
+        let candidates = if params.identify_angles { equivalent_coords(goal_coords).to_vec() } else { vec![goal_coords] };
+        let goal_copies: Vec<[f64; 6]> =
+            candidates.into_iter().filter(|g| fixed_coords.iter().all(|&c| same_value(c, g[c.index()], start_coords[c.index()]))).collect();
         if goal_copies.is_empty() {
-            let g = goal.coords();
-            let differ: Vec<String> = q
-                .fixed
+            let g = goal_coords;
+            let differ: Vec<String> = fixed_coords
                 .iter()
                 .filter(|&&c| !same_value(c, g[c.index()], start_coords[c.index()]))
                 .map(|c| format!("{} = {} (start: {})", c.name(), g[c.index()], start_coords[c.index()]))
                 .collect();
-            return Err(Error::new(format!("queries[{query}].goal"), format!("goal pose \"{}\" is not on the start's slice: {}", q.goal, differ.join(", "))));
+            return Err(Error::new(format!("{field}.goal"), format!("goal pose \"{}\" is not on the start's slice: {}", names[1], differ.join(", "))));
         }
-        let manifold = CableManifold::new(scenario, fixed, params.barrier, params.min_margin, params.rotation_length)?;
+        let manifold = CableManifold::new(scenario, fixed, params.identify_angles, params.barrier, params.min_margin, params.rotation_length)?;
         let lift = |name: &str, role: &str, coords: &[f64; 6]| {
-            let x = manifold.lift(coords).map_err(|why| Error::new(format!("queries[{query}].{role}"), format!("{role} pose \"{name}\" is not wrench-feasible: {why}")))?;
+            let x = manifold.lift(coords).map_err(|why| Error::new(format!("{field}.{role}"), format!("{role} pose \"{name}\" is not wrench-feasible: {why}")))?;
             if !manifold.within_bounds(&x) {
                 let (mu, label) = manifold.tightest(&x);
                 return Err(Error::new(
-                    format!("queries[{query}].{role}"),
+                    format!("{field}.{role}"),
                     format!("{role} pose \"{name}\" is closer to the feasibility boundary than min_margin = {} allows ({label}: normalised margin {mu:.3e})", params.min_margin),
                 ));
             }
             if !manifold.admissible(&x) {
-                return Err(Error::new(format!("queries[{query}].{role}"), format!("{role} pose \"{name}\" violates a clearance (see `cablenav check`)")));
+                return Err(Error::new(format!("{field}.{role}"), format!("{role} pose \"{name}\" violates a clearance (see `cablenav check`)")));
             }
             Ok(x)
         };
-        let start_x = lift(&q.start, "start", &start_coords)?;
-        let goals = goal_copies.iter().map(|g| lift(&q.goal, "goal", g)).collect::<Result<Vec<_>>>()?;
+        let start_x = lift(names[0], "start", &start_coords)?;
+        let goals = goal_copies.iter().map(|g| lift(names[1], "goal", g)).collect::<Result<Vec<_>>>()?;
         let atlas_params = AtlasParams { radius: params.radius, epsilon: params.epsilon, delta: params.delta };
         let search = Continuation::new(manifold, &start_x, goals, atlas_params, params.max_charts)
-            .map_err(|why| Error::new(format!("queries[{query}].start"), format!("no chart can be made at the start pose \"{}\": {why}", q.start)))?;
+            .map_err(|why| Error::new(format!("{field}.start"), format!("no chart can be made at the start pose \"{}\": {why}", names[0])))?;
         Ok(Planner { scenario: scenario.clone(), start, goal, params, search })
     }
 
     /// Advances by at most `budget` units of work (one unit: one chart-creation attempt or one
-    /// A* pop — a few Newton projections, well under 5 ms in wasm) and returns the progress.
+    /// A* pop — a few Newton projections, under a millisecond on 2-D and 3-D slices; the pop that
+    /// reaches the goal also builds the dense path and verifies each of its steps exactly, and 6-D
+    /// chart creations cost more: see docs/planner.md) and returns the progress.
     pub fn step(&mut self, budget: usize) -> PlanProgress {
         let p = self.search.step(budget);
         PlanProgress { charts: p.charts, open: p.open, best_heuristic: p.best_heuristic, done: p.ended.map(status) }
@@ -335,12 +367,14 @@ impl Planner {
             status: st,
             path,
             charts: self.search.atlas.charts.len(),
-            dimension: manifold.free().len(),
-            expansion_failures: self.search.atlas.failures,
-            broken_edges: self.search.broken_edges(),
-            rejected_edges: self.search.rejected_edges(),
-            blocked_charts: self.search.atlas.charts.iter().filter(|c| c.state == chart::ChartState::Blocked).count(),
-            params: self.params,
+            atlas: AtlasSummary {
+                dimension: manifold.free().len(),
+                expansion_failures: self.search.atlas.failures,
+                broken_edges: self.search.broken_edges(),
+                rejected_edges: self.search.rejected_edges(),
+                blocked_charts: self.search.atlas.charts.iter().filter(|c| c.state == chart::ChartState::Blocked).count(),
+                params: self.params,
+            },
             verification,
         })
     }
