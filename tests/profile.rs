@@ -172,3 +172,17 @@ fn sample_counts_are_checked() {
     let empty = clearances_at(&s, &[]).unwrap();
     assert!(empty.samples.is_empty() && empty.membership_only.is_empty());
 }
+
+#[test]
+fn tension_at_poses_equals_the_trajectory_envelope() {
+    use cablenav::verify::profile::tension_at;
+    use cablenav::verify::tension_envelope;
+    let s = Scenario::from_json(ROBOCRANE).unwrap();
+    let traj = &s.trajectories[0];
+    let env = tension_envelope(&s, traj, 16).unwrap();
+    let samples: Vec<(f64, Pose)> = env.t.iter().map(|&t| (t, traj.pose_at(t))).collect();
+    let at = tension_at(&s, &traj.name, &samples).unwrap();
+    assert_eq!(at, env);
+    let tree = Scenario::from_json(TREE).unwrap();
+    assert_eq!(tension_at(&tree, "x", &samples).unwrap_err().field, "wrench");
+}

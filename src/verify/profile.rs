@@ -195,3 +195,29 @@ pub fn cable_states(s: &Scenario, pose: &Pose) -> Vec<CableState> {
     }
     out
 }
+
+/// Each cable's tension range over the wrench set at the given `(t, pose)` samples (e.g. a
+/// planned path's poses), as [`super::tension_envelope`] gives it along a trajectory; `name`
+/// labels the path.
+pub fn tension_at(s: &Scenario, name: &str, samples: &[(f64, Pose)]) -> Result<crate::report::TensionEnvelope> {
+    if s.wrench.is_none() {
+        return Err(Error::new("wrench", "the scenario has no wrench section"));
+    }
+    if samples.len() > MAX_SAMPLES {
+        return Err(Error::new("samples", format!("at most {MAX_SAMPLES} samples, got {}", samples.len())));
+    }
+    let mut env = crate::report::TensionEnvelope {
+        trajectory: name.to_string(),
+        t: vec![],
+        tension_min: vec![],
+        tension_max: vec![],
+        bounds: s.robot.cables.iter().map(|c| [c.tension.min, c.tension.max]).collect(),
+    };
+    for (t, pose) in samples {
+        let w = wrench_at(s, pose).filter(|w| !w.singular);
+        env.t.push(*t);
+        env.tension_min.push(w.as_ref().map(|w| w.tension_min.clone()));
+        env.tension_max.push(w.map(|w| w.tension_max));
+    }
+    Ok(env)
+}
