@@ -240,7 +240,12 @@ fn SliceMapView(map: SliceMap, overlay: Signal<Overlay>) -> impl IntoView {
                 view! {
                     {o.pieces.iter().map(|piece| {
                         let pts: Vec<_> = path_points(&piece.poses, axes, range).into_iter().map(to_px).collect();
-                        view! { <path data-testid="slice-path" d=polyline(&pts) fill="none" stroke=css(piece.colour) stroke-width="2.5" stroke-linecap="round" stroke-linejoin="round" /> }
+                        let d = polyline(&pts);
+                        // a white casing keeps a green path visible over green cells
+                        view! {
+                            <path d=d.clone() fill="none" stroke="#ffffff" stroke-width="5.5" stroke-linecap="round" stroke-linejoin="round" />
+                            <path data-testid="slice-path" d=d fill="none" stroke=css(piece.colour) stroke-width="2.5" stroke-linecap="round" stroke-linejoin="round" />
+                        }
                     }).collect_view()}
                     {marker(o.start).map(|(cx, cy)| view! {
                         <circle data-testid="slice-start" cx=cx cy=cy r="6" fill="#ffffff" stroke="#1d2329" stroke-width="2"><title>"start"</title></circle>

@@ -33,7 +33,7 @@ const CABLE_EASY: Rgba = [0.23, 0.44, 0.85, 1.0];
 const CABLE_TIGHT: Rgba = [0.9, 0.57, 0.12, 1.0];
 /// Cable colour when its tension range leaves its bounds.
 const CABLE_OUT: Rgba = [0.56, 0.23, 0.83, 1.0];
-const PLATFORM: Rgba = [0.35, 0.4, 0.47, 1.0];
+const PLATFORM: Rgba = [0.35, 0.4, 0.47, 0.6];
 const ANCHOR: Rgba = [0.12, 0.14, 0.16, 1.0];
 const GRID: Rgba = [0.8, 0.83, 0.86, 1.0];
 const AXES: [Rgba; 3] = [[0.85, 0.2, 0.2, 1.0], [0.2, 0.65, 0.25, 1.0], [0.2, 0.35, 0.9, 1.0]];
@@ -48,7 +48,7 @@ pub struct Geometry {
     pub solid: Vec<f32>,
     /// Unlit line segments (2 vertices each).
     pub lines: Vec<f32>,
-    /// Translucent lit triangles, drawn last (the obstacles).
+    /// Translucent lit triangles, drawn last (the platform and the obstacles).
     pub translucent: Vec<f32>,
 }
 
@@ -258,7 +258,8 @@ fn platform(g: &mut Geometry, s: &Scenario, pose: &Pose, extent: f64) {
     });
     let mut t = Tris::default();
     tessellate::cuboid(&mut t, corners);
-    push_tris(&mut g.solid, &t, PLATFORM);
+    // translucent: a large platform must not hide the cables and paths behind it
+    push_tris(&mut g.translucent, &t, PLATFORM);
     let origin = dv(&pose.position);
     for (k, c) in AXES.iter().enumerate() {
         let tip = pose.transform(&Vector3::from_fn(|i, _| if i == k { size * 0.8 } else { 0.0 }));
@@ -326,8 +327,8 @@ mod tests {
         let g = build(&SceneInput { scenario: &s, pose: Some(pose), cables: &states, trajectory: &pieces, path: None });
         assert_eq!(g.solid.len() % STRIDE, 0);
         assert_eq!(g.lines.len() % (2 * STRIDE), 0);
-        // the three obstacles, translucent
-        let expect: usize = s.obstacles.iter().map(|o| tessellate::shape(&o.shape).len()).sum();
+        // the platform box and the three obstacles, translucent
+        let expect: usize = 12 + s.obstacles.iter().map(|o| tessellate::shape(&o.shape).len()).sum::<usize>();
         assert_eq!(g.translucent.len(), expect * 3 * STRIDE);
         let solid = colours(&g.solid);
         // cable 3 meets the crown at t = 0.3: drawn red, 12 triangles of its tube
