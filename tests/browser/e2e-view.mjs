@@ -6,12 +6,11 @@
 // tests/browser/artifacts/. Ends with "N passed, M failed"; exits 1 on failure.
 
 import { execFileSync } from 'node:child_process';
-import { createServer } from 'node:http';
-import { existsSync, mkdirSync, mkdtempSync, readFileSync, statSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { dirname, extname, join, normalize, resolve, sep } from 'node:path';
+import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
+import { launch, runner, serve } from './harness.mjs';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const root = resolve(here, '..', '..');
@@ -37,26 +36,6 @@ function cliSections(report) {
   const out = [];
   for (const kind of ['feasible', 'infeasible', 'uncertain']) for (const [t0, t1] of report[kind]) out.push({ kind, t0, t1 });
   return out.sort((a, b) => a.t0 - b.t0 || a.t1 - b.t1);
-}
-
-// ---------- a tiny static file server ----------
-const TYPES = {
-  '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8', '.wasm': 'application/wasm',
-  '.css': 'text/css; charset=utf-8', '.json': 'application/json; charset=utf-8',
-};
-function serve(dir) {
-  const server = createServer((req, res) => {
-    let file = normalize(join(dir, decodeURIComponent(new URL(req.url, 'http://x').pathname)));
-    if (file !== dir && !file.startsWith(dir + sep)) return res.writeHead(403).end();
-    try {
-      if (statSync(file).isDirectory()) file = join(file, 'index.html');
-      const body = readFileSync(file);
-      res.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' }).end(body);
-    } catch {
-      res.writeHead(404).end('not found');
-    }
-  });
-  return new Promise((ok, fail) => server.once('error', fail).listen(0, '127.0.0.1', () => ok(server)));
 }
 
 // ---------- page helpers ----------
@@ -122,45 +101,11 @@ async function download(page, testid) {
 }
 
 // ---------- run ----------
-const results = [];
-async function test(name, fn) {
-  const started = Date.now();
-  try {
-    const detail = await fn();
-    results.push({ name, ok: true });
-    console.log(`ok   ${name}${detail ? ` — ${detail}` : ''} (${Date.now() - started} ms)`);
-  } catch (e) {
-    results.push({ name, ok: false });
-    console.log(`FAIL ${name}: ${e && e.stack ? e.stack : e}`);
-  }
-}
-
 mkdirSync(artifacts, { recursive: true });
-if (!existsSync(join(pageDir, 'index.html'))) {
-  console.log(`FAIL no built page at ${pageDir} (run scripts/build-page.sh)`);
-  console.log('0 passed, 1 failed');
-  process.exit(1);
-}
-setTimeout(() => {
-  console.log('FAIL watchdog: the end-to-end test took more than 15 minutes');
-  console.log(`${results.filter((r) => r.ok).length} passed, ${results.filter((r) => !r.ok).length + 1} failed`);
-  process.exit(1);
-}, 900_000).unref();
-
+const { test, finish } = runner('the end-to-end test', pageDir, 900_000);
 const server = await serve(pageDir);
 const base = `http://127.0.0.1:${server.address().port}`;
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
-  headless: true,
-  args: [
-    '--no-sandbox', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update',
-    '--disable-sync', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-  ],
-}).catch((e) => {
-  console.log(`FAIL launching Chromium: ${e.message}`);
-  console.log('0 passed, 1 failed');
-  process.exit(1);
-});
+const browser = await launch();
 const context = await browser.newContext({ viewport: { width: 1200, height: 900 }, acceptDownloads: true });
 const problems = [];
 const page = await context.newPage();
@@ -374,8 +319,4 @@ await test('Cancel stops a run', async () => {
 
 await browser.close();
 server.close();
-const passed = results.filter((r) => r.ok).length;
-const failed = results.length - passed;
-console.log(`screenshots in ${artifacts}`);
-console.log(`${passed} passed, ${failed} failed`);
-process.exit(failed ? 1 : 0);
+finish(artifacts);
