@@ -354,3 +354,58 @@ pub fn Workbench(parsed: Memo<Parsed>, verified: Memo<Verified>, trajectory: RwS
         </section>
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::presets::{find, PRESETS};
+
+    fn robocrane() -> Scenario {
+        logic::parse_scenario(PRESETS[find("robocrane").unwrap()].json).unwrap()
+    }
+
+    #[test]
+    fn a_trajectory_is_followed_in_t() {
+        let s = robocrane();
+        let t = &s.trajectories[0];
+        let path = PathRef::Trajectory(t);
+        assert_eq!(path.pose_at(0.25), Some(t.pose_at(0.25)));
+        assert_eq!(path.pose_at(7.0), Some(t.pose_at(1.0)), "clamped");
+        let samples = path.samples(4);
+        assert_eq!(samples.iter().map(|x| x.0).collect::<Vec<_>>(), [0.0, 0.25, 0.5, 0.75, 1.0]);
+        assert_eq!(samples[2].1, t.pose_at(0.5));
+        assert_eq!(path.param(), "t");
+    }
+
+    #[test]
+    fn a_planned_path_is_followed_pose_by_pose() {
+        let s = robocrane();
+        let poses: Vec<Pose> = (0..5).map(|k| s.trajectories[0].pose_at(k as f64 / 4.0)).collect();
+        let p = Planned { query: "q1-q2".into(), start: poses[0], goal: poses[4], poses: poses.clone() };
+        let path = PathRef::Planned(&p);
+        assert_eq!(path.pose_at(0.0), Some(poses[0]));
+        assert_eq!(path.pose_at(0.5), Some(poses[2]));
+        assert_eq!(path.pose_at(0.6), Some(poses[2]), "the nearest pose, not an interpolation");
+        assert_eq!(path.pose_at(1.0), Some(poses[4]));
+        let samples = path.samples(200);
+        assert_eq!(samples.len(), 5, "every pose, whatever the sample count");
+        assert_eq!(samples[4], (1.0, poses[4]));
+        assert_eq!(path.param(), "fraction");
+        let empty = Planned { poses: vec![], ..p };
+        assert_eq!(PathRef::Planned(&empty).pose_at(0.5), None);
+    }
+
+    #[test]
+    fn the_followed_path_falls_back_to_the_trajectory() {
+        let s = robocrane();
+        let parsed: Parsed = Shared::new(Ok(s.clone()));
+        let name = |follow, planned: Option<&Shared<Planned>>| on_path(&parsed, planned, follow, 9, |_, p| Some(p.name()));
+        assert_eq!(name(Follow::Planned, None).as_deref(), Some("trajectory “slerp q1-q2”"), "no plan: the (clamped) trajectory");
+        let pose = s.trajectories[0].pose_at(0.0);
+        let plan = Shared::new(Planned { query: "q1-q2".into(), start: pose, goal: pose, poses: vec![pose] });
+        assert_eq!(name(Follow::Planned, Some(&plan)).as_deref(), Some("planned path q1-q2"));
+        assert_eq!(name(Follow::Trajectory, Some(&plan)).as_deref(), Some("trajectory “slerp q1-q2”"));
+        let broken: Parsed = Shared::new(Err("bad".into()));
+        assert_eq!(on_path(&broken, None, Follow::Trajectory, 0, |_, p| Some(p.name())), None);
+    }
+}
