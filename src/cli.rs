@@ -4,6 +4,7 @@
 
 use crate::error::{Error, Result};
 use crate::model::Coord;
+use crate::plan::{plan, PlanParams, PlanReport, PlanStatus};
 use crate::report::{PoseReport, RayReport, Side, TensionEnvelope, VerifyReport};
 use crate::verify::slice::{default_range, Class, SliceMap};
 use crate::verify::{check_pose, ray, slice, tension_envelope, verify_pointwise, verify_trajectory};
@@ -18,6 +19,7 @@ usage:
   cablenav check  SCENARIO --pose NAME [--json]
   cablenav envelope SCENARIO [--trajectory NAME] [--samples N] [--json]
   cablenav slice  SCENARIO --pose NAME --axes A,B --res N [--range LO HI LO HI] [--png FILE] [--json]
+  cablenav plan   SCENARIO --query NAME [--max-charts N] [--radius R] [--epsilon E] [--json]
 
 SCENARIO is a cablenav-scenario/1 JSON file (docs/scenario-format.md).
 verify  feasible/infeasible t-sections of a trajectory (exact; --pointwise DT samples instead)
@@ -25,7 +27,10 @@ ray     feasible intervals of one pose coordinate, the others fixed at the pose'
 check   lengths, distances, violated conditions and the wrench set's tension ranges at one pose
 envelope  each cable's least and greatest tension over the wrench set along a trajectory
 slice   classify a res×res grid over two coordinates (others from the pose) and find the
-        connected components of its feasible cells; angles default to [-pi, pi]";
+        connected components of its feasible cells; angles default to [-pi, pi]
+plan    a wrench-feasible, interference-free path for a query of the scenario (Henderson atlas +
+        A*, docs/planner.md): found / no_path (start component exhausted) / budget, the path
+        re-verified edge by edge";
 
 /// Parsed options of one command.
 struct Opts {
@@ -36,7 +41,8 @@ struct Opts {
 impl Opts {
     fn parse(args: &[String], slice: bool) -> Result<Opts> {
         let takes = |f: &str| match f {
-            "--trajectory" | "--pointwise" | "--pose" | "--vary" | "--axes" | "--res" | "--png" | "--samples" => Some(1),
+            "--trajectory" | "--pointwise" | "--pose" | "--vary" | "--axes" | "--res" | "--png" | "--samples" | "--query" | "--max-charts"
+            | "--radius" | "--epsilon" => Some(1),
             "--range" => Some(if slice { 4 } else { 2 }),
             "--json" => Some(0),
             _ => None,
@@ -176,6 +182,26 @@ pub fn run(args: &[String], read: Read, write: Write) -> Result<String> {
             }
             if o.json() { to_json(&map) } else { Ok(slice_text(&map)) }
         }
+        "plan" => {
+            o.allow(&["--query", "--max-charts", "--radius", "--epsilon", "--json"])?;
+            let query = o.required("--query")?;
+            let mut params = PlanParams::default();
+            if let Some(n) = o.one("--max-charts") {
+                params.max_charts = n.parse().map_err(|_| Error::new("--max-charts", format!("not a whole number: {n:?}")))?;
+            }
+            if let Some(r) = o.one("--radius") {
+                params.radius = number("--radius", r)?;
+            }
+            if let Some(e) = o.one("--epsilon") {
+                params.epsilon = number("--epsilon", e)?;
+            }
+            let (outcome, seconds) = timed(|| plan(&scenario, query, params));
+            let report = outcome.map_err(|e| match e.field.as_str() {
+                "radius" | "epsilon" | "max_charts" => Error::new(format!("--{}", e.field.replace('_', "-")), e.reason),
+                _ => e,
+            })?.report(query, seconds);
+            if o.json() { to_json(&report) } else { Ok(plan_text(&report)) }
+        }
         other => Err(Error::new("", format!("unknown command {other:?}\n{USAGE}"))),
     }
 }
@@ -291,6 +317,64 @@ fn envelope_text(e: &TensionEnvelope) -> String {
             _ => "singular".to_string(),
         };
         out += &format!("  {t:.4}  {row}\n");
+    }
+    out
+}
+
+/// Runs `f` and measures its wall-clock seconds (NaN on wasm32, which has no `Instant`).
+fn timed<T>(f: impl FnOnce() -> T) -> (T, f64) {
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        let start = std::time::Instant::now();
+        let out = f();
+        (out, start.elapsed().as_secs_f64())
+    }
+    #[cfg(target_arch = "wasm32")]
+    {
+        (f(), f64::NAN)
+    }
+}
+
+fn plan_text(r: &PlanReport) -> String {
+    let status = match r.status {
+        PlanStatus::Found => "found",
+        PlanStatus::NoPath => "no_path",
+        PlanStatus::Budget => "budget",
+    };
+    let (a, p) = (&r.atlas, &r.atlas.params);
+    let mut out = format!(
+        "plan {}: {status} ({} charts, {}-D, {:.3} s; r = {}, ε = {}, δ = {}, κ = {}, margins ≥ {}, ≤ {} charts)\n",
+        r.query, r.charts, a.dimension, r.seconds, p.radius, p.epsilon, p.delta, p.barrier, p.min_margin, p.max_charts
+    );
+    match r.status {
+        PlanStatus::Found => {
+            let v = &r.verification;
+            out += &format!("  path: {} poses; re-verified: {} edges, {} infeasible and {} uncertain sections; {} of {} poses wrench-infeasible",
+                r.path.len(), v.edges, v.infeasible_sections, v.uncertain_sections, v.wrench_infeasible_poses, v.wrench_poses);
+            if let Some(m) = v.least_wrench_margin {
+                out += &format!(", least tension margin {m:.4}");
+            }
+            out += "\n";
+            for (i, pose) in r.path.iter().enumerate() {
+                let [x, y, z] = pose.position;
+                let [a, b, c] = pose.tilt_torsion;
+                out += &format!("  {i:5}  p = [{x:.6}, {y:.6}, {z:.6}]  (φ, θ, σ) = ({a:.6}, {b:.6}, {c:.6})\n");
+            }
+        }
+        PlanStatus::NoPath => out += "  the atlas of the start's connected component is exhausted without reaching the goal: no path at this resolution\n",
+        PlanStatus::Budget => out += "  the chart budget ran out: nothing is claimed (raise --max-charts)\n",
+    }
+    if a.expansion_failures > 0 {
+        out += &format!("  warning: {} expansion direction(s) failed; a no_path here is not certified\n", a.expansion_failures);
+    }
+    if a.blocked_charts > 0 {
+        out += &format!("  note: {} chart(s) blocked by a clearance violation at their centre\n", a.blocked_charts);
+    }
+    if a.broken_edges > 0 {
+        out += &format!("  warning: {} chart pair(s) dropped because their dense edge could not be followed; a no_path here is not certified\n", a.broken_edges);
+    }
+    if a.rejected_edges > 0 {
+        out += &format!("  note: {} chart pair(s) dropped because the exact verifier rejected their edge (interference)\n", a.rejected_edges);
     }
     out
 }

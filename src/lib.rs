@@ -23,6 +23,7 @@ pub mod cli;
 pub mod conditions;
 pub mod error;
 pub mod model;
+pub mod plan;
 pub mod png;
 pub mod poly;
 pub mod query;

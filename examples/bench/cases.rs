@@ -7,12 +7,14 @@
 //! `BENCH <platform> <case> <median_us> <best_us> <calls> <samples> <summary>`.
 
 use cablenav::model::Coord;
+use cablenav::plan::{plan, PlanOutcome, PlanParams, Planner};
 use cablenav::verify::{ray, verify_pointwise, verify_trajectory};
 use cablenav::Scenario;
 
 const CDPR7: &str = include_str!("../../static/scenarios/cdpr7.json");
 const CDPR7_TREE: &str = include_str!("../../static/scenarios/cdpr7-tree.json");
 const CDPR7_BOX: &str = include_str!("../../static/scenarios/cdpr7-box.json");
+const ROBOCRANE: &str = include_str!("../../static/scenarios/robocrane.json");
 
 /// Wall time spent measuring each case (after warm-up), in milliseconds.
 pub const CASE_MS: f64 = 1000.0;
@@ -109,6 +111,26 @@ pub fn run_all(platform: &str, filter: &str, now: &dyn Fn() -> f64, out: &mut dy
         measure(now, filter, "box/ray-fig310-x/exact", &mut || {
             let r = ray(&boxed, "fig310", Coord::X, 0.2, 3.8).expect("ray");
             format!("feasible={};infeasible={};boundaries={};uncertain={}", r.feasible.len(), r.infeasible.len(), r.boundaries.len(), r.uncertain.len())
+        }),
+        out,
+    );
+    // The planner (default parameters) on the Robocrane queries of Bohigas et al. §5, including
+    // the edge-by-edge re-verification of the path.
+    let crane = parse(ROBOCRANE);
+    let summary = |o: PlanOutcome| format!("status={:?};charts={};poses={};infeasible={}", o.status, o.charts, o.path.len(), o.verification.infeasible_sections);
+    for query in ["q1-q2", "q3-q4", "q5-q6"] {
+        record(measure(now, filter, &format!("robocrane/plan-{query}"), &mut || summary(plan(&crane, query, PlanParams::default()).expect("planning"))), out);
+    }
+    // q3 → q4 as paper 1 posed it: from (φ, θ) = (0.8, −2.4) to (−2.4, 2.4) with the angles as
+    // plain coordinates (their rotations are only 0.11 rad apart).
+    record(
+        measure(now, filter, "robocrane/plan-q3-q4-coordinates", &mut || {
+            let sigma = 7.0 * std::f64::consts::PI / 36.0;
+            let params = PlanParams { identify_angles: false, ..PlanParams::default() };
+            let fixed = [Coord::X, Coord::Y, Coord::Z, Coord::Sigma];
+            let mut p = Planner::between_coords(&crane, [0.0, 0.0, 2.0, 0.8, -2.4, sigma], [0.0, 0.0, 2.0, -2.4, 2.4, sigma], &fixed, params).expect("planner");
+            while p.step(1000).done.is_none() {}
+            summary(p.outcome().expect("outcome"))
         }),
         out,
     );

@@ -1,0 +1,445 @@
+//! Path planning on the wrench-feasible C-space of a 6-cable robot (Bohigas et al., "Navigating
+//! the wrench-feasible C-space of cable-driven hexapods"): the C-space, or a slice of it with some
+//! of (x, y, z, φ, θ, σ) fixed, is a smooth manifold ([`manifold`]); an atlas of it is grown by
+//! Henderson's continuation ([`atlas`], [`chart`]) under an A* search ([`search`]) until the goal
+//! is reached (`found`), the start's component is exhausted (`no_path`, at the stated
+//! resolution), or the chart budget runs out (`budget`). Every path found is re-verified edge by
+//! edge by the exact verifier. docs/planner.md has the formulation and the guarantees.
+//!
+//! [`Planner`] is resumable ([`Planner::step`]) so the page can drive it between frames; [`plan`]
+//! runs it to the end. Nothing here reads a clock: time budgets are the caller's.
+
+pub mod atlas;
+pub mod chart;
+pub mod manifold;
+pub mod search;
+
+use crate::error::{Error, Result};
+use crate::model::pose::wrap_angle;
+use crate::model::trajectory::{Orientation, Translation};
+use crate::model::{Coord, Pose, Trajectory};
+use crate::report::VerifyReport;
+use crate::scenario::Scenario;
+use crate::verify::{verify_trajectory, wrench_at};
+use atlas::AtlasParams;
+use manifold::{CableManifold, Manifold};
+use nalgebra::UnitQuaternion;
+use search::{Continuation, Ended};
+use serde::Serialize;
+use std::f64::consts::PI;
+
+/// The planner's parameters.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PlanParams {
+    /// Chart radius r, in tangent coordinates of the manifold (pose coordinates and auxiliaries).
+    pub radius: f64,
+    /// Chart validity threshold ε: a new chart's centre must be within ε of its parent's tangent
+    /// space, and |det(Ψ_iᵀΨ_j)| ≥ 1 − ε.
+    pub epsilon: f64,
+    /// Largest step δ between consecutive path poses, in the pose metric.
+    pub delta: f64,
+    /// Most charts the atlas may have before the search stops with `budget`.
+    pub max_charts: usize,
+    /// Barrier scale κ of the auxiliaries w = −κ ln μ (μ: a bound's normalised margin).
+    pub barrier: f64,
+    /// Least normalised margin μ the atlas explores: charts with some μ below it are not expanded
+    /// (the auxiliary bound w ≤ −κ ln min_margin).
+    pub min_margin: f64,
+    /// Length that one radian of rotation counts as in the pose metric (path length, heuristic).
+    pub rotation_length: f64,
+    /// Treat angle coordinates as angles: differences wrapped to (−π, π] and the goal accepted in
+    /// both tilt-and-torsion triples of its rotation. Off: the angles are plain coordinates, as in
+    /// paper 1 (only for comparing with it: the atlas of a component that winds around an angle
+    /// then never ends).
+    pub identify_angles: bool,
+}
+
+impl Default for PlanParams {
+    /// r = 0.4, ε = 0.4, δ = 0.04 (CuikSuite's defaults), 100 000 charts, κ = 0.1, μ ≥ 1e-3, one
+    /// radian counted as one length unit, angles identified.
+    fn default() -> PlanParams {
+        PlanParams { radius: 0.4, epsilon: 0.4, delta: 0.04, max_charts: 100_000, barrier: 0.1, min_margin: 1e-3, rotation_length: 1.0, identify_angles: true }
+    }
+}
+
+impl PlanParams {
+    /// Checks every parameter, naming the first bad one.
+    pub fn validate(&self) -> Result<()> {
+        let positive = |field: &str, v: f64| {
+            if v.is_finite() && v > 0.0 {
+                Ok(())
+            } else {
+                Err(Error::new(field, format!("must be a positive finite number, got {v}")))
+            }
+        };
+        positive("radius", self.radius)?;
+        positive("epsilon", self.epsilon)?;
+        positive("delta", self.delta)?;
+        positive("barrier", self.barrier)?;
+        positive("rotation_length", self.rotation_length)?;
+        if self.epsilon >= 1.0 {
+            return Err(Error::new("epsilon", format!("must be below 1 (the tangent test is |det| ≥ 1 − ε), got {}", self.epsilon)));
+        }
+        if !(self.min_margin > 0.0 && self.min_margin < 1.0) {
+            return Err(Error::new("min_margin", format!("must be in (0, 1), got {}", self.min_margin)));
+        }
+        if self.max_charts == 0 || self.max_charts > 10_000_000 {
+            return Err(Error::new("max_charts", format!("must be between 1 and 10000000, got {}", self.max_charts)));
+        }
+        if self.delta > self.radius {
+            return Err(Error::new("delta", format!("must not exceed the radius {}, got {}", self.radius, self.delta)));
+        }
+        Ok(())
+    }
+}
+
+/// How planning ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PlanStatus {
+    /// A path from start to goal was found.
+    Found,
+    /// The atlas of the start's connected component was exhausted without reaching the goal: no
+    /// path exists at this resolution (radius, ε, auxiliary bound).
+    NoPath,
+    /// The chart budget ran out first: nothing is claimed.
+    Budget,
+}
+
+/// Progress of a running planner.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PlanProgress {
+    /// Charts in the atlas so far.
+    pub charts: usize,
+    /// A* open-list size.
+    pub open: usize,
+    /// Least h over the open list (pose-metric distance to the goal).
+    pub best_heuristic: f64,
+    /// The status once finished.
+    pub done: Option<PlanStatus>,
+}
+
+/// The exact verifier's re-check of a path, edge by edge (slerp + linear translation between
+/// consecutive poses), and the per-pose wrench check of every path pose.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PathVerification {
+    /// Edges verified (path poses − 1).
+    pub edges: usize,
+    /// Infeasible sections found along the edges (interference, cable lengths) — 0 for a good
+    /// path.
+    pub infeasible_sections: usize,
+    /// Sections the exact verifier could not certify either way.
+    pub uncertain_sections: usize,
+    /// Path poses checked for wrench feasibility (every pose).
+    pub wrench_poses: usize,
+    /// Path poses found wrench-infeasible — 0 for a good path.
+    pub wrench_infeasible_poses: usize,
+    /// Least wrench margin (tension, force units) over the path poses.
+    pub least_wrench_margin: Option<f64>,
+    /// The verifier's reports of the edges with an infeasible or uncertain section, by edge index.
+    pub failed_edges: Vec<(usize, VerifyReport)>,
+    /// What the verification does and does not cover.
+    pub notes: Vec<String>,
+}
+
+/// What the atlas looked like at the end, and what a `no_path` claim rests on.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AtlasSummary {
+    /// The manifold's dimension (free coordinates).
+    pub dimension: usize,
+    /// Expansion directions where no valid chart could be made (0 for a certified `no_path`).
+    pub expansion_failures: usize,
+    /// Chart pairs dropped from the search because their dense edge could not be followed (a
+    /// numerical failure: 0 for a certified `no_path`).
+    pub broken_edges: usize,
+    /// Chart pairs dropped because the exact verifier rejected a step of their dense edge.
+    pub rejected_edges: usize,
+    /// Charts whose centre violates a clearance (never expanded nor entered).
+    pub blocked_charts: usize,
+    /// The parameters used.
+    pub params: PlanParams,
+}
+
+/// The result of planning.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlanOutcome {
+    /// How it ended.
+    pub status: PlanStatus,
+    /// The path (when found): dense poses, each consecutive pair at most δ apart in the pose
+    /// metric; the first is exactly the query's start pose and the last exactly its goal pose.
+    pub path: Vec<Pose>,
+    /// Charts in the atlas.
+    pub charts: usize,
+    /// The atlas's dimension, failures, dropped edges, blocked charts and parameters.
+    pub atlas: AtlasSummary,
+    /// The re-verification of the path (empty for no path).
+    pub verification: PathVerification,
+}
+
+/// One path pose as the CLI and the page print it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PathPose {
+    /// Position.
+    pub position: [f64; 3],
+    /// Orientation, [w, x, y, z].
+    pub quaternion: [f64; 4],
+    /// Tilt-and-torsion angles (φ, θ, σ), radians.
+    pub tilt_torsion: [f64; 3],
+}
+
+/// The serialisable report of a planning run (`cablenav plan --json`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PlanReport {
+    /// The query's name.
+    pub query: String,
+    /// `found`, `no_path` or `budget`.
+    pub status: PlanStatus,
+    /// The path's poses.
+    pub path: Vec<PathPose>,
+    /// Charts in the atlas.
+    pub charts: usize,
+    /// Wall-clock seconds, as measured by the caller.
+    pub seconds: f64,
+    /// The atlas summary (its fields appear at the top level of the JSON).
+    #[serde(flatten)]
+    pub atlas: AtlasSummary,
+    /// The exact re-verification of the path.
+    pub verification: PathVerification,
+}
+
+impl PlanOutcome {
+    /// The serialisable report, with the wall-clock time the caller measured.
+    pub fn report(&self, query: &str, seconds: f64) -> PlanReport {
+        PlanReport {
+            query: query.to_string(),
+            status: self.status,
+            path: self
+                .path
+                .iter()
+                .map(|p| PathPose { position: [p.position.x, p.position.y, p.position.z], quaternion: p.quaternion(), tilt_torsion: p.tilt_torsion() })
+                .collect(),
+            charts: self.charts,
+            seconds,
+            atlas: self.atlas.clone(),
+            verification: self.verification.clone(),
+        }
+    }
+}
+
+/// A resumable planner for one query of a scenario. Owns everything it needs.
+pub struct Planner {
+    scenario: Scenario,
+    start: Pose,
+    goal: Pose,
+    params: PlanParams,
+    search: Continuation<CableManifold>,
+}
+
+/// The coordinates of `pose` equivalent to `q` under (φ, θ, σ) ~ (φ + π, −θ, σ): the two
+/// tilt-and-torsion triples of one rotation.
+fn equivalent_coords(q: [f64; 6]) -> [[f64; 6]; 2] {
+    let mut other = q;
+    other[3] = wrap_angle(q[3] + PI);
+    other[4] = -q[4];
+    [q, other]
+}
+
+/// Whether two values of coordinate `c` agree (angles modulo 2π).
+fn same_value(c: Coord, a: f64, b: f64) -> bool {
+    let d = if c.is_angle() { wrap_angle(a - b) } else { a - b };
+    d.abs() <= 1e-9
+}
+
+/// The two ends of a planning problem, as [`Planner`]'s constructors resolve them.
+struct Ends<'a> {
+    /// Prefix of error fields (`queries[q1-q2]`).
+    field: String,
+    /// Names of the start and goal poses, for messages.
+    names: [&'a str; 2],
+    /// The exact start and goal poses the path begins and ends with.
+    poses: [Pose; 2],
+    /// Their coordinates (x, y, z, φ, θ, σ).
+    coords: [[f64; 6]; 2],
+    /// The fixed coordinates, held at the start's values.
+    fixed: &'a [Coord],
+}
+
+impl Planner {
+    /// Prepares planning for scenario query `query` (its name in `scenario.queries`): checks the
+    /// parameters, that start and goal are wrench-feasible, non-singular, interference-free and
+    /// on the same slice, and builds the first chart.
+    pub fn new(scenario: &Scenario, query: &str, params: PlanParams) -> Result<Planner> {
+        params.validate()?;
+        let q = scenario.queries.iter().find(|q| q.name == query).ok_or_else(|| {
+            let names: Vec<&str> = scenario.queries.iter().map(|q| q.name.as_str()).collect();
+            let known = if names.is_empty() { "the scenario has no queries".to_string() } else { format!("known queries: {}", names.join(", ")) };
+            Error::new("query", format!("no query named \"{query}\"; {known}"))
+        })?;
+        let (start, goal) = (*scenario.pose(&q.start)?, *scenario.pose(&q.goal)?);
+        let ends = Ends { field: format!("queries[{query}]"), names: [&q.start, &q.goal], poses: [start, goal], coords: [start.coords(), goal.coords()], fixed: &q.fixed };
+        Planner::build(scenario, ends, params)
+    }
+
+    /// Prepares planning between two poses given by their coordinates (x, y, z, φ, θ, σ) as they
+    /// are — not as the canonical tilt-and-torsion angles of their rotations — with `fixed` held at
+    /// the start's values. With `params.identify_angles` off this is paper 1's own setting (the
+    /// angles as plain coordinates); the benchmark uses it to plan q3 → q4 as the paper did.
+    pub fn between_coords(scenario: &Scenario, start: [f64; 6], goal: [f64; 6], fixed: &[Coord], params: PlanParams) -> Result<Planner> {
+        params.validate()?;
+        for (role, c) in [("start", &start), ("goal", &goal)] {
+            if let Some(bad) = c.iter().position(|v| !v.is_finite()) {
+                return Err(Error::new(format!("{role}[{bad}]"), format!("must be a finite number, got {}", c[bad])));
+            }
+        }
+        let ends = Ends { field: "coords".to_string(), names: ["start", "goal"], poses: [Pose::from_coords(start), Pose::from_coords(goal)], coords: [start, goal], fixed };
+        Planner::build(scenario, ends, params)
+    }
+
+    /// The common part of the constructors.
+    fn build(scenario: &Scenario, ends: Ends, params: PlanParams) -> Result<Planner> {
+        let Ends { field, names, poses: [start, goal], coords: [start_coords, goal_coords], fixed: fixed_coords } = ends;
+        if fixed_coords.len() >= 6 {
+            return Err(Error::new(format!("{field}.fixed"), "every coordinate is fixed: nothing is left to plan over"));
+        }
+        let mut fixed = [None; 6];
+        for c in fixed_coords {
+            fixed[c.index()] = Some(start_coords[c.index()]);
+        }
+        let candidates = if params.identify_angles { equivalent_coords(goal_coords).to_vec() } else { vec![goal_coords] };
+        let goal_copies: Vec<[f64; 6]> =
+            candidates.into_iter().filter(|g| fixed_coords.iter().all(|&c| same_value(c, g[c.index()], start_coords[c.index()]))).collect();
+        if goal_copies.is_empty() {
+            let g = goal_coords;
+            let differ: Vec<String> = fixed_coords
+                .iter()
+                .filter(|&&c| !same_value(c, g[c.index()], start_coords[c.index()]))
+                .map(|c| format!("{} = {} (start: {})", c.name(), g[c.index()], start_coords[c.index()]))
+                .collect();
+            return Err(Error::new(format!("{field}.goal"), format!("goal pose \"{}\" is not on the start's slice: {}", names[1], differ.join(", "))));
+        }
+        let manifold = CableManifold::new(scenario, fixed, params.identify_angles, params.barrier, params.min_margin, params.rotation_length)?;
+        let lift = |name: &str, role: &str, coords: &[f64; 6]| {
+            let x = manifold.lift(coords).map_err(|why| Error::new(format!("{field}.{role}"), format!("{role} pose \"{name}\" is not wrench-feasible: {why}")))?;
+            if !manifold.within_bounds(&x) {
+                let (mu, label) = manifold.tightest(&x);
+                return Err(Error::new(
+                    format!("{field}.{role}"),
+                    format!("{role} pose \"{name}\" is closer to the feasibility boundary than min_margin = {} allows ({label}: normalised margin {mu:.3e})", params.min_margin),
+                ));
+            }
+            if !manifold.admissible(&x) {
+                return Err(Error::new(format!("{field}.{role}"), format!("{role} pose \"{name}\" violates a clearance (see `cablenav check`)")));
+            }
+            Ok(x)
+        };
+        let start_x = lift(names[0], "start", &start_coords)?;
+        let goals = goal_copies.iter().map(|g| lift(names[1], "goal", g)).collect::<Result<Vec<_>>>()?;
+        let atlas_params = AtlasParams { radius: params.radius, epsilon: params.epsilon, delta: params.delta };
+        let search = Continuation::new(manifold, &start_x, goals, atlas_params, params.max_charts)
+            .map_err(|why| Error::new(format!("{field}.start"), format!("no chart can be made at the start pose \"{}\": {why}", names[0])))?;
+        Ok(Planner { scenario: scenario.clone(), start, goal, params, search })
+    }
+
+    /// Advances by at most `budget` units of work (one unit: one chart-creation attempt or one
+    /// A* pop — a few Newton projections, well under 5 ms in wasm) and returns the progress.
+    pub fn step(&mut self, budget: usize) -> PlanProgress {
+        let p = self.search.step(budget);
+        PlanProgress { charts: p.charts, open: p.open, best_heuristic: p.best_heuristic, done: p.ended.map(status) }
+    }
+
+    /// The result once [`Planner::step`] reported `done`, `None` before. Builds the path's poses
+    /// and runs the edge-by-edge re-verification on each call (it costs about one exact
+    /// verification per path edge), so call it once.
+    pub fn outcome(&self) -> Option<PlanOutcome> {
+        let st = status(self.search.ended()?);
+        let manifold = &self.search.atlas.manifold;
+        let mut path: Vec<Pose> = self.search.path().iter().map(|x| Pose::from_coords(manifold.coords(x))).collect();
+        if let Some(first) = path.first_mut() {
+            *first = self.start;
+        }
+        if let Some(last) = path.last_mut() {
+            *last = self.goal;
+        }
+        let verification = verify_path(&self.scenario, &path);
+        Some(PlanOutcome {
+            status: st,
+            path,
+            charts: self.search.atlas.charts.len(),
+            atlas: AtlasSummary {
+                dimension: manifold.free().len(),
+                expansion_failures: self.search.atlas.failures,
+                broken_edges: self.search.broken_edges(),
+                rejected_edges: self.search.rejected_edges(),
+                blocked_charts: self.search.atlas.charts.iter().filter(|c| c.state == chart::ChartState::Blocked).count(),
+                params: self.params,
+            },
+            verification,
+        })
+    }
+}
+
+fn status(e: Ended) -> PlanStatus {
+    match e {
+        Ended::Found => PlanStatus::Found,
+        Ended::Exhausted => PlanStatus::NoPath,
+        Ended::Budget => PlanStatus::Budget,
+    }
+}
+
+/// The trajectory between two consecutive path poses: linear translation and the short slerp.
+pub(crate) fn edge_trajectory(index: usize, a: &Pose, b: &Pose) -> Trajectory {
+    let qb = if a.rotation.quaternion().dot(b.rotation.quaternion()) < 0.0 {
+        UnitQuaternion::new_unchecked(-b.rotation.into_inner())
+    } else {
+        b.rotation
+    };
+    Trajectory { name: format!("edge {index}"), translation: Translation::Line(a.position, b.position), orientation: Orientation::Slerp(a.rotation, qb) }
+}
+
+/// Re-verifies a path: the exact verifier on each edge, the wrench set at each pose.
+pub fn verify_path(s: &Scenario, path: &[Pose]) -> PathVerification {
+    let mut v = PathVerification {
+        edges: path.len().saturating_sub(1),
+        infeasible_sections: 0,
+        uncertain_sections: 0,
+        wrench_poses: 0,
+        wrench_infeasible_poses: 0,
+        least_wrench_margin: None,
+        failed_edges: vec![],
+        notes: vec![
+            "edges: interference and cable lengths verified exactly along each slerp + linear edge (verify_trajectory)".to_string(),
+            "wrench set: checked at every path pose (poses at most delta apart); the exact verifier does not yet cover it along edges".to_string(),
+        ],
+    };
+    for (i, w) in path.windows(2).enumerate() {
+        match verify_trajectory(s, &edge_trajectory(i, &w[0], &w[1])) {
+            Ok(report) => {
+                v.infeasible_sections += report.infeasible.len();
+                v.uncertain_sections += report.uncertain.len();
+                if !report.infeasible.is_empty() || !report.uncertain.is_empty() {
+                    v.failed_edges.push((i, report));
+                }
+            }
+            Err(e) => v.notes.push(format!("edge {i}: the verifier refused it: {e}")),
+        }
+    }
+    for pose in path {
+        if let Some(w) = wrench_at(s, pose) {
+            v.wrench_poses += 1;
+            if !w.feasible {
+                v.wrench_infeasible_poses += 1;
+            }
+            if let Some(m) = w.margin {
+                v.least_wrench_margin = Some(v.least_wrench_margin.map_or(m, |a: f64| a.min(m)));
+            }
+        }
+    }
+    v
+}
+
+/// Runs a planner for `query` to the end (CLI, tests) and returns its outcome.
+pub fn plan(scenario: &Scenario, query: &str, params: PlanParams) -> Result<PlanOutcome> {
+    let mut planner = Planner::new(scenario, query, params)?;
+    while planner.step(1000).done.is_none() {}
+    planner.outcome().ok_or_else(|| Error::new("plan", "the planner stopped without an outcome"))
+}

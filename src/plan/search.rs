@@ -1,0 +1,275 @@
+//! A* over the chart centres of an atlas that grows as the search goes (Bohigas et al. §4): the
+//! chart with least f = g + h is popped, tested for the goal, and expanded fully before its
+//! neighbours are relaxed. g sums the manifold's distance between consecutive centres and h is the
+//! distance to the nearest goal point, so h is admissible. Edges are checked lazily: when a chart
+//! path is found its dense path is built edge by edge, and an edge whose walks do not meet or
+//! whose motions the manifold's motion validator rejects is removed and the search restarted on
+//! the atlas built so far.
+//!
+//! Generic over [`Manifold`] and resumable: [`Continuation::step`] does a bounded amount of work.
+
+use super::atlas::{Atlas, AtlasParams};
+use super::chart::ChartState;
+use super::manifold::Manifold;
+use std::cmp::Ordering;
+use std::collections::{BinaryHeap, HashMap, HashSet};
+
+/// How a search ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ended {
+    /// A dense path to a goal point was built.
+    Found,
+    /// Every chart reachable from the start was expanded without reaching a goal point.
+    Exhausted,
+    /// The chart budget ran out.
+    Budget,
+}
+
+/// Progress of a continuation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Progress {
+    /// Charts in the atlas.
+    pub charts: usize,
+    /// Entries in the open list.
+    pub open: usize,
+    /// Least heuristic over the open list (infinity when empty).
+    pub best_heuristic: f64,
+    /// How it ended, once it has.
+    pub ended: Option<Ended>,
+}
+
+/// An open-list entry, ordered so that the heap pops the least f (ties: least h).
+#[derive(Debug, Clone, Copy)]
+struct Entry {
+    f: f64,
+    h: f64,
+    chart: usize,
+}
+
+impl PartialEq for Entry {
+    fn eq(&self, o: &Self) -> bool {
+        self.cmp(o) == Ordering::Equal
+    }
+}
+impl Eq for Entry {}
+impl PartialOrd for Entry {
+    fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
+        Some(self.cmp(o))
+    }
+}
+impl Ord for Entry {
+    fn cmp(&self, o: &Self) -> Ordering {
+        o.f.total_cmp(&self.f).then(o.h.total_cmp(&self.h)).then(o.chart.cmp(&self.chart))
+    }
+}
+
+/// An atlas and an A* search over it, from the start point to any of the goal points.
+pub struct Continuation<M: Manifold> {
+    /// The atlas built so far.
+    pub atlas: Atlas<M>,
+    goals: Vec<Vec<f64>>,
+    max_charts: usize,
+    g: Vec<f64>,
+    parent: Vec<Option<usize>>,
+    popped: Vec<bool>,
+    open: BinaryHeap<Entry>,
+    expanding: Option<usize>,
+    /// Chart pairs whose dense edge could not be built or failed the motion validator (removed
+    /// from the graph).
+    broken: HashSet<(usize, usize)>,
+    /// Of those, the pairs whose dense edge was built but rejected by the motion validator.
+    rejected: usize,
+    /// Dense edges built so far, by (from, to) chart; `None` for a broken one.
+    edges: HashMap<(usize, usize), Option<Vec<Vec<f64>>>>,
+    ended: Option<Ended>,
+    path: Vec<Vec<f64>>,
+}
+
+impl<M: Manifold> Continuation<M> {
+    /// A search from `start` (a point of the manifold) to any of `goals` (points of the manifold;
+    /// none: explore the start's whole component), with at most `max_charts` charts.
+    pub fn new(manifold: M, start: &[f64], goals: Vec<Vec<f64>>, params: AtlasParams, max_charts: usize) -> Result<Continuation<M>, String> {
+        let atlas = Atlas::new(manifold, start, params)?;
+        let mut s = Continuation {
+            atlas,
+            goals,
+            max_charts: max_charts.max(1),
+            g: vec![],
+            parent: vec![],
+            popped: vec![],
+            open: BinaryHeap::new(),
+            expanding: None,
+            broken: HashSet::new(),
+            rejected: 0,
+            edges: HashMap::new(),
+            ended: None,
+            path: vec![],
+        };
+        s.restart();
+        Ok(s)
+    }
+
+    /// Forgets the search state (not the atlas) and starts again from chart 0.
+    fn restart(&mut self) {
+        let n = self.atlas.charts.len();
+        self.g = vec![f64::INFINITY; n];
+        self.parent = vec![None; n];
+        self.popped = vec![false; n];
+        self.open.clear();
+        self.expanding = None;
+        self.g[0] = 0.0;
+        let h = self.heuristic(0);
+        self.open.push(Entry { f: h, h, chart: 0 });
+    }
+
+    /// Distance from chart `c`'s centre to the nearest goal point (0 with no goals).
+    fn heuristic(&self, c: usize) -> f64 {
+        if self.goals.is_empty() {
+            return 0.0;
+        }
+        let x = &self.atlas.charts[c].centre;
+        self.goals.iter().map(|g| self.atlas.manifold.distance(x, g)).fold(f64::INFINITY, f64::min)
+    }
+
+    /// How it ended, if it has.
+    pub fn ended(&self) -> Option<Ended> {
+        self.ended
+    }
+
+    /// The dense path (points of the manifold) once [`Ended::Found`]; empty otherwise.
+    pub fn path(&self) -> &[Vec<f64>] {
+        &self.path
+    }
+
+    /// Chart pairs removed from the graph because their dense edge could not be followed (the
+    /// two walks did not meet: a numerical failure, like an expansion failure).
+    pub fn broken_edges(&self) -> usize {
+        self.broken.len() - self.rejected
+    }
+
+    /// Chart pairs removed from the graph because the motion validator rejected their dense edge.
+    pub fn rejected_edges(&self) -> usize {
+        self.rejected
+    }
+
+    /// The current progress.
+    pub fn progress(&self) -> Progress {
+        Progress {
+            charts: self.atlas.charts.len(),
+            open: self.open.len(),
+            best_heuristic: self.open.iter().map(|e| e.h).fold(f64::INFINITY, f64::min),
+            ended: self.ended,
+        }
+    }
+
+    /// Does at most `budget` units of work — one unit is one chart-creation attempt (one
+    /// expansion direction, with its step shrinking) or one pop of the open list — and returns
+    /// the progress.
+    pub fn step(&mut self, budget: usize) -> Progress {
+        let mut left = budget;
+        while left > 0 && self.ended.is_none() {
+            left -= 1;
+            if let Some(c) = self.expanding {
+                if self.atlas.charts.len() >= self.max_charts {
+                    self.ended = Some(Ended::Budget);
+                } else if !self.atlas.expand_once(c) {
+                    self.expanding = None;
+                    self.relax(c);
+                }
+                continue;
+            }
+            let Some(Entry { chart: c, .. }) = self.open.pop() else {
+                self.ended = Some(Ended::Exhausted);
+                continue;
+            };
+            if self.popped[c] {
+                continue;
+            }
+            self.popped[c] = true;
+            if self.try_goal(c) {
+                continue;
+            }
+            if self.atlas.charts[c].state == ChartState::Open {
+                self.expanding = Some(c);
+            } else {
+                self.relax(c);
+            }
+        }
+        self.progress()
+    }
+
+    /// Pushes the neighbours of `c` whose g improves through `c`.
+    fn relax(&mut self, c: usize) {
+        let n = self.atlas.charts.len();
+        self.g.resize(n, f64::INFINITY);
+        self.parent.resize(n, None);
+        self.popped.resize(n, false);
+        for i in 0..self.atlas.charts[c].neighbours.len() {
+            let nb = self.atlas.charts[c].neighbours[i];
+            if self.atlas.charts[nb].state == ChartState::Blocked || self.broken.contains(&(c.min(nb), c.max(nb))) {
+                continue;
+            }
+            let g = self.g[c] + self.atlas.manifold.distance(&self.atlas.charts[c].centre, &self.atlas.charts[nb].centre);
+            if g < self.g[nb] {
+                self.g[nb] = g;
+                self.parent[nb] = Some(c);
+                self.popped[nb] = false;
+                let h = self.heuristic(nb);
+                self.open.push(Entry { f: g + h, h, chart: nb });
+            }
+        }
+    }
+
+    /// If a goal point lies in chart `c`, builds the dense path there (ending with the search) or,
+    /// if an edge of the chart path cannot be built, removes that edge and restarts the search.
+    /// Returns whether the search state changed that way.
+    fn try_goal(&mut self, c: usize) -> bool {
+        let Some((goal, t)) = self.goals.iter().find_map(|g| self.atlas.locate(c, g).map(|t| (g.clone(), t))) else {
+            return false;
+        };
+        let mut chain = vec![c];
+        while let Some(p) = self.parent[*chain.last().unwrap_or(&0)] {
+            chain.push(p);
+        }
+        chain.reverse();
+        let mut path: Vec<Vec<f64>> = vec![self.atlas.charts[chain[0]].centre.clone()];
+        for w in chain.windows(2) {
+            let key = (w[0], w[1]);
+            if !self.edges.contains_key(&key) {
+                let dense = self.atlas.edge(w[0], w[1]);
+                let rejected = dense.as_ref().is_some_and(|e| !self.motions_valid(e));
+                if rejected && !self.broken.contains(&(w[0].min(w[1]), w[0].max(w[1]))) {
+                    self.rejected += 1;
+                }
+                self.edges.insert(key, dense.filter(|_| !rejected));
+            }
+            match &self.edges[&key] {
+                Some(e) => path.extend(e.iter().skip(1).cloned()),
+                None => {
+                    self.broken.insert((w[0].min(w[1]), w[0].max(w[1])));
+                    self.restart();
+                    return true;
+                }
+            }
+        }
+        match self.atlas.walk(c, &t).filter(|e| self.motions_valid(e)) {
+            Some(last) => {
+                path.extend(last.into_iter().skip(1));
+                if let Some(end) = path.last_mut() {
+                    *end = goal;
+                }
+                self.path = path;
+                self.ended = Some(Ended::Found);
+                true
+            }
+            // The goal is in the ball but its segment cannot be followed: keep searching, another
+            // chart may hold it.
+            None => false,
+        }
+    }
+
+    /// Whether the motion validator accepts every step of a dense path.
+    fn motions_valid(&self, dense: &[Vec<f64>]) -> bool {
+        dense.windows(2).all(|w| self.atlas.manifold.motion_valid(&w[0], &w[1]))
+    }
+}

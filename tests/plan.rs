@@ -1,0 +1,607 @@
+//! The continuation planner (src/plan): the cable manifold's equations against finite differences
+//! and against the per-pose wrench test, the generic atlas on manifolds with known answers
+//! (circle, sphere, torus, two concentric circles), and the Robocrane queries of Bohigas et al.
+//! with every path re-verified and the straight segments shown to leave the feasible set.
+
+#[cfg(target_arch = "wasm32")]
+use wasm_bindgen_test::wasm_bindgen_test as test;
+
+mod support;
+
+use cablenav::model::{Coord, Pose};
+use cablenav::plan::atlas::AtlasParams;
+use cablenav::plan::manifold::{BoundKind, CableManifold, Manifold};
+use cablenav::plan::search::{Continuation, Ended};
+use cablenav::plan::{plan, verify_path, PlanParams, PlanStatus, Planner};
+use cablenav::shape::{Obstacle, Shape};
+use cablenav::query::wrench::tension_ranges;
+use cablenav::scenario::Query;
+use cablenav::verify::wrench_at;
+use cablenav::Scenario;
+use nalgebra::DMatrix;
+use std::f64::consts::PI;
+use support::reference::Rng;
+
+const ROBOCRANE: &str = include_str!("../static/scenarios/robocrane.json");
+
+fn robocrane() -> Scenario {
+    Scenario::from_json(ROBOCRANE).expect("robocrane preset parses")
+}
+
+// ---------------------------------------------------------------------------------------------
+// The cable manifold's equations
+
+/// Random feasible coordinates near a reference pose (rejection sampling on the wrench test).
+fn feasible_coords(s: &Scenario, rng: &mut Rng, count: usize) -> Vec<[f64; 6]> {
+    let mut out = Vec::new();
+    while out.len() < count {
+        let q = [rng.range(-0.3, 0.3), rng.range(-0.3, 0.3), rng.range(1.5, 2.5), rng.range(-PI, PI), rng.range(-1.2, 1.2), rng.range(-1.0, 1.0)];
+        if wrench_at(s, &Pose::from_coords(q)).is_some_and(|w| w.feasible) {
+            out.push(q);
+        }
+    }
+    out
+}
+
+/// The closed-form Jacobian agrees with central differences of F, on and off the manifold, for
+/// the full 6-D space and for a slice.
+#[test]
+fn jacobian_matches_finite_differences() {
+    let s = robocrane();
+    let mut rng = Rng::new(11);
+    for fixed in [[None; 6], [Some(0.0), Some(0.0), Some(2.0), None, None, Some(35f64.to_radians())]] {
+        let m = CableManifold::new(&s, fixed, true, 0.1, 1e-3, 1.0).unwrap();
+        let (n, eqs) = (m.ambient(), m.equations());
+        assert_eq!(eqs, 18, "6 cables × (tension low, tension high, length)");
+        for mut q in feasible_coords(&s, &mut rng, 6) {
+            for (c, v) in fixed.iter().enumerate() {
+                if let Some(v) = v {
+                    q[c] = *v;
+                }
+            }
+            let Ok(mut x) = m.lift(&q) else { continue };
+            // Off the manifold too: perturb the auxiliaries.
+            for w in x[n - eqs..].iter_mut() {
+                *w += rng.range(-0.05, 0.05);
+            }
+            let mut f = vec![0.0; eqs];
+            let mut jac = DMatrix::zeros(eqs, n);
+            assert!(m.eval(&x, &mut f, &mut jac));
+            for col in 0..n {
+                let h = 1e-6;
+                let (mut xp, mut xm) = (x.clone(), x.clone());
+                xp[col] += h;
+                xm[col] -= h;
+                let (mut fp, mut fm) = (vec![0.0; eqs], vec![0.0; eqs]);
+                let mut scratch = DMatrix::zeros(eqs, n);
+                assert!(m.eval(&xp, &mut fp, &mut scratch) && m.eval(&xm, &mut fm, &mut scratch));
+                for row in 0..eqs {
+                    let fd = (fp[row] - fm[row]) / (2.0 * h);
+                    let tol = 1e-5 * (1.0 + fd.abs());
+                    assert!((jac[(row, col)] - fd).abs() <= tol, "dF{row}/dx{col}: closed form {} vs finite differences {fd}", jac[(row, col)]);
+                }
+            }
+        }
+    }
+}
+
+/// The manifold's margins are the per-pose wrench test's: (f0 − v − f_min)/span and
+/// (f_max − f0 − v)/span from `tension_ranges`, and the lengths' product form.
+#[test]
+fn margins_agree_with_the_per_pose_wrench_test() {
+    let s = robocrane();
+    let m = CableManifold::new(&s, [None; 6], true, 0.1, 1e-3, 1.0).unwrap();
+    let mut rng = Rng::new(5);
+    for q in feasible_coords(&s, &mut rng, 20) {
+        let pose = Pose::from_coords(q);
+        let ranges = tension_ranges(&s.robot, &pose, s.wrench.as_ref().unwrap()).unwrap();
+        let mu = m.margins(&q, false).unwrap().values;
+        for (b, v) in m.barriers().iter().zip(&mu) {
+            let (cable, r) = (&s.robot.cables[b.cable], ranges[b.cable]);
+            let span = cable.tension.max - cable.tension.min;
+            let len = (pose.transform(&cable.platform) - cable.base).norm();
+            let expect = match b.kind {
+                BoundKind::TensionLow => (r.nominal - r.spread - cable.tension.min) / span,
+                BoundKind::TensionHigh => (cable.tension.max - r.nominal - r.spread) / span,
+                BoundKind::Length => (len - cable.length.min) * (cable.length.max - len) / ((cable.length.max - cable.length.min).powi(2) / 4.0),
+            };
+            assert!((v - expect).abs() < 1e-9, "{}: {v} vs {expect}", b.label());
+        }
+        // A lifted point is on the manifold: F = 0 there.
+        let x = m.lift(&q).unwrap();
+        let mut f = vec![0.0; 18];
+        let mut jac = DMatrix::zeros(18, 24);
+        assert!(m.eval(&x, &mut f, &mut jac));
+        assert!(f.iter().all(|v| v.abs() < 1e-12));
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The generic continuation on manifolds with known answers
+
+/// A manifold given by closures: F: ℝⁿ → ℝ (one equation) and its gradient.
+struct Implicit {
+    n: usize,
+    f: fn(&[f64]) -> f64,
+    grad: fn(&[f64]) -> Vec<f64>,
+}
+
+impl Manifold for Implicit {
+    fn ambient(&self) -> usize {
+        self.n
+    }
+    fn equations(&self) -> usize {
+        1
+    }
+    fn eval(&self, x: &[f64], f: &mut [f64], jac: &mut DMatrix<f64>) -> bool {
+        f[0] = (self.f)(x);
+        for (j, g) in (self.grad)(x).into_iter().enumerate() {
+            jac[(0, j)] = g;
+        }
+        true
+    }
+}
+
+fn circle() -> Implicit {
+    Implicit { n: 2, f: |x| x[0] * x[0] + x[1] * x[1] - 1.0, grad: |x| vec![2.0 * x[0], 2.0 * x[1]] }
+}
+
+fn sphere() -> Implicit {
+    Implicit { n: 3, f: |x| x.iter().map(|v| v * v).sum::<f64>() - 1.0, grad: |x| x.iter().map(|v| 2.0 * v).collect() }
+}
+
+/// Torus with centre-line radius 1 and tube radius 0.5 around the z axis.
+fn torus() -> Implicit {
+    Implicit {
+        n: 3,
+        f: |x| {
+            let rho = x[0].hypot(x[1]);
+            (rho - 1.0).powi(2) + x[2] * x[2] - 0.25
+        },
+        grad: |x| {
+            let rho = x[0].hypot(x[1]);
+            let k = 2.0 * (rho - 1.0) / rho;
+            vec![k * x[0], k * x[1], 2.0 * x[2]]
+        },
+    }
+}
+
+/// Two concentric circles of radii 1 and 1.3: a curve with two components 0.3 apart, closer than
+/// two chart radii, so charts of one see centres of the other as candidates.
+fn two_circles() -> Implicit {
+    Implicit {
+        n: 2,
+        f: |x| {
+            let r2 = x[0] * x[0] + x[1] * x[1];
+            (r2 - 1.0) * (r2 - 1.69)
+        },
+        grad: |x| {
+            let r2 = x[0] * x[0] + x[1] * x[1];
+            let d = 2.0 * r2 - 2.69;
+            vec![2.0 * x[0] * d, 2.0 * x[1] * d]
+        },
+    }
+}
+
+const PARAMS: AtlasParams = AtlasParams { radius: 0.3, epsilon: 0.3, delta: 0.05 };
+
+fn run<M: Manifold>(m: M, start: &[f64], goals: Vec<Vec<f64>>, max_charts: usize) -> Continuation<M> {
+    let mut c = Continuation::new(m, start, goals, PARAMS, max_charts).unwrap();
+    while c.step(100).ended.is_none() {}
+    c
+}
+
+/// Every chart centre is on the manifold and every sample point of the manifold is within one
+/// chart radius (plus the chart-to-manifold gap) of some centre: the atlas covers it.
+fn assert_covers<M: Manifold>(c: &Continuation<M>, samples: &[Vec<f64>], on: impl Fn(&[f64]) -> f64) {
+    for chart in &c.atlas.charts {
+        assert!(on(&chart.centre).abs() < 1e-9, "centre {:?} off the manifold", chart.centre);
+    }
+    for p in samples {
+        let nearest = c.atlas.charts.iter().map(|ch| ch.centre.iter().zip(p).map(|(a, b)| (a - b).powi(2)).sum::<f64>().sqrt()).fold(f64::INFINITY, f64::min);
+        assert!(nearest <= 1.2 * PARAMS.radius, "{p:?} is {nearest} from the nearest chart centre");
+    }
+}
+
+#[test]
+fn circle_atlas_is_exhausted_and_covers_it() {
+    let c = run(circle(), &[1.0, 0.0], vec![], 10_000);
+    assert_eq!(c.ended(), Some(Ended::Exhausted));
+    assert_eq!(c.atlas.failures, 0);
+    let n = c.atlas.charts.len();
+    // Charts are about r apart along a curve of length 2π.
+    assert!((2.0 * PI / (2.0 * PARAMS.radius)) as usize <= n && n <= (2.0 * PI / (0.5 * PARAMS.radius)) as usize, "{n} charts");
+    let samples: Vec<Vec<f64>> = (0..500).map(|i| (i as f64 * 2.0 * PI / 500.0).sin_cos()).map(|(s, c)| vec![c, s]).collect();
+    assert_covers(&c, &samples, |x| x[0] * x[0] + x[1] * x[1] - 1.0);
+}
+
+#[test]
+fn circle_path_follows_the_arc() {
+    let c = run(circle(), &[1.0, 0.0], vec![vec![-1.0, 0.0]], 10_000);
+    assert_eq!(c.ended(), Some(Ended::Found));
+    let path = c.path();
+    assert_eq!(path.first().unwrap(), &vec![1.0, 0.0]);
+    assert_eq!(path.last().unwrap(), &vec![-1.0, 0.0]);
+    let mut length = 0.0;
+    for w in path.windows(2) {
+        let d = (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]);
+        assert!(d <= PARAMS.delta + 1e-12, "step {d}");
+        length += d;
+    }
+    for p in path {
+        assert!((p[0].hypot(p[1]) - 1.0).abs() < 1e-9);
+    }
+    // Half the circle: π, never the chord (2) nor a detour.
+    assert!(length > 0.99 * PI && length < 1.1 * PI, "length {length}");
+}
+
+#[test]
+fn sphere_atlas_is_exhausted_and_covers_it() {
+    let c = run(sphere(), &[0.0, 0.0, 1.0], vec![], 10_000);
+    assert_eq!(c.ended(), Some(Ended::Exhausted));
+    assert_eq!(c.atlas.failures, 0);
+    let n = c.atlas.charts.len() as f64;
+    // Area 4π, each chart's polytope covers between the inscribed hexagon of a disc of radius r/2
+    // … and the disc of radius r.
+    assert!(n >= 4.0 * PI / (PI * PARAMS.radius.powi(2)) && n <= 4.0 * PI / (0.5 * PARAMS.radius.powi(2)), "{n} charts");
+    let mut rng = Rng::new(3);
+    let samples: Vec<Vec<f64>> = (0..500)
+        .map(|_| {
+            let (z, a) = (rng.range(-1.0, 1.0), rng.range(0.0, 2.0 * PI));
+            let s = (1.0 - z * z).sqrt();
+            vec![s * a.cos(), s * a.sin(), z]
+        })
+        .collect();
+    assert_covers(&c, &samples, |x| x.iter().map(|v| v * v).sum::<f64>() - 1.0);
+}
+
+#[test]
+fn torus_atlas_is_exhausted_covers_it_and_connects_opposite_points() {
+    let on = |x: &[f64]| (x[0].hypot(x[1]) - 1.0).powi(2) + x[2] * x[2] - 0.25;
+    let c = run(torus(), &[1.5, 0.0, 0.0], vec![], 20_000);
+    assert_eq!(c.ended(), Some(Ended::Exhausted));
+    assert_eq!(c.atlas.failures, 0);
+    let mut rng = Rng::new(9);
+    let samples: Vec<Vec<f64>> = (0..500)
+        .map(|_| {
+            let (u, v) = (rng.range(0.0, 2.0 * PI), rng.range(0.0, 2.0 * PI));
+            let rho = 1.0 + 0.5 * v.cos();
+            vec![rho * u.cos(), rho * u.sin(), 0.5 * v.sin()]
+        })
+        .collect();
+    assert_covers(&c, &samples, on);
+    // From the outer equator to the inner one on the far side.
+    let found = run(torus(), &[1.5, 0.0, 0.0], vec![vec![-0.5, 0.0, 0.0]], 20_000);
+    assert_eq!(found.ended(), Some(Ended::Found));
+    assert!(found.path().iter().all(|p| on(p).abs() < 1e-9));
+    assert!(found.path().windows(2).all(|w| w[0].iter().zip(&w[1]).map(|(a, b)| (a - b).powi(2)).sum::<f64>().sqrt() <= PARAMS.delta + 1e-12));
+}
+
+/// The start's circle is exhausted without a single chart on the other circle, 0.3 away: no path;
+/// a goal on the start's own circle is found.
+#[test]
+fn two_component_curve_proves_no_path_between_components() {
+    let none = run(two_circles(), &[1.0, 0.0], vec![vec![-1.3, 0.0]], 10_000);
+    assert_eq!(none.ended(), Some(Ended::Exhausted));
+    assert_eq!(none.atlas.failures, 0);
+    assert!(none.atlas.charts.iter().all(|c| (c.centre[0].hypot(c.centre[1]) - 1.0).abs() < 1e-9), "a chart jumped to the other circle");
+    let alone = run(circle(), &[1.0, 0.0], vec![], 10_000);
+    assert_eq!(none.atlas.charts.len(), alone.atlas.charts.len(), "the same atlas as the circle alone");
+    let found = run(two_circles(), &[1.3, 0.0], vec![vec![0.0, -1.3]], 10_000);
+    assert_eq!(found.ended(), Some(Ended::Found));
+    assert!(found.path().iter().all(|p| (p[0].hypot(p[1]) - 1.3).abs() < 1e-9));
+}
+
+/// A chart budget smaller than the atlas ends with `Budget`, never with a claim.
+#[test]
+fn budget_is_reported_as_budget() {
+    let c = run(sphere(), &[0.0, 0.0, 1.0], vec![vec![0.0, 0.0, -1.0]], 10);
+    assert_eq!(c.ended(), Some(Ended::Budget));
+    assert_eq!(c.atlas.charts.len(), 10);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Robocrane (Bohigas et al. §5)
+
+/// The paper's start and goal coordinates (x, y, z, φ, θ, σ) of each query.
+fn paper_coords(query: &str) -> ([f64; 6], [f64; 6]) {
+    let s = 7.0 * PI / 36.0;
+    match query {
+        "q1-q2" => ([0.0, 0.0, 2.0, -0.5, 0.9, s], [0.0, 0.0, 2.0, 2.0, 0.9, s]),
+        "q3-q4" => ([0.0, 0.0, 2.0, 0.8, -2.4, s], [0.0, 0.0, 2.0, -2.4, 2.4, s]),
+        _ => ([0.0, 0.0, 1.2, 0.8, -2.6, s], [0.0, 0.0, 2.0, -2.4, 2.4, s]),
+    }
+}
+
+/// Checks a found path: exact ends, fixed coordinates kept to 1e-9, steps at most δ (position and
+/// rotation angle), every pose wrench-feasible, and the re-verification clean.
+fn assert_good_path(s: &Scenario, query: &str, params: &PlanParams) -> usize {
+    let out = plan(s, query, *params).unwrap();
+    assert_eq!(out.status, PlanStatus::Found, "{query}");
+    let q = s.queries.iter().find(|q| q.name == query).unwrap();
+    let (start, goal) = (*s.pose(&q.start).unwrap(), *s.pose(&q.goal).unwrap());
+    assert_eq!(out.path.first(), Some(&start));
+    assert_eq!(out.path.last(), Some(&goal));
+    let start_coords = start.coords();
+    for p in &out.path {
+        let c = p.coords();
+        for f in &q.fixed {
+            let i = f.index();
+            let d = if f.is_angle() { cablenav::model::pose::wrap_angle(c[i] - start_coords[i]) } else { c[i] - start_coords[i] };
+            assert!(d.abs() <= 1e-9, "{query}: {} drifted by {d}", f.name());
+        }
+        let w = wrench_at(s, p).unwrap();
+        assert!(w.feasible, "{query}: a path pose is wrench-infeasible ({})", w.active);
+    }
+    for w in out.path.windows(2) {
+        let step = (w[1].position - w[0].position).norm().hypot(w[0].rotation.angle_to(&w[1].rotation));
+        assert!(step <= params.delta + 1e-9, "{query}: step {step}");
+    }
+    let v = &out.verification;
+    assert_eq!(v.edges, out.path.len() - 1);
+    assert_eq!((v.infeasible_sections, v.uncertain_sections, v.wrench_infeasible_poses), (0, 0, 0), "{query}: {:?}", v.failed_edges);
+    assert_eq!(v.wrench_poses, out.path.len());
+    out.charts
+}
+
+/// The straight segment between the paper's start and goal coordinates leaves the feasible set
+/// (per-pose checks at 1000 points), as the paper reports.
+fn assert_straight_segment_leaves(s: &Scenario, query: &str) {
+    let (a, b) = paper_coords(query);
+    let infeasible = (0..=1000)
+        .filter(|&k| {
+            let t = k as f64 / 1000.0;
+            let q: [f64; 6] = std::array::from_fn(|i| a[i] + t * (b[i] - a[i]));
+            !wrench_at(s, &Pose::from_coords(q)).unwrap().feasible
+        })
+        .count();
+    assert!(infeasible > 0, "{query}: the straight segment stays feasible");
+    // The paper's coordinates are the preset's poses.
+    let q = s.queries.iter().find(|q| q.name == query).unwrap();
+    for (c, name) in [(a, &q.start), (b, &q.goal)] {
+        let p = s.pose(name).unwrap();
+        assert!(Pose::from_coords(c).rotation.angle_to(&p.rotation) < 1e-12 && (Pose::from_coords(c).position - p.position).norm() < 1e-12);
+    }
+}
+
+#[test]
+fn robocrane_slice_queries_find_verified_paths() {
+    let s = robocrane();
+    let params = PlanParams::default();
+    for query in ["q1-q2", "q3-q4", "q5-q6"] {
+        assert_straight_segment_leaves(&s, query);
+        assert_good_path(&s, query, &params);
+    }
+}
+
+/// q3 → q4 as paper 1 posed it: from (φ, θ) = (0.8, −2.4) to (−2.4, 2.4) with the angles as
+/// plain coordinates (`identify_angles: false`). The rotations are only 0.11 rad apart but the
+/// path in coordinates must go the long way round (the straight segment leaves the feasible set):
+/// it is found, verified clean, and is more than ten times longer than the direct rotation.
+#[test]
+fn robocrane_q3_q4_in_the_paper_coordinates() {
+    let s = robocrane();
+    let (a, b) = paper_coords("q3-q4");
+    let params = PlanParams { identify_angles: false, ..PlanParams::default() };
+    let mut p = Planner::between_coords(&s, a, b, &[Coord::X, Coord::Y, Coord::Z, Coord::Sigma], params).unwrap();
+    while p.step(500).done.is_none() {}
+    let out = p.outcome().unwrap();
+    assert_eq!(out.status, PlanStatus::Found);
+    assert_eq!(out.path.first(), Some(&Pose::from_coords(a)));
+    assert_eq!(out.path.last(), Some(&Pose::from_coords(b)));
+    let v = &out.verification;
+    assert_eq!((v.infeasible_sections, v.uncertain_sections, v.wrench_infeasible_poses), (0, 0, 0));
+    let length: f64 = out.path.windows(2).map(|w| w[0].rotation.angle_to(&w[1].rotation)).sum();
+    let direct = Pose::from_coords(a).rotation.angle_to(&Pose::from_coords(b).rotation);
+    assert!(direct < 0.12 && length > 10.0 * direct, "direct {direct}, path {length}");
+}
+
+/// A pose in a component of the slice p = [0, 0, 2], σ = 35° other than q1's: the small region
+/// around (φ, θ) = (2.66, 2.23) that `cablenav slice robocrane.json --pose q1 --axes phi,theta
+/// --res 72` shows apart from the band holding q1 (the test takes the centre of one of its grid
+/// cells). Planning from it to q1 exhausts its component's atlas: `no_path`.
+#[test]
+fn robocrane_other_component_is_no_path() {
+    let mut s = robocrane();
+    // Independent check on a grid: on the slice map's 4-neighbour components neither coordinate
+    // copy of the island, (φ, θ) and (φ + π, −θ), shares a component with either copy of q1.
+    let res = 72;
+    let map = cablenav::verify::slice(&s, "q1", [Coord::Phi, Coord::Theta], res, [[-PI, PI], [-PI, PI]]).unwrap();
+    let cell = |phi: f64, theta: f64| {
+        let idx = |v: f64| (((cablenav::model::pose::wrap_angle(v) + PI) / (2.0 * PI) * res as f64).floor() as usize).min(res - 1);
+        map.component[idx(theta) * res + idx(phi)]
+    };
+    let (phi, theta) = (map.center(0, 66), map.center(1, 61));
+    let island = [cell(phi, theta), cell(phi + PI, -theta)];
+    let q1 = [cell(-0.5, 0.9), cell(-0.5 + PI, -0.9)];
+    assert!(island.iter().all(Option::is_some) && q1.iter().all(Option::is_some), "island {island:?}, q1 {q1:?}");
+    assert!(island.iter().all(|c| !q1.contains(c)), "grid components: island {island:?}, q1 {q1:?}");
+
+    let other = Pose::from_coords([0.0, 0.0, 2.0, phi, theta, 7.0 * PI / 36.0]);
+    assert!(wrench_at(&s, &other).unwrap().feasible);
+    s.poses.push(("island".to_string(), other));
+    s.queries.push(Query { name: "island-q1".to_string(), start: "island".to_string(), goal: "q1".to_string(), fixed: vec![Coord::X, Coord::Y, Coord::Z, Coord::Sigma] });
+    let out = plan(&s, "island-q1", PlanParams::default()).unwrap();
+    assert_eq!(out.status, PlanStatus::NoPath);
+    assert_eq!((out.atlas.expansion_failures, out.atlas.broken_edges), (0, 0), "a certified no_path");
+    assert!(out.path.is_empty());
+    assert!(out.charts > 1);
+}
+
+/// The obstacle-free q1 → q2 path, and the slice with a ball of radius 0.05 put 0.03 beyond cable
+/// 1's platform anchor (along the cable) at the pose `fraction` of the way along that path.
+fn with_ball(s: &Scenario, free: &[Pose], fraction: f64) -> Scenario {
+    let pose = free[(free.len() as f64 * fraction) as usize];
+    let cable = &s.robot.cables[0];
+    let anchor = pose.transform(&cable.platform);
+    let centre = anchor + (anchor - cable.base).normalize() * 0.03;
+    let mut blocked = s.clone();
+    blocked.obstacles.push(Obstacle { name: "ball".to_string(), shape: Shape::Sphere { center: centre, radius: 0.05 } });
+    blocked
+}
+
+/// The grid components (slice map, 120 × 120 over (φ, θ)) of q1 and q2.
+fn grid_components(s: &Scenario) -> [Option<usize>; 2] {
+    let map = cablenav::verify::slice(s, "q1", [Coord::Phi, Coord::Theta], 120, [[-PI, PI], [-PI, PI]]).unwrap();
+    let comp = |name: &str| map.pose_components.iter().find(|(n, _)| n == name).and_then(|(_, c)| *c);
+    [comp("q1"), comp("q2")]
+}
+
+/// Interference: a ball in the way of the obstacle-free q1 → q2 path (which the verifier then
+/// finds infeasible) but leaving q1 and q2 connected on the slice map: the planner's motion
+/// validator (the exact verifier on each path step) rejects the edges through it and the new path
+/// is re-verified clean. A ball near the middle of the path, where θ ≈ 0, cuts the slice in two on
+/// the slice map: there the planner's atlas is exhausted (`no_path`), with charts blocked at its
+/// centres.
+#[test]
+fn robocrane_paths_avoid_obstacles() {
+    let s = robocrane();
+    let free = plan(&s, "q1-q2", PlanParams::default()).unwrap().path;
+
+    let around = with_ball(&s, &free, 0.7);
+    let [a, b] = grid_components(&around);
+    assert!(a.is_some() && a == b, "precondition: q1 and q2 connected on the grid");
+    assert!(verify_path(&around, &free).infeasible_sections > 0, "the ball must be in the old path's way");
+    let out = plan(&around, "q1-q2", PlanParams::default()).unwrap();
+    assert_eq!(out.status, PlanStatus::Found);
+    assert!(out.atlas.rejected_edges > 0, "edges through the ball are rejected");
+    assert_eq!((out.verification.infeasible_sections, out.verification.uncertain_sections, out.verification.wrench_infeasible_poses), (0, 0, 0));
+
+    let wall = with_ball(&s, &free, 0.5);
+    let [a, b] = grid_components(&wall);
+    assert!(a.is_some() && b.is_some() && a != b, "precondition: the grid separates q1 and q2");
+    let out = plan(&wall, "q1-q2", PlanParams::default()).unwrap();
+    assert_eq!(out.status, PlanStatus::NoPath);
+    assert!(out.atlas.blocked_charts > 0);
+    assert_eq!((out.atlas.expansion_failures, out.atlas.broken_edges), (0, 0), "a certified no_path");
+}
+
+/// The full 6-D space (nothing fixed) between two feasible poses ends with a path or, within a
+/// small chart budget, an honest `budget`.
+#[test]
+fn robocrane_full_6d_query_ends_honestly() {
+    let mut s = robocrane();
+    s.queries.push(Query { name: "6d".to_string(), start: "q1".to_string(), goal: "q2".to_string(), fixed: vec![] });
+    let params = PlanParams { max_charts: 20, ..PlanParams::default() };
+    let out = plan(&s, "6d", params).unwrap();
+    assert_eq!(out.atlas.dimension, 6);
+    match out.status {
+        PlanStatus::Found => assert_eq!(out.verification.infeasible_sections, 0),
+        PlanStatus::Budget => {
+            assert_eq!(out.charts, 20);
+            assert!(out.path.is_empty());
+        }
+        PlanStatus::NoPath => panic!("q1 and q2 are connected on a 2-D slice, so not in 6-D"),
+    }
+}
+
+/// `step` is resumable: small steps give the same result as one run, progress never goes
+/// backwards, and `outcome` is `None` until done.
+#[test]
+fn stepping_matches_a_single_run() {
+    let s = robocrane();
+    let mut p = Planner::new(&s, "q1-q2", PlanParams::default()).unwrap();
+    assert!(p.outcome().is_none());
+    let mut charts = 0;
+    let mut steps = 0;
+    loop {
+        let pr = p.step(1);
+        steps += 1;
+        assert!(pr.charts >= charts);
+        charts = pr.charts;
+        if pr.done.is_some() {
+            break;
+        }
+        assert!(pr.best_heuristic.is_finite() || pr.open == 0);
+    }
+    assert!(steps > 1);
+    let stepped = p.outcome().unwrap();
+    let whole = plan(&s, "q1-q2", PlanParams::default()).unwrap();
+    assert_eq!(stepped, whole);
+}
+
+/// Bad input is an error naming the field and the reason, never a panic.
+#[test]
+fn bad_input_is_reported() {
+    let mut s = robocrane();
+    let err = |s: &Scenario, q: &str, p: PlanParams| Planner::new(s, q, p).err().expect("an error");
+    let e = err(&s, "nope", PlanParams::default());
+    assert_eq!(e.field, "query");
+    assert!(e.reason.contains("q1-q2"), "{}", e.reason);
+    for (p, field) in [
+        (PlanParams { radius: f64::NAN, ..PlanParams::default() }, "radius"),
+        (PlanParams { epsilon: 1.5, ..PlanParams::default() }, "epsilon"),
+        (PlanParams { max_charts: 0, ..PlanParams::default() }, "max_charts"),
+        (PlanParams { delta: 1.0, ..PlanParams::default() }, "delta"),
+        (PlanParams { min_margin: 0.0, ..PlanParams::default() }, "min_margin"),
+    ] {
+        assert_eq!(err(&s, "q1-q2", p).field, field);
+    }
+    // An infeasible start (the platform above the base: the cables would have to push), a goal
+    // off the slice, a singular goal (every cable in the base plane).
+    s.poses.push(("flipped".to_string(), Pose::from_coords([0.0, 0.0, -2.0, 0.0, 0.0, 0.0])));
+    s.poses.push(("elsewhere".to_string(), Pose::from_coords([0.0, 0.0, 1.5, 2.0, 0.9, 7.0 * PI / 36.0])));
+    s.poses.push(("flat".to_string(), Pose::from_coords([0.0, 0.0, 0.0, 0.0, 0.0, 0.0])));
+    let q = |name: &str, start: &str, goal: &str, fixed: Vec<Coord>| Query { name: name.into(), start: start.into(), goal: goal.into(), fixed };
+    s.queries.push(q("bad-start", "flipped", "q1", vec![]));
+    s.queries.push(q("off-slice", "q1", "elsewhere", vec![Coord::Z]));
+    s.queries.push(q("singular-goal", "q1", "flat", vec![]));
+    let e = err(&s, "bad-start", PlanParams::default());
+    assert!(e.field.ends_with(".start") && e.reason.contains("not wrench-feasible"), "{e}");
+    let e = err(&s, "off-slice", PlanParams::default());
+    assert!(e.field.ends_with(".goal") && e.reason.contains("z = 1.5"), "{e}");
+    let e = err(&s, "singular-goal", PlanParams::default());
+    assert!(e.field.ends_with(".goal") && e.reason.contains("singular"), "{e}");
+    let nan = [f64::NAN, 0.0, 2.0, 0.0, 0.5, 0.0];
+    assert_eq!(Planner::between_coords(&s, nan, [0.0, 0.0, 2.0, 0.0, 0.5, 0.0], &[], PlanParams::default()).err().unwrap().field, "start[0]");
+    // A scenario without a wrench section cannot be planned on.
+    let mut nowrench = robocrane();
+    nowrench.wrench = None;
+    assert_eq!(err(&nowrench, "q1-q2", PlanParams::default()).field, "wrench");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Command line
+
+fn cli(args: &str) -> cablenav::Result<String> {
+    let args: Vec<String> = args.split_whitespace().map(String::from).collect();
+    let read = |path: &str| match path {
+        "robocrane.json" => Ok(ROBOCRANE.to_string()),
+        other => Err(cablenav::Error::new(other, "cannot read: no such file")),
+    };
+    cablenav::cli::run(&args, &read, &|_, _| Ok(()))
+}
+
+/// `cablenav plan --json` prints the documented fields, the path from the start pose exactly to
+/// the goal pose exactly, and the verification; bad options are errors naming the option.
+#[test]
+fn cli_plan_prints_the_documented_report() {
+    let v: serde_json::Value = serde_json::from_str(&cli("plan robocrane.json --query q1-q2 --json").unwrap()).unwrap();
+    assert_eq!(v["status"], "found");
+    assert!(v["charts"].as_u64().unwrap() > 1);
+    assert!(v["seconds"].is_number() || v["seconds"].is_null());
+    assert_eq!(v["verification"]["infeasible_sections"], 0);
+    let path = v["path"].as_array().unwrap();
+    let s = robocrane();
+    let (start, goal) = (s.pose("q1").unwrap(), s.pose("q2").unwrap());
+    let first = &path[0];
+    let last = &path[path.len() - 1];
+    assert_eq!(first["quaternion"], serde_json::json!(start.quaternion()));
+    assert_eq!(last["quaternion"], serde_json::json!(goal.quaternion()));
+    assert_eq!(first["position"], serde_json::json!([0.0, 0.0, 2.0]));
+    assert_eq!(first["tilt_torsion"].as_array().unwrap().len(), 3);
+    let text = cli("plan robocrane.json --query q1-q2 --radius 0.3 --epsilon 0.3 --max-charts 5000").unwrap();
+    assert!(text.starts_with("plan q1-q2: found"), "{text}");
+    let budget = cli("plan robocrane.json --query q5-q6 --max-charts 3").unwrap();
+    assert!(budget.starts_with("plan q5-q6: budget (3 charts"), "{budget}");
+    for (args, field) in [
+        ("plan robocrane.json", "--query"),
+        ("plan robocrane.json --query q1-q2 --radius -1", "--radius"),
+        ("plan robocrane.json --query q1-q2 --epsilon x", "--epsilon"),
+        ("plan robocrane.json --query q1-q2 --max-charts 0", "--max-charts"),
+        ("plan robocrane.json --query q1-q2 --pose q1", "--pose"),
+    ] {
+        assert_eq!(cli(args).unwrap_err().field, field, "{args}");
+    }
+    assert_eq!(cli("plan robocrane.json --query q9").unwrap_err().field, "query");
+}
