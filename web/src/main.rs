@@ -3,6 +3,7 @@
 
 mod app;
 mod logic;
+mod planning;
 mod plots;
 mod presets;
 mod view3d;

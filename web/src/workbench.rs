@@ -4,6 +4,7 @@
 
 use crate::app::{Parsed, Shared, Verified};
 use crate::logic::{self, fmt_num, StripModel};
+use crate::planning::Planning;
 use crate::plots::distance::DistancePlot;
 use crate::plots::export;
 use crate::plots::slice::{Overlay, SlicePanel};
@@ -333,6 +334,7 @@ pub fn Workbench(parsed: Memo<Parsed>, verified: Memo<Verified>, trajectory: RwS
                 <span class="swatch infeasible"></span> "interfering or length out of bounds, "
                 <span class="swatch" style="background: rgb(51,64,77)"></span> "no wrench set."
             </p>
+            <Planning parsed planned />
             <h2>"Exports"</h2>
             <p class="exports">
                 <button data-testid="export-intervals-csv" on:click=export_intervals>"Intervals (CSV)"</button>

@@ -40,19 +40,24 @@ pub struct DistanceModel {
     pub violated_x: Vec<f64>,
     /// Conditions known by membership only (no distance drawn).
     pub membership_only: Vec<String>,
+    /// Whether any sample has a cable–obstacle distance (else that line, its clearance and its
+    /// legend are left out).
+    pub obstacles: bool,
 }
 
 /// Builds the plot of a profile; `param` names the x axis ("t" or "path fraction").
 pub fn model(p: &ClearanceProfile) -> DistanceModel {
     let ts: Vec<f64> = p.samples.iter().map(|s| s.t).collect();
     let x = Scale::new(ts.first().copied().unwrap_or(0.0), ts.last().copied().unwrap_or(1.0), LEFT, W - RIGHT);
+    let obstacles = p.samples.iter().any(|s| s.cable_obstacle.is_some());
     let values = p
         .samples
         .iter()
         .flat_map(|s| [s.cable_cable.as_ref(), s.cable_obstacle.as_ref()])
         .flatten()
         .map(|c| c.distance)
-        .chain([0.0, p.clearance_cable_cable, p.clearance_cable_obstacle]);
+        .chain([0.0, p.clearance_cable_cable])
+        .chain(obstacles.then_some(p.clearance_cable_obstacle));
     let [y0, y1] = extent(values, 0.05).unwrap_or([0.0, 1.0]);
     let y = Scale::new(y0, y1, H - BOTTOM, TOP);
     let line = |pick: fn(&cablenav::verify::profile::ClearanceSample) -> Option<f64>| {
@@ -85,6 +90,7 @@ pub fn model(p: &ClearanceProfile) -> DistanceModel {
             .collect(),
         violated_x: p.samples.iter().filter(|s| !s.violated.is_empty()).map(|s| x.at(s.t)).collect(),
         membership_only: p.membership_only.clone(),
+        obstacles,
     }
 }
 
@@ -110,7 +116,7 @@ pub fn DistancePlot(profile: Signal<Option<Result<ClearanceProfile, String>>>, l
                         <text x=*x y=H - BOTTOM + 16.0 font-size="11" text-anchor="middle" fill="#5b6670">{l.clone()}</text>
                     }).collect_view()}
                     <line x1=LEFT x2=W - RIGHT y1=m.clearance_y[0] y2=m.clearance_y[0] stroke=CC stroke-dasharray="5 4" />
-                    <line x1=LEFT x2=W - RIGHT y1=m.clearance_y[1] y2=m.clearance_y[1] stroke=CO stroke-dasharray="5 4" />
+                    {m.obstacles.then(|| view! { <line x1=LEFT x2=W - RIGHT y1=m.clearance_y[1] y2=m.clearance_y[1] stroke=CO stroke-dasharray="5 4" /> })}
                     <path d=m.cable_cable.clone() fill="none" stroke=CC stroke-width="1.8" stroke-linecap="round" data-testid="distance-cc" />
                     <path d=m.cable_obstacle.clone() fill="none" stroke=CO stroke-width="1.8" stroke-linecap="round" data-testid="distance-co" />
                     {m.violated_x.iter().map(|x| view! {
@@ -120,7 +126,7 @@ pub fn DistancePlot(profile: Signal<Option<Result<ClearanceProfile, String>>>, l
                         <rect x=x - step / 2.0 y=TOP width=step height=H - TOP - BOTTOM fill="transparent"><title>{tip.clone()}</title></rect>
                     }).collect_view()}
                     <text x=LEFT y=H - 6.0 font-size="11" fill=CC>"— cable–cable"</text>
-                    <text x=LEFT + 120.0 y=H - 6.0 font-size="11" fill=CO>"— cable–obstacle (to the surface)"</text>
+                    {m.obstacles.then(|| view! { <text x=LEFT + 120.0 y=H - 6.0 font-size="11" fill=CO>"— cable–obstacle (to the surface)"</text> })}
                     <text x=W - RIGHT y=H - 6.0 font-size="11" text-anchor="end" fill="#5b6670">{label.get()}</text>
                 </Chart>
                 {(!m.membership_only.is_empty()).then(|| view! {
@@ -164,5 +170,8 @@ mod tests {
         // the y range holds 0, the clearances and every distance; larger distances are higher
         assert!(m.clearance_y[0] > m.clearance_y[1]);
         assert!(m.y_ticks.iter().all(|(y, _)| *y >= TOP - 1e-9 && *y <= H - BOTTOM + 1e-9));
+        assert!(m.obstacles);
+        let bare = ClearanceProfile { samples: vec![sample(0.0, Some(0.5), None, &[])], membership_only: vec![], ..p };
+        assert!(!model(&bare).obstacles);
     }
 }

@@ -57,32 +57,35 @@ pub fn default_range(s: &Scenario, c: Coord) -> [f64; 2] {
     if max[i] - min[i] > 1e-9 { [min[i], max[i]] } else { [min[i] - 1.0, max[i] + 1.0] }
 }
 
-/// Where a pose falls on the map's axes: among its equivalent coordinate triples — (φ, θ, σ) and
-/// (φ + π, −θ, σ), angles shifted by whole turns — one inside `range`, the nearest to `prev`
-/// when given (angle differences taken modulo 2π, so a path stays on its branch across a wrap).
-/// `None` if none is inside.
-pub fn slice_point(pose: &Pose, axes: [Coord; 2], range: [[f64; 2]; 2], prev: Option<(f64, f64)>) -> Option<(f64, f64)> {
+/// Every place a pose falls on the map: its equivalent coordinate triples — (φ, θ, σ) and
+/// (φ + π, −θ, σ), angles shifted by whole turns — inside `range`, without repeats.
+pub fn slice_copies(pose: &Pose, axes: [Coord; 2], range: [[f64; 2]; 2]) -> Vec<(f64, f64)> {
     let c = pose.coords();
     let alt = [c[0], c[1], c[2], c[3] + PI, -c[4], c[5]];
     let shifts = |axis: Coord| if axis.is_angle() { vec![0.0, -TAU, TAU] } else { vec![0.0] };
     let inside = |v: f64, r: [f64; 2]| v >= r[0] - 1e-12 && v <= r[1] + 1e-12;
-    let mut best: Option<((f64, f64), f64)> = None;
+    let mut out: Vec<(f64, f64)> = Vec::new();
     for cand in [c, alt] {
         for da in shifts(axes[0]) {
             for db in shifts(axes[1]) {
                 let p = (cand[axes[0].index()] + da, cand[axes[1].index()] + db);
-                if !(inside(p.0, range[0]) && inside(p.1, range[1])) {
-                    continue;
-                }
-                let diff = |a: f64, b: f64, axis: Coord| if axis.is_angle() { cablenav::model::pose::wrap_angle(a - b) } else { a - b };
-                let d = prev.map_or(0.0, |q| diff(p.0, q.0, axes[0]).hypot(diff(p.1, q.1, axes[1])));
-                if best.is_none_or(|(_, bd)| d < bd) {
-                    best = Some((p, d));
+                let known = out.iter().any(|q| (q.0 - p.0).abs() < 1e-9 && (q.1 - p.1).abs() < 1e-9);
+                if inside(p.0, range[0]) && inside(p.1, range[1]) && !known {
+                    out.push(p);
                 }
             }
         }
     }
-    best.map(|(p, _)| p)
+    out
+}
+
+/// Where a pose falls on the map's axes: of its [`slice_copies`], the first, or the nearest to
+/// `prev` when given (angle differences taken modulo 2π, so a path stays on its branch across a
+/// wrap). `None` if none is inside.
+pub fn slice_point(pose: &Pose, axes: [Coord; 2], range: [[f64; 2]; 2], prev: Option<(f64, f64)>) -> Option<(f64, f64)> {
+    let diff = |a: f64, b: f64, axis: Coord| if axis.is_angle() { cablenav::model::pose::wrap_angle(a - b) } else { a - b };
+    let dist = |p: &(f64, f64)| prev.map_or(0.0, |q| diff(p.0, q.0, axes[0]).hypot(diff(p.1, q.1, axes[1])));
+    slice_copies(pose, axes, range).into_iter().min_by(|a, b| dist(a).total_cmp(&dist(b)))
 }
 
 /// A path's points in map coordinates, broken (`None`) where it leaves the map or jumps by more
@@ -222,7 +225,8 @@ fn SliceMapView(map: SliceMap, overlay: Signal<Overlay>) -> impl IntoView {
         map.components
     );
     let to_px = move |p: Option<(f64, f64)>| p.map(|(a, b)| (x.at(a), y.at(b)));
-    let marker = move |pose: Option<Pose>| pose.and_then(|p| to_px(slice_point(&p, axes, range, None)));
+    // an orientation shows twice on a (φ, θ) map: every copy of the start and goal is marked
+    let markers = move |pose: Option<Pose>| pose.map_or(vec![], |p| slice_copies(&p, axes, range).into_iter().map(|q| (x.at(q.0), y.at(q.1))).collect());
     view! {
         <Chart id="slice" title width=W height=H>
             <image href=href x=LEFT y=TOP width=W - LEFT - RIGHT height=H - TOP - BOTTOM preserveAspectRatio="none" style="image-rendering: pixelated" />
@@ -247,12 +251,12 @@ fn SliceMapView(map: SliceMap, overlay: Signal<Overlay>) -> impl IntoView {
                             <path data-testid="slice-path" d=d fill="none" stroke=css(piece.colour) stroke-width="2.5" stroke-linecap="round" stroke-linejoin="round" />
                         }
                     }).collect_view()}
-                    {marker(o.start).map(|(cx, cy)| view! {
+                    {markers(o.start).into_iter().map(|(cx, cy)| view! {
                         <circle data-testid="slice-start" cx=cx cy=cy r="6" fill="#ffffff" stroke="#1d2329" stroke-width="2"><title>"start"</title></circle>
-                    })}
-                    {marker(o.goal).map(|(cx, cy)| view! {
+                    }).collect_view()}
+                    {markers(o.goal).into_iter().map(|(cx, cy)| view! {
                         <rect data-testid="slice-goal" x=cx - 6.0 y=cy - 6.0 width="12" height="12" fill="#1d2329" stroke="#ffffff" stroke-width="1.5"><title>"goal"</title></rect>
-                    })}
+                    }).collect_view()}
                 }
             }}
         </Chart>
@@ -262,7 +266,7 @@ fn SliceMapView(map: SliceMap, overlay: Signal<Overlay>) -> impl IntoView {
             <span class="swatch" style="background: rgb(208,59,59)"></span> "length out of bounds"
             <span class="swatch" style="background: rgb(0,0,0)"></span> "singular"
             <span class="swatch" style="background: rgb(230,145,30)"></span> "interference"
-            " · ○ start · ■ goal"
+            " · ○ start · ■ goal (on a (φ, θ) map each orientation shows twice, as (φ, θ) and (φ + π, −θ): both are marked)"
         </p>
     }
 }
@@ -301,6 +305,12 @@ mod tests {
         let q1 = s.pose("q1").unwrap();
         let p = slice_point(q1, [Coord::Phi, Coord::Theta], full, None).unwrap();
         assert!((p.0 + 0.5).abs() < 1e-9 && (p.1 - 0.9).abs() < 1e-9, "{p:?}");
+        // both copies of q1 are inside [−π, π]²
+        let copies = slice_copies(q1, [Coord::Phi, Coord::Theta], full);
+        assert_eq!(copies.len(), 2, "{copies:?}");
+        assert!((copies[1].0 - (-0.5 + PI)).abs() < 1e-9 && (copies[1].1 + 0.9).abs() < 1e-9, "{copies:?}");
+        // on position axes the copies coincide
+        assert_eq!(slice_copies(q1, [Coord::X, Coord::Y], [[-1.0, 1.0], [-1.0, 1.0]]), [(0.0, 0.0)]);
         // outside the range: none
         let far = Pose::from_coords([9.0, 0.0, 0.0, 0.0, 0.0, 0.0]);
         assert_eq!(slice_point(&far, [Coord::X, Coord::Y], [[0.0, 1.0], [-1.0, 1.0]], None), None);
