@@ -28,8 +28,9 @@ struct Tagged {
     condition: Box<dyn Condition>,
 }
 
-/// Every condition of `s`, tagged with its kind and cables (the same set as
-/// [`crate::conditions::for_scenario`], which does not say which cables a condition concerns).
+/// The length and clearance conditions of `s`, tagged with their kind and cables (those of
+/// [`crate::conditions::for_scenario`], which does not say which cables a condition concerns;
+/// tensions are read from [`wrench_at`] instead).
 fn tagged_conditions(s: &Scenario) -> Vec<Tagged> {
     let robot = &s.robot;
     let m = robot.cables.len();
@@ -75,8 +76,8 @@ pub struct ClearanceSample {
     /// The least cable–obstacle distance over the obstacles whose check gives one (`None` if
     /// none does).
     pub cable_obstacle: Option<Closest>,
-    /// Labels of every condition violated at this sample (including lengths and the obstacles
-    /// checked by membership only).
+    /// Labels of the length and clearance conditions violated at this sample (including the
+    /// obstacles checked by membership only).
     pub violated: Vec<String>,
 }
 
