@@ -180,12 +180,13 @@ pub fn Workbench(parsed: Memo<Parsed>, verified: Memo<Verified>, trajectory: RwS
     let profile_data = Memo::new(move |_| {
         followed(parsed, planned, follow, trajectory, |s, path| {
             let r = profile::clearances_at(s, &path.samples(PLOT_SAMPLES)).map_err(|e| e.to_string());
-            Some(Shared::new((r, path.name())))
+            Some(Shared::new((r, format!("{}; x: {}", path.name(), path.param()))))
         })
     });
     let envelope = Memo::new(move |_| {
         followed(parsed, planned, follow, trajectory, |s, path| {
-            Some(Shared::new(profile::tension_at(s, &path.name(), &path.samples(PLOT_SAMPLES)).map_err(|e| e.to_string())))
+            let r = profile::tension_at(s, &path.name(), &path.samples(PLOT_SAMPLES)).map_err(|e| e.to_string());
+            Some(Shared::new((r, path.param())))
         })
     });
     let overlay = Memo::new(move |_| {
@@ -350,7 +351,10 @@ pub fn Workbench(parsed: Memo<Parsed>, verified: Memo<Verified>, trajectory: RwS
                 label=Signal::derive(move || profile_data.get().map(|p| p.0.1.clone()).unwrap_or_default())
             />
             <h2>"Tension envelope"</h2>
-            <TensionPlot envelope=Signal::derive(move || envelope.get().map(|e| (*e.0).clone())) />
+            <TensionPlot
+                envelope=Signal::derive(move || envelope.get().map(|e| e.0.0.clone()))
+                param=Signal::derive(move || envelope.get().map_or("t", |e| e.0.1))
+            />
             <h2>"Slice map"</h2>
             <SlicePanel parsed overlay=Signal::derive(move || overlay.get()) />
         </section>

@@ -89,11 +89,12 @@ fn SectionRect(section: Section) -> impl IntoView {
     }
 }
 
-/// One boundary tick with its tooltip; a tap or click shows its label in the readout.
+/// One boundary tick with its tooltip; a tap, click, Enter or Space (it is focusable) shows its
+/// label in the readout.
 #[component]
 fn TickMark(tick: Tick, picked: RwSignal<Option<String>>) -> impl IntoView {
     let x = tick.t * STRIP_W;
-    let label = tick.label.clone();
+    let (label, key_label) = (tick.label.clone(), tick.label.clone());
     view! {
         <g
             data-testid="boundary"
@@ -101,6 +102,12 @@ fn TickMark(tick: Tick, picked: RwSignal<Option<String>>) -> impl IntoView {
             class=format!("tick enters-{}", tick.enters)
             tabindex="0"
             on:click=move |_| picked.set(Some(label.clone()))
+            on:keydown=move |ev: web_sys::KeyboardEvent| {
+                if ev.key() == "Enter" || ev.key() == " " {
+                    ev.prevent_default();
+                    picked.set(Some(key_label.clone()))
+                }
+            }
         >
             <line x1=x x2=x y1=STRIP_Y - 4.0 y2=STRIP_Y + STRIP_H + 4.0 stroke="#1d2329" stroke-width="2" />
             // A wider invisible target carries the tooltip, so it is easy to hover. (The <title>

@@ -71,9 +71,9 @@ pub fn panels(env: &TensionEnvelope) -> Vec<Panel> {
         .collect()
 }
 
-/// The envelope plot, or why there is none.
+/// The envelope plot, or why there is none; `param` names the x axis.
 #[component]
-pub fn TensionPlot(envelope: Signal<Option<Result<TensionEnvelope, String>>>) -> impl IntoView {
+pub fn TensionPlot(envelope: Signal<Option<Result<TensionEnvelope, String>>>, param: Signal<&'static str>) -> impl IntoView {
     move || match envelope.get() {
         None => view! { <p class="empty">"No path to plot."</p> }.into_any(),
         Some(Err(e)) => view! { <p class="empty" data-testid="tension-none">{format!("No tension envelope: {e}")}</p> }.into_any(),
@@ -113,7 +113,7 @@ pub fn TensionPlot(envelope: Signal<Option<Result<TensionEnvelope, String>>>) ->
                             }
                         })
                         .collect_view()}
-                    <text x=w / 2.0 y=h - 2.0 font-size="11" text-anchor="middle" fill="#5b6670">"t"</text>
+                    <text x=w / 2.0 y=h - 2.0 font-size="11" text-anchor="middle" fill="#5b6670">{param.get()}</text>
                 </Chart>
             }
             .into_any()
