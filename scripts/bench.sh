@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Benchmarks exact verification against the point-wise baseline and the planner on the Robocrane
-# queries, natively and as wasm in node, and
+# queries, natively and as wasm in node, measures the page weight (scripts/build-page.sh), and
 # (re)writes docs/benchmarks.md with the machine, the commands and the numbers.
 #   scripts/bench.sh             run both benchmarks, write docs/benchmarks.md
 #   scripts/bench.sh --no-write  run both, print the results, leave docs/benchmarks.md alone
@@ -220,6 +220,24 @@ END {
     print "- wasm in node is **more than 2×** slower than native for exact verification (" ratio(exw, ex) ")."
   }
 }' "$TMP/all.txt" > "$TMP/benchmarks.md"
+
+# Page weight: the page as the tests build it (scripts/build-page.sh, release, no wasm-opt).
+say "page weight: scripts/build-page.sh"
+WEIGHT=$(scripts/build-page.sh "$TMP/page" | grep '^page weight:')
+TOTAL_GZ=$(sed -E 's/.*wasm\+js gzip ([0-9]+) B.*/\1/' <<<"$WEIGHT")
+{
+  echo
+  echo "## Page weight"
+  echo
+  echo "\`scripts/build-page.sh\` (release profile, opt-level 3, no wasm-opt), sizes after \`gzip -9\`:"
+  echo
+  echo "    ${WEIGHT#page weight: }"
+  echo
+  echo "| target | measured | |"
+  echo "|---|---|---|"
+  if [ "$TOTAL_GZ" -le 1500000 ]; then met=yes; else met="**no**"; fi
+  echo "| wasm + js gzip ≤ 1.5 MB | $TOTAL_GZ B | $met |"
+} >> "$TMP/benchmarks.md"
 
 if [ "$WRITE" = 1 ]; then
   cp "$TMP/benchmarks.md" "$OUT"

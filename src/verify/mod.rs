@@ -2,6 +2,7 @@
 //! polynomial sign partitions) or point-wise (the sampled baseline), and all conditions at one pose.
 
 mod pointwise;
+pub mod profile;
 mod sections;
 pub mod slice;
 

@@ -3,7 +3,11 @@
 
 mod app;
 mod logic;
+mod planning;
+mod plots;
 mod presets;
+mod view3d;
+mod workbench;
 
 fn main() {
     console_error_panic_hook::set_once();
