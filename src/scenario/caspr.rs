@@ -64,7 +64,7 @@ pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import>
                 .map(|c| OutCable {
                     base: c.base,
                     platform: c.platform,
-                    tension: per_cable.then(|| OutCableBounds { min: c.force_min, max: c.force_max }),
+                    tension: per_cable.then_some(OutCableBounds { min: c.force_min, max: c.force_max }),
                 })
                 .collect(),
             tension,
@@ -353,8 +353,8 @@ fn cables(xml: &str, platform: &Platform) -> Result<Vec<RawCable>> {
             let loc = child_numbers::<3>(FILE, *a, "location")?
                 .ok_or_else(|| Error::new(FILE, format!("{at}: an attachment has no <location>")))?;
             match link {
-                l if l == 0.0 => base = Some(loc),
-                l if l == 1.0 => on_platform = Some(loc),
+                0.0 => base = Some(loc),
+                1.0 => on_platform = Some(loc),
                 l => return Err(Error::new(FILE, format!("{at}: attachment on link {l}; only links 0 (base) and 1 (platform) exist"))),
             }
         }
