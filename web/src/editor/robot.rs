@@ -45,14 +45,31 @@ pub fn RobotEditor(ed: Ed) -> impl IntoView {
         </button>
         <p class="hint">"A 6-DoF robot needs 6 to 64 cables; a wrench set needs exactly 6."</p>
         <div class="bounds">
-            <NumberOrListField ed path=Path::of(&["robot", "length", "min"]) label="Length min" unit="m" />
-            <NumberOrListField ed path=Path::of(&["robot", "length", "max"]) label="Length max" unit="m" />
-            <NumberOrListField ed path=Path::of(&["robot", "tension", "min"]) label="Tension min" unit="N" />
-            <NumberOrListField ed path=Path::of(&["robot", "tension", "max"]) label="Tension max" unit="N" />
+            <BoundsGroup ed what="length" title="Cable length bounds" unit="m" />
+            <BoundsGroup ed what="tension" title="Cable tension bounds" unit="N" />
             <NumField ed path=Path::of(&["robot", "diameter"]) label="Cable diameter" unit="m" optional=true />
             <NumField ed path=Path::of(&["clearance", "cable_cable"]) label="Clearance cable–cable" unit="m" optional=true />
             <NumField ed path=Path::of(&["clearance", "cable_obstacle"]) label="Clearance cable–obstacle" unit="m" optional=true />
         </div>
+    }
+}
+
+/// The robot-level `min` and `max` of `robot.<what>`; errors about the pair (min > max) show
+/// under both.
+#[component]
+fn BoundsGroup(ed: Ed, what: &'static str, title: &'static str, unit: &'static str) -> impl IntoView {
+    let group = Path::of(&["robot", what]);
+    let error = Signal::derive({
+        let group = group.clone();
+        move || ed.error_at(&group, false)
+    });
+    view! {
+        <fieldset class="bounds-group" class:invalid=move || error.with(Option::is_some)>
+            <legend>{format!("{title} ({unit}; empty: none)")}</legend>
+            <NumberOrListField ed path=group.k("min") label="min" unit />
+            <NumberOrListField ed path=group.k("max") label="max" unit />
+            <FieldMessage local=RwSignal::new(None) core=error />
+        </fieldset>
     }
 }
 

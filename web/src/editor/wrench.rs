@@ -69,7 +69,16 @@ pub fn WrenchEditor(ed: Ed) -> impl IntoView {
 /// The ellipsoid E, in the mode it is written in.
 #[component]
 fn Ellipsoid(ed: Ed) -> impl IntoView {
-    let mode = Memo::new(move |_| ed.read(el::ellipsoid_mode).unwrap_or("radius"));
+    // A diagonal matrix reads as per-axis radii; once the user asks for the full matrix, keep
+    // showing it as one.
+    let chosen = RwSignal::new(None::<String>);
+    let mode = Memo::new(move |_| {
+        let written = ed.read(el::ellipsoid_mode).unwrap_or("radius");
+        match (chosen.get().as_deref(), written) {
+            (Some("matrix"), "radii") => "matrix",
+            (_, w) => w,
+        }
+    });
     view! {
         <Choice
             label="Ellipsoid E given as"
@@ -79,7 +88,10 @@ fn Ellipsoid(ed: Ed) -> impl IntoView {
                 ("matrix".to_string(), "the full 6×6 matrix".to_string()),
             ]
             current=Signal::derive(move || mode.get().to_string())
-            on_pick=Callback::new(move |m: String| ed.edit(|d| el::set_ellipsoid_mode(d, &m)))
+            on_pick=Callback::new(move |m: String| {
+                ed.edit(|d| el::set_ellipsoid_mode(d, &m));
+                chosen.set(Some(m));
+            })
             testid="ellipsoid-mode"
         />
         {move || match mode.get() {
@@ -113,7 +125,7 @@ fn Radii(ed: Ed) -> impl IntoView {
                             on_value
                             label=format!("r {name}")
                             unit=*unit
-                            field=format!("wrench.ellipsoid[{i}][{i}]")
+                            field=format!("wrench.ellipsoid.radii[{i}]")
                             error=Signal::derive(|| None::<String>)
                             positive=true
                         />
