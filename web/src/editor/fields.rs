@@ -177,17 +177,27 @@ pub fn MatrixField(ed: Ed, path: Path, rows: usize, cols: usize, #[prop(into)] l
     }
 }
 
-/// "A number, or one number per cable" at `path` (robot-level bounds); empty removes it.
-#[component]
-pub fn NumberOrListField(ed: Ed, path: Path, #[prop(into)] label: String, #[prop(optional)] unit: &'static str) -> impl IntoView {
-    let (p1, p2, p3, p4) = (path.clone(), path.clone(), path.clone(), path);
-    let value = Memo::new(move |_| ed.read(|d| el::get(d, &p1).map(el::fmt_number_or_list).unwrap_or_default()).unwrap_or_default());
+/// A field whose text is parsed into the JSON value at `path`: the text as typed, the local
+/// problem with it, the core's error, and the handler of each keystroke (a value is written,
+/// `None` removes the member, an error stays in the field).
+struct ParsedText {
+    text: RwSignal<String>,
+    local: RwSignal<Option<String>>,
+    core: Signal<Option<String>>,
+}
+
+fn parsed_text<F, P>(ed: Ed, path: Path, format: F, parse: P) -> (ParsedText, impl Fn(leptos::ev::Event) + 'static)
+where
+    F: Fn(Option<&Value>) -> String + Copy + Send + Sync + 'static,
+    P: Fn(&str) -> Result<Option<Value>, String> + Copy + Send + Sync + 'static,
+{
+    let (p1, p2, p3) = (path.clone(), path.clone(), path);
+    let value = Memo::new(move |_| ed.read(|d| format(el::get(d, &p1))).unwrap_or_default());
     let text = RwSignal::new(value.get_untracked());
     let local = RwSignal::new(None::<String>);
     Effect::new(move |_| {
         let v = value.get();
-        let same = el::parse_number_or_list(&text.get_untracked()).ok().flatten().map(|x| el::fmt_number_or_list(&x)).unwrap_or_default() == v;
-        if !same {
+        if parse(&text.get_untracked()).ok().map(|x| format(x.as_ref())) != Some(v.clone()) {
             text.set(v);
             local.set(None);
         }
@@ -195,7 +205,7 @@ pub fn NumberOrListField(ed: Ed, path: Path, #[prop(into)] label: String, #[prop
     let on_input = move |ev| {
         let typed = event_target_value(&ev);
         text.set(typed.clone());
-        match el::parse_number_or_list(&typed) {
+        match parse(&typed) {
             Ok(v) => {
                 local.set(None);
                 ed.edit(|d| match v {
@@ -210,14 +220,23 @@ pub fn NumberOrListField(ed: Ed, path: Path, #[prop(into)] label: String, #[prop
             Err(e) => local.set(Some(e)),
         }
     };
-    let core = Signal::derive(move || ed.error_at(&p4, true));
+    let core = Signal::derive(move || ed.error_at(&p3, true));
+    (ParsedText { text, local, core }, on_input)
+}
+
+/// "A number, or one number per cable" at `path` (robot-level bounds); empty removes it.
+#[component]
+pub fn NumberOrListField(ed: Ed, path: Path, #[prop(into)] label: String, #[prop(optional)] unit: &'static str) -> impl IntoView {
+    let field = path.clone();
+    let (ParsedText { text, local, core }, on_input) =
+        parsed_text(ed, path, |v| v.map(el::fmt_number_or_list).unwrap_or_default(), el::parse_number_or_list);
     let invalid = move || local.with(Option::is_some) || core.with(Option::is_some);
     view! {
         <label class="field list" class:invalid=invalid>
             <span class="label">{label.clone()}</span>
             <input
                 type="text"
-                data-field=move || ed.core_path(&p3)
+                data-field=move || ed.core_path(&field)
                 aria-label=format!("{label} ({unit}): a number for all cables, or one per cable separated by commas; empty for none")
                 placeholder="none"
                 aria-invalid=move || invalid().to_string()
@@ -233,38 +252,15 @@ pub fn NumberOrListField(ed: Ed, path: Path, #[prop(into)] label: String, #[prop
 /// Rows of numbers at `path`, one per line (mesh vertices and triangles).
 #[component]
 pub fn RowsField(ed: Ed, path: Path, width: usize, integers: bool, #[prop(into)] label: String) -> impl IntoView {
-    let (p1, p2, p3, p4) = (path.clone(), path.clone(), path.clone(), path);
-    let value = Memo::new(move |_| ed.read(|d| el::fmt_rows(el::get(d, &p1))).unwrap_or_default());
-    let text = RwSignal::new(value.get_untracked());
-    let local = RwSignal::new(None::<String>);
-    Effect::new(move |_| {
-        let v = value.get();
-        let same = el::parse_rows(&text.get_untracked(), width, integers).ok().map(|x| el::fmt_rows(Some(&x))) == Some(v.clone());
-        if !same {
-            text.set(v);
-            local.set(None);
-        }
-    });
-    let on_input = move |ev| {
-        let typed = event_target_value(&ev);
-        text.set(typed.clone());
-        match el::parse_rows(&typed, width, integers) {
-            Ok(v) => {
-                local.set(None);
-                ed.edit(|d| {
-                    el::set(d, &p2, v);
-                });
-            }
-            Err(e) => local.set(Some(e)),
-        }
-    };
-    let core = Signal::derive(move || ed.error_at(&p4, true));
+    let field = path.clone();
+    let (ParsedText { text, local, core }, on_input) =
+        parsed_text(ed, path, el::fmt_rows, move |t| el::parse_rows(t, width, integers).map(Some));
     let invalid = move || local.with(Option::is_some) || core.with(Option::is_some);
     view! {
         <label class="field rows" class:invalid=invalid>
             <span class="label">{format!("{label} (one per line, {width} numbers each)")}</span>
             <textarea
-                data-field=move || ed.core_path(&p3)
+                data-field=move || ed.core_path(&field)
                 spellcheck="false"
                 aria-invalid=move || invalid().to_string()
                 prop:value=move || text.get()
