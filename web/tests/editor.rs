@@ -205,6 +205,11 @@ async fn obstacles_of_every_type_are_added_edited_and_deleted() {
     assert!(status.contains("obstacles[5].triangles[1][2]"), "{status}");
     let msg = m.q("[data-field=\"obstacles[5].triangles\"]").closest("label").unwrap().unwrap().text_content().unwrap();
     assert!(msg.contains("out of range"), "{msg}");
+    // a colour, then back to the default
+    m.type_into("obstacles[0].color", "#aa5500").await;
+    assert_eq!(m.json()["obstacles"][0]["color"], "#aa5500");
+    m.click("[data-testid=\"obstacle\"] button.small").await;
+    assert!(m.json()["obstacles"][0].get("color").is_none());
     // delete the sphere; the others move up
     m.click("[data-testid=\"obstacle\"]:nth-of-type(2) [data-testid=\"remove-obstacle\"]").await;
     assert_eq!(m.json()["obstacles"].as_array().unwrap().len(), 5);

@@ -147,7 +147,10 @@ pub fn Vec3Field(ed: Ed, path: Path, #[prop(into)] label: String, #[prop(optiona
                 .into_iter()
                 .enumerate()
                 .map(|(i, axis)| {
-                    view! { <NumField ed path=path.i(i) label=format!("{label} {axis}") unit compact=true /> }
+                    view! {
+                        <span class="axis" aria-hidden="true">{axis}</span>
+                        <NumField ed path=path.i(i) label=format!("{label} {axis}") unit compact=true />
+                    }
                 })
                 .collect_view()}
             <FieldMessage local core />

@@ -112,12 +112,31 @@ fn ObstacleItem(ed: Ed, i: usize) -> impl IntoView {
                     type="color"
                     data-field=move || ed.core_path(&cp1)
                     prop:value=move || color.get().unwrap_or_else(|| DEFAULT_COLOR.to_string())
-                    on:input=move |ev| {
-                        let c = event_target_value(&ev);
-                        ed.edit(|d| { el::set(d, &cp2, Value::String(c)); });
+                    on:input={
+                        let p = cp2.clone();
+                        move |ev| {
+                            let c = event_target_value(&ev);
+                            ed.edit(|d| { el::set(d, &p, Value::String(c)); });
+                        }
                     }
                 />
-                {move || color.get().is_none().then(|| view! { <span class="unit">"(default)"</span> })}
+                {move || match color.get() {
+                    None => view! { <span class="unit">"(default)"</span> }.into_any(),
+                    Some(_) => {
+                        let p = cp2.clone();
+                        view! {
+                            <button
+                                type="button"
+                                class="small"
+                                title="draw it in the default colour"
+                                on:click=move |_| ed.edit(|d| { el::remove(d, &p); })
+                            >
+                                "default"
+                            </button>
+                        }
+                        .into_any()
+                    }
+                }}
                 <FieldMessage local=RwSignal::new(None) core=Signal::derive(move || ed.error_at(&cp3, false)) />
             </label>
             <Choice
