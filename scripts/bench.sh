@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Benchmarks exact verification against the point-wise baseline, natively and as wasm in node, and
-# (re)writes docs/benchmarks.md with the machine, the commands and the numbers.
+# Benchmarks exact verification against the point-wise baseline, natively and as wasm in node,
+# measures the page's weight, and (re)writes docs/benchmarks.md with the machine, the commands and
+# the numbers.
 #   scripts/bench.sh             run both benchmarks, write docs/benchmarks.md
 #   scripts/bench.sh --no-write  run both, print the results, leave docs/benchmarks.md alone
 # Needs the wasm tools from scripts/install.sh (wasm32 target, wasm-bindgen-test-runner 0.2.130).
@@ -180,6 +181,22 @@ END {
     print "- wasm in node is **more than 2×** slower than native for exact verification (" ratio(exw, ex) ")."
   }
 }' "$TMP/all.txt" > "$TMP/benchmarks.md"
+
+# The page's download size: what scripts/build-page.sh prints (wasm + js, gzip -9).
+say "page weight: scripts/build-page.sh"
+WEIGHT=$(scripts/build-page.sh "$TMP/page" 2>/dev/null | grep '^page weight:')
+[ -n "$WEIGHT" ] || { say "scripts/build-page.sh printed no page weight"; exit 1; }
+TOTAL_GZ=$(sed -nE 's/.*wasm\+js gzip ([0-9]+) B.*/\1/p' <<<"$WEIGHT")
+{
+  echo
+  echo "## Page weight"
+  echo
+  echo "The page as \`scripts/build-page.sh\` builds it (release, wasm-opt off), gzip -9:"
+  echo
+  echo "    ${WEIGHT#page weight: }"
+  echo
+  awk -v b="$TOTAL_GZ" 'BEGIN { printf "| target | measured | |\n|---|---|---|\n| wasm + js ≤ 1.5 MB gzip | %.2f MB (%d B) | %s |\n", b / 1e6, b, (b <= 1500000 ? "yes" : "**no**") }'
+} >> "$TMP/benchmarks.md"
 
 if [ "$WRITE" = 1 ]; then
   cp "$TMP/benchmarks.md" "$OUT"
