@@ -1096,3 +1096,33 @@ fn mutated_presets_never_panic() {
     // Most random edits break the file.
     assert!(errors > rounds / 2, "only {errors} of {rounds} mutations were rejected");
 }
+
+// ---------------------------------------------------------------------------------------------
+// Obstacle colours (optional, display only)
+
+#[test]
+fn obstacle_colours_are_kept_and_checked() {
+    let s = ok_with(|v| {
+        set_obstacles(
+            v,
+            json!([
+                {"type": "sphere", "center": [9, 9, 9], "radius": 0.1, "color": "#1a2B3c"},
+                {"type": "sphere", "center": [8, 8, 8], "radius": 0.1}
+            ]),
+        )
+    });
+    assert_eq!(s.obstacles[0].color.as_deref(), Some("#1a2B3c"));
+    assert_eq!(s.obstacles[1].color, None);
+    for bad in ["red", "#12345", "#1234567", "#12345g", "123456", ""] {
+        expect(
+            |v| set_obstacles(v, json!([{"type": "sphere", "center": [9, 9, 9], "radius": 0.1, "color": bad}])),
+            "obstacles[0].color",
+            "#rrggbb",
+        );
+    }
+    expect(
+        |v| set_obstacles(v, json!([{"type": "sphere", "center": [9, 9, 9], "radius": 0.1, "color": 3}])),
+        "obstacles[0].color",
+        "invalid type",
+    );
+}

@@ -291,7 +291,7 @@ fn obstacles(raw: &[RawObstacle]) -> Result<Vec<Obstacle>> {
             if !allowed.contains(&f) {
                 return Err(Error::new(
                     format!("{path}.{f}"),
-                    format!("not a field of a {kind} obstacle (its fields: name, type, {})", allowed.join(", ")),
+                    format!("not a field of a {kind} obstacle (its fields: name, color, type, {})", allowed.join(", ")),
                 ));
             }
         }
@@ -353,9 +353,19 @@ fn obstacles(raw: &[RawObstacle]) -> Result<Vec<Obstacle>> {
                 ));
             }
         }
-        out.push(Obstacle { name, shape });
+        let color = o.color.as_deref().map(|c| color(&format!("{path}.color"), c)).transpose()?;
+        out.push(Obstacle { name, shape, color });
     }
     Ok(out)
+}
+
+/// A display colour: `#` and six hexadecimal digits (`#rrggbb`), kept as given.
+fn color(field: &str, c: &str) -> Result<String> {
+    let hex = c.strip_prefix('#').unwrap_or_default();
+    if hex.len() != 6 || !hex.bytes().all(|b| b.is_ascii_hexdigit()) {
+        return Err(Error::new(field, format!("{c:?} is not a colour of the form \"#rrggbb\" (six hexadecimal digits)")));
+    }
+    Ok(c.to_owned())
 }
 
 fn mesh(path: &str, o: &RawObstacle) -> Result<Mesh> {

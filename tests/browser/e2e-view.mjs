@@ -10,7 +10,7 @@ import { existsSync, mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { launch, runner, serve } from './harness.mjs';
+import { launchChromium, requirePage, runner, serve } from './harness.mjs';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const root = resolve(here, '..', '..');
@@ -102,10 +102,11 @@ async function download(page, testid) {
 
 // ---------- run ----------
 mkdirSync(artifacts, { recursive: true });
-const { test, finish } = runner('the end-to-end test', pageDir, 900_000);
+requirePage(pageDir);
+const { test, finish } = runner(15);
 const server = await serve(pageDir);
 const base = `http://127.0.0.1:${server.address().port}`;
-const browser = await launch();
+const browser = await launchChromium();
 const context = await browser.newContext({ viewport: { width: 1200, height: 900 }, acceptDownloads: true });
 const problems = [];
 const page = await context.newPage();
@@ -343,4 +344,4 @@ await test('Cancel stops a run (Robocrane q5→q6, a 3-D slice)', async () => {
 
 await browser.close();
 server.close();
-finish(artifacts);
+finish(`screenshots in ${artifacts}`);

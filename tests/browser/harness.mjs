@@ -1,10 +1,10 @@
-// Shared by the browser tests: a static file server for the built page, Debian's headless
-// Chromium through playwright-core, and a tiny test runner printing "ok"/"FAIL" lines and a final
-// "N passed, M failed" (exit 1 on failure).
+// Shared pieces of the browser tests (smoke.mjs, e2e-edit.mjs): a tiny static file server, the
+// headless Chromium launch, a console/page-error watcher and a minimal test runner that ends
+// with "N passed, M failed".
 
+import { createServer } from 'node:http';
 import { readFileSync, statSync } from 'node:fs';
 import { extname, join, normalize, sep } from 'node:path';
-import { createServer } from 'node:http';
 import { chromium } from 'playwright-core';
 
 const TYPES = {
@@ -18,13 +18,13 @@ const TYPES = {
   '.svg': 'image/svg+xml',
 };
 
-/** Serves `dir` on 127.0.0.1 (a free port); `pages` maps extra paths to HTML text. */
-export function serve(dir, pages = {}) {
+/** Serves `dir` on 127.0.0.1 (a free port); `extra` maps paths to HTML served as is. */
+export function serve(dir, extra = {}) {
   const server = createServer((req, res) => {
     const path = decodeURIComponent(new URL(req.url, 'http://x').pathname);
-    if (path in pages) {
+    if (extra[path] !== undefined) {
       res.writeHead(200, { 'content-type': TYPES['.html'] });
-      return res.end(pages[path]);
+      return res.end(extra[path]);
     }
     let file = normalize(join(dir, path));
     if (file !== dir && !file.startsWith(dir + sep)) {
@@ -47,12 +47,8 @@ export function serve(dir, pages = {}) {
   });
 }
 
-/** Headless Chromium; exits the process with a FAIL line if it cannot start. WebGL runs on
- * SwiftShader; `--disable-gpu` keeps the page's compositing in software too, which in headless
- * Chromium is far faster than compositing through SwiftShader GL (a frame that only moves a
- * progress bar takes ~17 ms instead of 33–150 ms), so frame times measure the page, not the
- * emulated GPU. */
-export function launch() {
+/** Debian's Chromium, headless, with software WebGL; exits with a failure line if it cannot start. */
+export function launchChromium() {
   return chromium
     .launch({
       executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
@@ -70,22 +66,36 @@ export function launch() {
     });
 }
 
-/** A test runner: `test(name, fn)` runs and reports one test; `finish()` prints the totals and
- * exits; a watchdog fails the run after `limitMs`. Exits at once if `pageDir` has no built page. */
-export function runner(what, pageDir, limitMs) {
+/** Collects console errors, page errors and failed requests of every page of `context`. */
+export function watchProblems(context) {
+  const problems = [];
+  const watch = (page) => {
+    page.on('console', (m) => {
+      if (m.type() === 'error') problems.push(`console error: ${m.text()}`);
+    });
+    page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+    page.on('response', (r) => {
+      if (r.status() >= 400) problems.push(`HTTP ${r.status()} for ${r.url()}`);
+    });
+    page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()} ${r.failure()?.errorText ?? ''}`));
+  };
+  context.on('page', watch);
+  return {
+    /** Throws if problems were seen since the last call. */
+    assertNone() {
+      if (problems.length) throw new Error(problems.splice(0).join('\n'));
+    },
+  };
+}
+
+/** A minimal runner: `test(name, fn)` runs and reports; `finish()` prints the summary and exits. */
+export function runner(watchdogMinutes = 10) {
   const results = [];
-  try {
-    statSync(join(pageDir, 'index.html'));
-  } catch {
-    console.log(`FAIL no built page at ${pageDir} (run scripts/build-page.sh)`);
-    console.log('0 passed, 1 failed');
-    process.exit(1);
-  }
   setTimeout(() => {
-    console.log(`FAIL watchdog: ${what} took more than ${limitMs / 60000} minutes`);
+    console.log(`FAIL watchdog: the tests took more than ${watchdogMinutes} minutes`);
     console.log(`${results.filter((r) => r.ok).length} passed, ${results.filter((r) => !r.ok).length + 1} failed`);
     process.exit(1);
-  }, limitMs).unref();
+  }, watchdogMinutes * 60_000).unref();
   return {
     async test(name, fn) {
       const started = Date.now();
@@ -98,12 +108,35 @@ export function runner(what, pageDir, limitMs) {
         console.log(`FAIL ${name}: ${e && e.stack ? e.stack : e}`);
       }
     },
-    finish(artifacts) {
+    finish(note) {
       const passed = results.filter((r) => r.ok).length;
       const failed = results.length - passed;
-      console.log(`screenshots in ${artifacts}`);
+      if (note) console.log(note);
       console.log(`${passed} passed, ${failed} failed`);
       process.exit(failed ? 1 : 0);
     },
   };
+}
+
+/** Exits with a failure line unless PAGE_DIR holds a built page. */
+export function requirePage(pageDir) {
+  try {
+    statSync(join(pageDir, 'index.html'));
+  } catch {
+    console.log(`FAIL no built page at ${pageDir} (run scripts/build-page.sh)`);
+    console.log('0 passed, 1 failed');
+    process.exit(1);
+  }
+}
+
+/** The drawn sections of the strip in `scope` (a Page or a Frame). */
+export async function readSections(scope) {
+  return scope.$$eval('svg[data-testid="strip"] rect[data-testid="section"]', (rects) =>
+    rects.map((r) => ({
+      kind: r.dataset.kind,
+      t0: Number(r.dataset.t0),
+      t1: Number(r.dataset.t1),
+      title: r.querySelector('title')?.textContent ?? '',
+    })),
+  );
 }

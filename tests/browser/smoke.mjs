@@ -9,7 +9,7 @@
 import { mkdirSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { launch, runner, serve } from './harness.mjs';
+import { launchChromium, readSections, requirePage, runner, serve, watchProblems } from './harness.mjs';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const root = resolve(here, '..', '..');
@@ -24,18 +24,6 @@ const FRAME_HTML = `<!doctype html><html><head><meta charset="utf-8"><link rel="
 <iframe id="app" src="/index.html" style="width:1100px;height:760px;border:1px solid #999"></iframe></body></html>`;
 
 // ---------- checks ----------
-/** The drawn sections of the strip in `scope` (a Page or a Frame). */
-async function readSections(scope) {
-  return scope.$$eval('svg[data-testid="strip"] rect[data-testid="section"]', (rects) =>
-    rects.map((r) => ({
-      kind: r.dataset.kind,
-      t0: Number(r.dataset.t0),
-      t1: Number(r.dataset.t1),
-      title: r.querySelector('title')?.textContent ?? '',
-    })),
-  );
-}
-
 /** Throws unless `sections` is non-empty, well-formed and covers [0, 1] without gaps. */
 function assertCover(sections, what) {
   if (sections.length === 0) throw new Error(`${what}: no section drawn`);
@@ -85,27 +73,16 @@ async function optionValues(scope, testid) {
 
 // ---------- run ----------
 mkdirSync(artifacts, { recursive: true });
-// Never hang: give up after 10 minutes in all.
-const { test, finish } = runner('the smoke test', pageDir, 600_000);
+requirePage(pageDir);
+const { test, finish } = runner(10);
 const server = await serve(pageDir, { '/__frame.html': FRAME_HTML });
 const base = `http://127.0.0.1:${server.address().port}`;
-const browser = await launch();
+const browser = await launchChromium();
 const context = await browser.newContext({ viewport: { width: 1200, height: 900 } });
-const problems = []; // console errors and page errors, from any page or frame
-context.on('page', watch);
-function watch(page) {
-  page.on('console', (m) => {
-    if (m.type() === 'error') problems.push(`console error: ${m.text()}`);
-  });
-  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
-  page.on('response', (r) => {
-    if (r.status() >= 400) problems.push(`HTTP ${r.status()} for ${r.url()}`);
-  });
-  page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()} ${r.failure()?.errorText ?? ''}`));
-}
+const problems = watchProblems(context); // console errors and page errors, from any page or frame
 /** Throws if console or page errors were seen since the last call. */
 function assertNoProblems() {
-  if (problems.length) throw new Error(problems.splice(0).join('\n'));
+  problems.assertNone();
 }
 
 const page = await context.newPage();
@@ -170,4 +147,4 @@ await test('the page works inside an iframe', async () => {
 
 await browser.close();
 server.close();
-finish(artifacts);
+finish(`screenshots in ${artifacts}`);

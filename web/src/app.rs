@@ -41,12 +41,16 @@ pub(crate) type Verified = Shared<Option<Result<VerifyReport, String>>>;
 /// The whole page.
 #[component]
 pub fn App() -> impl IntoView {
-    let preset = RwSignal::new(0usize);
+    // Where the page starts: a shared link, the autosave, or the first preset (crate::persist).
+    let boot = crate::persist::boot();
+    let embed = boot.embed;
+    let preset = RwSignal::new(boot.preset);
     // The scenario JSON being analysed: a preset's text, or the user's edit of it.
-    let source = RwSignal::new(PRESETS[0].json.to_string());
+    let source = RwSignal::new(boot.source);
     let trajectory = RwSignal::new(0usize);
     // Where `source` came from: a preset's id, or "edited" (shown as `data-origin` for tests).
-    let origin = RwSignal::new(PRESETS[0].id);
+    let origin = RwSignal::new(boot.origin);
+    crate::persist::keep(source, origin, preset, embed);
     // The path the planner found for the current scenario, if any.
     let planned = RwSignal::new(None);
 
@@ -73,19 +77,31 @@ pub fn App() -> impl IntoView {
         origin.set("edited");
     };
 
+    let note = boot.note.map(|n| view! { <p class="error" role="alert">{n}</p> });
     view! {
-        <header>
+        <header class:embed=embed>
             <h1>"cablenav"</h1>
             <p class="tagline">"Exact feasible intervals along cable-robot trajectories"</p>
         </header>
-        <main>
+        <main class:embed=embed data-embed=embed.to_string()>
+            {note}
             <section class="controls">
-                <PresetPicker preset on_pick=pick_preset />
+                {(!embed).then(|| view! { <PresetPicker preset on_pick=pick_preset /> })}
                 <TrajectoryPicker parsed trajectory />
             </section>
             <Outcome parsed verified trajectory origin />
             <Workbench parsed verified trajectory planned />
-            <Editor source on_apply=apply_edit />
+            {if embed {
+                view! { <crate::editor::share::OpenFull source origin /> }.into_any()
+            } else {
+                view! {
+                    <crate::editor::ScenarioEditor source origin />
+                    <Editor source on_apply=apply_edit />
+                    <crate::editor::share::SharePanel source origin />
+                    <crate::help::Help />
+                }
+                .into_any()
+            }}
         </main>
     }
 }
@@ -108,7 +124,7 @@ fn PresetPicker(preset: RwSignal<usize>, on_pick: impl Fn(usize) + 'static) -> i
                 {PRESETS
                     .iter()
                     .map(|p| view! { <option value=p.id selected=move || PRESETS[preset.get()].id == p.id>
-                            {p.id}
+                            {crate::presets::label(p.id)}
                         </option> })
                     .collect_view()}
             </select>
