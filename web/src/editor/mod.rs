@@ -76,6 +76,13 @@ impl Ed {
         self.read(|d| el::get(d, path).and_then(Value::as_str).map(str::to_string)).flatten()
     }
 
+    /// The number of items of the list (or members of the object) at `path`, as a memo that
+    /// changes only when the number does.
+    pub fn count(&self, path: Path) -> Memo<usize> {
+        let ed = *self;
+        Memo::new(move |_| ed.read(|d| el::len(d, &path)).unwrap_or(0))
+    }
+
     /// The core's name for `path` (tracked).
     pub fn core_path(&self, path: &Path) -> String {
         self.read(|d| el::core_path(d, path)).unwrap_or_default()

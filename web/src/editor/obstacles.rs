@@ -13,8 +13,7 @@ pub const DEFAULT_COLOR: &str = "#8a8f98";
 /// The obstacles' part of the editor.
 #[component]
 pub fn ObstacleEditor(ed: Ed) -> impl IntoView {
-    let list = Path::of(&["obstacles"]);
-    let count = Memo::new(move |_| ed.read(|d| el::len(d, &list)).unwrap_or(0));
+    let count = ed.count(Path::of(&["obstacles"]));
     let new_kind = RwSignal::new("box".to_string());
     view! {
         <p class="hint">

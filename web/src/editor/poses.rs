@@ -11,7 +11,7 @@ use crate::edit_logic::{self as el, Path, ORIENTATIONS};
 /// The poses' part of the editor.
 #[component]
 pub fn PoseEditor(ed: Ed) -> impl IntoView {
-    let count = Memo::new(move |_| ed.read(|d| el::len(d, &Path::of(&["poses"]))).unwrap_or(0));
+    let count = ed.count(Path::of(&["poses"]));
     view! {
         <p class="hint">
             "Position p of the platform origin in the world frame (m). Tilt-and-torsion (φ, θ, σ) in radians: \

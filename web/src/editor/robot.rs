@@ -11,10 +11,7 @@ use crate::edit_logic::{self as el, Path};
 #[component]
 pub fn RobotEditor(ed: Ed) -> impl IntoView {
     let cables = Path::of(&["robot", "cables"]);
-    let count = Memo::new({
-        let cables = cables.clone();
-        move |_| ed.read(|d| el::len(d, &cables)).unwrap_or(0)
-    });
+    let count = ed.count(cables.clone());
     let table_error = Signal::derive({
         let cables = cables.clone();
         move || ed.error_at(&cables, false)

@@ -10,7 +10,7 @@ use crate::edit_logic::{self as el, Path, QUATERNION_END};
 /// The trajectories' part of the editor.
 #[component]
 pub fn TrajectoryEditor(ed: Ed) -> impl IntoView {
-    let count = Memo::new(move |_| ed.read(|d| el::len(d, &Path::of(&["trajectories"]))).unwrap_or(0));
+    let count = ed.count(Path::of(&["trajectories"]));
     view! {
         <p class="hint">
             "The position is a polynomial in τ ∈ [0, 1]; the orientation a slerp in t ∈ [0, 1] (the two \
@@ -179,10 +179,7 @@ fn ViaPoints(ed: Ed, path: Path) -> impl IntoView {
 /// The Bézier control points, with add and remove.
 #[component]
 fn BezierPoints(ed: Ed, path: Path) -> impl IntoView {
-    let count = Memo::new({
-        let path = path.clone();
-        move |_| ed.read(|d| el::len(d, &path)).unwrap_or(0)
-    });
+    let count = ed.count(path.clone());
     let (p_add, p_rows) = (path.clone(), path);
     view! {
         <fieldset class="bezier">
