@@ -178,6 +178,10 @@ pub fn Planning(parsed: Memo<Parsed>, planned: RwSignal<Option<Shared<Planned>>>
     let start = move |_| {
         let parsed = parsed.get_untracked();
         let Ok(s) = parsed.0.as_ref() else { return };
+        if !PLANNERS.iter().any(|(id, _, ok)| *ok && *id == planner_id.get_untracked()) {
+            ui.state.set(RunState::Failed(format!("the planner “{}” is not available", planner_id.get_untracked())));
+            return;
+        }
         let params = PlanParams { max_charts: budget.get_untracked(), ..PlanParams::default() };
         let q = query.get_untracked();
         planned.set(None);

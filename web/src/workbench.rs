@@ -102,6 +102,17 @@ fn on_path<T>(parsed: &Parsed, planned: Option<&Shared<Planned>>, follow: Follow
     }
 }
 
+/// [`on_path`] reading (and so tracking) the signals it depends on.
+fn followed<T>(
+    parsed: Memo<Parsed>,
+    planned: RwSignal<Option<Shared<Planned>>>,
+    follow: RwSignal<Follow>,
+    trajectory: RwSignal<usize>,
+    f: impl FnOnce(&Scenario, PathRef) -> Option<T>,
+) -> Option<T> {
+    on_path(&parsed.get(), planned.get().as_ref(), follow.get(), trajectory.get(), f)
+}
+
 /// The analysis area.
 #[component]
 pub fn Workbench(parsed: Memo<Parsed>, verified: Memo<Verified>, trajectory: RwSignal<usize>, planned: RwSignal<Option<Shared<Planned>>>) -> impl IntoView {
@@ -129,17 +140,6 @@ pub fn Workbench(parsed: Memo<Parsed>, verified: Memo<Verified>, trajectory: RwS
         _ => None,
     });
     let traj_index = move |s: &Scenario| trajectory.get().min(s.trajectories.len().saturating_sub(1));
-    // runs `f` on the followed path (tracking the signals it depends on)
-    fn followed<T>(
-        parsed: Memo<Parsed>,
-        planned: RwSignal<Option<Shared<Planned>>>,
-        follow: RwSignal<Follow>,
-        trajectory: RwSignal<usize>,
-        f: impl FnOnce(&Scenario, PathRef) -> Option<T>,
-    ) -> Option<T> {
-        on_path(&parsed.get(), planned.get().as_ref(), follow.get(), trajectory.get(), f)
-    }
-
     let trajectory_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |_| {
         let parsed = parsed.get();
         let pieces = match (scenario_of(&parsed), strip.get()) {
