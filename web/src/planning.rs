@@ -253,7 +253,7 @@ mod tests {
     use super::*;
 
     fn progress(h: f64, done: Option<PlanStatus>) -> PlanProgress {
-        PlanProgress { charts: 1, open: 1, best_heuristic: h, done }
+        PlanProgress { charts: 1, open: 1, best_heuristic: h, done, verifying: None }
     }
 
     #[test]
