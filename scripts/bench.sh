@@ -40,8 +40,8 @@ LOAD_AFTER=$(cut -d' ' -f1-3 /proc/loadavg)
 grep -h '^BENCH ' "$TMP/native.txt" "$TMP/wasm.txt" > "$TMP/all.txt"
 n_native=$(grep -c '^BENCH native ' "$TMP/all.txt" || true)
 n_wasm=$(grep -c '^BENCH wasm ' "$TMP/all.txt" || true)
-if [ "$n_native" -ne 11 ] || [ "$n_wasm" -ne 11 ]; then
-  say "expected 11 native and 11 wasm results, got $n_native and $n_wasm:"
+if [ "$n_native" -ne 12 ] || [ "$n_wasm" -ne 12 ]; then
+  say "expected 12 native and 12 wasm results, got $n_native and $n_wasm:"
   cat "$TMP/native.txt" "$TMP/wasm.txt" >&2
   exit 1
 fi

@@ -67,11 +67,6 @@ impl Polytope {
         Polytope { dim, vertices, next_face: 2 * dim as u32 }
     }
 
-    /// Number of vertices.
-    pub fn vertex_count(&self) -> usize {
-        self.vertices.len()
-    }
-
     /// The vertex farthest from the origin if it lies outside the ball of radius `radius`.
     pub fn open_vertex(&self, radius: f64) -> Option<&[f64]> {
         let norm2 = |v: &Vertex| v.position.iter().map(|a| a * a).sum::<f64>();
@@ -203,7 +198,7 @@ mod tests {
     fn square_cuts_match_hand_computed_vertices() {
         let mut p = Polytope::cube(2, 1.0);
         assert!(p.cut(&[1.0, 1.0], 1.0));
-        assert_eq!(p.vertex_count(), 5);
+        assert_eq!(p.vertices.len(), 5);
         let mut q = Polytope::cube(2, 1.0);
         q.cut(&[1.0, 0.0], 0.5);
         q.cut(&[0.0, 1.0], 0.5);
@@ -249,6 +244,6 @@ mod tests {
                 }
             }
         }
-        assert_eq!(p.vertex_count(), brute);
+        assert_eq!(p.vertices.len(), brute);
     }
 }

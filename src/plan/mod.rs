@@ -340,8 +340,9 @@ impl Planner {
         Ok(Planner { scenario: scenario.clone(), start, goal, params, search })
     }
 
-    /// Advances by at most `budget` units of work (one unit: one chart-creation attempt or one
-    /// A* pop — a few Newton projections, well under 5 ms in wasm) and returns the progress.
+    /// Advances by at most `budget` units of work (one unit: one chart-creation attempt, one A*
+    /// pop, or one edge of the path being built — at most a few ms on the 2-D and 3-D Robocrane
+    /// slices, more for 6-D chart creations: see docs/planner.md) and returns the progress.
     pub fn step(&mut self, budget: usize) -> PlanProgress {
         let p = self.search.step(budget);
         PlanProgress { charts: p.charts, open: p.open, best_heuristic: p.best_heuristic, done: p.ended.map(status) }

@@ -63,6 +63,20 @@ impl Ord for Entry {
     }
 }
 
+/// A chart path to a goal whose dense path is being built, one edge per unit of work.
+struct Pending {
+    /// Chart indices from chart 0 to the chart holding the goal.
+    chain: Vec<usize>,
+    /// The goal point reached.
+    goal: Vec<f64>,
+    /// The goal's tangent coordinates in the last chart.
+    t: Vec<f64>,
+    /// Index in `chain` of the next edge's first chart.
+    next: usize,
+    /// The dense path so far.
+    points: Vec<Vec<f64>>,
+}
+
 /// An atlas and an A* search over it, from the start point to any of the goal points.
 pub struct Continuation<M: Manifold> {
     /// The atlas built so far.
@@ -74,6 +88,8 @@ pub struct Continuation<M: Manifold> {
     popped: Vec<bool>,
     open: BinaryHeap<Entry>,
     expanding: Option<usize>,
+    /// The path being built, if a goal was reached.
+    pending: Option<Pending>,
     /// Chart pairs whose dense edge could not be built or failed the motion validator (removed
     /// from the graph).
     broken: HashSet<(usize, usize)>,
@@ -99,6 +115,7 @@ impl<M: Manifold> Continuation<M> {
             popped: vec![],
             open: BinaryHeap::new(),
             expanding: None,
+            pending: None,
             broken: HashSet::new(),
             rejected: 0,
             edges: HashMap::new(),
@@ -117,6 +134,7 @@ impl<M: Manifold> Continuation<M> {
         self.popped = vec![false; n];
         self.open.clear();
         self.expanding = None;
+        self.pending = None;
         self.g[0] = 0.0;
         let h = self.heuristic(0);
         self.open.push(Entry { f: h, h, chart: 0 });
@@ -163,12 +181,16 @@ impl<M: Manifold> Continuation<M> {
     }
 
     /// Does at most `budget` units of work — one unit is one chart-creation attempt (one
-    /// expansion direction, with its step shrinking) or one pop of the open list — and returns
-    /// the progress.
+    /// expansion direction, with its step shrinking), one pop of the open list, or one edge of a
+    /// path being built — and returns the progress.
     pub fn step(&mut self, budget: usize) -> Progress {
         let mut left = budget;
         while left > 0 && self.ended.is_none() {
             left -= 1;
+            if let Some(p) = self.pending.take() {
+                self.advance_path(p);
+                continue;
+            }
             if let Some(c) = self.expanding {
                 if self.atlas.charts.len() >= self.max_charts {
                     self.ended = Some(Ended::Budget);
@@ -186,13 +208,8 @@ impl<M: Manifold> Continuation<M> {
                 continue;
             }
             self.popped[c] = true;
-            if self.try_goal(c) {
-                continue;
-            }
-            if self.atlas.charts[c].state == ChartState::Open {
-                self.expanding = Some(c);
-            } else {
-                self.relax(c);
+            if !self.try_goal(c) {
+                self.leave(c);
             }
         }
         self.progress()
@@ -220,9 +237,9 @@ impl<M: Manifold> Continuation<M> {
         }
     }
 
-    /// If a goal point lies in chart `c`, builds the dense path there (ending with the search) or,
-    /// if an edge of the chart path cannot be built, removes that edge and restarts the search.
-    /// Returns whether the search state changed that way.
+    /// If a goal point lies in chart `c`, starts building the dense path along the chart path
+    /// from the start to `c` (one edge per unit of work, [`Continuation::advance_path`]) and
+    /// returns `true`.
     fn try_goal(&mut self, c: usize) -> bool {
         let Some((goal, t)) = self.goals.iter().find_map(|g| self.atlas.locate(c, g).map(|t| (g.clone(), t))) else {
             return false;
@@ -232,39 +249,63 @@ impl<M: Manifold> Continuation<M> {
             chain.push(p);
         }
         chain.reverse();
-        let mut path: Vec<Vec<f64>> = vec![self.atlas.charts[chain[0]].centre.clone()];
-        for w in chain.windows(2) {
-            let key = (w[0], w[1]);
-            if !self.edges.contains_key(&key) {
-                let dense = self.atlas.edge(w[0], w[1]);
+        let points = vec![self.atlas.charts[chain[0]].centre.clone()];
+        self.pending = Some(Pending { chain, goal, t, next: 0, points });
+        true
+    }
+
+    /// One unit of path building: the next edge of the pending chart path (built, validated and
+    /// cached), or the final walk to the goal. An edge that cannot be followed or is rejected is
+    /// removed from the graph and the search restarts; a final walk that fails sends the search on
+    /// from the goal's chart as if it had held no goal.
+    fn advance_path(&mut self, mut p: Pending) {
+        if p.next + 1 < p.chain.len() {
+            let (a, b) = (p.chain[p.next], p.chain[p.next + 1]);
+            let pair = (a.min(b), a.max(b));
+            if !self.edges.contains_key(&(a, b)) {
+                let dense = self.atlas.edge(a, b);
                 let rejected = dense.as_ref().is_some_and(|e| !self.motions_valid(e));
-                if rejected && !self.broken.contains(&(w[0].min(w[1]), w[0].max(w[1]))) {
+                if rejected && !self.broken.contains(&pair) {
                     self.rejected += 1;
                 }
-                self.edges.insert(key, dense.filter(|_| !rejected));
+                self.edges.insert((a, b), dense.filter(|_| !rejected));
             }
-            match &self.edges[&key] {
-                Some(e) => path.extend(e.iter().skip(1).cloned()),
+            match &self.edges[&(a, b)] {
+                Some(e) => {
+                    p.points.extend(e.iter().skip(1).cloned());
+                    p.next += 1;
+                    self.pending = Some(p);
+                }
                 None => {
-                    self.broken.insert((w[0].min(w[1]), w[0].max(w[1])));
+                    self.broken.insert(pair);
                     self.restart();
-                    return true;
                 }
             }
+            return;
         }
-        match self.atlas.walk(c, &t).filter(|e| self.motions_valid(e)) {
+        let c = p.chain[p.chain.len() - 1];
+        match self.atlas.walk(c, &p.t).filter(|e| self.motions_valid(e)) {
             Some(last) => {
-                path.extend(last.into_iter().skip(1));
-                if let Some(end) = path.last_mut() {
-                    *end = goal;
+                p.points.extend(last.into_iter().skip(1));
+                if let Some(end) = p.points.last_mut() {
+                    *end = p.goal;
                 }
-                self.path = path;
+                self.path = p.points;
                 self.ended = Some(Ended::Found);
-                true
             }
             // The goal is in the ball but its segment cannot be followed: keep searching, another
             // chart may hold it.
-            None => false,
+            None => self.leave(c),
+        }
+    }
+
+    /// Goes on from popped chart `c` without a goal: expands it if it is open, else relaxes its
+    /// neighbours.
+    fn leave(&mut self, c: usize) {
+        if self.atlas.charts[c].state == ChartState::Open {
+            self.expanding = Some(c);
+        } else {
+            self.relax(c);
         }
     }
 
