@@ -192,22 +192,12 @@ fn static_report(s: &Scenario, at: &PoseCables, wrench: &Wrench, bad_length: Opt
 /// evenly spaced t, each cable's least and greatest tension over the wrench set — data for a plot.
 /// `None` entries mark singular poses.
 pub fn tension_envelope(s: &Scenario, traj: &Trajectory, samples: usize) -> Result<TensionEnvelope> {
-    if s.wrench.is_none() {
-        return Err(Error::new("wrench", "the scenario has no wrench section"));
+    // samples + 1 poses, at most profile::MAX_SAMPLES of them.
+    if samples == 0 || samples >= profile::MAX_SAMPLES {
+        return Err(Error::new("--samples", format!("must be between 1 and {}, got {samples}", profile::MAX_SAMPLES - 1)));
     }
-    if samples == 0 || samples > 100_000 {
-        return Err(Error::new("--samples", format!("must be between 1 and 100000, got {samples}")));
-    }
-    let mut env = TensionEnvelope { trajectory: traj.name.clone(), t: vec![], tension_min: vec![], tension_max: vec![], bounds: vec![] };
-    env.bounds = s.robot.cables.iter().map(|c| [c.tension.min, c.tension.max]).collect();
-    for k in 0..=samples {
-        let t = k as f64 / samples as f64;
-        let w = wrench_at(s, &traj.pose_at(t)).ok_or_else(|| Error::new("wrench", "missing"))?;
-        env.t.push(t);
-        env.tension_min.push((!w.singular).then_some(w.tension_min));
-        env.tension_max.push((!w.singular).then_some(w.tension_max));
-    }
-    Ok(env)
+    let at: Vec<(f64, Pose)> = (0..=samples).map(|k| k as f64 / samples as f64).map(|t| (t, traj.pose_at(t))).collect();
+    profile::tension_at(s, &traj.name, &at)
 }
 
 /// Every condition at one pose, with lengths and distances.
