@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Benchmarks exact verification against the point-wise baseline and the planner on the Robocrane
-# queries, natively and as wasm in node, and
+# queries, natively and as wasm in node, measures the page weight (scripts/build-page.sh), and
 # (re)writes docs/benchmarks.md with the machine, the commands and the numbers.
 #   scripts/bench.sh             run both benchmarks, write docs/benchmarks.md
 #   scripts/bench.sh --no-write  run both, print the results, leave docs/benchmarks.md alone
@@ -40,8 +40,8 @@ LOAD_AFTER=$(cut -d' ' -f1-3 /proc/loadavg)
 grep -h '^BENCH ' "$TMP/native.txt" "$TMP/wasm.txt" > "$TMP/all.txt"
 n_native=$(grep -c '^BENCH native ' "$TMP/all.txt" || true)
 n_wasm=$(grep -c '^BENCH wasm ' "$TMP/all.txt" || true)
-if [ "$n_native" -ne 12 ] || [ "$n_wasm" -ne 12 ]; then
-  say "expected 12 native and 12 wasm results, got $n_native and $n_wasm:"
+if [ "$n_native" -ne 18 ] || [ "$n_wasm" -ne 18 ]; then
+  say "expected 18 native and 18 wasm results, got $n_native and $n_wasm:"
   cat "$TMP/native.txt" "$TMP/wasm.txt" >&2
   exit 1
 fi
@@ -68,7 +68,7 @@ function ratio(a, b) { return (b > 0) ? sprintf("%.2f×", a / b) : "–" }
 function yes(ok) { return ok ? "**met**" : "**missed**" }
 { med[$2, $3] = $4; best[$2, $3] = $5; calls[$2, $3] = $6; samples[$2, $3] = $7; summ[$3] = $8 }
 END {
-  n = split("tree/quadratic/exact tree/quadratic/pointwise-0.01 tree/quadratic/pointwise-0.001 cdpr7/quadratic/exact cdpr7/quadratic/pointwise-0.001 box/linear/exact box/linear/pointwise-0.001 box/ray-fig310-x/exact", cases, " ")
+  n = split("tree/quadratic/exact tree/quadratic/pointwise-0.01 tree/quadratic/pointwise-0.001 cdpr7/quadratic/exact cdpr7/quadratic/pointwise-0.001 box/linear/exact box/linear/pointwise-0.001 box/ray-fig310-x/exact crane/pose-wrench crane/q1-q2/exact crane/q1-q2/pointwise-0.001 crane/tilt/exact crane/tilt/pointwise-0.001 crane/slice-400", cases, " ")
   what["tree/quadratic/exact"] = "cdpr7-tree.json, \"quadratic\": exact (`verify_trajectory`)"
   what["tree/quadratic/pointwise-0.01"] = "cdpr7-tree.json, \"quadratic\": point-wise, Δt = 0.01"
   what["tree/quadratic/pointwise-0.001"] = "cdpr7-tree.json, \"quadratic\": point-wise, Δt = 0.001"
@@ -77,6 +77,12 @@ END {
   what["box/linear/exact"] = "cdpr7-box.json, \"linear\": exact"
   what["box/linear/pointwise-0.001"] = "cdpr7-box.json, \"linear\": point-wise, Δt = 0.001"
   what["box/ray-fig310-x/exact"] = "cdpr7-box.json, Fig. 3.10 ray: `ray(\"fig310\", x, 0.2, 3.8)`, exact"
+  what["crane/pose-wrench"] = "robocrane.json, q1: per-pose wrench test (`tension_ranges`)"
+  what["crane/q1-q2/exact"] = "robocrane.json, \"slerp q1-q2\": exact, wrench + lengths + interference"
+  what["crane/q1-q2/pointwise-0.001"] = "robocrane.json, \"slerp q1-q2\": point-wise, Δt = 0.001"
+  what["crane/tilt/exact"] = "robocrane.json + slerp q1 → θ = 1.4 (crosses a tension bound): exact"
+  what["crane/tilt/pointwise-0.001"] = "the same tilt: point-wise, Δt = 0.001"
+  what["crane/slice-400"] = "robocrane.json, 400×400 slice over (φ, θ) through q1"
 
   print "# Benchmarks"
   print ""
@@ -138,7 +144,7 @@ END {
   print ""
   print "| trajectory | Δt | native | wasm |"
   print "|---|---:|---:|---:|"
-  nr = split("tree/quadratic/pointwise-0.01:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.01;tree/quadratic/pointwise-0.001:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.001;cdpr7/quadratic/pointwise-0.001:cdpr7/quadratic/exact:cdpr7 \"quadratic\":0.001;box/linear/pointwise-0.001:box/linear/exact:cdpr7-box \"linear\":0.001", rows, ";")
+  nr = split("tree/quadratic/pointwise-0.01:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.01;tree/quadratic/pointwise-0.001:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.001;cdpr7/quadratic/pointwise-0.001:cdpr7/quadratic/exact:cdpr7 \"quadratic\":0.001;box/linear/pointwise-0.001:box/linear/exact:cdpr7-box \"linear\":0.001;crane/q1-q2/pointwise-0.001:crane/q1-q2/exact:robocrane \"slerp q1-q2\" (wrench):0.001;crane/tilt/pointwise-0.001:crane/tilt/exact:robocrane tilt past the bound (wrench):0.001", rows, ";")
   for (i = 1; i <= nr; i++) {
     split(rows[i], f, ":")
     printf "| %s | %s | %s | %s |\n", f[3], f[4], ratio(med["native", f[1]], med["native", f[2]]), ratio(med["wasm", f[1]], med["wasm", f[2]])
@@ -181,6 +187,10 @@ END {
   printf "| exact, cdpr7-tree \"quadratic\", native: ≤ 100 µs | %s median (best %s) | %s%s |\n", us(ex), us(best["native", "tree/quadratic/exact"]), yes(ex <= 100), (ex > 100 ? sprintf(" (%.0f× over)", ex / 100) : "")
   printf "| exact faster than point-wise at Δt = 0.01 (same trajectory) | point-wise / exact = %s native, %s wasm | %s |\n", ratio(pw, ex), ratio(pww, exw), yes(pw > ex)
   printf "| wasm ≤ 2× native (exact, same trajectory) | wasm / native = %s | %s |\n", ratio(exw, ex), yes(exw <= 2 * ex)
+  pp = med["native", "crane/pose-wrench"]; sl = med["wasm", "crane/slice-400"]
+  printf "| per-pose wrench test (6 cables), native: ≤ 2 µs | %s median (best %s) | %s |\n", us(pp), us(best["native", "crane/pose-wrench"]), yes(pp <= 2)
+  printf "| 400×400 slice, wasm: ≤ 0.5 s | %s median (native %s) | %s |\n", us(sl), us(med["native", "crane/slice-400"]), yes(sl <= 500000)
+  printf "| exact wrench verification vs point-wise at Δt = 0.001 (Robocrane tilt) | point-wise / exact = %s native, %s wasm | %s |\n", ratio(med["native", "crane/tilt/pointwise-0.001"], med["native", "crane/tilt/exact"]), ratio(med["wasm", "crane/tilt/pointwise-0.001"], med["wasm", "crane/tilt/exact"]), "(a comparison, no target)"
   printf "| planner ≥ 50× faster than the paper on q1→q2 (2-D slice, 20 s) | %.0f× native | %s |\n", q12, yes(q12 >= 50)
   printf "| planner ≥ 50× faster than the paper on q3→q4 in its coordinates (2-D slice, 280 s) | %.0f× native | %s |\n", q34, yes(q34 >= 50)
   print ""
@@ -210,6 +220,22 @@ END {
     print "- wasm in node is **more than 2×** slower than native for exact verification (" ratio(exw, ex) ")."
   }
 }' "$TMP/all.txt" > "$TMP/benchmarks.md"
+
+# The page's download size: what scripts/build-page.sh prints (wasm + js, gzip -9).
+say "page weight: scripts/build-page.sh"
+WEIGHT=$(scripts/build-page.sh "$TMP/page" 2>/dev/null | grep '^page weight:')
+[ -n "$WEIGHT" ] || { say "scripts/build-page.sh printed no page weight"; exit 1; }
+TOTAL_GZ=$(sed -nE 's/.*wasm\+js gzip ([0-9]+) B.*/\1/p' <<<"$WEIGHT")
+{
+  echo
+  echo "## Page weight"
+  echo
+  echo "The page as \`scripts/build-page.sh\` builds it (release, wasm-opt off), gzip -9:"
+  echo
+  echo "    ${WEIGHT#page weight: }"
+  echo
+  awk -v b="$TOTAL_GZ" 'BEGIN { printf "| target | measured | |\n|---|---|---|\n| wasm + js ≤ 1.5 MB gzip | %.2f MB (%d B) | %s |\n", b / 1e6, b, (b <= 1500000 ? "yes" : "**no**") }'
+} >> "$TMP/benchmarks.md"
 
 if [ "$WRITE" = 1 ]; then
   cp "$TMP/benchmarks.md" "$OUT"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs every tool cablenav needs, idempotently and pinned. Safe to run again: each step
 # checks first and does nothing when the right version is already there.
-#   scripts/install.sh            tools for the tests (wasm target, wasm-bindgen, wasm-pack, chromium, playwright-core)
+#   scripts/install.sh            tools for the tests (wasm target, wasm-bindgen, wasm-pack, chromium,
+#                                 chromium-driver, playwright-core)
 #   scripts/install.sh --serve    also trunk, for `scripts/serve.sh`
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -54,6 +55,11 @@ apt_install() { # apt_install PACKAGE...: Debian packages, non-interactively
 if ! command -v chromium >/dev/null 2>&1; then
   say "installing chromium (Debian package) for the browser tests"
   apt_install chromium
+fi
+
+if ! command -v chromedriver >/dev/null 2>&1; then
+  say "installing chromium-driver (Debian package) for the editor's component tests (wasm-pack test --chrome)"
+  apt_install chromium-driver
 fi
 
 if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then

@@ -105,20 +105,23 @@ pub struct CheckEntry {
 /// Wrench feasibility at one pose (6 cables): the tension range of each cable over the wrench set.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct WrenchReport {
-    /// Non-singular, every tension range strictly inside its bounds, every length inside its bounds.
+    /// Non-singular, every tension range strictly inside its bounds, every length inside its bounds
+    /// (more than 6 cables: wrench closure, static feasibility of w0, lengths).
     pub feasible: bool,
-    /// Whether the structure matrix is singular here (then no tensions are given).
+    /// Whether the structure matrix is singular here (then no tensions are given; more than 6
+    /// cables: no tensions balance w0 at all).
     pub singular: bool,
-    /// min over cables of min(f0 − v − f_min, f_max − f0 − v); `None` at a singular pose.
+    /// min over cables of min(f0 − v − f_min, f_max − f0 − v); `None` at a singular pose. More
+    /// than 6 cables: the static-feasibility LP's margin t.
     pub margin: Option<f64>,
-    /// Least tension of each cable over the wrench set, f0 − v.
+    /// Least tension of each cable over the wrench set, f0 − v (empty for more than 6 cables).
     pub tension_min: Vec<f64>,
-    /// Greatest tension of each cable over the wrench set, f0 + v.
+    /// Greatest tension of each cable over the wrench set, f0 + v (empty for more than 6 cables).
     pub tension_max: Vec<f64>,
-    /// Tension balancing the nominal wrench, f0.
+    /// Tension balancing the nominal wrench, f0 (more than 6 cables: the LP's tensions).
     pub tension_nominal: Vec<f64>,
     /// The bound closest to being violated (or violated): `"cable 5 tension lower bound"`,
-    /// `"cable 2 length"`, or `"singular"`.
+    /// `"cable 2 length"`, `"singular"`, `"wrench closure"` or `"static feasibility"`.
     pub active: String,
 }
 

@@ -436,7 +436,7 @@ fn with_ball(s: &Scenario, free: &[Pose], fraction: f64) -> Scenario {
     let anchor = pose.transform(&cable.platform);
     let centre = anchor + (anchor - cable.base).normalize() * 0.03;
     let mut blocked = s.clone();
-    blocked.obstacles.push(Obstacle { name: "ball".to_string(), shape: Shape::Sphere { center: centre, radius: 0.05 } });
+    blocked.obstacles.push(Obstacle { name: "ball".to_string(), shape: Shape::Sphere { center: centre, radius: 0.05 }, color: None });
     blocked
 }
 

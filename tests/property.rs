@@ -17,6 +17,8 @@ use wasm_bindgen_test::wasm_bindgen_test as test;
 
 mod support;
 
+use support::env_usize;
+
 use support::gen::*;
 use support::harness::*;
 use support::reference::*;
@@ -38,14 +40,6 @@ const TARGETED_SAMPLES: usize = 100_000;
 #[cfg(target_arch = "wasm32")]
 const TARGETED_SAMPLES: usize = 10_000;
 
-fn env_usize(name: &str, default: usize) -> usize {
-    #[cfg(not(target_arch = "wasm32"))]
-    if let Some(v) = std::env::var(name).ok().and_then(|v| v.parse().ok()) {
-        return v;
-    }
-    let _ = name;
-    default
-}
 
 fn dump_dir() -> Option<&'static str> {
     if cfg!(target_arch = "wasm32") {

@@ -387,7 +387,21 @@ fn wrench_section_is_validated() {
     expect(|v| { six(v); v["wrench"] = json!({"nominal": [0, 0, 1], "radius": 1}); }, "wrench.nominal", "expected 6");
     expect(|v| { six(v); v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1, "point_frame": "moon"}); }, "wrench.point_frame", "moon");
     expect(|v| { six(v); v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1, "mass": 3}); }, "wrench.mass", "unknown field");
-    expect(|v| v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1}), "wrench", "exactly 6 cables");
+    // The 7-cable base scenario takes a wrench section (closure and static feasibility) with a
+    // warning that the ellipsoid is not used; 11 cables are too many.
+    let s = ok_with(|v| v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1}));
+    assert!(s.warnings.iter().any(|w| w.contains("wrench closure")), "{:?}", s.warnings);
+    expect(
+        |v| {
+            for k in 0..4 {
+                let cable = json!({"base": [4, k, 4], "platform": [0.1 * k as f64, 0, 0]});
+                v["robot"]["cables"].as_array_mut().unwrap().push(cable);
+            }
+            v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1});
+        },
+        "wrench",
+        "up to 10 cables",
+    );
 }
 
 #[test]
@@ -1081,4 +1095,34 @@ fn mutated_presets_never_panic() {
     }
     // Most random edits break the file.
     assert!(errors > rounds / 2, "only {errors} of {rounds} mutations were rejected");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Obstacle colours (optional, display only)
+
+#[test]
+fn obstacle_colours_are_kept_and_checked() {
+    let s = ok_with(|v| {
+        set_obstacles(
+            v,
+            json!([
+                {"type": "sphere", "center": [9, 9, 9], "radius": 0.1, "color": "#1a2B3c"},
+                {"type": "sphere", "center": [8, 8, 8], "radius": 0.1}
+            ]),
+        )
+    });
+    assert_eq!(s.obstacles[0].color.as_deref(), Some("#1a2B3c"));
+    assert_eq!(s.obstacles[1].color, None);
+    for bad in ["red", "#12345", "#1234567", "#12345g", "123456", ""] {
+        expect(
+            |v| set_obstacles(v, json!([{"type": "sphere", "center": [9, 9, 9], "radius": 0.1, "color": bad}])),
+            "obstacles[0].color",
+            "#rrggbb",
+        );
+    }
+    expect(
+        |v| set_obstacles(v, json!([{"type": "sphere", "center": [9, 9, 9], "radius": 0.1, "color": 3}])),
+        "obstacles[0].color",
+        "invalid type",
+    );
 }

@@ -8,13 +8,26 @@
 
 use cablenav::model::Coord;
 use cablenav::plan::{plan, PlanOutcome, PlanParams, Planner};
-use cablenav::verify::{ray, verify_pointwise, verify_trajectory};
+use cablenav::query::wrench::tension_ranges;
+use cablenav::verify::{ray, slice, slice::default_range, verify_pointwise, verify_trajectory};
 use cablenav::Scenario;
 
 const CDPR7: &str = include_str!("../../static/scenarios/cdpr7.json");
 const CDPR7_TREE: &str = include_str!("../../static/scenarios/cdpr7-tree.json");
 const CDPR7_BOX: &str = include_str!("../../static/scenarios/cdpr7-box.json");
 const ROBOCRANE: &str = include_str!("../../static/scenarios/robocrane.json");
+
+/// The Robocrane preset plus a slerp from q1 tilting on to θ = 1.4, past the tension bound (the
+/// trajectory of `tests/wrench_exact.rs`).
+fn robocrane_tilt() -> Scenario {
+    let mut v: serde_json::Value = serde_json::from_str(ROBOCRANE).expect("bundled scenario is JSON");
+    v["poses"]["tilted"] = serde_json::json!({"position": [0, 0, 2], "tilt_torsion": [-0.5, 1.4, 0.6108652381980153]});
+    v["trajectories"] = serde_json::json!([
+        {"name": "slerp q1-q2", "translation": {"line": [[0, 0, 2], [0, 0, 2]]}, "orientation": {"slerp": ["q1", "q2"]}},
+        {"name": "tilt", "translation": {"line": [[0, 0, 2], [0, 0, 2]]}, "orientation": {"slerp": ["q1", "tilted"]}}
+    ]);
+    Scenario::from_json(&v.to_string()).expect("robocrane tilt parses")
+}
 
 /// Wall time spent measuring each case (after warm-up), in milliseconds.
 pub const CASE_MS: f64 = 1000.0;
@@ -107,6 +120,29 @@ pub fn run_all(platform: &str, filter: &str, now: &dyn Fn() -> f64, out: &mut dy
     record(measure(now, filter, "cdpr7/quadratic/pointwise-0.001", &mut || pointwise(&plain, &plain_q, 0.001)), out);
     record(measure(now, filter, "box/linear/exact", &mut || exact(&boxed, &box_l)), out);
     record(measure(now, filter, "box/linear/pointwise-0.001", &mut || pointwise(&boxed, &box_l, 0.001)), out);
+    let crane = robocrane_tilt();
+    let (crane_q12, crane_tilt) = (traj(&crane, "slerp q1-q2"), traj(&crane, "tilt"));
+    let q1 = *crane.pose("q1").expect("q1");
+    let wrench = crane.wrench.clone().expect("wrench");
+    record(
+        measure(now, filter, "crane/pose-wrench", &mut || {
+            let r = tension_ranges(&crane.robot, &q1, &wrench).expect("q1 is not singular");
+            format!("f0_1={:.6}", r[0].nominal)
+        }),
+        out,
+    );
+    record(measure(now, filter, "crane/q1-q2/exact", &mut || exact(&crane, &crane_q12)), out);
+    record(measure(now, filter, "crane/q1-q2/pointwise-0.001", &mut || pointwise(&crane, &crane_q12, 0.001)), out);
+    record(measure(now, filter, "crane/tilt/exact", &mut || exact(&crane, &crane_tilt)), out);
+    record(measure(now, filter, "crane/tilt/pointwise-0.001", &mut || pointwise(&crane, &crane_tilt, 0.001)), out);
+    record(
+        measure(now, filter, "crane/slice-400", &mut || {
+            let range = [default_range(Coord::Phi).expect("angle"), default_range(Coord::Theta).expect("angle")];
+            let m = slice(&crane, "q1", [Coord::Phi, Coord::Theta], 400, range).expect("slice");
+            format!("components={};fraction_feasible={:.4}", m.components, m.fraction_feasible)
+        }),
+        out,
+    );
     record(
         measure(now, filter, "box/ray-fig310-x/exact", &mut || {
             let r = ray(&boxed, "fig310", Coord::X, 0.2, 3.8).expect("ray");

@@ -3,7 +3,7 @@
 
 use super::algebra::{hvec_const, HVec};
 use super::primitives::segment_segment;
-use super::{Condition, PoseCables, PoseCheck, Sweep};
+use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
 use crate::poly::{Partition, Truth};
 use crate::query::segment_segment_dist;
 
@@ -19,12 +19,16 @@ pub struct CableCable {
 }
 
 impl Condition for CableCable {
+    fn kind(&self) -> Kind {
+        Kind::Interference
+    }
+
     fn label(&self) -> String {
         format!("cables {}-{}", self.i + 1, self.j + 1)
     }
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
-        let Sweep { alg, cables, tol } = sweep;
+        let Sweep { alg, cables, tol, .. } = sweep;
         let (ci, cj) = (&cables[self.i], &cables[self.j]);
         if ci.tube.clear_of_tube(&cj.tube, self.clearance) {
             return Partition::constant(Truth::False);

@@ -2,7 +2,7 @@
 
 use super::algebra::H;
 use super::primitives::{all_of, any_of, GT, LT};
-use super::{Condition, PoseCables, PoseCheck, Sweep};
+use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
 use crate::model::Bounds;
 use crate::poly::{Partition, Truth};
 
@@ -16,12 +16,16 @@ pub struct CableLength {
 }
 
 impl Condition for CableLength {
+    fn kind(&self) -> Kind {
+        Kind::Length
+    }
+
     fn label(&self) -> String {
         format!("cable {} length", self.cable + 1)
     }
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
-        let Sweep { alg, cables, tol } = sweep;
+        let Sweep { alg, cables, tol, .. } = sweep;
         let tol = *tol;
         let s = &cables[self.cable].s;
         let ss = alg.dot(s, s);
@@ -35,6 +39,6 @@ impl Condition for CableLength {
     fn check(&self, cables: &PoseCables) -> PoseCheck {
         let (a, x) = cables[self.cable];
         let len = (x - a).norm();
-        PoseCheck { violated: len < self.bounds.min || len > self.bounds.max, distance: Some(len) }
+        PoseCheck { violated: !self.bounds.contains(len), distance: Some(len) }
     }
 }

@@ -15,7 +15,7 @@
 use super::algebra::{hvec_const, HVec};
 use super::primitives::{point_segment, segment_cone, segment_face, segment_segment, ConeSolid};
 use super::tube::Bound;
-use super::{Condition, PoseCables, PoseCheck, Sweep};
+use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
 use crate::poly::{Partition, Truth};
 use crate::query::{point_segment_dist2, segment_crosses_triangle, segment_meets_cone, segment_segment_dist, segment_triangle_dist};
 use crate::shape::{Obstacle, Shape};
@@ -105,6 +105,10 @@ impl CableShape {
 }
 
 impl Condition for CableShape {
+    fn kind(&self) -> Kind {
+        Kind::Interference
+    }
+
     fn label(&self) -> String {
         format!("cable {} - {}", self.cable + 1, self.name)
     }
@@ -114,7 +118,7 @@ impl Condition for CableShape {
     }
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
-        let Sweep { alg, cables, tol } = sweep;
+        let Sweep { alg, cables, tol, .. } = sweep;
         let tol = *tol;
         let cable = &cables[self.cable];
         let far = |b: &Bound| cable.tube.clear_of(b);

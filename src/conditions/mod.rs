@@ -13,14 +13,23 @@ mod cable_cable;
 mod cable_length;
 mod cable_shape;
 pub mod primitives;
+mod closure;
+mod structure;
+mod tension;
 pub mod tube;
 
 pub use cable_cable::CableCable;
 pub use cable_length::CableLength;
 pub use cable_shape::CableShape;
+pub use closure::{FacetPolys, StaticFeasibility, WrenchClosure};
+pub use tension::{CableTension, Side, TensionPolys};
 
-use crate::model::{Motion, Pose, Robot};
+use std::cell::OnceCell;
+use std::rc::Rc;
+
+use crate::model::{Motion, Pose, Robot, Wrench};
 use crate::poly::Partition;
+use crate::query::wrench::{tension_ranges_at, TensionRange};
 use crate::scenario::Scenario;
 use algebra::{Alg, HVec};
 use tube::Tube;
@@ -46,6 +55,12 @@ pub struct Sweep {
     pub cables: Vec<SweptCable>,
     /// Width (in λ) below which an undecided piece is reported rather than subdivided further.
     pub tol: f64,
+    /// The motion itself.
+    pub motion: Motion,
+    /// The wrench polynomials, built by the first tension condition that needs them.
+    pub tension: Option<Rc<TensionPolys>>,
+    /// The facet polynomials of robots with more than six cables, built likewise.
+    pub facets: Option<Rc<FacetPolys>>,
 }
 
 impl Sweep {
@@ -69,7 +84,7 @@ impl Sweep {
                 SweptCable { base: cable.base, s, tube }
             })
             .collect();
-        Sweep { alg: Alg::new(w), cables, tol }
+        Sweep { alg: Alg::new(w), cables, tol, motion: motion.clone(), tension: None, facets: None }
     }
 }
 
@@ -83,12 +98,51 @@ pub struct PoseCheck {
     pub distance: Option<f64>,
 }
 
-/// The cables at one pose: base anchor and platform anchor in the world frame.
-pub type PoseCables = [(Vector3<f64>, Vector3<f64>)];
+/// The cables at one pose — base anchor and platform anchor in the world frame, indexable as a
+/// slice of pairs — with the pose itself and the tension ranges, computed at most once per pose
+/// for all the tension conditions that ask.
+#[derive(Debug, Clone)]
+pub struct PoseCables {
+    /// The pose.
+    pub pose: Pose,
+    /// (base anchor, platform anchor) per cable.
+    pub cables: Vec<(Vector3<f64>, Vector3<f64>)>,
+    tensions: OnceCell<Option<[TensionRange; 6]>>,
+}
+
+impl std::ops::Deref for PoseCables {
+    type Target = [(Vector3<f64>, Vector3<f64>)];
+    fn deref(&self) -> &Self::Target {
+        &self.cables
+    }
+}
+
+impl PoseCables {
+    /// The six cables' tension ranges over `wrench` (the scenario's only wrench set), or `None`
+    /// at a singular pose or when the robot does not have six cables.
+    pub fn tension_ranges(&self, wrench: &Wrench) -> Option<[TensionRange; 6]> {
+        *self.tensions.get_or_init(|| tension_ranges_at(&self.cables, &wrench.point_at(&self.pose), wrench))
+    }
+}
 
 /// The cables of `robot` at `pose`.
-pub fn cables_at(robot: &Robot, pose: &Pose) -> Vec<(Vector3<f64>, Vector3<f64>)> {
-    robot.cables.iter().map(|c| (c.base, pose.transform(&c.platform))).collect()
+pub fn cables_at(robot: &Robot, pose: &Pose) -> PoseCables {
+    PoseCables {
+        pose: *pose,
+        cables: robot.cables.iter().map(|c| (c.base, pose.transform(&c.platform))).collect(),
+        tensions: OnceCell::new(),
+    }
+}
+
+/// The three families of conditions.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// Cable length bounds.
+    Length,
+    /// Cable tensions over the wrench set.
+    Tension,
+    /// Cable–cable and cable–obstacle clearance.
+    Interference,
 }
 
 /// One feasibility condition.
@@ -101,6 +155,9 @@ pub trait Condition {
     fn exact(&self) -> bool {
         true
     }
+
+    /// What the condition is about, for classifying poses (slice maps).
+    fn kind(&self) -> Kind;
 
     /// The set of λ ∈ [0, 1] where the condition is violated along the sweep's motion.
     fn violation(&self, sweep: &mut Sweep) -> Partition;
@@ -130,6 +187,21 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
     for obstacle in &s.obstacles {
         for i in 0..m {
             out.push(Box::new(CableShape::new(i, obstacle, s.clearance.cable_obstacle)));
+        }
+    }
+    if let Some(wrench) = &s.wrench {
+        let wrench = Rc::new(wrench.clone());
+        if m == 6 {
+            for (i, cable) in robot.cables.iter().enumerate() {
+                let bounds = [(Side::Lower, cable.tension.min), (Side::Upper, cable.tension.max)];
+                for (side, bound) in bounds.into_iter().filter(|(_, b)| b.is_finite()) {
+                    out.push(Box::new(CableTension { cable: i, side, bound, wrench: Rc::clone(&wrench) }));
+                }
+            }
+        } else {
+            out.push(Box::new(WrenchClosure { wrench: Rc::clone(&wrench) }));
+            let bounds = robot.cables.iter().map(|c| c.tension).collect();
+            out.push(Box::new(StaticFeasibility { wrench, bounds }));
         }
     }
     out

@@ -5,6 +5,7 @@ pub mod motion;
 pub mod pose;
 pub mod robot;
 pub mod trajectory;
+pub mod via;
 pub mod wrench;
 
 pub use motion::Motion;

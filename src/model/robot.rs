@@ -12,6 +12,13 @@ pub struct Bounds {
     pub max: f64,
 }
 
+impl Bounds {
+    /// Whether `x` lies in the closed range.
+    pub fn contains(&self, x: f64) -> bool {
+        x >= self.min && x <= self.max
+    }
+}
+
 /// One cable: the segment a_i → p + R·b_i.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Cable {

@@ -115,8 +115,10 @@ pub struct PlanProgress {
     pub open: usize,
     /// Least h over the open list (pose-metric distance to the goal).
     pub best_heuristic: f64,
-    /// The status once finished.
+    /// The status once finished (the search ended and its path was re-verified).
     pub done: Option<PlanStatus>,
+    /// While the found path is being re-verified: (edges verified, edges in all).
+    pub verifying: Option<(usize, usize)>,
 }
 
 /// The exact verifier's re-check of a path, edge by edge (slerp + linear translation between
@@ -233,6 +235,20 @@ pub struct Planner {
     goal: Pose,
     params: PlanParams,
     search: Continuation<CableManifold>,
+    /// Once the search has ended: its path, re-verified edge by edge by later `step` calls.
+    check: Option<PathCheck>,
+}
+
+/// A finished search's path and its re-verification so far.
+#[derive(Debug, Clone)]
+struct PathCheck {
+    status: PlanStatus,
+    path: Vec<Pose>,
+    verification: PathVerification,
+    /// Edges verified so far.
+    next: usize,
+    /// Whether every edge and pose has been checked.
+    finished: bool,
 }
 
 /// The coordinates of `pose` equivalent to `q` under (φ, θ, σ) ~ (φ + π, −θ, σ): the two
@@ -337,34 +353,60 @@ impl Planner {
         let atlas_params = AtlasParams { radius: params.radius, epsilon: params.epsilon, delta: params.delta };
         let search = Continuation::new(manifold, &start_x, goals, atlas_params, params.max_charts)
             .map_err(|why| Error::new(format!("{field}.start"), format!("no chart can be made at the start pose \"{}\": {why}", names[0])))?;
-        Ok(Planner { scenario: scenario.clone(), start, goal, params, search })
+        Ok(Planner { scenario: scenario.clone(), start, goal, params, search, check: None })
     }
 
     /// Advances by at most `budget` units of work (one unit: one chart-creation attempt, one A*
-    /// pop, or one edge of the path being built — at most a few ms on the 2-D and 3-D Robocrane
-    /// slices, more for 6-D chart creations: see docs/planner.md) and returns the progress.
+    /// pop, one edge of the path being built, or — once the search has ended — the exact
+    /// re-verification of one path edge; at most a few ms on the 2-D and 3-D Robocrane slices, more
+    /// for 6-D chart creations: see docs/planner.md) and returns the progress.
     pub fn step(&mut self, budget: usize) -> PlanProgress {
-        let p = self.search.step(budget);
-        PlanProgress { charts: p.charts, open: p.open, best_heuristic: p.best_heuristic, done: p.ended.map(status) }
+        let p = self.search.step(if self.check.is_some() { 0 } else { budget });
+        let mut progress = PlanProgress { charts: p.charts, open: p.open, best_heuristic: p.best_heuristic, done: None, verifying: None };
+        let Some(ended) = p.ended else { return progress };
+        let check = match &mut self.check {
+            Some(c) => {
+                let edges = c.path.len().saturating_sub(1);
+                for _ in 0..budget.max(1) {
+                    if c.next >= edges {
+                        break;
+                    }
+                    c.verification.add_edge(&self.scenario, c.next, &c.path[c.next], &c.path[c.next + 1]);
+                    c.next += 1;
+                }
+                if c.next >= edges && !c.finished {
+                    c.verification.add_poses(&self.scenario, &c.path);
+                    c.finished = true;
+                }
+                c
+            }
+            None => {
+                // The search ended in this call: take its path; verification starts next call.
+                let manifold = &self.search.atlas.manifold;
+                let mut path: Vec<Pose> = self.search.path().iter().map(|x| Pose::from_coords(manifold.coords(x))).collect();
+                if let Some(first) = path.first_mut() {
+                    *first = self.start;
+                }
+                if let Some(last) = path.last_mut() {
+                    *last = self.goal;
+                }
+                let verification = PathVerification::start(path.len());
+                self.check.insert(PathCheck { status: status(ended), path, verification, next: 0, finished: false })
+            }
+        };
+        let edges = check.path.len().saturating_sub(1);
+        progress.verifying = (!check.finished).then_some((check.next, edges));
+        progress.done = check.finished.then_some(check.status);
+        progress
     }
 
-    /// The result once [`Planner::step`] reported `done`, `None` before. Builds the path's poses
-    /// and runs the edge-by-edge re-verification on each call (it costs about one exact
-    /// verification per path edge), so call it once.
+    /// The result once [`Planner::step`] reported `done`, `None` before.
     pub fn outcome(&self) -> Option<PlanOutcome> {
-        let st = status(self.search.ended()?);
+        let check = self.check.as_ref().filter(|c| c.finished)?;
         let manifold = &self.search.atlas.manifold;
-        let mut path: Vec<Pose> = self.search.path().iter().map(|x| Pose::from_coords(manifold.coords(x))).collect();
-        if let Some(first) = path.first_mut() {
-            *first = self.start;
-        }
-        if let Some(last) = path.last_mut() {
-            *last = self.goal;
-        }
-        let verification = verify_path(&self.scenario, &path);
         Some(PlanOutcome {
-            status: st,
-            path,
+            status: check.status,
+            path: check.path.clone(),
             charts: self.search.atlas.charts.len(),
             atlas: AtlasSummary {
                 dimension: manifold.free().len(),
@@ -374,7 +416,7 @@ impl Planner {
                 blocked_charts: self.search.atlas.charts.iter().filter(|c| c.state == chart::ChartState::Blocked).count(),
                 params: self.params,
             },
-            verification,
+            verification: check.verification.clone(),
         })
     }
 }
@@ -397,44 +439,63 @@ pub(crate) fn edge_trajectory(index: usize, a: &Pose, b: &Pose) -> Trajectory {
     Trajectory { name: format!("edge {index}"), translation: Translation::Line(a.position, b.position), orientation: Orientation::Slerp(a.rotation, qb) }
 }
 
-/// Re-verifies a path: the exact verifier on each edge, the wrench set at each pose.
-pub fn verify_path(s: &Scenario, path: &[Pose]) -> PathVerification {
-    let mut v = PathVerification {
-        edges: path.len().saturating_sub(1),
-        infeasible_sections: 0,
-        uncertain_sections: 0,
-        wrench_poses: 0,
-        wrench_infeasible_poses: 0,
-        least_wrench_margin: None,
-        failed_edges: vec![],
-        notes: vec![
-            "edges: interference and cable lengths verified exactly along each slerp + linear edge (verify_trajectory)".to_string(),
-            "wrench set: checked at every path pose (poses at most delta apart); the exact verifier does not yet cover it along edges".to_string(),
-        ],
-    };
-    for (i, w) in path.windows(2).enumerate() {
-        match verify_trajectory(s, &edge_trajectory(i, &w[0], &w[1])) {
+impl PathVerification {
+    /// Nothing verified yet, for a path of `poses` poses.
+    fn start(poses: usize) -> PathVerification {
+        PathVerification {
+            edges: poses.saturating_sub(1),
+            infeasible_sections: 0,
+            uncertain_sections: 0,
+            wrench_poses: 0,
+            wrench_infeasible_poses: 0,
+            least_wrench_margin: None,
+            failed_edges: vec![],
+            notes: vec![
+                "edges: every condition of the scenario — interference, cable lengths and the wrench conditions — verified exactly \
+                 along each slerp + linear edge (verify_trajectory)"
+                    .to_string(),
+                "poses: the per-pose wrench test at every path pose (margins reported)".to_string(),
+            ],
+        }
+    }
+
+    /// The exact verifier on edge `i`, from `a` to `b`.
+    fn add_edge(&mut self, s: &Scenario, i: usize, a: &Pose, b: &Pose) {
+        match verify_trajectory(s, &edge_trajectory(i, a, b)) {
             Ok(report) => {
-                v.infeasible_sections += report.infeasible.len();
-                v.uncertain_sections += report.uncertain.len();
+                self.infeasible_sections += report.infeasible.len();
+                self.uncertain_sections += report.uncertain.len();
                 if !report.infeasible.is_empty() || !report.uncertain.is_empty() {
-                    v.failed_edges.push((i, report));
+                    self.failed_edges.push((i, report));
                 }
             }
-            Err(e) => v.notes.push(format!("edge {i}: the verifier refused it: {e}")),
+            Err(e) => self.notes.push(format!("edge {i}: the verifier refused it: {e}")),
         }
     }
-    for pose in path {
-        if let Some(w) = wrench_at(s, pose) {
-            v.wrench_poses += 1;
-            if !w.feasible {
-                v.wrench_infeasible_poses += 1;
-            }
-            if let Some(m) = w.margin {
-                v.least_wrench_margin = Some(v.least_wrench_margin.map_or(m, |a: f64| a.min(m)));
+
+    /// The per-pose wrench test at every pose of `path`.
+    fn add_poses(&mut self, s: &Scenario, path: &[Pose]) {
+        for pose in path {
+            if let Some(w) = wrench_at(s, pose) {
+                self.wrench_poses += 1;
+                if !w.feasible {
+                    self.wrench_infeasible_poses += 1;
+                }
+                if let Some(m) = w.margin {
+                    self.least_wrench_margin = Some(self.least_wrench_margin.map_or(m, |a: f64| a.min(m)));
+                }
             }
         }
     }
+}
+
+/// Re-verifies a path: the exact verifier on each edge, the wrench set at each pose.
+pub fn verify_path(s: &Scenario, path: &[Pose]) -> PathVerification {
+    let mut v = PathVerification::start(path.len());
+    for (i, w) in path.windows(2).enumerate() {
+        v.add_edge(s, i, &w[0], &w[1]);
+    }
+    v.add_poses(s, path);
     v
 }
 

@@ -61,6 +61,12 @@ impl Partition {
         Partition::normalised(pieces)
     }
 
+    /// From `(end, truth)` pieces in increasing order, the last ending at 1 (adjacent equal
+    /// pieces are merged).
+    pub fn from_pieces(pieces: Vec<(f64, Truth)>) -> Partition {
+        Partition::normalised(pieces)
+    }
+
     fn normalised(pieces: Vec<(f64, Truth)>) -> Partition {
         let mut out: Vec<(f64, Truth)> = Vec::with_capacity(pieces.len());
         for (end, t) in pieces {
@@ -101,6 +107,48 @@ impl Partition {
     /// Pointwise disjunction.
     pub fn or(&self, other: &Partition) -> Partition {
         self.zip(other, Truth::or)
+    }
+
+    /// `self` outside [a, b]; inside, `inner`, a partition of [c, d] ⊇ [a, b] rescaled to [0, 1]
+    /// (a local recomputation).
+    pub fn splice(&self, (a, b): (f64, f64), inner: &Partition, (c, d): (f64, f64)) -> Partition {
+        let mut out: Vec<(f64, Truth)> = Vec::with_capacity(self.pieces.len() + inner.pieces.len());
+        let mut push = |end: f64, t: Truth| {
+            if end > out.last().map_or(0.0, |&(last, _)| last) {
+                out.push((end, t));
+            }
+        };
+        for &(end, t) in &self.pieces {
+            push(end.min(a), t);
+            if end >= a {
+                break;
+            }
+        }
+        for &(end, t) in &inner.pieces {
+            let x = c + end * (d - c);
+            if x > a {
+                push(x.min(b), t);
+            }
+            if x >= b {
+                break;
+            }
+        }
+        for &(end, t) in &self.pieces {
+            if end > b {
+                push(end, t);
+            }
+        }
+        Partition::normalised(out)
+    }
+
+    /// Pointwise negation (Unknown stays Unknown).
+    pub fn not(&self) -> Partition {
+        let flip = |t: Truth| match t {
+            Truth::True => Truth::False,
+            Truth::False => Truth::True,
+            Truth::Unknown => Truth::Unknown,
+        };
+        Partition { pieces: self.pieces.iter().map(|&(end, t)| (end, flip(t))).collect() }
     }
 
     /// Whether the truth is `t` on all of [0, 1].

@@ -7,25 +7,148 @@
 //! ranges over f0,i ± v_ii with f0 = J⁻¹ w0 and v_ii = sqrt((J⁻¹ E⁻¹ J⁻ᵀ)_ii).
 
 use crate::model::{Pose, Robot, Wrench};
-use nalgebra::{Matrix6, Vector3};
+use super::lp::{maximise, LpResult};
+use crate::model::Bounds;
+use nalgebra::{DMatrix, DVector, Matrix6, Vector3, Vector6};
 
 /// Below this |det J| / Π‖column‖ (Hadamard ratio) a pose counts as singular.
 pub const SINGULAR_RATIO: f64 = 1e-10;
 
 /// The structure matrix of `robot` at `pose` with moments about `point`.
 pub fn structure_matrix(robot: &Robot, pose: &Pose, point: &Vector3<f64>) -> Matrix6<f64> {
+    let cables: Vec<_> = robot.cables.iter().take(6).map(|c| (c.base, pose.transform(&c.platform))).collect();
+    structure_matrix_of(&cables, point)
+}
+
+/// The structure matrix of the first six (base anchor, platform anchor) pairs, in the world
+/// frame, with moments about `point`.
+pub fn structure_matrix_of(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>) -> Matrix6<f64> {
     let mut j = Matrix6::zeros();
-    for (i, cable) in robot.cables.iter().take(6).enumerate() {
-        let x = pose.transform(&cable.platform);
-        let d = x - cable.base;
-        let e = d / d.norm();
-        let m = (x - point).cross(&e);
-        for k in 0..3 {
-            j[(k, i)] = e[k];
-            j[(k + 3, i)] = m[k];
-        }
+    for (i, &(base, x)) in cables.iter().take(6).enumerate() {
+        j.set_column(i, &column(base, x, point));
     }
     j
+}
+
+/// One column of the structure matrix: [e ; (x − c) × e], e the unit vector from the base anchor
+/// to the platform anchor x.
+fn column(base: Vector3<f64>, x: Vector3<f64>, point: &Vector3<f64>) -> Vector6<f64> {
+    let d = x - base;
+    let e = d / d.norm();
+    let m = (x - point).cross(&e);
+    Vector6::new(e.x, e.y, e.z, m.x, m.y, m.z)
+}
+
+/// The 6×m structure matrix of any number of cables.
+pub fn structure_matrix_m(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>) -> DMatrix<f64> {
+    let mut j = DMatrix::zeros(6, cables.len());
+    for (i, &(base, x)) in cables.iter().enumerate() {
+        j.set_column(i, &column(base, x, point));
+    }
+    j
+}
+
+/// Wrench closure at one pose (m ≥ 6 cables): J has rank 6 and, for every five columns S
+/// spanning a hyperplane, the other columns lie strictly on both sides of it — equivalently, a
+/// strictly positive tension vector lies in J's null space. Determinants below
+/// [`SINGULAR_RATIO`] times the product of the columns' norms count as zero.
+pub fn closure_holds(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>) -> bool {
+    let j = structure_matrix_m(cables, point);
+    let m = j.ncols();
+    let norms: Vec<f64> = (0..m).map(|i| j.column(i).norm()).collect();
+    let det_of = |cols: &[usize]| {
+        let mut a = Matrix6::zeros();
+        for (c, &k) in cols.iter().enumerate() {
+            a.set_column(c, &j.column(k));
+        }
+        let scale: f64 = cols.iter().map(|&k| norms[k]).product();
+        let d = a.determinant();
+        if d.abs() > SINGULAR_RATIO * scale { d.signum() } else { 0.0 }
+    };
+    let mut rank6 = false;
+    let mut s = [0usize; 6];
+    for subset in subsets(m, 5) {
+        s[..5].copy_from_slice(&subset);
+        let (mut pos, mut neg) = (false, false);
+        for k in (0..m).filter(|k| !subset.contains(k)) {
+            s[5] = k;
+            let d = det_of(&s);
+            pos |= d > 0.0;
+            neg |= d < 0.0;
+        }
+        if pos || neg {
+            rank6 = true;
+            if !(pos && neg) {
+                return false;
+            }
+        }
+    }
+    rank6
+}
+
+/// The k-element subsets of 0..m in lexicographic order.
+pub fn subsets(m: usize, k: usize) -> Vec<Vec<usize>> {
+    let mut out = Vec::new();
+    let mut cur = Vec::with_capacity(k);
+    fn rec(start: usize, m: usize, k: usize, cur: &mut Vec<usize>, out: &mut Vec<Vec<usize>>) {
+        if cur.len() == k {
+            out.push(cur.clone());
+            return;
+        }
+        for i in start..m {
+            cur.push(i);
+            rec(i + 1, m, k, cur, out);
+            cur.pop();
+        }
+    }
+    rec(0, m, k, &mut cur, &mut out);
+    out
+}
+
+/// Static feasibility of the wrench `w0` at one pose (any m ≥ 6): the largest t such that
+/// tensions with f_min + t ≤ f ≤ f_max − t balance w0 (J f = w0), found by a linear program, and
+/// those tensions. Feasible (strictly within the bounds) iff t > 0. `None` if no tensions at all
+/// balance w0 (J f = w0 has no solution).
+pub fn static_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, w0: &Vector6<f64>, bounds: &[Bounds]) -> Option<(f64, Vec<f64>)> {
+    let j = structure_matrix_m(cables, point);
+    let m = j.ncols();
+    // f = f_min + t·1 + g with g ≥ 0 and t = tp − tn; rows: J g + J1 (tp − tn) = w0 − J f_min;
+    // g_k + 2 (tp − tn) + s_k = f_max,k − f_min,k for finite f_max; tp + s = CAP.
+    let finite: Vec<usize> = (0..m).filter(|&k| bounds[k].max.is_finite()).collect();
+    let cap = bounds.iter().map(|b| b.min.abs() + if b.max.is_finite() { b.max.abs() } else { 0.0 }).sum::<f64>() + w0.amax() + 1.0;
+    let nvar = m + 2 + finite.len() + 1;
+    let rows = 6 + finite.len() + 1;
+    let mut a = DMatrix::zeros(rows, nvar);
+    let mut b = DVector::zeros(rows);
+    let fmin = DVector::from_iterator(m, bounds.iter().map(|b| b.min));
+    let rhs = w0 - &j * &fmin;
+    let ones = j.column_sum();
+    for r in 0..6 {
+        for k in 0..m {
+            a[(r, k)] = j[(r, k)];
+        }
+        a[(r, m)] = ones[r];
+        a[(r, m + 1)] = -ones[r];
+        b[r] = rhs[r];
+    }
+    for (i, &k) in finite.iter().enumerate() {
+        let r = 6 + i;
+        a[(r, k)] = 1.0;
+        a[(r, m)] = 2.0;
+        a[(r, m + 1)] = -2.0;
+        a[(r, m + 2 + i)] = 1.0;
+        b[r] = bounds[k].max - bounds[k].min;
+    }
+    a[(rows - 1, m)] = 1.0;
+    a[(rows - 1, nvar - 1)] = 1.0;
+    b[rows - 1] = cap;
+    let mut c = DVector::zeros(nvar);
+    c[m] = 1.0;
+    c[m + 1] = -1.0;
+    match maximise(&a, &b, &c) {
+        LpResult::Optimal { x, value } => Some((value, (0..m).map(|k| bounds[k].min + value + x[k]).collect())),
+        LpResult::Infeasible | LpResult::Unbounded => None,
+    }
 }
 
 /// Tension range of one cable over the wrench set.
@@ -40,7 +163,17 @@ pub struct TensionRange {
 /// The tension ranges of the six cables at `pose`, or `None` at a singular pose (J not
 /// invertible to within [`SINGULAR_RATIO`]).
 pub fn tension_ranges(robot: &Robot, pose: &Pose, wrench: &Wrench) -> Option<[TensionRange; 6]> {
-    let j = structure_matrix(robot, pose, &wrench.point_at(pose));
+    let cables: Vec<_> = robot.cables.iter().map(|c| (c.base, pose.transform(&c.platform))).collect();
+    tension_ranges_at(&cables, &wrench.point_at(pose), wrench)
+}
+
+/// [`tension_ranges`] from the cables' world anchors and the wrench's application point; `None`
+/// also when there are not exactly six cables.
+pub fn tension_ranges_at(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, wrench: &Wrench) -> Option<[TensionRange; 6]> {
+    if cables.len() != 6 {
+        return None;
+    }
+    let j = structure_matrix_of(cables, point);
     let scale: f64 = (0..6).map(|i| j.column(i).norm()).product();
     let lu = j.lu();
     if !(lu.determinant().abs() > SINGULAR_RATIO * scale) {

@@ -116,6 +116,8 @@ pub struct RawClearance {
 pub struct RawObstacle {
     #[serde(default)]
     pub name: Option<String>,
+    #[serde(default)]
+    pub color: Option<String>,
     #[serde(rename = "type")]
     pub kind: String,
     #[serde(default)]

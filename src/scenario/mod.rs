@@ -1,6 +1,7 @@
 //! The versioned scenario JSON (`cablenav-scenario/1`, documented in `docs/scenario-format.md`):
 //! parsing with serde, and validation into the model with errors that name the field.
 
+pub mod caspr;
 pub mod json;
 pub mod validate;
 

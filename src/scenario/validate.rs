@@ -40,18 +40,29 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
     let trajectories = trajectories(&raw.trajectories, &poses, &mut warnings)?;
     let queries = queries(&raw.queries, &poses)?;
     let wrench = raw.wrench.as_ref().map(wrench).transpose()?;
-    if wrench.is_some() && robot.cables.len() != 6 {
+    if wrench.is_some() && robot.cables.len() > MAX_WRENCH_CABLES {
         return Err(Error::new(
             "wrench",
             format!(
-                "the ellipsoidal wrench test needs exactly 6 cables (a square structure matrix); this robot has {}. \
-                 Wrench conditions for more cables are not supported yet",
+                "wrench conditions are supported for up to {MAX_WRENCH_CABLES} cables (closure and static feasibility \
+                 test every set of 5 structure-matrix columns); this robot has {}",
                 robot.cables.len()
             ),
         ));
     }
+    if wrench.is_some() && robot.cables.len() > 6 {
+        warnings.push(format!(
+            "with {} cables the wrench conditions are wrench closure and static feasibility of the nominal wrench; \
+             the ellipsoid is used only by 6-cable robots",
+            robot.cables.len()
+        ));
+    }
     Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses, trajectories, queries, wrench, warnings })
 }
+
+/// Most cables a robot with a wrench section may have: the m > 6 conditions test all C(m, 5)
+/// facets of the structure matrix (252 for 10 cables).
+pub const MAX_WRENCH_CABLES: usize = 10;
 
 /// A finite number at `field`.
 fn num(field: &str, x: f64) -> Result<f64> {
@@ -280,7 +291,7 @@ fn obstacles(raw: &[RawObstacle]) -> Result<Vec<Obstacle>> {
             if !allowed.contains(&f) {
                 return Err(Error::new(
                     format!("{path}.{f}"),
-                    format!("not a field of a {kind} obstacle (its fields: name, type, {})", allowed.join(", ")),
+                    format!("not a field of a {kind} obstacle (its fields: name, color, type, {})", allowed.join(", ")),
                 ));
             }
         }
@@ -342,9 +353,19 @@ fn obstacles(raw: &[RawObstacle]) -> Result<Vec<Obstacle>> {
                 ));
             }
         }
-        out.push(Obstacle { name, shape });
+        let color = o.color.as_deref().map(|c| color(&format!("{path}.color"), c)).transpose()?;
+        out.push(Obstacle { name, shape, color });
     }
     Ok(out)
+}
+
+/// A display colour: `#` and six hexadecimal digits (`#rrggbb`), kept as given.
+fn color(field: &str, c: &str) -> Result<String> {
+    let hex = c.strip_prefix('#').unwrap_or_default();
+    if hex.len() != 6 || !hex.bytes().all(|b| b.is_ascii_hexdigit()) {
+        return Err(Error::new(field, format!("{c:?} is not a colour of the form \"#rrggbb\" (six hexadecimal digits)")));
+    }
+    Ok(c.to_owned())
 }
 
 fn mesh(path: &str, o: &RawObstacle) -> Result<Mesh> {

@@ -9,6 +9,8 @@ pub struct Obstacle {
     pub name: String,
     /// Its geometry.
     pub shape: Shape,
+    /// Its display colour, `#rrggbb`, if the scenario gives one (drawing only; no condition uses it).
+    pub color: Option<String>,
 }
 
 /// The geometry of an obstacle. Every shape is a closed solid.

@@ -2,6 +2,7 @@
 //! polynomial sign partitions) or point-wise (the sampled baseline), and all conditions at one pose.
 
 mod pointwise;
+pub mod profile;
 mod sections;
 pub mod slice;
 
@@ -9,12 +10,13 @@ pub use pointwise::verify_pointwise;
 pub use sections::{push_merged, sections, Labelled, Piece, Sections};
 pub use slice::{slice, SliceMap};
 
-use crate::conditions::{cables_at, for_scenario, Condition, Sweep};
+use crate::conditions::{cables_at, for_scenario, Condition, PoseCables, Sweep};
+use crate::model::{Bounds, Wrench};
+use crate::query::wrench::{closure_holds, static_margin};
 use crate::error::{Error, Result};
 use crate::model::motion::Param;
 use crate::model::{Coord, Motion, Pose, Trajectory};
 use crate::poly::{Partition, Truth};
-use crate::query::wrench::tension_ranges;
 use crate::report::{Boundary, CheckEntry, PoseReport, RayBoundary, RayReport, TensionEnvelope, VerifyReport, WrenchReport};
 use crate::scenario::Scenario;
 
@@ -58,7 +60,6 @@ pub fn verify_trajectory(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport
     let (overall, per) = violation_pieces(&conditions, s, std::slice::from_ref(&motion), BOUNDARY_TOL);
     let sec = sections(&overall, &per, BOUNDARY_TOL);
     let mut warnings = s.warnings.clone();
-    warnings.extend(wrench_not_along_motions(s));
     if !sec.uncertain.is_empty() {
         warnings.push(format!("{} section(s) could not be certified either way; see \"uncertain\"", sec.uncertain.len()));
     }
@@ -110,16 +111,7 @@ pub fn ray(s: &Scenario, pose_name: &str, coord: Coord, lo: f64, hi: f64) -> Res
         boundaries: sec.boundaries.into_iter().map(|(value, constraint, enters)| RayBoundary { value, constraint, enters }).collect(),
         uncertain: sec.uncertain,
         conservative: conservative_labels(&conditions),
-        warnings: wrench_not_along_motions(s).into_iter().collect(),
-    })
-}
-
-/// The warning that sections along motions do not include the wrench set yet.
-fn wrench_not_along_motions(s: &Scenario) -> Option<String> {
-    s.wrench.as_ref().map(|_| {
-        "the wrench set is checked per pose (`check`), not yet along trajectories and rays: these sections cover \
-         interference and cable lengths only"
-            .to_string()
+        warnings: s.warnings.clone(),
     })
 }
 
@@ -128,9 +120,12 @@ fn wrench_not_along_motions(s: &Scenario) -> Option<String> {
 pub fn wrench_at(s: &Scenario, pose: &Pose) -> Option<WrenchReport> {
     let wrench = s.wrench.as_ref()?;
     let cables = &s.robot.cables;
-    let lengths: Vec<f64> = cables_at(&s.robot, pose).iter().map(|(a, x)| (x - a).norm()).collect();
-    let bad_length = cables.iter().zip(&lengths).position(|(c, &l)| !(l > c.length.min && l < c.length.max));
-    let Some(ranges) = tension_ranges(&s.robot, pose, wrench) else {
+    let at = cables_at(&s.robot, pose);
+    let bad_length = cables.iter().zip(at.iter()).position(|(c, (a, x))| !c.length.contains((x - a).norm()));
+    if cables.len() != 6 {
+        return Some(static_report(s, &at, wrench, bad_length));
+    }
+    let Some(ranges) = at.tension_ranges(wrench) else {
         return Some(WrenchReport {
             feasible: false,
             singular: true,
@@ -163,6 +158,34 @@ pub fn wrench_at(s: &Scenario, pose: &Pose) -> Option<WrenchReport> {
         tension_nominal: ranges.iter().map(|r| r.nominal).collect(),
         active,
     })
+}
+
+/// The per-pose wrench report of a robot with more than six cables: wrench closure, and the
+/// static-feasibility LP's margin and tensions for the nominal wrench (the ellipsoid is not used;
+/// `tension_min`/`tension_max` stay empty).
+fn static_report(s: &Scenario, at: &PoseCables, wrench: &Wrench, bad_length: Option<usize>) -> WrenchReport {
+    let point = wrench.point_at(&at.pose);
+    let bounds: Vec<Bounds> = s.robot.cables.iter().map(|c| c.tension).collect();
+    let closed = closure_holds(&at.cables, &point);
+    let solved = static_margin(&at.cables, &point, &wrench.nominal, &bounds);
+    let margin = solved.as_ref().map(|(m, _)| *m);
+    let tensions = solved.map(|(_, f)| f).unwrap_or_default();
+    let active = if let Some(i) = bad_length {
+        format!("cable {} length", i + 1)
+    } else if !closed {
+        "wrench closure".to_string()
+    } else {
+        "static feasibility".to_string()
+    };
+    WrenchReport {
+        feasible: closed && margin.is_some_and(|m| m > 0.0) && bad_length.is_none(),
+        singular: margin.is_none(),
+        margin,
+        tension_min: vec![],
+        tension_max: vec![],
+        tension_nominal: tensions,
+        active,
+    }
 }
 
 /// The tension envelope along a trajectory (Bohigas et al. Fig. 6, bottom): at `samples` + 1

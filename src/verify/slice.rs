@@ -2,8 +2,7 @@
 //! pose, each cell classified by the conditions at its centre; and the 4-neighbour connected
 //! components of the feasible cells (Bohigas et al. Fig. 5).
 
-use super::wrench_at;
-use crate::conditions::{cables_at, for_scenario, Condition};
+use crate::conditions::{cables_at, for_scenario, Condition, Kind};
 use crate::error::{Error, Result};
 use crate::model::{Coord, Pose};
 use crate::scenario::Scenario;
@@ -102,22 +101,19 @@ pub fn default_range(c: Coord) -> Option<[f64; 2]> {
 
 fn classify(s: &Scenario, conditions: &[Box<dyn Condition>], pose: &Pose) -> Class {
     let cables = cables_at(&s.robot, pose);
-    let length_bad = s.robot.cables.iter().zip(&cables).any(|(c, (a, x))| {
-        let l = (x - a).norm();
-        !(l >= c.length.min && l <= c.length.max)
-    });
-    if length_bad {
+    let violated = |kind: Kind| conditions.iter().filter(|c| c.kind() == kind).any(|c| c.check(&cables).violated);
+    if violated(Kind::Length) {
         return Class::Length;
     }
-    if let Some(w) = wrench_at(s, pose) {
-        if w.singular {
+    if let Some(wrench) = &s.wrench {
+        if cables.tension_ranges(wrench).is_none() {
             return Class::Singular;
         }
-        if !w.feasible {
-            return Class::Tension;
-        }
     }
-    if conditions.iter().any(|c| c.check(&cables).violated) {
+    if violated(Kind::Tension) {
+        return Class::Tension;
+    }
+    if violated(Kind::Interference) {
         return Class::Interference;
     }
     Class::Feasible

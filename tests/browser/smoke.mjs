@@ -6,11 +6,10 @@
 // that the page also works inside an iframe; fails on any console error or page error.
 // Screenshots go to tests/browser/artifacts/. Ends with "N passed, M failed"; exits 1 on failure.
 
-import { createServer } from 'node:http';
-import { mkdirSync, readFileSync, statSync } from 'node:fs';
-import { dirname, extname, join, normalize, resolve, sep } from 'node:path';
+import { mkdirSync } from 'node:fs';
+import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
+import { launchChromium, readSections, requirePage, runner, serve, watchProblems } from './harness.mjs';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const root = resolve(here, '..', '..');
@@ -19,63 +18,12 @@ const artifacts = join(here, 'artifacts');
 const EPS = 1e-9;
 const TIMEOUT = 60_000;
 
-// ---------- a tiny static file server ----------
-const TYPES = {
-  '.html': 'text/html; charset=utf-8',
-  '.js': 'text/javascript; charset=utf-8',
-  '.mjs': 'text/javascript; charset=utf-8',
-  '.wasm': 'application/wasm',
-  '.css': 'text/css; charset=utf-8',
-  '.json': 'application/json; charset=utf-8',
-  '.png': 'image/png',
-  '.svg': 'image/svg+xml',
-};
 // A second page that embeds the app in an iframe.
 const FRAME_HTML = `<!doctype html><html><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>cablenav in a frame</title></head>
 <body style="margin:0;background:#eee"><p style="margin:8px">embedding page</p>
 <iframe id="app" src="/index.html" style="width:1100px;height:760px;border:1px solid #999"></iframe></body></html>`;
 
-function serve(dir) {
-  const server = createServer((req, res) => {
-    const path = decodeURIComponent(new URL(req.url, 'http://x').pathname);
-    if (path === '/__frame.html') {
-      res.writeHead(200, { 'content-type': TYPES['.html'] });
-      return res.end(FRAME_HTML);
-    }
-    let file = normalize(join(dir, path));
-    if (file !== dir && !file.startsWith(dir + sep)) {
-      res.writeHead(403);
-      return res.end();
-    }
-    try {
-      if (statSync(file).isDirectory()) file = join(file, 'index.html');
-      const body = readFileSync(file);
-      res.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' });
-      res.end(body);
-    } catch {
-      res.writeHead(404, { 'content-type': 'text/plain' });
-      res.end('not found');
-    }
-  });
-  return new Promise((ok, fail) => {
-    server.once('error', fail);
-    server.listen(0, '127.0.0.1', () => ok(server));
-  });
-}
-
 // ---------- checks ----------
-/** The drawn sections of the strip in `scope` (a Page or a Frame). */
-async function readSections(scope) {
-  return scope.$$eval('svg[data-testid="strip"] rect[data-testid="section"]', (rects) =>
-    rects.map((r) => ({
-      kind: r.dataset.kind,
-      t0: Number(r.dataset.t0),
-      t1: Number(r.dataset.t1),
-      title: r.querySelector('title')?.textContent ?? '',
-    })),
-  );
-}
-
 /** Throws unless `sections` is non-empty, well-formed and covers [0, 1] without gaps. */
 function assertCover(sections, what) {
   if (sections.length === 0) throw new Error(`${what}: no section drawn`);
@@ -124,68 +72,17 @@ async function optionValues(scope, testid) {
 }
 
 // ---------- run ----------
-const results = [];
-async function test(name, fn) {
-  const started = Date.now();
-  try {
-    const detail = await fn();
-    results.push({ name, ok: true });
-    console.log(`ok   ${name}${detail ? ` — ${detail}` : ''} (${Date.now() - started} ms)`);
-  } catch (e) {
-    results.push({ name, ok: false });
-    console.log(`FAIL ${name}: ${e && e.stack ? e.stack : e}`);
-  }
-}
-
 mkdirSync(artifacts, { recursive: true });
-try {
-  statSync(join(pageDir, 'index.html'));
-} catch {
-  console.log(`FAIL no built page at ${pageDir} (run scripts/build-page.sh)`);
-  console.log('0 passed, 1 failed');
-  process.exit(1);
-}
-
-// Never hang: give up after 10 minutes in all.
-setTimeout(() => {
-  console.log('FAIL watchdog: the smoke test took more than 10 minutes');
-  console.log(`${results.filter((r) => r.ok).length} passed, ${results.filter((r) => !r.ok).length + 1} failed`);
-  process.exit(1);
-}, 600_000).unref();
-
-const server = await serve(pageDir);
+requirePage(pageDir);
+const { test, finish } = runner(10);
+const server = await serve(pageDir, { '/__frame.html': FRAME_HTML });
 const base = `http://127.0.0.1:${server.address().port}`;
-const browser = await chromium
-  .launch({
-    executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
-    headless: true,
-    args: [
-      '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync',
-      '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-    ],
-  })
-  .catch((e) => {
-    console.log(`FAIL launching Chromium: ${e.message}`);
-    console.log('0 passed, 1 failed');
-    process.exit(1);
-  });
+const browser = await launchChromium();
 const context = await browser.newContext({ viewport: { width: 1200, height: 900 } });
-const problems = []; // console errors and page errors, from any page or frame
-context.on('page', watch);
-function watch(page) {
-  page.on('console', (m) => {
-    if (m.type() === 'error') problems.push(`console error: ${m.text()}`);
-  });
-  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
-  page.on('response', (r) => {
-    if (r.status() >= 400) problems.push(`HTTP ${r.status()} for ${r.url()}`);
-  });
-  page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()} ${r.failure()?.errorText ?? ''}`));
-}
+const problems = watchProblems(context); // console errors and page errors, from any page or frame
 /** Throws if console or page errors were seen since the last call. */
 function assertNoProblems() {
-  if (problems.length) throw new Error(problems.splice(0).join('\n'));
+  problems.assertNone();
 }
 
 const page = await context.newPage();
@@ -250,8 +147,4 @@ await test('the page works inside an iframe', async () => {
 
 await browser.close();
 server.close();
-const passed = results.filter((r) => r.ok).length;
-const failed = results.length - passed;
-console.log(`screenshots in ${artifacts}`);
-console.log(`${passed} passed, ${failed} failed`);
-process.exit(failed ? 1 : 0);
+finish(`screenshots in ${artifacts}`);

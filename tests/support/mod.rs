@@ -7,3 +7,14 @@
 pub mod gen;
 pub mod harness;
 pub mod reference;
+
+/// A count from the environment variable `name` (native only; tests use it to scale their work),
+/// else `default`.
+pub fn env_usize(name: &str, default: usize) -> usize {
+    #[cfg(not(target_arch = "wasm32"))]
+    if let Some(v) = std::env::var(name).ok().and_then(|v| v.parse().ok()) {
+        return v;
+    }
+    let _ = name;
+    default
+}

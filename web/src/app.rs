@@ -7,13 +7,15 @@ use cablenav::report::VerifyReport;
 use cablenav::Scenario;
 use leptos::prelude::*;
 
-use crate::logic::{self, fmt_exact, fmt_num, Section, StripModel, Tick};
+use crate::logic::{self, fmt_num, Section, StripModel};
+use crate::plots::strip::Strip;
 use crate::presets::PRESETS;
+use crate::workbench::Workbench;
 
 /// A value shared by reference inside a memo; two are equal only if they are the same
 /// computation, so the core's types need not implement `PartialEq`.
 #[derive(Debug)]
-struct Shared<T>(Arc<T>);
+pub(crate) struct Shared<T>(pub(crate) Arc<T>);
 
 impl<T> Clone for Shared<T> {
     fn clone(&self) -> Self {
@@ -28,23 +30,29 @@ impl<T> PartialEq for Shared<T> {
 }
 
 impl<T> Shared<T> {
-    fn new(value: T) -> Self {
+    pub(crate) fn new(value: T) -> Self {
         Shared(Arc::new(value))
     }
 }
 
-type Parsed = Shared<Result<Scenario, String>>;
-type Verified = Shared<Option<Result<VerifyReport, String>>>;
+pub(crate) type Parsed = Shared<Result<Scenario, String>>;
+pub(crate) type Verified = Shared<Option<Result<VerifyReport, String>>>;
 
 /// The whole page.
 #[component]
 pub fn App() -> impl IntoView {
-    let preset = RwSignal::new(0usize);
+    // Where the page starts: a shared link, the autosave, or the first preset (crate::persist).
+    let boot = crate::persist::boot();
+    let embed = boot.embed;
+    let preset = RwSignal::new(boot.preset);
     // The scenario JSON being analysed: a preset's text, or the user's edit of it.
-    let source = RwSignal::new(PRESETS[0].json.to_string());
+    let source = RwSignal::new(boot.source);
     let trajectory = RwSignal::new(0usize);
     // Where `source` came from: a preset's id, or "edited" (shown as `data-origin` for tests).
-    let origin = RwSignal::new(PRESETS[0].id);
+    let origin = RwSignal::new(boot.origin);
+    crate::persist::keep(source, origin, preset, embed);
+    // The path the planner found for the current scenario, if any.
+    let planned = RwSignal::new(None);
 
     let parsed: Memo<Parsed> = Memo::new(move |_| Shared::new(logic::parse_scenario(&source.get())));
     let verified: Memo<Verified> = Memo::new(move |_| {
@@ -69,18 +77,31 @@ pub fn App() -> impl IntoView {
         origin.set("edited");
     };
 
+    let note = boot.note.map(|n| view! { <p class="error" role="alert">{n}</p> });
     view! {
-        <header>
+        <header class:embed=embed>
             <h1>"cablenav"</h1>
             <p class="tagline">"Exact feasible intervals along cable-robot trajectories"</p>
         </header>
-        <main>
+        <main class:embed=embed data-embed=embed.to_string()>
+            {note}
             <section class="controls">
-                <PresetPicker preset on_pick=pick_preset />
+                {(!embed).then(|| view! { <PresetPicker preset on_pick=pick_preset /> })}
                 <TrajectoryPicker parsed trajectory />
             </section>
             <Outcome parsed verified trajectory origin />
-            <Editor source on_apply=apply_edit />
+            <Workbench parsed verified trajectory planned />
+            {if embed {
+                view! { <crate::editor::share::OpenFull source origin /> }.into_any()
+            } else {
+                view! {
+                    <crate::editor::ScenarioEditor source origin />
+                    <Editor source on_apply=apply_edit />
+                    <crate::editor::share::SharePanel source origin />
+                    <crate::help::Help />
+                }
+                .into_any()
+            }}
         </main>
     }
 }
@@ -103,7 +124,7 @@ fn PresetPicker(preset: RwSignal<usize>, on_pick: impl Fn(usize) + 'static) -> i
                 {PRESETS
                     .iter()
                     .map(|p| view! { <option value=p.id selected=move || PRESETS[preset.get()].id == p.id>
-                            {p.id}
+                            {crate::presets::label(p.id)}
                         </option> })
                     .collect_view()}
             </select>
@@ -209,87 +230,6 @@ fn ErrorText(prefix: &'static str, message: String) -> impl IntoView {
             <strong>{format!("{prefix} error: ")}</strong>
             {message}
         </p>
-    }
-}
-
-const STRIP_W: f64 = 1000.0;
-const STRIP_Y: f64 = 6.0;
-const STRIP_H: f64 = 36.0;
-
-/// The horizontal strip over t ∈ [0, 1].
-#[component]
-fn Strip(model: StripModel) -> impl IntoView {
-    let axis = [0.0, 0.25, 0.5, 0.75, 1.0];
-    view! {
-        <svg
-            data-testid="strip"
-            class="strip"
-            viewBox=format!("-12 0 {} 64", STRIP_W + 24.0)
-            role="img"
-            aria-label="feasibility along the trajectory, t from 0 to 1"
-        >
-            {model.sections.iter().map(|s| view! { <SectionRect section=s.clone() /> }).collect_view()}
-            {model.ticks.iter().map(|t| view! { <TickMark tick=t.clone() /> }).collect_view()}
-            {axis
-                .iter()
-                .map(|&t| {
-                    view! {
-                        <text class="axis" x=t * STRIP_W y=STRIP_Y + STRIP_H + 16.0 text-anchor="middle">
-                            {fmt_num(t)}
-                        </text>
-                    }
-                })
-                .collect_view()}
-        </svg>
-        {(!model.gaps.is_empty())
-            .then(|| {
-                let gaps = model
-                    .gaps
-                    .iter()
-                    .map(|g| format!("[{}, {}]", fmt_num(g[0]), fmt_num(g[1])))
-                    .collect::<Vec<_>>()
-                    .join(", ");
-                view! { <p class="error">{format!("Not covered by the report: t ∈ {gaps}")}</p> }
-            })}
-    }
-}
-
-/// One section of the strip.
-#[component]
-fn SectionRect(section: Section) -> impl IntoView {
-    let kind = section.kind.as_str();
-    let title = format!("{kind}: t ∈ [{}, {}]", fmt_num(section.t0), fmt_num(section.t1));
-    view! {
-        <rect
-            data-testid="section"
-            data-kind=kind
-            data-t0=fmt_exact(section.t0)
-            data-t1=fmt_exact(section.t1)
-            class=kind
-            x=section.t0 * STRIP_W
-            y=STRIP_Y
-            width=((section.t1 - section.t0) * STRIP_W).max(0.0)
-            height=STRIP_H
-        >
-            <title>{title}</title>
-        </rect>
-    }
-}
-
-/// One boundary tick with its tooltip.
-#[component]
-fn TickMark(tick: Tick) -> impl IntoView {
-    let x = tick.t * STRIP_W;
-    view! {
-        <g data-testid="boundary" data-t=fmt_exact(tick.t) class=format!("tick enters-{}", tick.enters)>
-            <line x1=x x2=x y1=STRIP_Y - 4.0 y2=STRIP_Y + STRIP_H + 4.0 />
-            // A wider invisible target carries the tooltip, so it is easy to hover. (The <title>
-            // must be an only child: leptos's view! makes an ambiguous <title> among siblings
-            // an HTML element, which browsers do not show as an SVG tooltip.)
-            <rect class="hover" x=x - 5.0 y=0 width=10 height=STRIP_H + 2.0 * STRIP_Y>
-                <title>{tick.label.clone()}</title>
-            </rect>
-        </g>
     }
 }
 

@@ -1,11 +1,5 @@
-//! The cablenav web page (Leptos, client-side rendering). See `app` for the components and
-//! `logic` for what they show; all maths is in the `cablenav` core crate.
-
-mod app;
-mod logic;
-mod presets;
+//! The cablenav web page's entry point; the page itself is the `cablenav_web` library.
 
 fn main() {
-    console_error_panic_hook::set_once();
-    leptos::mount::mount_to_body(app::App);
+    cablenav_web::start();
 }

@@ -13,6 +13,18 @@ pub struct Preset {
 /// `cdpr7-box`, `cdpr7-tree` first, then the others by name. The first is loaded on start.
 pub const PRESETS: &[Preset] = include!(concat!(env!("OUT_DIR"), "/presets.rs"));
 
+/// The name the picker shows for preset `id` (the id itself for a file without one).
+pub fn label(id: &str) -> &str {
+    match id {
+        "cdpr7" => "7-cable (thesis Table 3.1)",
+        "cdpr7-box" => "7-cable + box",
+        "cdpr7-tree" => "7-cable + tree",
+        "robocrane" => "Robocrane (NIST)",
+        "blank" => "Blank (8-cable frame, to start from)",
+        other => other,
+    }
+}
+
 /// The preset with this id, if any.
 pub fn find(id: &str) -> Option<usize> {
     PRESETS.iter().position(|p| p.id == id)
@@ -28,5 +40,10 @@ mod tests {
         assert_eq!(ids[..3], ["cdpr7", "cdpr7-box", "cdpr7-tree"]);
         assert_eq!(find("cdpr7-box"), Some(1));
         assert_eq!(find("nope"), None);
+        // the five presets of the page, each with its own label
+        for id in ["cdpr7", "cdpr7-box", "cdpr7-tree", "robocrane", "blank"] {
+            assert!(find(id).is_some(), "{id}");
+            assert_ne!(label(id), id);
+        }
     }
 }

@@ -1,0 +1,113 @@
+//! The structure matrix along a motion, as polynomials: the numerators of its columns over the
+//! motion's weight w, and the minors the wrench conditions are written in. Shared by the 6-cable
+//! tension conditions and the m-cable closure and static-feasibility conditions.
+
+use super::Sweep;
+use crate::model::{PointFrame, Wrench};
+use crate::poly::Bern;
+use nalgebra::Vector3;
+
+/// A motion's polynomials on a sub-interval of λ (all of [0, 1] or a piece being refined),
+/// re-expanded there so that error bounds scale with the local magnitudes.
+#[derive(Debug, Clone)]
+pub(crate) struct Local {
+    /// P̂ = p·w.
+    pub(crate) position: [Bern; 3],
+    /// M̂ = R·w.
+    pub(crate) rotation: [[Bern; 3]; 3],
+    /// w.
+    pub(crate) weight: Bern,
+    /// (base anchor, s̃ = s·w) per cable.
+    pub(crate) cables: Vec<(Vector3<f64>, [Bern; 3])>,
+}
+
+impl Local {
+    pub(crate) fn of(sweep: &Sweep) -> Local {
+        let m = &sweep.motion;
+        Local {
+            position: m.position.clone(),
+            rotation: m.rotation.clone(),
+            weight: m.weight.clone(),
+            cables: sweep.cables.iter().map(|c| (c.base, [c.s[0].p.clone(), c.s[1].p.clone(), c.s[2].p.clone()])).collect(),
+        }
+    }
+
+    pub(crate) fn restrict(&self, a: f64, b: f64) -> Local {
+        let r = |p: &Bern| p.restrict(a, b);
+        Local {
+            position: self.position.each_ref().map(r),
+            rotation: self.rotation.each_ref().map(|row| row.each_ref().map(r)),
+            weight: r(&self.weight),
+            cables: self.cables.iter().map(|(base, s)| (*base, s.each_ref().map(r))).collect(),
+        }
+    }
+}
+
+/// Numerators of the columns of Ñ: entry [row][cable], rows 0–2 over w, rows 3–5 over w².
+pub(crate) fn structure_numerators(m: &Local, wrench: &Wrench) -> [Vec<Bern>; 6] {
+    let w = &m.weight;
+    // c̃ = c·w, the application point.
+    let c: [Bern; 3] = [0, 1, 2].map(|i| {
+        let p = m.position[i].clone();
+        match wrench.frame {
+            PointFrame::World => p.add(&w.scale(wrench.point[i])),
+            PointFrame::Platform => (0..3).fold(p, |acc, j| acc.add(&m.rotation[i][j].scale(wrench.point[j]))),
+        }
+    });
+    let mut rows: [Vec<Bern>; 6] = Default::default();
+    for (base, s) in &m.cables {
+        // r̃ = a·w − c̃; (x − c) × s = r × s because s × s = 0.
+        let r: [Bern; 3] = [0, 1, 2].map(|i| w.scale(base[i]).sub(&c[i]));
+        let moment = [
+            r[1].mul(&s[2]).sub(&r[2].mul(&s[1])),
+            r[2].mul(&s[0]).sub(&r[0].mul(&s[2])),
+            r[0].mul(&s[1]).sub(&r[1].mul(&s[0])),
+        ];
+        for k in 0..3 {
+            rows[k].push(s[k].clone());
+        }
+        for (k, mk) in moment.into_iter().enumerate() {
+            rows[k + 3].push(mk);
+        }
+    }
+    rows
+}
+
+/// The 5×5 minors of the six-row matrix `n` restricted to the columns `cols` (in that order):
+/// entry j is the minor without row j. Laplace expansion along the last column with the
+/// determinants of all row subsets memoised (bit masks).
+pub(crate) fn minors5(n: &[Vec<Bern>; 6], cols: &[usize; 5]) -> [Bern; 6] {
+    let mut det: Vec<Option<Bern>> = vec![None; 64];
+    det[0] = Some(Bern::constant(1.0));
+    // Subsets in order of size: those of size k use the first k of `cols`.
+    let mut masks: Vec<u32> = (1..64u32).filter(|m| m.count_ones() <= 5).collect();
+    masks.sort_by_key(|m| m.count_ones());
+    for mask in masks {
+        let k = mask.count_ones() as usize;
+        let c = cols[k - 1];
+        let mut acc: Option<Bern> = None;
+        for (pos, row) in (0..6).filter(|r| mask & (1 << r) != 0).enumerate() {
+            let Some(sub) = det[(mask & !(1 << row)) as usize].as_ref() else { continue };
+            let term = n[row][c].mul(sub);
+            let negative = (pos + k - 1) % 2 == 1;
+            acc = Some(match (acc, negative) {
+                (None, false) => term,
+                (None, true) => term.scale(-1.0),
+                (Some(a), false) => a.add(&term),
+                (Some(a), true) => a.sub(&term),
+            });
+        }
+        det[mask as usize] = acc;
+    }
+    std::array::from_fn(|j| det[(63 & !(1u32 << j)) as usize].clone().unwrap_or_else(|| Bern::constant(0.0)))
+}
+
+
+/// det [Ñ_S | x] for the 5 columns S whose `minors5` are `minors`, x a sixth column: expansion
+/// along the last column, Σ_j (−1)^(j+5) x_j M_j.
+pub(crate) fn det_with(minors: &[Bern; 6], x: &[&Bern; 6]) -> Bern {
+    (0..6).fold(Bern::constant(0.0), |acc, j| {
+        let t = x[j].mul(&minors[j]);
+        if j % 2 == 1 { acc.add(&t) } else { acc.sub(&t) }
+    })
+}

@@ -1,0 +1,259 @@
+//! Wrench feasibility of a 6-cable robot as exact conditions: cable i's tension stays within its
+//! lower (upper) bound for every wrench of the ellipsoid W (Bohigas et al. §3).
+//!
+//! Along a motion every quantity is a polynomial in λ once denominators are cleared (the
+//! derivation is `docs/wrench.md`, "Exact intervals"): with the unnormalised structure matrix Ñ
+//! (columns [s̃_i ; r̃_i × s̃_i], rows scaled by powers of the motion's weight w), its determinant
+//! Δ, the cofactors of each column, α_i = (adj Ñ · D_w w0)_i and β_i = ĉ_iᵀ D_w E⁻¹ D_w ĉ_i ≥ 0,
+//!
+//!   f0,i = ρ_i α_i / Δ,   v_ii = ρ_i √β_i / |Δ|,   ρ_i = √P_i / w,  P_i = ‖s̃_i‖².
+//!
+//! On a piece where sign Δ = σ is constant, a_i = σ α_i and the bounds become
+//! √P_i (a_i ∓ √β_i) ≷ f·w·|Δ|, which the case splits below turn into strict polynomial sign
+//! conditions without square roots. Singular poses (Δ = 0) violate both bounds of every cable
+//! whose adjugate row does not vanish there; they always lie inside a violated interval.
+
+use std::rc::Rc;
+
+use super::algebra::H;
+use super::primitives::{all_of, any_of, GT, LT};
+use super::structure::{minors5, structure_numerators, Local};
+use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
+use crate::model::Wrench;
+use crate::poly::{Bern, Partition, Truth};
+
+/// Which tension bound a [`CableTension`] condition is about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Side {
+    /// f0,i − v_ii > f_min,i.
+    Lower,
+    /// f0,i + v_ii < f_max,i.
+    Upper,
+}
+
+/// One tension bound of one cable of a 6-cable robot, over the whole wrench ellipsoid.
+#[derive(Debug, Clone)]
+pub struct CableTension {
+    /// The cable (0-based, < 6).
+    pub cable: usize,
+    /// Which bound.
+    pub side: Side,
+    /// The bound's value (f_min,i or f_max,i; finite).
+    pub bound: f64,
+    /// The wrench set, shared by the twelve conditions of a robot.
+    pub wrench: Rc<Wrench>,
+}
+
+/// The polynomials the tension conditions of one motion share, on one λ-interval.
+#[derive(Debug, Clone)]
+pub struct TensionPolys {
+    /// The λ-interval [c, d] they are expanded on (λ = c + (d − c)·x).
+    span: (f64, f64),
+    /// The motion's polynomials there.
+    local: Local,
+    /// Δ = det Ñ.
+    delta: Bern,
+    /// (i, α_i, β_i) for the cables expanded here (all six on a whole motion, one on a refined
+    /// piece).
+    columns: Vec<(usize, Bern, Bern)>,
+    /// P_i = ‖s̃_i‖² per cable.
+    len2: Vec<Bern>,
+}
+
+impl TensionPolys {
+    /// The shared polynomials of `sweep` (whose robot has exactly 6 cables) for `wrench`.
+    pub fn new(sweep: &Sweep, wrench: &Wrench) -> TensionPolys {
+        TensionPolys::on(Local::of(sweep), (0.0, 1.0), wrench, &[0, 1, 2, 3, 4, 5])
+    }
+
+    /// α_i and β_i of cable i, if expanded here.
+    fn column(&self, i: usize) -> Option<(&Bern, &Bern)> {
+        self.columns.iter().find(|c| c.0 == i).map(|c| (&c.1, &c.2))
+    }
+
+    /// Cable i's polynomials (and Δ) re-expanded on [c, d] ⊆ [0, 1].
+    fn refined(&self, (c, d): (f64, f64), wrench: &Wrench, i: usize) -> TensionPolys {
+        let (c0, d0) = self.span;
+        let local = self.local.restrict((c - c0) / (d0 - c0), (d - c0) / (d0 - c0));
+        TensionPolys::on(local, (c, d), wrench, &[i])
+    }
+
+    fn on(local: Local, span: (f64, f64), wrench: &Wrench, cables: &[usize]) -> TensionPolys {
+        let w = &local.weight;
+        let n = structure_numerators(&local, wrench);
+        let w2 = w.mul(w);
+        // D_w w0 and the row weights w^{k_j}.
+        let row_weight = |j: usize| if j < 3 { w } else { &w2 };
+        let mut delta: Option<Bern> = None;
+        let mut columns = Vec::with_capacity(cables.len());
+        for &i in cables {
+            let others: Vec<usize> = (0..6).filter(|&c| c != i).collect();
+            let minors = minors5(&n, &[others[0], others[1], others[2], others[3], others[4]]);
+            // Cofactors C_ji = (−1)^{i+j} M_ji, and g_j = w^{k_j} C_ji.
+            let g: Vec<Bern> = (0..6)
+                .map(|j| {
+                    let c = if (i + j) % 2 == 0 { minors[j].clone() } else { minors[j].scale(-1.0) };
+                    c.mul(row_weight(j))
+                })
+                .collect();
+            if delta.is_none() {
+                let mut d = Bern::constant(0.0);
+                for j in 0..6 {
+                    let c = if (i + j) % 2 == 0 { minors[j].clone() } else { minors[j].scale(-1.0) };
+                    d = d.add(&n[j][i].mul(&c));
+                }
+                delta = Some(d);
+            }
+            let a = (0..6).fold(Bern::constant(0.0), |acc, j| acc.add(&g[j].scale(wrench.nominal[j])));
+            let mut b = Bern::constant(0.0);
+            for j in 0..6 {
+                // E⁻¹ symmetric: diagonal once, off-diagonal twice.
+                let mut row = g[j].scale(wrench.ellipsoid_inv[(j, j)]);
+                for k in (j + 1)..6 {
+                    row = row.add(&g[k].scale(2.0 * wrench.ellipsoid_inv[(j, k)]));
+                }
+                b = b.add(&g[j].mul(&row));
+            }
+            columns.push((i, a, b));
+        }
+        let len2 = local.cables.iter().map(|(_, s)| s[0].mul(&s[0]).add(&s[1].mul(&s[1])).add(&s[2].mul(&s[2]))).collect();
+        TensionPolys { span, delta: delta.unwrap_or_else(|| Bern::constant(0.0)), columns, len2, local }
+    }
+}
+
+/// A polynomial as a fraction with no denominator, for the sign-condition macros.
+fn h(p: Bern) -> H {
+    H { p, k: 0 }
+}
+
+/// `first` and then, unless that is already false everywhere, `rest`.
+fn and_then(first: Partition, rest: impl FnOnce() -> Partition) -> Partition {
+    if first.is_all(Truth::False) {
+        first
+    } else {
+        first.and(&rest())
+    }
+}
+
+/// How many times undecided pieces are re-expanded locally.
+const REFINE_ROUNDS: usize = 3;
+
+impl CableTension {
+    /// Where the bound is violated on `t`'s span (as a partition of [0, 1] over it): violated
+    /// unless (Δ > 0 and it holds with σ = +1) or (Δ < 0 and with σ = −1) — so also wherever Δ
+    /// vanishes identically.
+    fn violated_on(&self, t: &TensionPolys, tol: f64) -> Partition {
+        let holds = any_of!(
+            and_then(all_of!(tol; h(t.delta.clone()) => GT), || self.holds(t, 1.0, tol)),
+            and_then(all_of!(tol; h(t.delta.clone()) => LT), || self.holds(t, -1.0, tol)),
+        );
+        holds.not()
+    }
+
+    /// Where the bound holds over the whole ellipsoid, assuming sign Δ = `sigma` (the caller
+    /// restricts to those pieces).
+    fn holds(&self, t: &TensionPolys, sigma: f64, tol: f64) -> Partition {
+        let i = self.cable;
+        let Some((alpha, beta)) = t.column(i) else { return Partition::constant(Truth::Unknown) };
+        let a = alpha.scale(sigma);
+        let abs_delta = t.delta.scale(sigma);
+        let p = &t.len2[i];
+        // 4 P² a² β, the square of the cross term 2 P a √β.
+        let cross = || {
+            let pa = p.mul(&a);
+            pa.mul(&pa).mul(beta).scale(4.0)
+        };
+        let a2_minus_b = || a.mul(&a).sub(beta);
+        // f·w·|Δ|: the bound with the denominators of ρ and Δ cleared.
+        let scaled_bound = || t.local.weight.mul(&abs_delta).scale(self.bound);
+        match self.side {
+            // √P (a − √β) > k with k ≥ 0: a > √β, then square.
+            Side::Lower if self.bound == 0.0 => all_of!(tol; h(a.clone()) => GT, h(a2_minus_b()) => GT),
+            Side::Lower => {
+                let k = scaled_bound();
+                let l = || p.mul(&a.mul(&a).add(beta)).sub(&k.mul(&k));
+                all_of!(tol;
+                    h(a.clone()) => GT,
+                    h(a2_minus_b()) => GT,
+                    h(l()) => GT,
+                    h({ let l = l(); l.mul(&l).sub(&cross()) }) => GT,
+                )
+            }
+            // √P (a + √β) < K; with M = K² − P (a² + β): for a ≥ 0 iff M > 2 P a √β; for a < 0
+            // it holds when a + √β ≤ 0, else iff M > −2 P |a| √β.
+            Side::Upper => {
+                let kk = scaled_bound();
+                let m = || kk.mul(&kk).sub(&p.mul(&a.mul(&a).add(beta)));
+                any_of!(
+                    all_of!(tol; h(a.clone()) => GT, h(m()) => GT, h({ let m = m(); m.mul(&m).sub(&cross()) }) => GT),
+                    and_then(all_of!(tol; h(a.clone()) => LT), || any_of!(
+                        all_of!(tol; h(a2_minus_b()) => GT),
+                        all_of!(tol; h(m()) => GT),
+                        all_of!(tol; h({ let m = m(); cross().sub(&m.mul(&m)) }) => GT),
+                    )),
+                )
+            }
+        }
+    }
+}
+
+impl Condition for CableTension {
+    fn kind(&self) -> Kind {
+        Kind::Tension
+    }
+
+    fn label(&self) -> String {
+        let side = match self.side {
+            Side::Lower => "lower",
+            Side::Upper => "upper",
+        };
+        format!("cable {} tension {side} bound", self.cable + 1)
+    }
+
+    fn violation(&self, sweep: &mut Sweep) -> Partition {
+        let tol = sweep.tol;
+        let polys = match &sweep.tension {
+            Some(p) => Rc::clone(p),
+            None => {
+                let p = Rc::new(TensionPolys::new(sweep, &self.wrench));
+                sweep.tension = Some(Rc::clone(&p));
+                p
+            }
+        };
+        let mut out = self.violated_on(&polys, tol);
+        // Undecided pieces wider than tol: re-expand the motion around each and decide again,
+        // where error bounds follow the local (often much smaller) magnitudes.
+        for _ in 0..REFINE_ROUNDS {
+            let wide: Vec<(f64, f64)> = out
+                .intervals()
+                .into_iter()
+                .filter(|&(a, b, t)| t == Truth::Unknown && b - a > tol)
+                .map(|(a, b, _)| (a, b))
+                .collect();
+            if wide.is_empty() {
+                break;
+            }
+            for (a, b) in wide {
+                let span = ((a - (b - a)).max(0.0), (b + (b - a)).min(1.0));
+                let local = polys.refined(span, &self.wrench, self.cable);
+                let inner = self.violated_on(&local, tol / (span.1 - span.0));
+                out = out.splice((a, b), &inner, span);
+            }
+        }
+        out
+    }
+
+    fn check(&self, at: &PoseCables) -> PoseCheck {
+        match at.tension_ranges(&self.wrench) {
+            None => PoseCheck { violated: true, distance: None },
+            Some(ranges) => {
+                let r = ranges[self.cable];
+                let margin = match self.side {
+                    Side::Lower => r.nominal - r.spread - self.bound,
+                    Side::Upper => self.bound - r.nominal - r.spread,
+                };
+                PoseCheck { violated: !(margin > 0.0), distance: Some(margin) }
+            }
+        }
+    }
+}

@@ -1,0 +1,375 @@
+//! Import of CASPR robot models (the XML "bodies" and "cables" files of CASPR, the Cable-robot
+//! Analysis and Simulation Platform for Research) into a `cablenav-scenario/1` scenario.
+//!
+//! What is read:
+//!
+//! * bodies: exactly one rigid link (the platform) with a `SPATIAL_EULER_XYZ` joint on the
+//!   base (parent 0). Its `q_initial = "x y z a b g"` becomes the pose `initial`: position
+//!   (x, y, z) plus the parent `location`, orientation R = Rx(a)·Ry(b)·Rz(g) with the angles in
+//!   radians (written as `euler_xyz_deg`). Multi-link robots (arms, trees) are refused with a
+//!   message that says so.
+//! * cables: the `default_cable_set` (or the only set); every `cable_*` element with two
+//!   attachments, one on link 0 (the base anchor, world frame) and one on link 1 (the platform
+//!   anchor). With `attachment_reference="com"` the platform location is relative to the
+//!   link's centre of mass, so `com_location` is added; with `"joint"` it is used as is.
+//!   `force_min`/`force_max` become the tension bounds, `diameter` the robot's diameter (the
+//!   largest, if they differ).
+//!
+//! The scenario also gets one trajectory, `hold initial`, that stays at the initial pose, as a
+//! starting point for editing. Everything else (clearances, obstacles, length bounds) is left at
+//! the format's defaults. Errors name the file (`bodies` or `cables`) as the field and give the
+//! XML line.
+
+use roxmltree::{Document, Node, ParsingOptions};
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+use super::{Scenario, FORMAT};
+use crate::error::{Error, Result};
+
+/// An imported model: the scenario JSON and what the user should know about the conversion.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Import {
+    /// The scenario, as `cablenav-scenario/1` JSON text (pretty-printed).
+    pub json: String,
+    /// Notes on the conversion (values combined or left out).
+    pub notes: Vec<String>,
+}
+
+/// Converts a CASPR bodies file and cables file into scenario JSON called `name`.
+pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import> {
+    let platform = platform(bodies_xml)?;
+    let cables = cables(cables_xml, &platform)?;
+    let mut notes = Vec::new();
+
+    let diameters: Vec<f64> = cables.iter().filter_map(|c| c.diameter).collect();
+    let diameter = diameters.iter().copied().fold(None, |m: Option<f64>, d| Some(m.map_or(d, |m| m.max(d))));
+    if let Some(d) = diameter {
+        if diameters.iter().any(|x| *x != d) {
+            notes.push(format!("cable diameters differ; robot.diameter is the largest, {d}"));
+        }
+    }
+    let min = combine(cables.iter().map(|c| c.force_min));
+    let max = combine(cables.iter().map(|c| c.force_max));
+    let per_cable = min.is_none() && cables.iter().any(|c| c.force_min.is_some())
+        || max.is_none() && cables.iter().any(|c| c.force_max.is_some());
+    let tension = (!per_cable && (min.is_some() || max.is_some())).then(|| OutBounds { min: min.clone(), max: max.clone() });
+
+    let out = OutScenario {
+        format: FORMAT,
+        name,
+        robot: OutRobot {
+            cables: cables
+                .iter()
+                .map(|c| OutCable {
+                    base: c.base,
+                    platform: c.platform,
+                    tension: per_cable.then_some(OutCableBounds { min: c.force_min, max: c.force_max }),
+                })
+                .collect(),
+            tension,
+            diameter,
+        },
+        poses: BTreeMap::from([(
+            "initial",
+            OutPose { position: platform.position, euler_xyz_deg: platform.euler_rad.map(f64::to_degrees) },
+        )]),
+        trajectories: vec![OutTrajectory {
+            name: "hold initial",
+            translation: OutLine { line: [platform.position, platform.position] },
+            orientation: OutSlerp { slerp: ["initial", "initial"] },
+        }],
+    };
+    let json = serde_json::to_string_pretty(&out).map_err(|e| Error::new("", format!("internal: {e}")))?;
+    Ok(Import { json, notes })
+}
+
+/// Converts and validates: the scenario of [`to_json`], parsed by [`Scenario::from_json`].
+pub fn import(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Scenario> {
+    Scenario::from_json(&to_json(name, bodies_xml, cables_xml)?.json)
+}
+
+/// Which of the two files an XML text is, by its root element: `"bodies"`, `"cables"`, or
+/// `None` (not XML, or another CASPR file such as trajectories).
+pub fn kind(xml: &str) -> Option<&'static str> {
+    let doc = parse_xml(xml).ok()?;
+    match doc.root_element().tag_name().name() {
+        "bodies_system" => Some("bodies"),
+        "cables" => Some("cables"),
+        _ => None,
+    }
+}
+
+/// One value for all cables when they agree, one per cable when all give one, else `None`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(untagged)]
+enum OneOrEach {
+    One(f64),
+    Each(Vec<f64>),
+}
+
+fn combine(values: impl Iterator<Item = Option<f64>>) -> Option<OneOrEach> {
+    let all: Option<Vec<f64>> = values.collect();
+    let all = all?;
+    let first = *all.first()?;
+    Some(if all.iter().all(|x| *x == first) { OneOrEach::One(first) } else { OneOrEach::Each(all) })
+}
+
+#[derive(Serialize)]
+struct OutScenario<'a> {
+    format: &'static str,
+    name: &'a str,
+    robot: OutRobot,
+    poses: BTreeMap<&'static str, OutPose>,
+    trajectories: Vec<OutTrajectory>,
+}
+
+#[derive(Serialize)]
+struct OutRobot {
+    cables: Vec<OutCable>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tension: Option<OutBounds>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    diameter: Option<f64>,
+}
+
+#[derive(Serialize)]
+struct OutCable {
+    base: [f64; 3],
+    platform: [f64; 3],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tension: Option<OutCableBounds>,
+}
+
+#[derive(Serialize)]
+struct OutBounds {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    min: Option<OneOrEach>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    max: Option<OneOrEach>,
+}
+
+#[derive(Serialize)]
+struct OutCableBounds {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    min: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    max: Option<f64>,
+}
+
+#[derive(Serialize)]
+struct OutPose {
+    position: [f64; 3],
+    euler_xyz_deg: [f64; 3],
+}
+
+#[derive(Serialize)]
+struct OutTrajectory {
+    name: &'static str,
+    translation: OutLine,
+    orientation: OutSlerp,
+}
+
+#[derive(Serialize)]
+struct OutLine {
+    line: [[f64; 3]; 2],
+}
+
+#[derive(Serialize)]
+struct OutSlerp {
+    slerp: [&'static str; 2],
+}
+
+/// The platform link as the cables need it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Platform {
+    /// Initial position (parent location + q_initial's x, y, z).
+    position: [f64; 3],
+    /// Initial XYZ Euler angles in radians.
+    euler_rad: [f64; 3],
+    /// The centre of mass in the link frame (for `attachment_reference="com"`).
+    com: [f64; 3],
+}
+
+/// One cable as read.
+#[derive(Debug, Clone, PartialEq)]
+struct RawCable {
+    base: [f64; 3],
+    platform: [f64; 3],
+    force_min: Option<f64>,
+    force_max: Option<f64>,
+    diameter: Option<f64>,
+}
+
+/// Parses XML; CASPR files start with a `<!DOCTYPE ... SYSTEM "...dtd">`, which is allowed (an
+/// external DTD is never loaded).
+fn parse_xml(text: &str) -> std::result::Result<Document<'_>, roxmltree::Error> {
+    Document::parse_with_options(text, ParsingOptions { allow_dtd: true, ..ParsingOptions::default() })
+}
+
+/// Parses `text` as XML for `file`, with the root element `root`.
+fn document<'a>(file: &str, text: &'a str, root: &str) -> Result<Document<'a>> {
+    let doc = parse_xml(text).map_err(|e| Error::new(file, format!("not well-formed XML: {e}")))?;
+    let got = doc.root_element().tag_name().name();
+    if got != root {
+        return Err(Error::new(
+            file,
+            format!("the root element is <{got}>, expected <{root}> (is this the CASPR {file} file?)"),
+        ));
+    }
+    Ok(doc)
+}
+
+/// "line N" of a node, for messages.
+fn line(node: Node) -> String {
+    format!("line {}", node.document().text_pos_at(node.range().start).row)
+}
+
+/// Element children of `node` called `tag`.
+fn children<'a, 'i>(node: Node<'a, 'i>, tag: &'a str) -> impl Iterator<Item = Node<'a, 'i>> {
+    node.children().filter(move |c| c.is_element() && c.tag_name().name() == tag)
+}
+
+/// The one child `tag` of `node`, if any.
+fn child<'a, 'i>(node: Node<'a, 'i>, tag: &'a str) -> Option<Node<'a, 'i>> {
+    children(node, tag).next()
+}
+
+/// `N` finite numbers separated by white space, from `text` at `node` (for messages).
+fn numbers<const N: usize>(file: &str, node: Node, what: &str, text: &str) -> Result<[f64; N]> {
+    let parts: Vec<&str> = text.split_whitespace().collect();
+    if parts.len() != N {
+        return Err(Error::new(file, format!("{}: {what} needs {N} numbers, got {:?}", line(node), text.trim())));
+    }
+    let mut out = [0.0; N];
+    for (slot, p) in out.iter_mut().zip(&parts) {
+        *slot = p
+            .parse::<f64>()
+            .ok()
+            .filter(|x| x.is_finite())
+            .ok_or_else(|| Error::new(file, format!("{}: {what}: {p:?} is not a finite number", line(node))))?;
+    }
+    Ok(out)
+}
+
+/// The text of child `tag` of `node` as `N` numbers; `None` when there is no such child.
+fn child_numbers<const N: usize>(file: &str, node: Node, tag: &str) -> Result<Option<[f64; N]>> {
+    match child(node, tag) {
+        None => Ok(None),
+        Some(c) => numbers(file, c, &format!("<{tag}>"), c.text().unwrap_or_default()).map(Some),
+    }
+}
+
+fn platform(xml: &str) -> Result<Platform> {
+    const FILE: &str = "bodies";
+    let doc = document(FILE, xml, "bodies_system")?;
+    let root = doc.root_element();
+    let links = child(root, "links").ok_or_else(|| Error::new(FILE, "no <links> element"))?;
+    let all: Vec<Node> = links.children().filter(|c| c.is_element()).collect();
+    let [link] = all.as_slice() else {
+        return Err(Error::new(
+            FILE,
+            format!(
+                "{} links; only a single rigid platform (one <link_rigid> with a SPATIAL_EULER_XYZ joint on the \
+                 base) can be imported — multi-link robots (arms, trees) are not supported",
+                all.len()
+            ),
+        ));
+    };
+    if link.tag_name().name() != "link_rigid" {
+        return Err(Error::new(FILE, format!("{}: <{}> is not supported, only <link_rigid>", line(*link), link.tag_name().name())));
+    }
+    let joint = child(*link, "joint").ok_or_else(|| Error::new(FILE, format!("{}: the link has no <joint>", line(*link))))?;
+    let kind = joint.attribute("type").unwrap_or_default();
+    if kind != "SPATIAL_EULER_XYZ" {
+        return Err(Error::new(
+            FILE,
+            format!("{}: joint type {kind:?} is not supported; a 6-DoF platform needs SPATIAL_EULER_XYZ", line(joint)),
+        ));
+    }
+    let q: [f64; 6] = match joint.attribute("q_initial") {
+        Some(text) => numbers(FILE, joint, "q_initial", text)?,
+        None => [0.0; 6],
+    };
+    let (parent_location, parent_num) = match child(*link, "parent") {
+        None => ([0.0; 3], 0.0),
+        Some(p) => (
+            child_numbers::<3>(FILE, p, "location")?.unwrap_or([0.0; 3]),
+            child_numbers::<1>(FILE, p, "num")?.map_or(0.0, |[n]| n),
+        ),
+    };
+    if parent_num != 0.0 {
+        return Err(Error::new(FILE, format!("{}: the platform's parent must be the base (link 0), got {parent_num}", line(*link))));
+    }
+    let com = match child(*link, "physical") {
+        Some(ph) => child_numbers::<3>(FILE, ph, "com_location")?.unwrap_or([0.0; 3]),
+        None => [0.0; 3],
+    };
+    Ok(Platform {
+        position: [parent_location[0] + q[0], parent_location[1] + q[1], parent_location[2] + q[2]],
+        euler_rad: [q[3], q[4], q[5]],
+        com,
+    })
+}
+
+fn cables(xml: &str, platform: &Platform) -> Result<Vec<RawCable>> {
+    const FILE: &str = "cables";
+    let doc = document(FILE, xml, "cables")?;
+    let root = doc.root_element();
+    let sets: Vec<Node> = children(root, "cable_set").collect();
+    let set = match root.attribute("default_cable_set") {
+        Some(id) => sets.iter().find(|s| s.attribute("id") == Some(id)).copied().ok_or_else(|| {
+            Error::new(FILE, format!("default_cable_set {id:?} names no <cable_set id=...> in the file"))
+        })?,
+        None => match sets.as_slice() {
+            [only] => *only,
+            _ => return Err(Error::new(FILE, format!("{} cable sets and no default_cable_set to choose one", sets.len()))),
+        },
+    };
+    let mut out = Vec::new();
+    for cable in set.children().filter(|c| c.is_element() && c.tag_name().name().starts_with("cable_")) {
+        let name = cable.attribute("name").map_or_else(|| format!("#{}", out.len() + 1), str::to_owned);
+        let at = format!("cable {name:?} ({})", line(cable));
+        let props = child(cable, "properties");
+        let prop = |tag: &str| -> Result<Option<f64>> {
+            match props {
+                Some(p) => Ok(child_numbers::<1>(FILE, p, tag)?.map(|[x]| x)),
+                None => Ok(None),
+            }
+        };
+        let (force_min, force_max, diameter) = (prop("force_min")?, prop("force_max")?, prop("diameter")?);
+        let attachments: Vec<Node> = child(cable, "attachments").map(|a| children(a, "attachment").collect()).unwrap_or_default();
+        if attachments.len() != 2 {
+            return Err(Error::new(
+                FILE,
+                format!("{at}: {} attachments; only straight cables from the base to the platform (2 attachments) are supported", attachments.len()),
+            ));
+        }
+        let mut base = None;
+        let mut on_platform = None;
+        for a in &attachments {
+            let [link] = child_numbers::<1>(FILE, *a, "link")?
+                .ok_or_else(|| Error::new(FILE, format!("{at}: an attachment has no <link>")))?;
+            let loc = child_numbers::<3>(FILE, *a, "location")?
+                .ok_or_else(|| Error::new(FILE, format!("{at}: an attachment has no <location>")))?;
+            match link {
+                0.0 => base = Some(loc),
+                1.0 => on_platform = Some(loc),
+                l => return Err(Error::new(FILE, format!("{at}: attachment on link {l}; only links 0 (base) and 1 (platform) exist"))),
+            }
+        }
+        let (Some(base), Some(local)) = (base, on_platform) else {
+            return Err(Error::new(FILE, format!("{at}: needs one attachment on link 0 (base) and one on link 1 (platform)")));
+        };
+        let platform_anchor = match cable.attribute("attachment_reference").unwrap_or("joint") {
+            "joint" => local,
+            "com" => [local[0] + platform.com[0], local[1] + platform.com[1], local[2] + platform.com[2]],
+            other => return Err(Error::new(FILE, format!("{at}: attachment_reference {other:?} is not \"joint\" or \"com\""))),
+        };
+        out.push(RawCable { base, platform: platform_anchor, force_min, force_max, diameter });
+    }
+    if out.is_empty() {
+        return Err(Error::new(FILE, "the cable set has no cables"));
+    }
+    Ok(out)
+}

@@ -1,0 +1,347 @@
+// End-to-end test of the page's analysis area (3-D view, plots, exports, planning) in Debian's
+// headless Chromium driven by playwright-core, against the built page (scripts/build-page.sh).
+//   node tests/browser/e2e-view.mjs [PAGE_DIR]      (default: target/page)
+// The page's sections are compared with what the CLI prints for the same scenario
+// (`cablenav verify FILE --json`, the release binary, built if missing). Screenshots go to
+// tests/browser/artifacts/. Ends with "N passed, M failed"; exits 1 on failure.
+
+import { execFileSync } from 'node:child_process';
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { dirname, join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { launchChromium, requirePage, runner, serve } from './harness.mjs';
+
+const here = dirname(fileURLToPath(import.meta.url));
+const root = resolve(here, '..', '..');
+const pageDir = resolve(root, process.argv[2] ?? process.env.PAGE_DIR ?? 'target/page');
+const artifacts = join(here, 'artifacts');
+const scratch = mkdtempSync(join(tmpdir(), 'cablenav-e2e-'));
+const TIMEOUT = 60_000;
+const PLAN_TIMEOUT = 300_000;
+const FRAME_LIMIT_MS = 50;
+
+// ---------- the CLI ----------
+const cliPath = join(root, 'target', 'release', 'cablenav');
+function cli(args) {
+  if (!existsSync(cliPath)) execFileSync('cargo', ['build', '--release', '-q', '--bin', 'cablenav'], { cwd: root, stdio: 'inherit' });
+  return execFileSync(cliPath, args, { cwd: root, encoding: 'utf8' });
+}
+/** What `cablenav verify FILE --trajectory NAME --json` prints, parsed. */
+function cliVerify(file, trajectory) {
+  return JSON.parse(cli(['verify', file, '--trajectory', trajectory, '--json']));
+}
+/** The CLI report's sections as sorted `kind t0 t1` triples. */
+function cliSections(report) {
+  const out = [];
+  for (const kind of ['feasible', 'infeasible', 'uncertain']) for (const [t0, t1] of report[kind]) out.push({ kind, t0, t1 });
+  return out.sort((a, b) => a.t0 - b.t0 || a.t1 - b.t1);
+}
+
+// ---------- page helpers ----------
+/** The strip's sections, sorted. */
+async function stripSections(page) {
+  const s = await page.$$eval('svg[data-testid="strip"] rect[data-testid="section"]', (rects) =>
+    rects.map((r) => ({ kind: r.dataset.kind, t0: Number(r.dataset.t0), t1: Number(r.dataset.t1) })));
+  return s.sort((a, b) => a.t0 - b.t0 || a.t1 - b.t1);
+}
+/** The sections the 3-D view drew the trajectory in (its data-sections), sorted. */
+async function viewSections(page) {
+  const text = await page.getAttribute('canvas[data-testid="view3d"]', 'data-sections');
+  return text.split(' ').filter(Boolean).map((x) => {
+    const [kind, t0, t1] = x.split(':');
+    return { kind, t0: Number(t0), t1: Number(t1) };
+  }).sort((a, b) => a.t0 - b.t0 || a.t1 - b.t1);
+}
+function assertSameSections(got, want, what) {
+  const g = JSON.stringify(got), w = JSON.stringify(want);
+  if (g !== w) throw new Error(`${what}: page ${g}\n  CLI ${w}`);
+}
+async function pick(page, testid, value) {
+  await page.selectOption(`select[data-testid="${testid}"]`, value);
+}
+/** Waits until the result shows preset/edit `origin` and trajectory `index`. */
+async function waitResult(page, origin, index) {
+  await page.waitForSelector(`section[data-testid="result"][data-origin="${origin}"][data-trajectory-index="${index}"] svg[data-testid="strip"]`, { timeout: TIMEOUT });
+}
+/** Waits until the 3-D view has drawn at least `n` times in all. */
+async function waitDraws(page, n) {
+  await page.waitForFunction((n) => Number(document.querySelector('canvas[data-testid="view3d"]')?.dataset.draws ?? 0) >= n, n, { timeout: TIMEOUT });
+}
+async function draws(page) {
+  return Number(await page.getAttribute('canvas[data-testid="view3d"]', 'data-draws'));
+}
+/** Pixel statistics of the WebGL canvas: how many pixels differ from the background, how many
+ * are the page's green and red, and a hash of the image. */
+async function pixels(page) {
+  return page.$eval('canvas[data-testid="view3d"]', (c) => {
+    const k = document.createElement('canvas');
+    k.width = c.width; k.height = c.height;
+    const ctx = k.getContext('2d');
+    ctx.drawImage(c, 0, 0);
+    const d = ctx.getImageData(0, 0, k.width, k.height).data;
+    const bg = [d[0], d[1], d[2]];
+    let drawn = 0, green = 0, red = 0, hash = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      const [r, g, b] = [d[i], d[i + 1], d[i + 2]];
+      if (Math.abs(r - bg[0]) + Math.abs(g - bg[1]) + Math.abs(b - bg[2]) > 24) drawn++;
+      if (g > 110 && r < 90 && b < 110 && g - r > 50) green++;
+      if (r > 150 && g < 90 && b < 90) red++;
+      hash = (hash * 31 + r * 7 + g * 3 + b) | 0;
+    }
+    return { drawn, green, red, hash, total: d.length / 4, width: c.width, height: c.height };
+  });
+}
+/** Clicks `button[data-testid=testid]` and returns the downloaded file's bytes. */
+async function download(page, testid) {
+  const [d] = await Promise.all([page.waitForEvent('download', { timeout: TIMEOUT }), page.click(`[data-testid="${testid}"]`)]);
+  const path = join(scratch, d.suggestedFilename());
+  await d.saveAs(path);
+  return { name: d.suggestedFilename(), bytes: readFileSync(path) };
+}
+
+// ---------- run ----------
+mkdirSync(artifacts, { recursive: true });
+requirePage(pageDir);
+const { test, finish } = runner(15);
+const server = await serve(pageDir);
+const base = `http://127.0.0.1:${server.address().port}`;
+const browser = await launchChromium();
+const context = await browser.newContext({ viewport: { width: 1200, height: 900 }, acceptDownloads: true });
+const problems = [];
+const page = await context.newPage();
+page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
+page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+function assertNoProblems() {
+  if (problems.length) throw new Error(problems.splice(0).join('\n'));
+}
+await page.goto(`${base}/`, { waitUntil: 'load' });
+await waitDraws(page, 1);
+
+await test('7-cable presets: the strip and the 3-D view show the sections the CLI prints', async () => {
+  const done = [];
+  for (const id of ['cdpr7', 'cdpr7-box', 'cdpr7-tree']) {
+    await pick(page, 'preset', id);
+    const trajectories = await page.$$eval('select[data-testid="trajectory"] option', (os) => os.map((o) => [o.value, o.textContent.trim()]));
+    for (const [index, name] of trajectories) {
+      await pick(page, 'trajectory', index);
+      await waitResult(page, id, index);
+      const want = cliSections(cliVerify(`static/scenarios/${id}.json`, name));
+      assertSameSections(await stripSections(page), want, `${id}/${name} strip`);
+      await page.waitForFunction(() => document.querySelector('canvas[data-testid="view3d"]')?.dataset.sections, null, { timeout: TIMEOUT });
+      assertSameSections(await viewSections(page), want, `${id}/${name} 3-D view`);
+      done.push(`${id}/${name}: ${want.map((s) => s.kind[0]).join('')}`);
+    }
+  }
+  assertNoProblems();
+  return done.join(', ');
+});
+
+await test('an edited trajectory verifies as the CLI verifies the edited file', async () => {
+  await pick(page, 'preset', 'cdpr7-tree');
+  await waitResult(page, 'cdpr7-tree', 0);
+  const scenario = JSON.parse(readFileSync(join(root, 'static/scenarios/cdpr7-tree.json'), 'utf8'));
+  // move the linear trajectory's start point (the polynomials' constant terms): y 1.5 → 1.0,
+  // z 1 → 1.5 (the boundary moves from t ≈ 0.69 to ≈ 0.34)
+  scenario.trajectories[0].translation.polynomial[1][0] = 1.0;
+  scenario.trajectories[0].translation.polynomial[2][0] = 1.5;
+  const text = JSON.stringify(scenario, null, 1);
+  const file = join(scratch, 'edited.json');
+  writeFileSync(file, text);
+  await page.click('details.editor summary');
+  await page.fill('textarea[data-testid="source"]', text);
+  await page.click('button[data-testid="apply"]');
+  await waitResult(page, 'edited', 0);
+  const want = cliSections(cliVerify(file, scenario.trajectories[0].name));
+  await page.waitForFunction((w) => document.querySelector('canvas[data-testid="view3d"]')?.dataset.sections.split(' ').length === w, want.length, { timeout: TIMEOUT });
+  assertSameSections(await stripSections(page), want, 'edited strip');
+  assertSameSections(await viewSections(page), want, 'edited 3-D view');
+  await page.click('details.editor summary');
+  assertNoProblems();
+  return want.map((s) => `${s.kind} [${s.t0.toFixed(4)}, ${s.t1.toFixed(4)}]`).join(', ');
+});
+
+await test('the WebGL canvas draws the scene, the sections in green and red, and follows the camera', async () => {
+  await pick(page, 'preset', 'cdpr7-tree');
+  await waitResult(page, 'cdpr7-tree', 0);
+  const n = await draws(page);
+  await page.locator('canvas[data-testid="view3d"]').scrollIntoViewIfNeeded();
+  await waitDraws(page, n);
+  const before = await pixels(page);
+  if (before.drawn < before.total * 0.01) throw new Error(`canvas nearly blank: ${JSON.stringify(before)}`);
+  if (before.green < 20 || before.red < 20) throw new Error(`expected green and red sections drawn: ${JSON.stringify(before)}`);
+  await page.screenshot({ path: join(artifacts, 'view-cdpr7-tree.png'), fullPage: false });
+  // orbit with the mouse
+  const box = await page.locator('canvas[data-testid="view3d"]').boundingBox();
+  const [cx, cy] = [box.x + box.width / 2, box.y + box.height / 2];
+  let k = await draws(page);
+  await page.mouse.move(cx, cy);
+  await page.mouse.down();
+  await page.mouse.move(cx + 120, cy + 30, { steps: 6 });
+  await page.mouse.up();
+  await waitDraws(page, k + 1);
+  const orbited = await pixels(page);
+  if (orbited.hash === before.hash) throw new Error('orbiting did not change the image');
+  // zoom with the wheel
+  k = await draws(page);
+  await page.mouse.wheel(0, -400);
+  await waitDraws(page, k + 1);
+  const zoomed = await pixels(page);
+  if (zoomed.drawn <= orbited.drawn) throw new Error(`zooming in did not enlarge the scene: ${orbited.drawn} → ${zoomed.drawn}`);
+  // resize with the page
+  k = await draws(page);
+  await page.setViewportSize({ width: 800, height: 900 });
+  await waitDraws(page, k + 1);
+  const resized = await pixels(page);
+  if (resized.width >= before.width) throw new Error(`canvas did not shrink with the page: ${before.width} → ${resized.width}`);
+  await page.setViewportSize({ width: 1200, height: 900 });
+  // the scrubber moves the platform
+  k = await draws(page);
+  await page.fill('input[data-testid="scrubber"]', '900');
+  await waitDraws(page, k + 1);
+  const cables = await page.getAttribute('canvas[data-testid="view3d"]', 'data-cables');
+  if (cables.split(' ').length !== 7) throw new Error(`7 cables expected: ${cables}`);
+  assertNoProblems();
+  return `${before.drawn} of ${before.total} px drawn, ${before.green} green, ${before.red} red; cables at t = 0.9: ${cables}`;
+});
+
+await test('plots: boundary on tap, clearances, tension envelope, slice map with start and goal', async () => {
+  await page.click('svg[data-testid="strip"] [data-testid="boundary"]');
+  const readout = await page.textContent('[data-testid="boundary-readout"]');
+  if (!/cable 3 - crown — enters feasible/.test(readout)) throw new Error(`tap readout: ${readout}`);
+  const cc = await page.getAttribute('[data-testid="distance-cc"]', 'd');
+  const co = await page.getAttribute('[data-testid="distance-co"]', 'd');
+  if (!cc.startsWith('M') || !co.startsWith('M')) throw new Error('distance lines missing');
+  if (!(await page.$('[data-testid="tension-none"]'))) throw new Error('cdpr7-tree has no wrench: the envelope must say so');
+  await page.click('[data-testid="slice-compute"]');
+  await page.waitForSelector('[data-testid="chart-slice"] image', { timeout: TIMEOUT });
+  for (const m of ['slice-start', 'slice-goal', 'slice-path']) if (!(await page.$(`[data-testid="${m}"]`))) throw new Error(`no ${m} on the slice map`);
+  await (await page.$('[data-testid="chart-slice"]')).screenshot({ path: join(artifacts, 'slice-cdpr7-tree.png') });
+  await pick(page, 'preset', 'robocrane');
+  await waitResult(page, 'robocrane', 0);
+  await page.waitForSelector('[data-testid="tension-panel"]', { timeout: TIMEOUT });
+  const panels = await page.$$eval('[data-testid="tension-panel"]', (gs) => gs.length);
+  if (panels !== 6) throw new Error(`${panels} tension panels for 6 cables`);
+  await (await page.$('[data-testid="chart-tension"]')).screenshot({ path: join(artifacts, 'tension-robocrane.png') });
+  assertNoProblems();
+  return `readout "${readout.trim().slice(0, 60)}…", ${panels} tension panels`;
+});
+
+await test('exports: intervals CSV and report JSON match the CLI; SVG and PNG plots', async () => {
+  await pick(page, 'preset', 'cdpr7-tree');
+  await waitResult(page, 'cdpr7-tree', 0);
+  const report = cliVerify('static/scenarios/cdpr7-tree.json', 'linear');
+  const json = JSON.parse((await download(page, 'export-report-json')).bytes.toString('utf8'));
+  if (JSON.stringify(json) !== JSON.stringify(report)) throw new Error(`report JSON differs from the CLI:\n${JSON.stringify(json)}\n${JSON.stringify(report)}`);
+  const csv = (await download(page, 'export-intervals-csv')).bytes.toString('utf8');
+  const rows = csv.split('\n\n')[0].split('\n').slice(1).map((l) => l.split(',')).map(([kind, t0, t1]) => ({ kind, t0: Number(t0), t1: Number(t1) }));
+  assertSameSections(rows.sort((a, b) => a.t0 - b.t0), cliSections(report), 'intervals CSV');
+  const path = (await download(page, 'export-path-csv')).bytes.toString('utf8').trim().split('\n');
+  if (path[0] !== 't,x,y,z,phi,theta,sigma,qw,qx,qy,qz' || path.length < 100) throw new Error(`path CSV: ${path[0]} (${path.length} lines)`);
+  const svg = (await download(page, 'export-distance-svg')).bytes.toString('utf8');
+  if (!svg.startsWith('<svg') || !svg.includes('xmlns="http://www.w3.org/2000/svg"') || !svg.includes('<path')) throw new Error(`SVG export: ${svg.slice(0, 120)}`);
+  const png = (await download(page, 'export-distance-png')).bytes;
+  if (png.subarray(1, 4).toString('latin1') !== 'PNG' || png.length < 2000) throw new Error(`PNG export: ${png.length} bytes`);
+  const view = (await download(page, 'export-view-png')).bytes;
+  if (view.subarray(1, 4).toString('latin1') !== 'PNG') throw new Error('3-D view PNG export');
+  assertNoProblems();
+  return `report ${JSON.stringify(json).length} B, CSV ${rows.length} rows, path ${path.length - 1} poses, SVG ${svg.length} B, PNG ${png.length} B`;
+});
+
+const planner = await page.$('[data-testid="plan-run"]');
+await test('Robocrane q1→q2 from the page: the progress bar moves, no frame over 50 ms, the path is drawn', async () => {
+  if (!planner) throw new Error('no planning controls on the page (the planner is not wired in)');
+  await pick(page, 'preset', 'robocrane');
+  await waitResult(page, 'robocrane', 0);
+  await pick(page, 'plan-query', 'q1-q2');
+  await page.waitForSelector('[data-testid="plan-status"][data-state="idle"]', { state: 'attached', timeout: TIMEOUT });
+  // record every animation frame's length, and the progress bar, while planning
+  await page.evaluate(() => {
+    window.__frames = [];
+    window.__bar = [];
+    window.__states = [];
+    let last = performance.now();
+    const tick = (now) => {
+      window.__frames.push(now - last);
+      last = now;
+      window.__bar.push(Number(document.querySelector('[data-testid="plan-progress"]').value));
+      window.__states.push(document.querySelector('[data-testid="plan-status"]').dataset.state);
+      if (window.__recording) requestAnimationFrame(tick);
+    };
+    window.__recording = true;
+    requestAnimationFrame(tick);
+  });
+  const started = Date.now();
+  await page.click('[data-testid="plan-run"]');
+  await page.waitForFunction(() => document.querySelector('[data-testid="plan-status"]').dataset.state !== 'running' &&
+    document.querySelector('[data-testid="plan-status"]').dataset.state !== 'idle', null, { timeout: PLAN_TIMEOUT, polling: 200 });
+  const seconds = (Date.now() - started) / 1000;
+  const state = await page.getAttribute('[data-testid="plan-status"]', 'data-state');
+  const status = await page.textContent('[data-testid="plan-status"]');
+  if (state !== 'found') throw new Error(`planning ended "${state}": ${status}`);
+  await page.waitForFunction(() => Number(document.querySelector('canvas[data-testid="view3d"]').dataset.pathPoses) > 1, null, { timeout: TIMEOUT });
+  const poses = Number(await page.getAttribute('canvas[data-testid="view3d"]', 'data-path-poses'));
+  await page.waitForTimeout(300);
+  const { frames, bar, states } = await page.evaluate(() => { window.__recording = false; return { frames: window.__frames, bar: window.__bar, states: window.__states }; });
+  // the bar shows some value strictly between 0 and 1 while running, then 1
+  const moving = bar.filter((v, i) => i > 0 && v > bar[i - 1] && v < 1);
+  const final = await page.$eval('[data-testid="plan-progress"]', (p) => p.value);
+  if (moving.length < 1 || final !== 1) throw new Error(`the progress bar did not move while planning: ${JSON.stringify(bar.slice(0, 40))}, then ${final}`);
+  // frame i's length is the gap since frame i − 1: planning's if the state was "running" at
+  // either end (this includes the click that creates the planner and the frame that takes the
+  // outcome, re-verification included); what follows, drawing the path, is reported apart
+  const during = frames.filter((f, i) => i > 0 && (states[i] === 'running' || states[i - 1] === 'running'));
+  const after = frames.filter((f, i) => i > 0 && states[i - 1] === 'found');
+  const worst = Math.max(...during);
+  const long = during.filter((f) => f > FRAME_LIMIT_MS);
+  const timeline = frames.map((f, i) => `${f.toFixed(0)}:${states[i]}`).join(' ');
+  await page.locator('canvas[data-testid="view3d"]').scrollIntoViewIfNeeded();
+  const px = await pixels(page);
+  const purple = await page.$eval('canvas[data-testid="view3d"]', (c) => {
+    const k = document.createElement('canvas'); k.width = c.width; k.height = c.height;
+    const ctx = k.getContext('2d'); ctx.drawImage(c, 0, 0);
+    const d = ctx.getImageData(0, 0, k.width, k.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i + 2] > 120 && d[i] > 60 && d[i + 1] < 80 && d[i + 2] - d[i + 1] > 80) n++;
+    return n;
+  });
+  if (purple < 20) throw new Error(`the planned path is not drawn in the 3-D view (${purple} purple px)`);
+  await page.screenshot({ path: join(artifacts, 'plan-robocrane.png'), fullPage: true });
+  await page.click('[data-testid="slice-compute"]');
+  await page.waitForSelector('[data-testid="chart-slice"] [data-testid="slice-path"]', { timeout: TIMEOUT });
+  const d = await page.getAttribute('[data-testid="chart-slice"] [data-testid="slice-path"]', 'd');
+  if ((d.match(/L/g) ?? []).length < poses / 2) throw new Error(`slice path has too few points for ${poses} poses: ${d.slice(0, 80)}`);
+  await (await page.$('[data-testid="chart-slice"]')).screenshot({ path: join(artifacts, 'plan-slice-robocrane.png') });
+  if (long.length) throw new Error(`${long.length} of ${during.length} frames over ${FRAME_LIMIT_MS} ms while planning (worst ${worst.toFixed(1)} ms); frames (ms:state) ${timeline}`);
+  assertNoProblems();
+  return `${seconds.toFixed(1)} s, ${during.length} frames while planning, worst ${worst.toFixed(1)} ms; worst frame drawing the path afterwards ${Math.max(...after).toFixed(1)} ms; bar moved ${moving.length}×; path of ${poses} poses (${px.drawn} px drawn); ${status.trim()}; frames (ms:state) ${timeline}`;
+});
+
+await test('Cancel stops a run (Robocrane q5→q6, a 3-D slice)', async () => {
+  if (!planner) throw new Error('no planning controls on the page');
+  await pick(page, 'plan-query', 'q5-q6');
+  await page.waitForFunction(() => !document.querySelector('[data-testid="plan-run"]').disabled, null, { timeout: TIMEOUT });
+  // Plan, then Cancel two frames later (the run takes many frames), as a user clicking fast
+  const at = await page.evaluate(() => new Promise((ok) => {
+    document.querySelector('[data-testid="plan-run"]').click();
+    requestAnimationFrame(() => requestAnimationFrame(() => {
+      const state = document.querySelector('[data-testid="plan-status"]').dataset.state;
+      document.querySelector('[data-testid="plan-cancel"]').click();
+      ok(state);
+    }));
+  }));
+  if (at !== 'running') throw new Error(`the run was "${at}" two frames after Plan, not running`);
+  await page.waitForSelector('[data-testid="plan-status"][data-state="cancelled"]', { state: 'attached', timeout: TIMEOUT });
+  const v = await page.$eval('[data-testid="plan-progress"]', (p) => p.value);
+  await page.waitForTimeout(500);
+  const later = await page.$eval('[data-testid="plan-progress"]', (p) => p.value);
+  const state = await page.getAttribute('[data-testid="plan-status"]', 'data-state');
+  if (later !== v || v >= 1 || state !== 'cancelled') throw new Error(`after Cancel: progress ${v} → ${later}, state ${state}`);
+  if (Number(await page.getAttribute('canvas[data-testid="view3d"]', 'data-path-poses')) !== 0) throw new Error('a path is drawn after Cancel');
+  assertNoProblems();
+  return `stopped at progress ${v.toFixed(2)}`;
+});
+
+await browser.close();
+server.close();
+finish(`screenshots in ${artifacts}`);

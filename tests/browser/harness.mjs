@@ -1,0 +1,142 @@
+// Shared pieces of the browser tests (smoke.mjs, e2e-edit.mjs): a tiny static file server, the
+// headless Chromium launch, a console/page-error watcher and a minimal test runner that ends
+// with "N passed, M failed".
+
+import { createServer } from 'node:http';
+import { readFileSync, statSync } from 'node:fs';
+import { extname, join, normalize, sep } from 'node:path';
+import { chromium } from 'playwright-core';
+
+const TYPES = {
+  '.html': 'text/html; charset=utf-8',
+  '.js': 'text/javascript; charset=utf-8',
+  '.mjs': 'text/javascript; charset=utf-8',
+  '.wasm': 'application/wasm',
+  '.css': 'text/css; charset=utf-8',
+  '.json': 'application/json; charset=utf-8',
+  '.png': 'image/png',
+  '.svg': 'image/svg+xml',
+};
+
+/** Serves `dir` on 127.0.0.1 (a free port); `extra` maps paths to HTML served as is. */
+export function serve(dir, extra = {}) {
+  const server = createServer((req, res) => {
+    const path = decodeURIComponent(new URL(req.url, 'http://x').pathname);
+    if (extra[path] !== undefined) {
+      res.writeHead(200, { 'content-type': TYPES['.html'] });
+      return res.end(extra[path]);
+    }
+    let file = normalize(join(dir, path));
+    if (file !== dir && !file.startsWith(dir + sep)) {
+      res.writeHead(403);
+      return res.end();
+    }
+    try {
+      if (statSync(file).isDirectory()) file = join(file, 'index.html');
+      const body = readFileSync(file);
+      res.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' });
+      res.end(body);
+    } catch {
+      res.writeHead(404, { 'content-type': 'text/plain' });
+      res.end('not found');
+    }
+  });
+  return new Promise((ok, fail) => {
+    server.once('error', fail);
+    server.listen(0, '127.0.0.1', () => ok(server));
+  });
+}
+
+/** Debian's Chromium, headless, with software WebGL; exits with a failure line if it cannot start. */
+export function launchChromium() {
+  return chromium
+    .launch({
+      executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
+      headless: true,
+      args: [
+        '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+        '--disable-background-networking', '--disable-component-update', '--disable-sync',
+        '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+      ],
+    })
+    .catch((e) => {
+      console.log(`FAIL launching Chromium: ${e.message}`);
+      console.log('0 passed, 1 failed');
+      process.exit(1);
+    });
+}
+
+/** Collects console errors, page errors and failed requests of every page of `context`. */
+export function watchProblems(context) {
+  const problems = [];
+  const watch = (page) => {
+    page.on('console', (m) => {
+      if (m.type() === 'error') problems.push(`console error: ${m.text()}`);
+    });
+    page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+    page.on('response', (r) => {
+      if (r.status() >= 400) problems.push(`HTTP ${r.status()} for ${r.url()}`);
+    });
+    page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()} ${r.failure()?.errorText ?? ''}`));
+  };
+  context.on('page', watch);
+  return {
+    /** Throws if problems were seen since the last call. */
+    assertNone() {
+      if (problems.length) throw new Error(problems.splice(0).join('\n'));
+    },
+  };
+}
+
+/** A minimal runner: `test(name, fn)` runs and reports; `finish()` prints the summary and exits. */
+export function runner(watchdogMinutes = 10) {
+  const results = [];
+  setTimeout(() => {
+    console.log(`FAIL watchdog: the tests took more than ${watchdogMinutes} minutes`);
+    console.log(`${results.filter((r) => r.ok).length} passed, ${results.filter((r) => !r.ok).length + 1} failed`);
+    process.exit(1);
+  }, watchdogMinutes * 60_000).unref();
+  return {
+    async test(name, fn) {
+      const started = Date.now();
+      try {
+        const detail = await fn();
+        results.push({ name, ok: true });
+        console.log(`ok   ${name}${detail ? ` — ${detail}` : ''} (${Date.now() - started} ms)`);
+      } catch (e) {
+        results.push({ name, ok: false });
+        console.log(`FAIL ${name}: ${e && e.stack ? e.stack : e}`);
+      }
+    },
+    finish(note) {
+      const passed = results.filter((r) => r.ok).length;
+      const failed = results.length - passed;
+      if (note) console.log(note);
+      console.log(`${passed} passed, ${failed} failed`);
+      process.exit(failed ? 1 : 0);
+    },
+  };
+}
+
+/** Exits with a failure line unless PAGE_DIR holds a built page. */
+export function requirePage(pageDir) {
+  try {
+    statSync(join(pageDir, 'index.html'));
+  } catch {
+    console.log(`FAIL no built page at ${pageDir} (run scripts/build-page.sh)`);
+    console.log('0 passed, 1 failed');
+    process.exit(1);
+  }
+}
+
+/** The drawn sections of the strip in `scope` (a Page or a Frame). */
+export async function readSections(scope) {
+  return scope.$$eval('svg[data-testid="strip"] rect[data-testid="section"]', (rects) =>
+    rects.map((r) => ({
+      kind: r.dataset.kind,
+      t0: Number(r.dataset.t0),
+      t1: Number(r.dataset.t1),
+      title: r.querySelector('title')?.textContent ?? '',
+    })),
+  );
+}

@@ -1,0 +1,169 @@
+//! CASPR model import: the real model files of ../shared/models/caspr (embedded by path at
+//! compile time, so this also runs under `wasm-pack test --node`; never copied into the repo)
+//! against the numbers written in them and against the thesis preset, plus every refusal.
+
+#[cfg(target_arch = "wasm32")]
+use wasm_bindgen_test::wasm_bindgen_test as test;
+
+use cablenav::scenario::caspr::{import, kind, to_json};
+use cablenav::verify::check_pose;
+use cablenav::Scenario;
+use nalgebra::Vector3;
+
+macro_rules! model {
+    ($path:literal) => {
+        include_str!(concat!("../../shared/models/caspr/", $path))
+    };
+}
+
+const CDPR7_BODIES: &str = model!("CDPR_7c_6Dof/CDPR_7c_6Dof_bodies.xml");
+const CDPR7_CABLES: &str = model!("CDPR_7c_6Dof/CDPR_7c_6Dof_cables.xml");
+const NIST_BODIES: &str = model!("NIST_ROBOCRANE/NIST_RoboCrane_bodies.xml");
+const NIST_CABLES: &str = model!("NIST_ROBOCRANE/NIST_RoboCrane_cables.xml");
+const ARM_BODIES: &str = model!("BMArm/BMArm_bodies.xml");
+const EXAMPLE_BODIES: &str = model!("Example_spatial/Example_spatial_bodies.xml");
+const EXAMPLE_CABLES: &str = model!("Example_spatial/Example_spatial_cables.xml");
+const CDPR7_PRESET: &str = include_str!("../static/scenarios/cdpr7.json");
+
+fn v(x: f64, y: f64, z: f64) -> Vector3<f64> {
+    Vector3::new(x, y, z)
+}
+
+#[test]
+fn the_thesis_robot_matches_the_preset() {
+    let s = import("CDPR_7c_6Dof", CDPR7_BODIES, CDPR7_CABLES).unwrap();
+    let preset = Scenario::from_json(CDPR7_PRESET).unwrap();
+    assert_eq!(s.robot.cables.len(), 7);
+    for (i, (a, b)) in s.robot.cables.iter().zip(&preset.robot.cables).enumerate() {
+        assert_eq!((a.base, a.platform), (b.base, b.platform), "cable {}", i + 1);
+        assert_eq!((a.tension.min, a.tension.max), (0.0, 1000.0));
+        assert_eq!((a.length.min, a.length.max), (0.0, f64::INFINITY));
+    }
+    assert_eq!(s.robot.diameter, 0.1);
+    assert_eq!(s.name, "CDPR_7c_6Dof");
+    // q_initial = "2 2 2 0 0 0"
+    let p = s.pose("initial").unwrap();
+    assert_eq!(p.position, v(2.0, 2.0, 2.0));
+    assert!(p.rotation.angle().abs() < 1e-15);
+    assert_eq!(s.trajectories.len(), 1);
+    assert_eq!(s.trajectories[0].pose_at(0.5).position, v(2.0, 2.0, 2.0));
+}
+
+#[test]
+fn robocrane_reads_anchors_tensions_and_the_initial_pose() {
+    let out = to_json("robocrane", NIST_BODIES, NIST_CABLES).unwrap();
+    assert!(out.notes.is_empty(), "{:?}", out.notes);
+    let s = Scenario::from_json(&out.json).unwrap();
+    let expect_base = [
+        v(-3.0, -1.7321, 3.0),
+        v(-3.0, -1.7321, 3.0),
+        v(3.0, -1.7321, 3.0),
+        v(3.0, -1.7321, 3.0),
+        v(0.0, 3.4642, 3.0),
+        v(0.0, 3.4642, 3.0),
+    ];
+    let expect_platform =
+        [v(0.0, -0.866, 0.0), v(-0.75, 0.433, 0.0), v(0.0, -0.866, 0.0), v(0.75, 0.433, 0.0), v(-0.75, 0.433, 0.0), v(0.75, 0.433, 0.0)];
+    let expect_max = [1000.0, 5000.0, 1000.0, 5000.0, 5000.0, 5000.0];
+    for (i, c) in s.robot.cables.iter().enumerate() {
+        assert_eq!(c.base, expect_base[i], "base {}", i + 1);
+        assert_eq!(c.platform, expect_platform[i], "platform {}", i + 1);
+        assert_eq!((c.tension.min, c.tension.max), (0.0, expect_max[i]), "tension {}", i + 1);
+    }
+    // No diameter in the file: the format's default.
+    assert_eq!(s.robot.diameter, 0.0);
+    assert!(!out.json.contains("diameter"));
+    // Lengths at q_initial = (0, 0, 1.5), identity, by hand.
+    let p = s.pose("initial").unwrap();
+    assert_eq!(p.position, v(0.0, 0.0, 1.5));
+    let report = check_pose(&s, "initial", p);
+    for (i, l) in report.lengths.iter().enumerate() {
+        let by_hand = (expect_base[i] - (expect_platform[i] + v(0.0, 0.0, 1.5))).norm();
+        assert!((l - by_hand).abs() < 1e-12, "cable {}: {l} vs {by_hand}", i + 1);
+    }
+}
+
+#[test]
+fn com_attachments_add_the_centre_of_mass_and_angles_are_converted() {
+    let bodies = EXAMPLE_BODIES
+        .replace("<com_location>0.0 0.0 0.0</com_location>", "<com_location>0.1 0.2 0.3</com_location>")
+        .replace("q_initial=\"0.5 0.5 0.5 0 0 0\"", "q_initial=\"0.5 0.5 0.5 0 0 1.5707963267948966\"");
+    assert_ne!(bodies, EXAMPLE_BODIES, "the test edits must apply");
+    let s = import("example", &bodies, EXAMPLE_CABLES).unwrap();
+    // cable 1: attachment_reference="com", platform location (-0.15, -0.1, 0.05)
+    assert!((s.robot.cables[0].platform - v(-0.05, 0.1, 0.35)).norm() < 1e-15);
+    assert_eq!(s.robot.cables[0].base, v(0.0, 0.0, 1.0));
+    assert_eq!((s.robot.cables[0].tension.min, s.robot.cables[0].tension.max), (5.0, 300.0));
+    // γ = π/2 about z: the platform x axis points along world y.
+    let r = s.pose("initial").unwrap().matrix();
+    assert!((r * v(1.0, 0.0, 0.0) - v(0.0, 1.0, 0.0)).norm() < 1e-12);
+}
+
+#[test]
+fn per_cable_tensions_when_only_some_cables_give_them() {
+    let cables = NIST_CABLES.replacen("<force_min>0.0</force_min>", "", 1);
+    let out = to_json("n", NIST_BODIES, &cables).unwrap();
+    let s = Scenario::from_json(&out.json).unwrap();
+    assert_eq!(s.robot.cables[0].tension.min, 0.0); // the format's default
+    assert_eq!(s.robot.cables[0].tension.max, 1000.0);
+    assert_eq!(s.robot.cables[1].tension.max, 5000.0);
+}
+
+#[test]
+fn files_are_recognised_by_their_root() {
+    assert_eq!(kind(NIST_BODIES), Some("bodies"));
+    assert_eq!(kind(NIST_CABLES), Some("cables"));
+    assert_eq!(kind("<trajectories/>"), None);
+    assert_eq!(kind("not xml"), None);
+}
+
+fn err(bodies: &str, cables: &str) -> cablenav::Error {
+    to_json("x", bodies, cables).expect_err("an error")
+}
+
+#[test]
+fn refusals_name_the_file_and_say_why() {
+    let e = err(ARM_BODIES, NIST_CABLES);
+    assert_eq!(e.field, "bodies");
+    assert!(e.reason.contains("multi-link"), "{e}");
+
+    let e = err(NIST_CABLES, NIST_CABLES);
+    assert_eq!(e.field, "bodies");
+    assert!(e.reason.contains("<cables>"), "{e}");
+
+    let e = err(NIST_BODIES, "<cables><cable_set id=\"a\">");
+    assert_eq!(e.field, "cables");
+    assert!(e.reason.contains("not well-formed"), "{e}");
+
+    let e = err(&NIST_BODIES.replace("SPATIAL_EULER_XYZ", "R_X"), NIST_CABLES);
+    assert!(e.reason.contains("R_X") && e.reason.contains("line 6"), "{e}");
+
+    let e = err(&NIST_BODIES.replace("q_initial=\"0 0 1.5 0 0 0\"", "q_initial=\"0 0 x 0 0 0\""), NIST_CABLES);
+    assert!(e.reason.contains("\"x\" is not a finite number"), "{e}");
+
+    let e = err(NIST_BODIES, &NIST_CABLES.replace("default_cable_set=\"original\"", "default_cable_set=\"other\""));
+    assert_eq!(e.field, "cables");
+    assert!(e.reason.contains("\"other\""), "{e}");
+
+    let e = err(NIST_BODIES, &NIST_CABLES.replacen("<link>1</link>", "<link>2</link>", 1));
+    assert!(e.reason.contains("cable \"cable 1\"") && e.reason.contains("link 2"), "{e}");
+
+    let e = err(NIST_BODIES, &NIST_CABLES.replacen("<location>0 -0.8660 0</location>", "<location>0 -0.8660</location>", 1));
+    assert!(e.reason.contains("needs 3 numbers"), "{e}");
+
+    let three = NIST_CABLES.replacen(
+        "</attachments>",
+        "<attachment><link>1</link><location>0 0 0</location></attachment></attachments>",
+        1,
+    );
+    let e = err(NIST_BODIES, &three);
+    assert!(e.reason.contains("3 attachments"), "{e}");
+
+    // Fewer than 6 cables is the scenario's own error, at its field.
+    let mut five = NIST_CABLES.to_string();
+    let last = five.rfind("<cable_ideal").unwrap();
+    let end = five.rfind("</cable_ideal>").unwrap() + "</cable_ideal>".len();
+    five.replace_range(last..end, "");
+    let e = import("x", NIST_BODIES, &five).expect_err("5 cables");
+    assert_eq!(e.field, "robot.cables");
+}

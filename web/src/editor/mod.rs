@@ -1,0 +1,162 @@
+//! The scenario editor: a structured copy of the scenario JSON that the widgets edit; every
+//! valid edit is written back to the page's `source` (the single source of truth the views
+//! read). Text that is not a value (a typo in a number) stays in its field with a message and
+//! is not written; a value the core rejects is written, and the core's error is shown at the
+//! field it names. One module per part of the editor.
+
+pub mod fields;
+pub mod obstacles;
+pub mod poses;
+pub mod robot;
+pub mod share;
+pub mod trajectories;
+pub mod wrench;
+
+use cablenav::Scenario;
+use leptos::prelude::*;
+use serde_json::Value;
+
+use crate::edit_logic::{self as el, Path};
+
+/// The editor's state, shared by its widgets (a copyable bundle of signals).
+#[derive(Debug, Clone, Copy)]
+pub struct Ed {
+    /// The scenario as a JSON tree; `None` while `source` is not JSON.
+    pub doc: RwSignal<Option<Value>>,
+    /// The page's scenario JSON.
+    pub source: RwSignal<String>,
+    /// Where `source` came from; edits make it `"edited"`.
+    pub origin: RwSignal<&'static str>,
+    /// The core's reading of `source`.
+    pub checked: Memo<Result<Scenario, cablenav::Error>>,
+}
+
+impl Ed {
+    /// Editor state over the page's `source` and `origin`; follows `source` when it changes
+    /// elsewhere (a preset, the JSON box, an import).
+    pub fn new(source: RwSignal<String>, origin: RwSignal<&'static str>) -> Ed {
+        let doc = RwSignal::new(serde_json::from_str(&source.get_untracked()).ok());
+        Effect::new(move |_| {
+            let parsed: Option<Value> = source.with(|s| serde_json::from_str(s).ok());
+            if doc.with_untracked(|d| *d != parsed) {
+                doc.set(parsed);
+            }
+        });
+        let checked = Memo::new(move |_| source.with(|s| Scenario::from_json(s)));
+        Ed { doc, source, origin, checked }
+    }
+
+    /// Applies `f` to the tree and writes the result to `source`.
+    pub fn edit(&self, f: impl FnOnce(&mut Value)) {
+        let mut text = None;
+        self.doc.update(|d| {
+            if let Some(d) = d {
+                f(d);
+                text = serde_json::to_string_pretty(d).ok();
+            }
+        });
+        if let Some(text) = text {
+            self.source.set(text);
+            self.origin.set("edited");
+        }
+    }
+
+    /// Reads the tree (tracked); `None` while the source is not JSON.
+    pub fn read<T>(&self, f: impl FnOnce(&Value) -> T) -> Option<T> {
+        self.doc.with(|d| d.as_ref().map(f))
+    }
+
+    /// The number at `path` (tracked).
+    pub fn num(&self, path: &Path) -> Option<f64> {
+        self.read(|d| el::get(d, path).and_then(Value::as_f64)).flatten()
+    }
+
+    /// The string at `path` (tracked).
+    pub fn text(&self, path: &Path) -> Option<String> {
+        self.read(|d| el::get(d, path).and_then(Value::as_str).map(str::to_string)).flatten()
+    }
+
+    /// The number of items of the list (or members of the object) at `path`, as a memo that
+    /// changes only when the number does.
+    pub fn count(&self, path: Path) -> Memo<usize> {
+        let ed = *self;
+        Memo::new(move |_| ed.read(|d| el::len(d, &path)).unwrap_or(0))
+    }
+
+    /// The core's name for `path` (tracked).
+    pub fn core_path(&self, path: &Path) -> String {
+        self.read(|d| el::core_path(d, path)).unwrap_or_default()
+    }
+
+    /// The core's error, when it concerns the widget at `path` (the field itself, or with
+    /// `inside` anything within it) (tracked).
+    pub fn error_at(&self, path: &Path, inside: bool) -> Option<String> {
+        let field = self.core_path(path);
+        self.checked.with(|r| match r {
+            Err(e) if el::error_belongs(&e.field, &field, inside) => Some(e.reason.clone()),
+            _ => None,
+        })
+    }
+}
+
+/// The whole editor: robot, wrench, obstacles, poses, trajectories.
+#[component]
+pub fn ScenarioEditor(source: RwSignal<String>, origin: RwSignal<&'static str>) -> impl IntoView {
+    let ed = Ed::new(source, origin);
+    let is_json = move || ed.doc.with(Option::is_some);
+    view! {
+        <section class="scenario-editor" data-testid="scenario-editor" aria-label="scenario editor">
+            <h2>"Edit the scenario"</h2>
+            <Summary ed />
+            <Show
+                when=is_json
+                fallback=|| view! {
+                    <p class="error" role="alert">
+                        "The scenario text is not JSON, so the form cannot show it: fix it in the JSON box below."
+                    </p>
+                }
+            >
+                <details open>
+                    <summary>"Robot: cables and bounds"</summary>
+                    <robot::RobotEditor ed />
+                </details>
+                <details>
+                    <summary>"Wrench set"</summary>
+                    <wrench::WrenchEditor ed />
+                </details>
+                <details>
+                    <summary>"Obstacles"</summary>
+                    <obstacles::ObstacleEditor ed />
+                </details>
+                <details>
+                    <summary>"Poses"</summary>
+                    <poses::PoseEditor ed />
+                </details>
+                <details>
+                    <summary>"Trajectories"</summary>
+                    <trajectories::TrajectoryEditor ed />
+                </details>
+            </Show>
+        </section>
+    }
+}
+
+/// One line on top: whether the core accepts the scenario, and its error (which the field it
+/// names also shows).
+#[component]
+fn Summary(ed: Ed) -> impl IntoView {
+    move || {
+        ed.checked.with(|r| match r {
+            Ok(_) => view! { <p class="status ok" data-testid="editor-status">"The scenario is valid."</p> }.into_any(),
+            Err(e) => {
+                let text = if e.field.is_empty() { e.reason.clone() } else { format!("{}: {}", e.field, e.reason) };
+                view! {
+                    <p class="status error" data-testid="editor-status" role="alert">
+                        {format!("Not valid yet — {text}")}
+                    </p>
+                }
+                .into_any()
+            }
+        })
+    }
+}

@@ -1,0 +1,108 @@
+//! The robot: the scenario's name, the cable table (anchors; add and remove cables), length and
+//! tension bounds, cable diameter and clearances.
+
+use leptos::prelude::*;
+
+use super::fields::{FieldMessage, NumField, NumberOrListField, TextField};
+use super::Ed;
+use crate::edit_logic::{self as el, Path};
+
+/// The robot's part of the editor.
+#[component]
+pub fn RobotEditor(ed: Ed) -> impl IntoView {
+    let cables = Path::of(&["robot", "cables"]);
+    let count = ed.count(cables.clone());
+    let table_error = Signal::derive({
+        let cables = cables.clone();
+        move || ed.error_at(&cables, false)
+    });
+    view! {
+        <TextField ed path=Path::of(&["name"]) label="Scenario name" />
+        <table class="cables" data-testid="cable-table">
+            <caption>
+                "Cables: base anchor aᵢ (world frame) and platform anchor bᵢ (platform frame), in metres"
+            </caption>
+            <thead>
+                <tr>
+                    <th scope="col">"#"</th>
+                    <th scope="col">"base x"</th><th scope="col">"base y"</th><th scope="col">"base z"</th>
+                    <th scope="col">"platform x"</th><th scope="col">"platform y"</th><th scope="col">"platform z"</th>
+                    <th scope="col"><span class="sr-only">"remove"</span></th>
+                </tr>
+            </thead>
+            <tbody>
+                <For each=move || 0..count.get() key=|i| *i let:i>
+                    <CableRow ed i />
+                </For>
+            </tbody>
+        </table>
+        <FieldMessage local=RwSignal::new(None) core=table_error />
+        <button type="button" data-testid="add-cable" on:click=move |_| ed.edit(el::add_cable)>
+            "Add a cable"
+        </button>
+        <p class="hint">"A 6-DoF robot needs 6 to 64 cables; a wrench set needs exactly 6."</p>
+        <div class="bounds">
+            <BoundsGroup ed what="length" title="Cable length bounds" unit="m" />
+            <BoundsGroup ed what="tension" title="Cable tension bounds" unit="N" />
+            <NumField ed path=Path::of(&["robot", "diameter"]) label="Cable diameter" unit="m" optional=true />
+            <NumField ed path=Path::of(&["clearance", "cable_cable"]) label="Clearance cable–cable" unit="m" optional=true />
+            <NumField ed path=Path::of(&["clearance", "cable_obstacle"]) label="Clearance cable–obstacle" unit="m" optional=true />
+        </div>
+    }
+}
+
+/// The robot-level `min` and `max` of `robot.<what>`; errors about the pair (min > max) show
+/// under both.
+#[component]
+fn BoundsGroup(ed: Ed, what: &'static str, title: &'static str, unit: &'static str) -> impl IntoView {
+    let group = Path::of(&["robot", what]);
+    let error = Signal::derive({
+        let group = group.clone();
+        move || ed.error_at(&group, false)
+    });
+    view! {
+        <fieldset class="bounds-group" class:invalid=move || error.with(Option::is_some)>
+            <legend>{format!("{title} ({unit}; empty: none)")}</legend>
+            <NumberOrListField ed path=group.k("min") label="min" unit />
+            <NumberOrListField ed path=group.k("max") label="max" unit />
+            <FieldMessage local=RwSignal::new(None) core=error />
+        </fieldset>
+    }
+}
+
+/// One row of the cable table.
+#[component]
+fn CableRow(ed: Ed, i: usize) -> impl IntoView {
+    let cable = Path::of(&["robot", "cables"]).i(i);
+    let row_error = Signal::derive({
+        let cable = cable.clone();
+        move || ed.error_at(&cable, false)
+    });
+    let cell = move |end: &'static str, axis: usize| {
+        let name = ["x", "y", "z"][axis];
+        view! {
+            <td>
+                <NumField ed path=cable.k(end).i(axis) label=format!("cable {} {end} {name}", i + 1) unit="m" compact=true />
+            </td>
+        }
+    };
+    view! {
+        <tr data-testid="cable-row" class:invalid=move || row_error.with(Option::is_some)>
+            <th scope="row">{i + 1}</th>
+            {cell("base", 0)}{cell("base", 1)}{cell("base", 2)}
+            {cell("platform", 0)}{cell("platform", 1)}{cell("platform", 2)}
+            <td>
+                <button
+                    type="button"
+                    class="remove"
+                    aria-label=format!("remove cable {}", i + 1)
+                    title=format!("remove cable {}", i + 1)
+                    on:click=move |_| ed.edit(|d| el::remove_cable(d, i))
+                >
+                    "✕"
+                </button>
+                <FieldMessage local=RwSignal::new(None) core=row_error />
+            </td>
+        </tr>
+    }
+}

@@ -1,0 +1,351 @@
+//! Sharing and persistence: the scenario in the URL hash (deflated, base64url), autosave to
+//! localStorage, embed mode, and JSON/CASPR files in and out. The encoding and the start-up
+//! decision are plain functions (unit-tested natively); the rest is thin browser glue.
+//!
+//! Hash forms: `#preset=<id>` for an unedited preset, `#s=<data>` for anything else, where
+//! `<data>` is the scenario JSON, deflated (raw DEFLATE, level 9) and base64url-encoded
+//! without padding.
+
+use base64::engine::general_purpose::URL_SAFE_NO_PAD;
+use base64::Engine;
+use leptos::prelude::*;
+use serde_json::{json, Value};
+use wasm_bindgen::JsCast;
+
+use crate::presets::{self, PRESETS};
+
+/// The localStorage key of the autosaved scenario.
+pub const STORAGE_KEY: &str = "cablenav.autosave";
+/// Largest scenario a shared link may inflate to (bytes), so a crafted link cannot exhaust memory.
+pub const MAX_SHARED_BYTES: usize = 8 << 20;
+
+/// The scenario JSON as hash data: deflated, base64url.
+pub fn encode_scenario(json: &str) -> String {
+    URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(json.as_bytes(), 9))
+}
+
+/// The scenario JSON from hash data; the error says what is wrong with the link.
+pub fn decode_scenario(data: &str) -> Result<String, String> {
+    let bytes = URL_SAFE_NO_PAD
+        .decode(data.trim())
+        .map_err(|e| format!("the shared link is damaged (not base64url: {e})"))?;
+    let raw = miniz_oxide::inflate::decompress_to_vec_with_limit(&bytes, MAX_SHARED_BYTES)
+        .map_err(|e| format!("the shared link is damaged or too large (inflate: {:?})", e.status))?;
+    String::from_utf8(raw).map_err(|_| "the shared link is damaged (not UTF-8 text)".to_string())
+}
+
+/// What a URL hash asks for.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Shared {
+    /// A preset, by id.
+    Preset(&'static str),
+    /// A scenario's JSON.
+    Scenario(String),
+}
+
+/// Reads a URL hash (with or without its `#`): `None` for an empty hash or one of another
+/// form, else what it shares or why it cannot be read.
+pub fn parse_hash(hash: &str) -> Option<Result<Shared, String>> {
+    let h = hash.strip_prefix('#').unwrap_or(hash);
+    if let Some(id) = h.strip_prefix("preset=") {
+        return Some(
+            presets::find(id)
+                .map(|i| Shared::Preset(PRESETS[i].id))
+                .ok_or_else(|| format!("the shared link names an unknown preset “{id}”")),
+        );
+    }
+    h.strip_prefix("s=").map(|data| decode_scenario(data).map(Shared::Scenario))
+}
+
+/// The hash that shares `source`: `#preset=<id>` while it is that preset's text, else `#s=…`.
+pub fn hash_for(source: &str, origin: &str) -> String {
+    match presets::find(origin) {
+        Some(i) if PRESETS[i].json == source => format!("#preset={origin}"),
+        _ => format!("#s={}", encode_scenario(source)),
+    }
+}
+
+/// The autosave record: the scenario and where it came from.
+pub fn saved_record(source: &str, origin: &str) -> String {
+    json!({"source": source, "origin": origin}).to_string()
+}
+
+/// Where the page starts.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Boot {
+    /// The scenario JSON.
+    pub source: String,
+    /// A preset id, or `"edited"`.
+    pub origin: &'static str,
+    /// The preset the picker shows.
+    pub preset: usize,
+    /// Something to tell the user (a damaged link), if any.
+    pub note: Option<String>,
+    /// `?embed=1`: view and results only.
+    pub embed: bool,
+}
+
+/// `origin` as a static name: a preset id, else `"edited"`.
+fn static_origin(origin: &str, source: &str) -> (&'static str, usize) {
+    match presets::find(origin) {
+        Some(i) if PRESETS[i].json == source => (PRESETS[i].id, i),
+        Some(i) => ("edited", i),
+        None => ("edited", 0),
+    }
+}
+
+/// Decides the start: a shared hash first, then (when `restore`, i.e. a top-level page that is
+/// not embedded) the autosave, then the first preset.
+pub fn boot_state(hash: &str, saved: Option<&str>, restore: bool, embed: bool) -> Boot {
+    let first = |note| Boot { source: PRESETS[0].json.to_string(), origin: PRESETS[0].id, preset: 0, note, embed };
+    let mut note = None;
+    match parse_hash(hash) {
+        Some(Ok(Shared::Preset(id))) => {
+            let i = presets::find(id).unwrap_or(0);
+            return Boot { source: PRESETS[i].json.to_string(), origin: PRESETS[i].id, preset: i, note: None, embed };
+        }
+        Some(Ok(Shared::Scenario(source))) => {
+            let (origin, preset) = PRESETS
+                .iter()
+                .position(|p| p.json == source)
+                .map_or(("edited", 0), |i| (PRESETS[i].id, i));
+            return Boot { source, origin, preset, note: None, embed };
+        }
+        Some(Err(e)) => note = Some(e),
+        None => {}
+    }
+    if restore {
+        let record: Option<Value> = saved.and_then(|s| serde_json::from_str(s).ok());
+        if let Some(source) = record.as_ref().and_then(|r| r.get("source")?.as_str()) {
+            let origin = record.as_ref().and_then(|r| r.get("origin")?.as_str()).unwrap_or("edited");
+            let (origin, preset) = static_origin(origin, source);
+            return Boot { source: source.to_string(), origin, preset, note, embed };
+        }
+    }
+    first(note)
+}
+
+/// Whether a query string (`?embed=1&…`) asks for embed mode.
+pub fn is_embed(search: &str) -> bool {
+    search.trim_start_matches('?').split('&').any(|kv| kv == "embed=1" || kv == "embed=true")
+}
+
+/// The iframe snippet that embeds the page at `page` (scheme, host and path, no query or
+/// hash) showing the scenario of `hash`.
+pub fn embed_snippet(page: &str, hash: &str) -> String {
+    format!(
+        "<iframe src=\"{page}?embed=1{hash}\" width=\"900\" height=\"640\" style=\"border:1px solid #ccc\" \
+         title=\"cablenav\" loading=\"lazy\"></iframe>"
+    )
+}
+
+/// A file name for exporting the scenario called `name`.
+pub fn export_name(name: &str) -> String {
+    let stem: String = name
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() || c == '-' || c == '_' { c } else { '-' })
+        .collect();
+    let stem = stem.trim_matches('-');
+    format!("{}.json", if stem.is_empty() { "scenario" } else { stem })
+}
+
+// ---------------------------------------------------------------------------------------------
+// Browser glue
+
+fn window() -> Option<web_sys::Window> {
+    web_sys::window()
+}
+
+fn storage() -> Option<web_sys::Storage> {
+    window()?.local_storage().ok().flatten()
+}
+
+/// Whether the page runs inside a frame (then it neither restores nor writes the autosave: a
+/// course page shows its author's scenario, not the visitor's edits).
+pub fn in_frame() -> bool {
+    window().is_some_and(|w| match w.top() {
+        Ok(Some(top)) => top != w,
+        _ => true,
+    })
+}
+
+/// Reads the URL, the autosave and the frame state, and decides the start.
+pub fn boot() -> Boot {
+    let location = window().map(|w| w.location());
+    let hash = location.as_ref().and_then(|l| l.hash().ok()).unwrap_or_default();
+    let search = location.as_ref().and_then(|l| l.search().ok()).unwrap_or_default();
+    let embed = is_embed(&search);
+    let restore = !embed && !in_frame();
+    let saved = if restore { storage().and_then(|s| s.get_item(STORAGE_KEY).ok().flatten()) } else { None };
+    boot_state(&hash, saved.as_deref(), restore, embed)
+}
+
+/// The page's address without query and hash.
+pub fn page_address() -> String {
+    window()
+        .map(|w| w.location())
+        .map(|l| format!("{}{}", l.origin().unwrap_or_default(), l.pathname().unwrap_or_default()))
+        .unwrap_or_default()
+}
+
+/// Keeps the URL hash and (outside frames and embed mode) the autosave in step with the
+/// scenario, and loads a shared link pasted into the address bar of the open page.
+pub fn keep(source: RwSignal<String>, origin: RwSignal<&'static str>, preset: RwSignal<usize>, embed: bool) {
+    if embed {
+        return;
+    }
+    let autosave = !in_frame();
+    Effect::new(move |_| {
+        let (text, from) = (source.get(), origin.get());
+        let hash = hash_for(&text, from);
+        if let Some(w) = window() {
+            if w.location().hash().ok().as_deref() != Some(hash.as_str()) {
+                let _ = w.history().and_then(|h| h.replace_state_with_url(&wasm_bindgen::JsValue::NULL, "", Some(&hash)));
+            }
+        }
+        if autosave {
+            if let Some(s) = storage() {
+                let _ = s.set_item(STORAGE_KEY, &saved_record(&text, from));
+            }
+        }
+    });
+    let handle = window_event_listener(leptos::ev::hashchange, move |_| {
+        let hash = window().and_then(|w| w.location().hash().ok()).unwrap_or_default();
+        if hash != hash_for(&source.get_untracked(), origin.get_untracked()) && matches!(parse_hash(&hash), Some(Ok(_))) {
+            let b = boot_state(&hash, None, false, false);
+            preset.set(b.preset);
+            source.set(b.source);
+            origin.set(b.origin);
+        }
+    });
+    on_cleanup(move || handle.remove());
+}
+
+/// Offers `text` as a file download called `name`.
+pub fn download(name: &str, text: &str, mime: &str) -> Result<(), String> {
+    let fail = |what: &str| format!("could not export: {what}");
+    let document = window().and_then(|w| w.document()).ok_or_else(|| fail("no document"))?;
+    let parts = js_sys::Array::of1(&wasm_bindgen::JsValue::from_str(text));
+    let options = web_sys::BlobPropertyBag::new();
+    options.set_type(mime);
+    let blob = web_sys::Blob::new_with_str_sequence_and_options(&parts, &options).map_err(|_| fail("Blob"))?;
+    let url = web_sys::Url::create_object_url_with_blob(&blob).map_err(|_| fail("object URL"))?;
+    let a: web_sys::HtmlAnchorElement =
+        document.create_element("a").map_err(|_| fail("link"))?.dyn_into().map_err(|_| fail("link"))?;
+    a.set_href(&url);
+    a.set_download(name);
+    a.click();
+    let _ = web_sys::Url::revoke_object_url(&url);
+    Ok(())
+}
+
+/// The name and text of every file chosen in a file input.
+pub async fn read_files(files: Option<web_sys::FileList>) -> Vec<(String, Result<String, String>)> {
+    let mut out = Vec::new();
+    let Some(files) = files else { return out };
+    for i in 0..files.length() {
+        let Some(file) = files.get(i) else { continue };
+        let text = wasm_bindgen_futures::JsFuture::from(file.text())
+            .await
+            .ok()
+            .and_then(|v| v.as_string())
+            .ok_or_else(|| format!("could not read {}", file.name()));
+        out.push((file.name(), text));
+    }
+    out
+}
+
+/// Copies `text` to the clipboard (where the browser allows it).
+pub fn copy_text(text: &str) {
+    if let Some(w) = window() {
+        let _ = w.navigator().clipboard().write_text(text);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn scenarios_round_trip_through_the_hash() {
+        for p in PRESETS {
+            let data = encode_scenario(p.json);
+            assert!(data.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'-' || b == b'_'), "base64url: {data}");
+            assert!(data.len() < p.json.len(), "{}: compressed {} vs {}", p.id, data.len(), p.json.len());
+            assert_eq!(decode_scenario(&data).unwrap(), p.json);
+        }
+        let odd = "{\"name\": \"ünïcödé ✓\"}";
+        assert_eq!(decode_scenario(&encode_scenario(odd)).unwrap(), odd);
+    }
+
+    #[test]
+    fn damaged_links_are_errors_not_panics() {
+        assert!(decode_scenario("***").unwrap_err().contains("base64url"));
+        assert!(decode_scenario("AAAA").is_err());
+        let data = encode_scenario("abc");
+        assert!(decode_scenario(&data[..data.len() - 2]).is_err());
+        // a zip bomb: far more than the limit once inflated
+        let bomb = encode_scenario(&" ".repeat(MAX_SHARED_BYTES + 1));
+        assert!(decode_scenario(&bomb).unwrap_err().contains("too large"));
+    }
+
+    #[test]
+    fn hashes_name_presets_or_carry_the_scenario() {
+        let p = &PRESETS[1];
+        assert_eq!(hash_for(p.json, p.id), format!("#preset={}", p.id));
+        assert_eq!(parse_hash(&hash_for(p.json, p.id)), Some(Ok(Shared::Preset(p.id))));
+        let edited = p.json.replace("\"box\"", "\"crate\"");
+        let h = hash_for(&edited, p.id);
+        assert!(h.starts_with("#s="));
+        assert_eq!(parse_hash(&h), Some(Ok(Shared::Scenario(edited.clone()))));
+        assert_eq!(parse_hash(""), None);
+        assert_eq!(parse_hash("#section-2"), None);
+        assert!(parse_hash("#preset=nope").unwrap().is_err());
+    }
+
+    #[test]
+    fn start_prefers_the_link_then_the_autosave_then_the_first_preset() {
+        let edited = PRESETS[2].json.replace("crown", "crown2");
+        let saved = saved_record(&edited, "edited");
+        // nothing: the first preset
+        let b = boot_state("", None, true, false);
+        assert_eq!((b.origin, b.preset, b.source.as_str()), (PRESETS[0].id, 0, PRESETS[0].json));
+        // the autosave
+        let b = boot_state("", Some(&saved), true, false);
+        assert_eq!((b.origin, b.source.as_str()), ("edited", edited.as_str()));
+        // not in a frame / embed
+        let b = boot_state("", Some(&saved), false, true);
+        assert_eq!(b.origin, PRESETS[0].id);
+        assert!(b.embed);
+        // an autosaved preset keeps its id
+        let b = boot_state("", Some(&saved_record(PRESETS[3].json, PRESETS[3].id)), true, false);
+        assert_eq!((b.origin, b.preset), (PRESETS[3].id, 3));
+        // the link wins over the autosave
+        let h = hash_for(PRESETS[1].json, PRESETS[1].id);
+        let b = boot_state(&h, Some(&saved), true, false);
+        assert_eq!((b.origin, b.preset), (PRESETS[1].id, 1));
+        let h = hash_for("{\"x\": 1}", "edited");
+        let b = boot_state(&h, Some(&saved), true, false);
+        assert_eq!((b.origin, b.source.as_str()), ("edited", "{\"x\": 1}"));
+        // a damaged link: say so, fall back to the autosave
+        let b = boot_state("#s=***", Some(&saved), true, false);
+        assert_eq!(b.source, edited);
+        assert!(b.note.unwrap().contains("damaged"));
+        // a damaged autosave: the first preset
+        let b = boot_state("", Some("{not json"), true, false);
+        assert_eq!(b.origin, PRESETS[0].id);
+    }
+
+    #[test]
+    fn embed_flag_snippet_and_file_names() {
+        assert!(is_embed("?embed=1"));
+        assert!(is_embed("?a=b&embed=1"));
+        assert!(!is_embed("?embed=0"));
+        assert!(!is_embed(""));
+        let s = embed_snippet("https://x.org/cablenav/", "#preset=cdpr7");
+        assert!(s.starts_with("<iframe src=\"https://x.org/cablenav/?embed=1#preset=cdpr7\""), "{s}");
+        assert_eq!(export_name("cdpr7-box"), "cdpr7-box.json");
+        assert_eq!(export_name("My robot / v2"), "My-robot---v2.json");
+        assert_eq!(export_name("///"), "scenario.json");
+    }
+}

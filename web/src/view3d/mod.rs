@@ -1,0 +1,197 @@
+//! The 3-D view: a WebGL2 canvas drawing a [`scene::Geometry`], with an orbit camera driven by
+//! mouse, touch, wheel and keys, redrawn on demand (never in a busy loop) and resized with the
+//! page. What to draw is decided in [`scene`]; the camera maths is in [`camera`].
+
+pub mod camera;
+mod gl;
+pub mod scene;
+pub mod tessellate;
+
+use crate::app::Shared;
+use camera::{key_op, wheel_zoom, Camera, Pointers};
+use glam::DVec3;
+use leptos::prelude::*;
+use std::cell::RefCell;
+use std::rc::Rc;
+
+/// Everything the view shows, computed off the DOM.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SceneView {
+    /// The vertex data.
+    pub geometry: scene::Geometry,
+    /// The box to fit the camera to when the scenario changes.
+    pub bounds: (DVec3, DVec3),
+    /// The drawn trajectory sections, `kind:t0:t1` joined by spaces (`data-sections`, for tests).
+    pub sections: String,
+    /// The cables' looks (see [`scene::cable_look`]), joined by spaces (`data-cables`).
+    pub cables: String,
+    /// Poses in the drawn planned path (0: none).
+    pub path_poses: usize,
+}
+
+/// The canvas's mutable state, shared by its event handlers.
+struct ViewState {
+    renderer: Option<gl::Renderer>,
+    camera: Camera,
+    pointers: Pointers,
+    fitted: Option<(DVec3, DVec3)>,
+    frame_pending: bool,
+    draws: u32,
+}
+
+type State = Rc<RefCell<ViewState>>;
+
+/// Draws now: sizes the canvas to its box (times the device pixel ratio), then renders.
+fn draw(state: &State, canvas: &web_sys::HtmlCanvasElement) {
+    let mut st = state.borrow_mut();
+    let ratio = web_sys::window().map_or(1.0, |w| w.device_pixel_ratio()).clamp(1.0, 3.0);
+    let (w, h) = ((canvas.client_width() as f64 * ratio).round() as u32, (canvas.client_height() as f64 * ratio).round() as u32);
+    if w == 0 || h == 0 {
+        return;
+    }
+    if canvas.width() != w || canvas.height() != h {
+        canvas.set_width(w);
+        canvas.set_height(h);
+    }
+    st.camera.aspect = w as f64 / h as f64;
+    let vp = st.camera.view_projection().as_mat4();
+    if let Some(r) = &st.renderer {
+        r.draw(vp, w as i32, h as i32);
+        st.draws += 1;
+        let _ = canvas.set_attribute("data-draws", &st.draws.to_string());
+    }
+}
+
+/// Draws at the next animation frame (once, however often it is asked before then).
+fn schedule(state: &State, canvas: &web_sys::HtmlCanvasElement) {
+    if std::mem::replace(&mut state.borrow_mut().frame_pending, true) {
+        return;
+    }
+    let (state, canvas) = (state.clone(), canvas.clone());
+    request_animation_frame(move || {
+        state.borrow_mut().frame_pending = false;
+        draw(&state, &canvas);
+    });
+}
+
+/// The 3-D view of `scene`.
+#[component]
+pub fn View3d(scene: Memo<Option<Shared<SceneView>>>) -> impl IntoView {
+    let canvas_ref = NodeRef::<leptos::html::Canvas>::new();
+    let error = RwSignal::new(None::<String>);
+    let state: State = Rc::new(RefCell::new(ViewState {
+        renderer: None,
+        camera: Camera::default(),
+        pointers: Pointers::default(),
+        fitted: None,
+        frame_pending: false,
+        draws: 0,
+    }));
+
+    // create the renderer once the canvas exists; upload and redraw whenever the scene changes
+    let st = state.clone();
+    Effect::new(move |_| {
+        let Some(canvas) = canvas_ref.get() else { return };
+        let view = scene.get();
+        let mut s = st.borrow_mut();
+        if s.renderer.is_none() && error.get_untracked().is_none() {
+            match gl::Renderer::new(&canvas) {
+                Ok(r) => s.renderer = Some(r),
+                Err(e) => error.set(Some(format!("The 3-D view needs WebGL2: {e}"))),
+            }
+        }
+        if let Some(view) = view {
+            if let Some(r) = s.renderer.as_mut() {
+                r.upload(&view.0.geometry);
+            }
+            if s.fitted != Some(view.0.bounds) {
+                s.fitted = Some(view.0.bounds);
+                s.camera.aspect = (canvas.client_width().max(1) as f64) / (canvas.client_height().max(1) as f64);
+                s.camera.fit(view.0.bounds.0, view.0.bounds.1);
+            }
+        }
+        drop(s);
+        schedule(&st, &canvas);
+    });
+
+    let st = state.clone();
+    let resize = window_event_listener(leptos::ev::resize, move |_| {
+        if let Some(canvas) = canvas_ref.get_untracked() {
+            schedule(&st, &canvas);
+        }
+    });
+    on_cleanup(move || resize.remove());
+
+    // camera operations from events, then a redraw
+    let apply = {
+        let st = state.clone();
+        move |ops: Vec<camera::CameraOp>| {
+            let Some(canvas) = canvas_ref.get_untracked() else { return };
+            if ops.is_empty() {
+                return;
+            }
+            let h = canvas.client_height() as f64;
+            for op in ops {
+                op.apply(&mut st.borrow_mut().camera, h);
+            }
+            schedule(&st, &canvas);
+        }
+    };
+    let (st1, st2, st3, st4) = (state.clone(), state.clone(), state.clone(), state.clone());
+    let (ap1, ap2, ap3) = (apply.clone(), apply.clone(), apply);
+    let reset = move |_| {
+        let Some(canvas) = canvas_ref.get_untracked() else { return };
+        let mut s = st4.borrow_mut();
+        s.camera = Camera { aspect: s.camera.aspect, ..Camera::default() };
+        if let Some((lo, hi)) = s.fitted {
+            s.camera.fit(lo, hi);
+        }
+        drop(s);
+        schedule(&st4, &canvas);
+    };
+
+    let attr = move |f: fn(&SceneView) -> String| move || scene.get().map(|v| f(&v.0)).unwrap_or_default();
+    view! {
+        <div class="view3d">
+            <canvas
+                node_ref=canvas_ref
+                data-testid="view3d"
+                tabindex="0"
+                role="img"
+                aria-label="3-D view: drag to orbit, right-drag or shift-drag to pan, wheel or pinch to zoom, arrow keys and +/- too"
+                data-sections=attr(|v| v.sections.clone())
+                data-cables=attr(|v| v.cables.clone())
+                data-path-poses=attr(|v| v.path_poses.to_string())
+                on:pointerdown=move |ev: web_sys::PointerEvent| {
+                    let pan = ev.button() == 2 || ev.shift_key();
+                    st1.borrow_mut().pointers.press(ev.pointer_id(), ev.client_x() as f64, ev.client_y() as f64, pan);
+                    if let Some(c) = canvas_ref.get_untracked() {
+                        let _ = c.set_pointer_capture(ev.pointer_id());
+                    }
+                }
+                on:pointermove=move |ev: web_sys::PointerEvent| {
+                    let ops = st2.borrow_mut().pointers.moved(ev.pointer_id(), ev.client_x() as f64, ev.client_y() as f64);
+                    ap1(ops)
+                }
+                on:pointerup=move |ev: web_sys::PointerEvent| st3.borrow_mut().pointers.release(ev.pointer_id())
+                on:pointercancel={
+                    let st = state.clone();
+                    move |ev: web_sys::PointerEvent| st.borrow_mut().pointers.release(ev.pointer_id())
+                }
+                on:wheel=move |ev: web_sys::WheelEvent| {
+                    ev.prevent_default();
+                    ap2(vec![wheel_zoom(ev.delta_y())])
+                }
+                on:keydown=move |ev: web_sys::KeyboardEvent| {
+                    if let Some(op) = key_op(&ev.key(), ev.shift_key()) {
+                        ev.prevent_default();
+                        ap3(vec![op])
+                    }
+                }
+                on:contextmenu=|ev: web_sys::MouseEvent| ev.prevent_default()
+            ></canvas>
+            <button class="reset-view" on:click=reset title="Fit the scene in the view">"Reset view"</button>
+            {move || error.get().map(|e| view! { <p class="error" role="alert">{e}</p> })}
+        </div>
+    }
+}

@@ -1,0 +1,355 @@
+//! What the 3-D view draws, as vertex data: the base frame, anchors and a ground grid, the cables
+//! at the shown pose (coloured by tension margin, red when interfering), the platform, the
+//! obstacles, the trajectory in its verified sections and the planned path. Plain Rust over the
+//! core's results; the GL side only uploads and draws these buffers.
+
+use super::tessellate::{self, dv, Tris};
+use crate::logic::{Kind, StripModel};
+use cablenav::model::{Pose, Trajectory};
+use cablenav::verify::profile::CableState;
+use cablenav::Scenario;
+use glam::DVec3;
+use nalgebra::Vector3;
+
+/// Floats per vertex: position (3), normal (3, zero for unlit), colour RGBA (4).
+pub const STRIDE: usize = 10;
+
+/// An RGBA colour.
+pub type Rgba = [f32; 4];
+
+/// Feasible sections (the page's green).
+pub const GREEN: Rgba = [0.18, 0.62, 0.29, 1.0];
+/// Infeasible sections and interfering cables (the page's red).
+pub const RED: Rgba = [0.83, 0.23, 0.23, 1.0];
+/// Uncertain sections.
+pub const GREY: Rgba = [0.6, 0.6, 0.6, 1.0];
+/// The planned path.
+pub const PATH: Rgba = [0.42, 0.23, 0.83, 1.0];
+/// Cables when there is no tension information.
+const CABLE: Rgba = [0.2, 0.25, 0.3, 1.0];
+/// Cable colour at a comfortable tension margin (a quarter of the bounds' span or more).
+const CABLE_EASY: Rgba = [0.23, 0.44, 0.85, 1.0];
+/// Cable colour at zero tension margin.
+const CABLE_TIGHT: Rgba = [0.9, 0.57, 0.12, 1.0];
+/// Cable colour when its tension range leaves its bounds.
+const CABLE_OUT: Rgba = [0.56, 0.23, 0.83, 1.0];
+const PLATFORM: Rgba = [0.35, 0.4, 0.47, 0.6];
+const ANCHOR: Rgba = [0.12, 0.14, 0.16, 1.0];
+const GRID: Rgba = [0.8, 0.83, 0.86, 1.0];
+const AXES: [Rgba; 3] = [[0.85, 0.2, 0.2, 1.0], [0.2, 0.65, 0.25, 1.0], [0.2, 0.35, 0.9, 1.0]];
+/// Obstacle colours, by obstacle index, translucent.
+const OBSTACLES: [Rgba; 5] =
+    [[0.55, 0.45, 0.3, 0.55], [0.3, 0.55, 0.5, 0.55], [0.6, 0.5, 0.2, 0.55], [0.45, 0.45, 0.65, 0.55], [0.6, 0.35, 0.45, 0.55]];
+
+/// Vertex data for the three passes.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Geometry {
+    /// Opaque lit triangles.
+    pub solid: Vec<f32>,
+    /// Unlit line segments (2 vertices each).
+    pub lines: Vec<f32>,
+    /// Translucent lit triangles, drawn last (the platform and the obstacles).
+    pub translucent: Vec<f32>,
+}
+
+fn push(out: &mut Vec<f32>, p: DVec3, n: DVec3, c: Rgba) {
+    out.extend([p.x as f32, p.y as f32, p.z as f32, n.x as f32, n.y as f32, n.z as f32]);
+    out.extend(c);
+}
+
+fn push_tris(out: &mut Vec<f32>, t: &Tris, c: Rgba) {
+    for (p, n) in t.positions.iter().zip(&t.normals) {
+        push(out, *p, *n, c);
+    }
+}
+
+fn line(out: &mut Vec<f32>, a: DVec3, b: DVec3, c: Rgba) {
+    push(out, a, DVec3::ZERO, c);
+    push(out, b, DVec3::ZERO, c);
+}
+
+/// The colour of a section kind.
+pub fn kind_colour(kind: Kind) -> Rgba {
+    match kind {
+        Kind::Feasible => GREEN,
+        Kind::Infeasible => RED,
+        Kind::Uncertain => GREY,
+    }
+}
+
+/// How a cable is drawn, by its state: its class name (for the legend and tests) and colour.
+/// Interference and a length out of bounds are red; otherwise the tension margin, relative to
+/// the bounds' span, runs from purple (out of bounds) through orange (zero) to blue (a quarter
+/// of the span or more); dark grey without tension information.
+pub fn cable_look(s: &CableState) -> (&'static str, Rgba) {
+    if s.interfering {
+        return ("interfering", RED);
+    }
+    if !s.length_ok {
+        return ("length", RED);
+    }
+    match s.tension_margin {
+        None => ("plain", CABLE),
+        Some(m) if m <= 0.0 => ("tension-out", CABLE_OUT),
+        Some(m) => {
+            let f = (m / (0.25 * s.tension_span.max(1e-12))).clamp(0.0, 1.0) as f32;
+            ("tension-margin", std::array::from_fn(|k| CABLE_TIGHT[k] * (1.0 - f) + CABLE_EASY[k] * f))
+        }
+    }
+}
+
+/// A piece of a path drawn in one colour: the poses along it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Polyline {
+    /// Its colour.
+    pub colour: Rgba,
+    /// The poses, in order.
+    pub poses: Vec<Pose>,
+}
+
+/// Poses per unit of t when sampling a section for drawing.
+const SAMPLES_PER_T: f64 = 240.0;
+
+/// The trajectory cut at the verifier's section ends, each piece sampled (ends included) and
+/// coloured by its kind, so colour changes exactly where the report says.
+pub fn trajectory_polylines(traj: &Trajectory, model: &StripModel) -> Vec<Polyline> {
+    model
+        .sections
+        .iter()
+        .map(|s| {
+            let n = (((s.t1 - s.t0) * SAMPLES_PER_T).ceil() as usize).max(1);
+            let poses = (0..=n).map(|k| traj.pose_at(s.t0 + (s.t1 - s.t0) * k as f64 / n as f64)).collect();
+            Polyline { colour: kind_colour(s.kind), poses }
+        })
+        .collect()
+}
+
+/// The box the scene occupies: base anchors, obstacles, and every named pose's platform.
+pub fn bounds(s: &Scenario) -> (DVec3, DVec3) {
+    let mut min = DVec3::splat(f64::INFINITY);
+    let mut max = DVec3::splat(f64::NEG_INFINITY);
+    let mut add = |p: DVec3| {
+        min = min.min(p);
+        max = max.max(p);
+    };
+    for c in &s.robot.cables {
+        add(dv(&c.base));
+    }
+    for o in &s.obstacles {
+        for p in tessellate::shape(&o.shape).positions {
+            add(p);
+        }
+    }
+    for (_, pose) in &s.poses {
+        for c in &s.robot.cables {
+            add(dv(&pose.transform(&c.platform)));
+        }
+    }
+    if !min.is_finite() || !max.is_finite() {
+        return (DVec3::splat(-1.0), DVec3::splat(1.0));
+    }
+    (min, max)
+}
+
+/// The tool point whose trace shows a path's orientation: on the platform's z axis, as far from
+/// its origin as its farthest anchor (at least a tenth of the scene).
+fn tool_point(s: &Scenario, extent: f64) -> Vector3<f64> {
+    let reach = s.robot.cables.iter().map(|c| c.platform.norm()).fold(0.0, f64::max);
+    Vector3::new(0.0, 0.0, reach.max(extent * 0.1))
+}
+
+/// Everything to draw.
+pub struct SceneInput<'a> {
+    /// The scenario.
+    pub scenario: &'a Scenario,
+    /// The platform pose shown (cables and platform), if any.
+    pub pose: Option<Pose>,
+    /// The cables' states at `pose`, in cable order.
+    pub cables: &'a [CableState],
+    /// The trajectory's pieces (see [`trajectory_polylines`]).
+    pub trajectory: &'a [Polyline],
+    /// The planned path, if any.
+    pub path: Option<&'a Polyline>,
+}
+
+/// Builds the vertex data of a scene.
+pub fn build(input: &SceneInput) -> Geometry {
+    let s = input.scenario;
+    let mut g = Geometry::default();
+    let (min, max) = bounds(s);
+    let extent = (max - min).length().max(1e-3);
+    let thin = extent * 0.0025;
+
+    // ground grid at the lowest base anchor, over the anchors' footprint, 10 lines each way
+    let floor = s.robot.cables.iter().map(|c| c.base.z).fold(f64::INFINITY, f64::min).min(min.z);
+    for k in 0..=10 {
+        let f = k as f64 / 10.0;
+        let x = min.x + (max.x - min.x) * f;
+        let y = min.y + (max.y - min.y) * f;
+        line(&mut g.lines, DVec3::new(x, min.y, floor), DVec3::new(x, max.y, floor), GRID);
+        line(&mut g.lines, DVec3::new(min.x, y, floor), DVec3::new(max.x, y, floor), GRID);
+    }
+    // world frame
+    for (k, c) in AXES.iter().enumerate() {
+        let tip = DVec3::from_array(std::array::from_fn(|i| if i == k { extent * 0.12 } else { 0.0 }));
+        let mut t = Tris::default();
+        tessellate::tube(&mut t, DVec3::ZERO, tip, thin * 1.2, 6);
+        push_tris(&mut g.solid, &t, *c);
+    }
+    // base anchors
+    let a = extent * 0.008;
+    let mut anchors = Tris::default();
+    for c in &s.robot.cables {
+        let b = dv(&c.base);
+        tessellate::cuboid(&mut anchors, std::array::from_fn(|i| b + DVec3::new(bit(i, 0), bit(i, 1), bit(i, 2)) * a));
+    }
+    push_tris(&mut g.solid, &anchors, ANCHOR);
+
+    if let Some(pose) = input.pose {
+        for (i, c) in s.robot.cables.iter().enumerate() {
+            let colour = input.cables.get(i).map_or(CABLE, |st| cable_look(st).1);
+            let mut t = Tris::default();
+            tessellate::tube(&mut t, dv(&c.base), dv(&pose.transform(&c.platform)), thin, 6);
+            push_tris(&mut g.solid, &t, colour);
+        }
+        platform(&mut g, s, &pose, extent);
+    }
+
+    let tool = tool_point(s, extent);
+    let pieces = input.trajectory.iter().chain(input.path);
+    for piece in pieces {
+        let mut t = Tris::default();
+        let positions: Vec<DVec3> = piece.poses.iter().map(|p| dv(&p.position)).collect();
+        let tips: Vec<DVec3> = piece.poses.iter().map(|p| dv(&p.transform(&tool))).collect();
+        for w in positions.windows(2).chain(tips.windows(2)) {
+            if (w[1] - w[0]).length() > 1e-12 {
+                tessellate::tube(&mut t, w[0], w[1], thin * 1.6, 6);
+            }
+        }
+        push_tris(&mut g.solid, &t, piece.colour);
+    }
+
+    for (k, o) in s.obstacles.iter().enumerate() {
+        push_tris(&mut g.translucent, &tessellate::shape(&o.shape), OBSTACLES[k % OBSTACLES.len()]);
+    }
+    g
+}
+
+/// ±1 by bit `b` of `i` (cuboid corner order).
+fn bit(i: usize, b: usize) -> f64 {
+    if i >> b & 1 == 0 { -1.0 } else { 1.0 }
+}
+
+/// The platform: the box spanning its anchors in its own frame (thickened if flat), posed, and
+/// its frame axes.
+fn platform(g: &mut Geometry, s: &Scenario, pose: &Pose, extent: f64) {
+    let mut lo = Vector3::repeat(f64::INFINITY);
+    let mut hi = Vector3::repeat(f64::NEG_INFINITY);
+    for c in &s.robot.cables {
+        lo = lo.inf(&c.platform);
+        hi = hi.sup(&c.platform);
+    }
+    let size = (hi - lo).max().max(extent * 0.02);
+    let pad = Vector3::from_fn(|i, _| ((size * 0.05) - (hi[i] - lo[i]) / 2.0).max(0.0));
+    let (lo, hi) = (lo - pad, hi + pad);
+    let corners = std::array::from_fn(|i| {
+        let local = Vector3::new(pick(i, 0, &lo, &hi), pick(i, 1, &lo, &hi), pick(i, 2, &lo, &hi));
+        dv(&pose.transform(&local))
+    });
+    let mut t = Tris::default();
+    tessellate::cuboid(&mut t, corners);
+    // translucent: a large platform must not hide the cables and paths behind it
+    push_tris(&mut g.translucent, &t, PLATFORM);
+    let origin = dv(&pose.position);
+    for (k, c) in AXES.iter().enumerate() {
+        let tip = pose.transform(&Vector3::from_fn(|i, _| if i == k { size * 0.8 } else { 0.0 }));
+        line(&mut g.lines, origin, dv(&tip), *c);
+    }
+}
+
+fn pick(i: usize, axis: usize, lo: &Vector3<f64>, hi: &Vector3<f64>) -> f64 {
+    if i >> axis & 1 == 0 { lo[axis] } else { hi[axis] }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::logic;
+    use crate::presets::PRESETS;
+    use cablenav::verify::profile::cable_states;
+
+    fn scenario(id: &str) -> Scenario {
+        logic::parse_scenario(PRESETS[crate::presets::find(id).unwrap()].json).unwrap()
+    }
+
+    /// Colours of the triangles in `data`, one per vertex.
+    fn colours(data: &[f32]) -> Vec<Rgba> {
+        data.chunks(STRIDE).map(|v| [v[6], v[7], v[8], v[9]]).collect()
+    }
+
+    #[test]
+    fn cable_looks() {
+        let st = |interfering, length_ok, tension_margin| CableState { interfering, length_ok, tension_margin, tension_span: 1.0 };
+        assert_eq!(cable_look(&st(true, true, Some(0.5))), ("interfering", RED));
+        assert_eq!(cable_look(&st(false, false, None)), ("length", RED));
+        assert_eq!(cable_look(&st(false, true, None)), ("plain", CABLE));
+        assert_eq!(cable_look(&st(false, true, Some(-0.1))).0, "tension-out");
+        assert_eq!(cable_look(&st(false, true, Some(0.0))).0, "tension-out");
+        assert_eq!(cable_look(&st(false, true, Some(0.3))).1, CABLE_EASY);
+        let mid = cable_look(&st(false, true, Some(0.125))).1;
+        assert!((mid[0] - (CABLE_TIGHT[0] + CABLE_EASY[0]) / 2.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn trajectory_pieces_follow_the_sections_exactly() {
+        let s = scenario("cdpr7-tree");
+        let traj = &s.trajectories[0];
+        let report = logic::verify(&s, 0).unwrap();
+        let model = logic::strip(&report);
+        let pieces = trajectory_polylines(traj, &model);
+        assert_eq!(pieces.len(), model.sections.len());
+        assert!(pieces.len() >= 2, "the tree preset has an infeasible section");
+        for (p, sec) in pieces.iter().zip(&model.sections) {
+            assert_eq!(p.colour, kind_colour(sec.kind));
+            assert_eq!(p.poses.first().unwrap().position, traj.pose_at(sec.t0).position);
+            assert_eq!(p.poses.last().unwrap().position, traj.pose_at(sec.t1).position);
+        }
+    }
+
+    #[test]
+    fn the_scene_has_every_part() {
+        let s = scenario("cdpr7-tree");
+        let traj = &s.trajectories[0];
+        let report = logic::verify(&s, 0).unwrap();
+        let pieces = trajectory_polylines(traj, &logic::strip(&report));
+        let pose = traj.pose_at(0.3);
+        let states = cable_states(&s, &pose);
+        let g = build(&SceneInput { scenario: &s, pose: Some(pose), cables: &states, trajectory: &pieces, path: None });
+        assert_eq!(g.solid.len() % STRIDE, 0);
+        assert_eq!(g.lines.len() % (2 * STRIDE), 0);
+        // the platform box and the three obstacles, translucent
+        let expect: usize = 12 + s.obstacles.iter().map(|o| tessellate::shape(&o.shape).len()).sum::<usize>();
+        assert_eq!(g.translucent.len(), expect * 3 * STRIDE);
+        let solid = colours(&g.solid);
+        // cable 3 meets the crown at t = 0.3: drawn red, 12 triangles of its tube
+        assert!(states[2].interfering);
+        assert!(solid.iter().filter(|c| **c == RED).count() >= 36);
+        assert!(solid.contains(&GREEN), "the feasible section");
+        assert!(!solid.contains(&PATH), "no path given");
+        // without a pose: no cables, no platform
+        let bare = build(&SceneInput { scenario: &s, pose: None, cables: &[], trajectory: &[], path: None });
+        assert!(bare.solid.len() < g.solid.len());
+        assert!(!colours(&bare.solid).contains(&RED));
+    }
+
+    #[test]
+    fn bounds_hold_the_anchors_and_poses() {
+        let s = scenario("robocrane");
+        let (min, max) = bounds(&s);
+        for c in &s.robot.cables {
+            let b = dv(&c.base);
+            assert!(b.cmpge(min).all() && b.cmple(max).all());
+        }
+        assert!(max.z >= 2.0, "the platform at z = 2 is inside");
+    }
+}

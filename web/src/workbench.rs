@@ -1,0 +1,417 @@
+//! The page's analysis area under the verification result: the 3-D view with the platform
+//! animated along a path, planning, the plots and the exports. It reads the scenario and the
+//! verification the page already computed (`app`), and computes everything else through the core.
+
+use crate::app::{Parsed, Shared, Verified};
+use crate::logic::{self, fmt_num, StripModel};
+use crate::planning::Planning;
+use crate::plots::distance::DistancePlot;
+use crate::plots::export;
+use crate::plots::slice::{Overlay, SlicePanel};
+use crate::plots::tension::TensionPlot;
+use crate::view3d::scene::{self, Polyline, SceneInput, PATH};
+use crate::view3d::{SceneView, View3d};
+use cablenav::model::{Pose, Trajectory};
+use cablenav::verify::profile;
+use cablenav::Scenario;
+use leptos::prelude::*;
+
+/// Samples per path for the clearance and tension plots.
+const PLOT_SAMPLES: usize = 200;
+
+/// A path found by the planner, as the page keeps it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Planned {
+    /// The query's name.
+    pub query: String,
+    /// Its start pose.
+    pub start: Pose,
+    /// Its goal pose.
+    pub goal: Pose,
+    /// The path's poses, start to goal.
+    pub poses: Vec<Pose>,
+}
+
+/// Which path the animation, the plots and the exports follow.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Follow {
+    /// The selected trajectory.
+    Trajectory,
+    /// The planned path.
+    Planned,
+}
+
+/// The path being followed, resolved.
+enum PathRef<'a> {
+    Trajectory(&'a Trajectory),
+    Planned(&'a Planned),
+}
+
+impl PathRef<'_> {
+    /// The pose at fraction `u` ∈ [0, 1]: the trajectory at t = u, or the planned path's pose
+    /// nearest to fraction u of its poses (the path is the planner's own dense sequence).
+    fn pose_at(&self, u: f64) -> Option<Pose> {
+        match self {
+            PathRef::Trajectory(t) => Some(t.pose_at(u.clamp(0.0, 1.0))),
+            PathRef::Planned(p) => {
+                let n = p.poses.len();
+                (n > 0).then(|| p.poses[((u.clamp(0.0, 1.0) * (n - 1) as f64).round() as usize).min(n - 1)])
+            }
+        }
+    }
+
+    /// `(parameter, pose)` samples for plots and exports: t for a trajectory, the fraction of
+    /// poses for a planned path (all of them).
+    fn samples(&self, n: usize) -> Vec<(f64, Pose)> {
+        match self {
+            PathRef::Trajectory(t) => (0..=n).map(|k| k as f64 / n as f64).map(|u| (u, t.pose_at(u))).collect(),
+            PathRef::Planned(p) => {
+                let m = p.poses.len().max(2) - 1;
+                p.poses.iter().enumerate().map(|(k, pose)| (k as f64 / m as f64, *pose)).collect()
+            }
+        }
+    }
+
+    fn name(&self) -> String {
+        match self {
+            PathRef::Trajectory(t) => format!("trajectory “{}”", t.name),
+            PathRef::Planned(p) => format!("planned path {}", p.query),
+        }
+    }
+
+    fn param(&self) -> &'static str {
+        match self {
+            PathRef::Trajectory(_) => "t",
+            PathRef::Planned(_) => "fraction",
+        }
+    }
+}
+
+/// The scenario, if it parsed.
+fn scenario_of(parsed: &Parsed) -> Option<&Scenario> {
+    parsed.0.as_ref().as_ref().ok()
+}
+
+/// Runs `f` on the followed path of the parsed scenario: the planned path when it is followed
+/// and exists, else trajectory `traj` (clamped to the scenario's).
+fn on_path<T>(parsed: &Parsed, planned: Option<&Shared<Planned>>, follow: Follow, traj: usize, f: impl FnOnce(&Scenario, PathRef) -> Option<T>) -> Option<T> {
+    let s = scenario_of(parsed)?;
+    match (follow, planned) {
+        (Follow::Planned, Some(p)) => f(s, PathRef::Planned(&p.0)),
+        _ => f(s, PathRef::Trajectory(s.trajectories.get(traj.min(s.trajectories.len().saturating_sub(1)))?)),
+    }
+}
+
+/// [`on_path`] reading (and so tracking) the signals it depends on.
+fn followed<T>(
+    parsed: Memo<Parsed>,
+    planned: RwSignal<Option<Shared<Planned>>>,
+    follow: RwSignal<Follow>,
+    trajectory: RwSignal<usize>,
+    f: impl FnOnce(&Scenario, PathRef) -> Option<T>,
+) -> Option<T> {
+    on_path(&parsed.get(), planned.get().as_ref(), follow.get(), trajectory.get(), f)
+}
+
+/// The analysis area.
+#[component]
+pub fn Workbench(parsed: Memo<Parsed>, verified: Memo<Verified>, trajectory: RwSignal<usize>, planned: RwSignal<Option<Shared<Planned>>>) -> impl IntoView {
+    let scrub = RwSignal::new(0.0f64);
+    let follow = RwSignal::new(Follow::Trajectory);
+    let playing = RwSignal::new(false);
+
+    // a new scenario drops the planned path and rewinds
+    Effect::new(move |_| {
+        parsed.track();
+        planned.set(None);
+        follow.set(Follow::Trajectory);
+        scrub.set(0.0);
+    });
+    // a new plan is followed at once
+    Effect::new(move |_| {
+        if planned.get().is_some() {
+            follow.set(Follow::Planned);
+            scrub.set(0.0);
+        }
+    });
+
+    let strip: Memo<Option<StripModel>> = Memo::new(move |_| match verified.get().0.as_ref() {
+        Some(Ok(r)) => Some(logic::strip(r)),
+        _ => None,
+    });
+    let traj_index = move |s: &Scenario| trajectory.get().min(s.trajectories.len().saturating_sub(1));
+    let trajectory_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |_| {
+        let parsed = parsed.get();
+        let pieces = match (scenario_of(&parsed), strip.get()) {
+            (Some(s), Some(model)) if !s.trajectories.is_empty() => scene::trajectory_polylines(&s.trajectories[traj_index(s)], &model),
+            _ => vec![],
+        };
+        Shared::new(pieces)
+    });
+    let path_piece: Memo<Option<Shared<Polyline>>> =
+        Memo::new(move |_| planned.get().map(|p| Shared::new(Polyline { colour: PATH, poses: p.0.poses.clone() })));
+
+    let shown_pose: Memo<Option<Pose>> = Memo::new(move |_| {
+        let u = scrub.get();
+        followed(parsed, planned, follow, trajectory, |_, path| path.pose_at(u))
+    });
+
+    let scene_view: Memo<Option<Shared<SceneView>>> = Memo::new(move |_| {
+        let parsed = parsed.get();
+        let s = scenario_of(&parsed)?;
+        let pose = shown_pose.get();
+        let cables = pose.map(|p| profile::cable_states(s, &p)).unwrap_or_default();
+        let pieces = trajectory_pieces.get();
+        let path = path_piece.get();
+        let geometry = scene::build(&SceneInput { scenario: s, pose, cables: &cables, trajectory: &pieces.0, path: path.as_ref().map(|p| &*p.0) });
+        let sections = strip
+            .get()
+            .map(|m| m.sections.iter().map(|x| format!("{}:{}:{}", x.kind.as_str(), logic::fmt_exact(x.t0), logic::fmt_exact(x.t1))).collect::<Vec<_>>().join(" "))
+            .unwrap_or_default();
+        Some(Shared::new(SceneView {
+            geometry,
+            bounds: scene::bounds(s),
+            sections,
+            cables: cables.iter().map(|c| scene::cable_look(c).0).collect::<Vec<_>>().join(" "),
+            path_poses: path.map_or(0, |p| p.0.poses.len()),
+        }))
+    });
+
+    let profile_data = Memo::new(move |_| {
+        followed(parsed, planned, follow, trajectory, |s, path| {
+            let r = profile::clearances_at(s, &path.samples(PLOT_SAMPLES)).map_err(|e| e.to_string());
+            Some(Shared::new((r, format!("{}; x: {}", path.name(), path.param()))))
+        })
+    });
+    let envelope = Memo::new(move |_| {
+        followed(parsed, planned, follow, trajectory, |s, path| {
+            let r = profile::tension_at(s, &path.name(), &path.samples(PLOT_SAMPLES)).map_err(|e| e.to_string());
+            Some(Shared::new((r, path.param())))
+        })
+    });
+    let overlay = Memo::new(move |_| {
+        let parsed = parsed.get();
+        let Some(s) = scenario_of(&parsed) else { return Overlay::default() };
+        match (follow.get(), planned.get()) {
+            (Follow::Planned, Some(p)) => Overlay { start: Some(p.0.start), goal: Some(p.0.goal), pieces: vec![Polyline { colour: PATH, poses: p.0.poses.clone() }] },
+            _ => {
+                let t = s.trajectories.get(traj_index(s));
+                Overlay { start: t.map(|t| t.pose_at(0.0)), goal: t.map(|t| t.pose_at(1.0)), pieces: (*trajectory_pieces.get().0).clone() }
+            }
+        }
+    });
+
+    // play: advance the scrubber by animation frames, a pass in 6 s
+    let step_play = move |prev: f64| {
+        fn frame(prev: f64, scrub: RwSignal<f64>, playing: RwSignal<bool>) {
+            request_animation_frame(move || {
+                if !playing.get_untracked() {
+                    return;
+                }
+                let now = web_sys::window().and_then(|w| w.performance()).map_or(0.0, |p| p.now());
+                let dt = if prev > 0.0 { (now - prev) / 6000.0 } else { 0.0 };
+                let next = scrub.get_untracked() + dt;
+                if next >= 1.0 {
+                    scrub.set(1.0);
+                    playing.set(false);
+                } else {
+                    scrub.set(next);
+                    frame(now, scrub, playing);
+                }
+            });
+        }
+        frame(prev, scrub, playing);
+    };
+    let toggle_play = move |_| {
+        if playing.get_untracked() {
+            playing.set(false);
+        } else {
+            if scrub.get_untracked() >= 1.0 {
+                scrub.set(0.0);
+            }
+            playing.set(true);
+            step_play(0.0);
+        }
+    };
+
+    let readout = move || {
+        let pose = shown_pose.get()?;
+        let c = pose.coords();
+        Some(format!(
+            "x {} y {} z {} m · φ {} θ {} σ {} rad",
+            fmt_num(c[0]),
+            fmt_num(c[1]),
+            fmt_num(c[2]),
+            fmt_num(c[3]),
+            fmt_num(c[4]),
+            fmt_num(c[5])
+        ))
+    };
+
+    // exports
+    let export_intervals = move |_| {
+        if let Some(m) = strip.get_untracked() {
+            export::save("cablenav-intervals.csv", "text/csv", export::intervals_csv(&m).as_bytes());
+        }
+    };
+    let copy_intervals = move |_| {
+        if let Some(m) = strip.get_untracked() {
+            export::copy(&export::intervals_csv(&m));
+        }
+    };
+    let export_report = move |_| {
+        if let Some(Ok(r)) = verified.get_untracked().0.as_ref() {
+            export::save("cablenav-report.json", "application/json", serde_json::to_string_pretty(r).unwrap_or_default().as_bytes());
+        }
+    };
+    let export_path = move |json: bool| {
+        let text = untrack(|| {
+            followed(parsed, planned, follow, trajectory, |_, path| {
+                let samples = path.samples(PLOT_SAMPLES);
+                Some(if json { export::poses_json(path.param(), &samples) } else { export::poses_csv(path.param(), &samples) })
+            })
+        });
+        if let Some(text) = text {
+            let (name, mime) = if json { ("cablenav-path.json", "application/json") } else { ("cablenav-path.csv", "text/csv") };
+            export::save(name, mime, text.as_bytes());
+        }
+    };
+    let export_view = move |_| {
+        let canvas = web_sys::window()
+            .and_then(|w| w.document())
+            .and_then(|d| d.query_selector("canvas[data-testid=view3d]").ok().flatten())
+            .and_then(|e| wasm_bindgen::JsCast::dyn_into::<web_sys::HtmlCanvasElement>(e).ok());
+        if let Some(c) = canvas {
+            export::save_canvas(&c, "cablenav-view.png");
+        }
+    };
+
+    let follow_label = move || match follow.get() {
+        Follow::Trajectory => "trajectory",
+        Follow::Planned => "planned path",
+    };
+
+    view! {
+        <section class="workbench" data-testid="workbench">
+            <h2>"3-D view"</h2>
+            <View3d scene=scene_view />
+            <div class="scrubber">
+                <label>
+                    "Follow "
+                    <select data-testid="follow" on:change=move |ev| {
+                        follow.set(if event_target_value(&ev) == "planned" { Follow::Planned } else { Follow::Trajectory });
+                        scrub.set(0.0);
+                    }>
+                        <option value="trajectory" selected=move || follow.get() == Follow::Trajectory>"trajectory"</option>
+                        <option value="planned" selected=move || follow.get() == Follow::Planned disabled=move || planned.get().is_none()>
+                            "planned path"
+                        </option>
+                    </select>
+                </label>
+                <button data-testid="play" on:click=toggle_play>{move || if playing.get() { "Pause" } else { "Play" }}</button>
+                <input
+                    data-testid="scrubber"
+                    type="range"
+                    min="0"
+                    max="1000"
+                    step="1"
+                    aria-label=move || format!("position along the {}", follow_label())
+                    prop:value=move || (scrub.get() * 1000.0).round().to_string()
+                    on:input=move |ev| {
+                        if let Ok(v) = event_target_value(&ev).parse::<f64>() {
+                            playing.set(false);
+                            scrub.set(v / 1000.0)
+                        }
+                    }
+                />
+                <span class="readout" data-testid="pose-readout">{move || format!("{} = {} · {}", if follow.get() == Follow::Trajectory { "t" } else { "fraction" }, fmt_num(scrub.get()), readout().unwrap_or_default())}</span>
+            </div>
+            <p class="legend">
+                "Path: " <span class="swatch feasible"></span> "feasible " <span class="swatch infeasible"></span> "infeasible "
+                <span class="swatch" style="background: rgb(107,59,212)"></span> "planned (thick: platform origin; thin: a point on its z axis). "
+                "Cables: " <span class="swatch" style="background: rgb(59,112,217)"></span> "tension margin ≥ ¼ of the bounds' span, "
+                <span class="swatch" style="background: rgb(230,145,31)"></span> "margin near 0, "
+                <span class="swatch" style="background: rgb(143,59,212)"></span> "tension out of bounds, "
+                <span class="swatch infeasible"></span> "interfering or length out of bounds, "
+                <span class="swatch" style="background: rgb(51,64,77)"></span> "no wrench set."
+            </p>
+            <Planning parsed planned />
+            <h2>"Exports"</h2>
+            <p class="exports">
+                <button data-testid="export-intervals-csv" on:click=export_intervals>"Intervals (CSV)"</button>
+                <button data-testid="copy-intervals" on:click=copy_intervals>"Copy intervals"</button>
+                <button data-testid="export-report-json" on:click=export_report>"Report (JSON, as the CLI prints)"</button>
+                <button data-testid="export-path-csv" on:click=move |_| export_path(false)>"Path poses (CSV)"</button>
+                <button data-testid="export-path-json" on:click=move |_| export_path(true)>"Path poses (JSON)"</button>
+                <button data-testid="export-view-png" on:click=export_view>"3-D view (PNG)"</button>
+            </p>
+            <h2>"Clearances along the path"</h2>
+            <DistancePlot
+                profile=Signal::derive(move || profile_data.get().map(|p| p.0.0.clone()))
+                label=Signal::derive(move || profile_data.get().map(|p| p.0.1.clone()).unwrap_or_default())
+            />
+            <h2>"Tension envelope"</h2>
+            <TensionPlot
+                envelope=Signal::derive(move || envelope.get().map(|e| e.0.0.clone()))
+                param=Signal::derive(move || envelope.get().map_or("t", |e| e.0.1))
+            />
+            <h2>"Slice map"</h2>
+            <SlicePanel parsed overlay=Signal::derive(move || overlay.get()) />
+        </section>
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::presets::{find, PRESETS};
+
+    fn robocrane() -> Scenario {
+        logic::parse_scenario(PRESETS[find("robocrane").unwrap()].json).unwrap()
+    }
+
+    #[test]
+    fn a_trajectory_is_followed_in_t() {
+        let s = robocrane();
+        let t = &s.trajectories[0];
+        let path = PathRef::Trajectory(t);
+        assert_eq!(path.pose_at(0.25), Some(t.pose_at(0.25)));
+        assert_eq!(path.pose_at(7.0), Some(t.pose_at(1.0)), "clamped");
+        let samples = path.samples(4);
+        assert_eq!(samples.iter().map(|x| x.0).collect::<Vec<_>>(), [0.0, 0.25, 0.5, 0.75, 1.0]);
+        assert_eq!(samples[2].1, t.pose_at(0.5));
+        assert_eq!(path.param(), "t");
+    }
+
+    #[test]
+    fn a_planned_path_is_followed_pose_by_pose() {
+        let s = robocrane();
+        let poses: Vec<Pose> = (0..5).map(|k| s.trajectories[0].pose_at(k as f64 / 4.0)).collect();
+        let p = Planned { query: "q1-q2".into(), start: poses[0], goal: poses[4], poses: poses.clone() };
+        let path = PathRef::Planned(&p);
+        assert_eq!(path.pose_at(0.0), Some(poses[0]));
+        assert_eq!(path.pose_at(0.5), Some(poses[2]));
+        assert_eq!(path.pose_at(0.6), Some(poses[2]), "the nearest pose, not an interpolation");
+        assert_eq!(path.pose_at(1.0), Some(poses[4]));
+        let samples = path.samples(200);
+        assert_eq!(samples.len(), 5, "every pose, whatever the sample count");
+        assert_eq!(samples[4], (1.0, poses[4]));
+        assert_eq!(path.param(), "fraction");
+        let empty = Planned { poses: vec![], ..p };
+        assert_eq!(PathRef::Planned(&empty).pose_at(0.5), None);
+    }
+
+    #[test]
+    fn the_followed_path_falls_back_to_the_trajectory() {
+        let s = robocrane();
+        let parsed: Parsed = Shared::new(Ok(s.clone()));
+        let name = |follow, planned: Option<&Shared<Planned>>| on_path(&parsed, planned, follow, 9, |_, p| Some(p.name()));
+        assert_eq!(name(Follow::Planned, None).as_deref(), Some("trajectory “slerp q1-q2”"), "no plan: the (clamped) trajectory");
+        let pose = s.trajectories[0].pose_at(0.0);
+        let plan = Shared::new(Planned { query: "q1-q2".into(), start: pose, goal: pose, poses: vec![pose] });
+        assert_eq!(name(Follow::Planned, Some(&plan)).as_deref(), Some("planned path q1-q2"));
+        assert_eq!(name(Follow::Trajectory, Some(&plan)).as_deref(), Some("trajectory “slerp q1-q2”"));
+        let broken: Parsed = Shared::new(Err("bad".into()));
+        assert_eq!(on_path(&broken, None, Follow::Trajectory, 0, |_, p| Some(p.name())), None);
+    }
+}
