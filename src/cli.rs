@@ -371,7 +371,7 @@ fn plan_text(r: &PlanReport) -> String {
         out += &format!("  note: {} chart(s) blocked by a clearance violation at their centre\n", a.blocked_charts);
     }
     if a.broken_edges > 0 {
-        out += &format!("  warning: {} chart pair(s) dropped because their dense edge could not be followed; a no_path here is not certified\n", a.broken_edges);
+        out += &format!("  warning: {} chart pair(s) or walk(s) to the goal dropped because their dense path could not be followed; a no_path here is not certified\n", a.broken_edges);
     }
     if a.rejected_edges > 0 {
         out += &format!("  note: {} chart pair(s) dropped because the exact verifier rejected their edge (interference)\n", a.rejected_edges);

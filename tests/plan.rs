@@ -605,3 +605,37 @@ fn cli_plan_prints_the_documented_report() {
     }
     assert_eq!(cli("plan robocrane.json --query q9").unwrap_err().field, "query");
 }
+
+/// Every `step` unit does bounded work, counted in manifold evaluations and exact-verifier calls
+/// (not in time). On q1 → q3 (φ, θ free) a final walk to the goal used to creep towards a fold of
+/// its chart's map: one unit made 2.2 million projections (tens of seconds). With the walks'
+/// projection cap a unit makes at most a few thousand evaluations — an expansion tries at most
+/// 20 steps, a walk at most 4 n + 16 projections (n = length / δ ≤ 10 here), each projection
+/// at most 30 Newton iterations — and the plan is still found and re-verified clean.
+#[test]
+fn every_step_unit_does_bounded_work() {
+    let mut s = robocrane();
+    s.queries.push(Query { name: "q1-q3".to_string(), start: "q1".to_string(), goal: "q3".to_string(), fixed: vec![Coord::X, Coord::Y, Coord::Z, Coord::Sigma] });
+    let mut p = Planner::new(&s, "q1-q3", PlanParams::default()).unwrap();
+    let mut last = p.work();
+    let (mut most_evaluations, mut most_trajectories, mut most_poses, mut units) = (0, 0, 0, 0);
+    while p.step(1).done.is_none() {
+        let now = p.work();
+        most_evaluations = most_evaluations.max(now.evaluations - last.evaluations);
+        most_trajectories = most_trajectories.max(now.trajectory_checks - last.trajectory_checks);
+        most_poses = most_poses.max(now.pose_checks - last.pose_checks);
+        last = now;
+        units += 1;
+        assert!(units < 100_000, "the planner does not end");
+    }
+    eprintln!("q1-q3: {units} units; at most {most_evaluations} evaluations, {most_trajectories} trajectory checks, {most_poses} pose checks per unit");
+    assert!(most_evaluations > 0 && most_evaluations <= 3000, "{most_evaluations} manifold evaluations in one unit");
+    assert!(most_trajectories <= 2 * (4 * 10 + 16), "{most_trajectories} trajectory checks in one unit");
+    assert!(most_poses <= 2, "{most_poses} pose checks in one unit");
+    let out = p.outcome().unwrap();
+    assert_eq!(out.status, PlanStatus::Found);
+    let v = &out.verification;
+    assert_eq!((v.infeasible_sections, v.uncertain_sections, v.wrench_infeasible_poses), (0, 0, 0), "{v:?}");
+    assert_eq!((v.edges, v.wrench_poses), (out.path.len() - 1, out.path.len()));
+    assert_eq!(out, plan(&s, "q1-q3", PlanParams::default()).unwrap(), "stepping by one unit gives the one-run result");
+}

@@ -6,6 +6,7 @@
 use super::chart::{Chart, ChartState, Polytope};
 use super::manifold::Manifold;
 use nalgebra::{DMatrix, DVector};
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// The continuation's parameters (see [`super::PlanParams`] for their meaning and defaults).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -32,6 +33,13 @@ const MIN_STEP: f64 = 1e-3;
 const OBSTACLE_STEP: f64 = 1.0 / 8.0;
 /// Two points of the manifold count as the same one within this distance.
 const SAME_POINT: f64 = 1e-7;
+/// A walk of n nominal steps (length / δ, rounded up) may make at most WALK_FACTOR · n +
+/// WALK_SLACK projections; past that the map counts as not followable. Walks on the Robocrane
+/// slices make at most 3 · n (a step halved once or twice); without a cap, a walk creeping towards
+/// a fold of the chart's map halved its step 26 times and made 2.2 million projections.
+const WALK_FACTOR: usize = 4;
+/// See [`WALK_FACTOR`].
+const WALK_SLACK: usize = 16;
 
 /// An atlas of a manifold.
 pub struct Atlas<M: Manifold> {
@@ -45,6 +53,8 @@ pub struct Atlas<M: Manifold> {
     /// was cut there anyway so the expansion terminates; a non-zero count weakens an exhaustion
     /// claim and is reported).
     pub failures: usize,
+    /// Manifold evaluations (F and its Jacobian) made so far: the unit of the atlas's work.
+    evaluations: AtomicUsize,
 }
 
 impl<M: Manifold> Atlas<M> {
@@ -54,11 +64,22 @@ impl<M: Manifold> Atlas<M> {
         if start.len() != manifold.ambient() {
             return Err(format!("the start point has {} coordinates, the manifold's space {}", start.len(), manifold.ambient()));
         }
-        let mut atlas = Atlas { manifold, charts: Vec::new(), params, failures: 0 };
+        let mut atlas = Atlas { manifold, charts: Vec::new(), params, failures: 0, evaluations: AtomicUsize::new(0) };
         let basis = atlas.chart_basis(start, 1e-8)?;
         let state = if atlas.manifold.admissible(start) { ChartState::Open } else { ChartState::Blocked };
         atlas.add_chart(start.to_vec(), basis, None, params.radius, state);
         Ok(atlas)
+    }
+
+    /// Manifold evaluations made so far (each Newton iteration and each tangent basis is one).
+    pub fn evaluations(&self) -> usize {
+        self.evaluations.load(Ordering::Relaxed)
+    }
+
+    /// Evaluates F and its Jacobian at `x`, counting the evaluation.
+    fn eval(&self, x: &[f64], f: &mut [f64], jac: &mut DMatrix<f64>) -> bool {
+        self.evaluations.fetch_add(1, Ordering::Relaxed);
+        self.manifold.eval(x, f, jac)
     }
 
     /// The orthonormal tangent basis at `x`, checking that x is on the manifold (max residual
@@ -67,7 +88,7 @@ impl<M: Manifold> Atlas<M> {
         let (n, m) = (self.manifold.ambient(), self.manifold.equations());
         let mut f = vec![0.0; m];
         let mut jac = DMatrix::zeros(m, n);
-        if !self.manifold.eval(x, &mut f, &mut jac) {
+        if !self.eval(x, &mut f, &mut jac) {
             return Err("the equations are not defined there".into());
         }
         let worst = f.iter().fold(0.0f64, |a, v| a.max(v.abs()));
@@ -101,7 +122,7 @@ impl<M: Manifold> Atlas<M> {
         let mut jac = DMatrix::zeros(m, n);
         let mut big = DMatrix::zeros(n, n);
         for _ in 0..MAX_NEWTON {
-            if !self.manifold.eval(&x, &mut f, &mut jac) {
+            if !self.eval(&x, &mut f, &mut jac) {
                 return None;
             }
             let t = self.coordinates(c, &x);
@@ -251,15 +272,21 @@ impl<M: Manifold> Atlas<M> {
     /// A dense path in chart `c` from its centre to tangent coordinates `to`: points of the
     /// manifold on the chart's map of the straight tangent segment, each one projected from the
     /// previous (so the path follows one sheet), consecutive points at most δ apart in the
-    /// manifold's distance and never jumping (ambient step ≤ 3 × tangent step). `None` if the map
-    /// cannot be followed. The first point is the centre.
+    /// manifold's distance and never jumping (ambient step ≤ 3 × tangent step); a rejected step is
+    /// halved. `None` if the map cannot be followed: a step would fall below 1e-9, or the walk
+    /// would exceed its projection cap (WALK_FACTOR · nominal steps + WALK_SLACK, so a walk's work
+    /// is bounded). The first point is the centre.
     pub fn walk(&self, c: usize, to: &[f64]) -> Option<Vec<Vec<f64>>> {
         let delta = self.params.delta;
         let len = to.iter().map(|a| a * a).sum::<f64>().sqrt();
         let mut points = vec![self.charts[c].centre.clone()];
         let mut lambda = 0.0;
         let mut h = if len > 0.0 { (delta / len).min(1.0) } else { 1.0 };
-        while lambda < 1.0 {
+        let cap = WALK_FACTOR * (1.0 / h).ceil() as usize + WALK_SLACK;
+        for _ in 0..cap {
+            if lambda >= 1.0 {
+                break;
+            }
             let next = (lambda + h).min(1.0);
             let u: Vec<f64> = to.iter().map(|a| a * next).collect();
             let prev = points.last()?;
@@ -283,7 +310,7 @@ impl<M: Manifold> Atlas<M> {
                 }
             }
         }
-        Some(points)
+        (lambda >= 1.0).then_some(points)
     }
 
     /// A dense path from chart `a`'s centre to neighbouring chart `b`'s centre: a walk in `a` to

@@ -121,6 +121,19 @@ pub struct PlanProgress {
     pub verifying: Option<(usize, usize)>,
 }
 
+/// Work a planner has done so far, in units that do not depend on the machine: what bounds the
+/// cost of one [`Planner::step`] unit (docs/planner.md).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct PlanWork {
+    /// Manifold evaluations (F and its Jacobian: Newton iterations and tangent bases).
+    pub evaluations: usize,
+    /// Exact-verifier calls on trajectories: the motion validator on dense-path steps during the
+    /// search, then the re-verification of the path's edges.
+    pub trajectory_checks: usize,
+    /// Per-pose wrench tests of the path's poses.
+    pub pose_checks: usize,
+}
+
 /// The exact verifier's re-check of a path, edge by edge (slerp + linear translation between
 /// consecutive poses), and the per-pose wrench check of every path pose.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -151,8 +164,9 @@ pub struct AtlasSummary {
     pub dimension: usize,
     /// Expansion directions where no valid chart could be made (0 for a certified `no_path`).
     pub expansion_failures: usize,
-    /// Chart pairs dropped from the search because their dense edge could not be followed (a
-    /// numerical failure: 0 for a certified `no_path`).
+    /// Chart pairs dropped from the search because their dense edge could not be followed, and
+    /// walks from a goal's chart to the goal that could not be followed (numerical failures, a
+    /// walk's projection cap included: 0 for a certified `no_path`).
     pub broken_edges: usize,
     /// Chart pairs dropped because the exact verifier rejected a step of their dense edge.
     pub rejected_edges: usize,
@@ -245,7 +259,7 @@ struct PathCheck {
     status: PlanStatus,
     path: Vec<Pose>,
     verification: PathVerification,
-    /// Edges verified so far.
+    /// Edges verified so far (with their end poses; pose 0 with edge 0).
     next: usize,
     /// Whether every edge and pose has been checked.
     finished: bool,
@@ -358,8 +372,9 @@ impl Planner {
 
     /// Advances by at most `budget` units of work (one unit: one chart-creation attempt, one A*
     /// pop, one edge of the path being built, or — once the search has ended — the exact
-    /// re-verification of one path edge; at most a few ms on the 2-D and 3-D Robocrane slices, more
-    /// for 6-D chart creations: see docs/planner.md) and returns the progress.
+    /// re-verification of one path edge and the wrench test at its end pose; every unit's work is
+    /// bounded ([`Planner::work`]): at most a few ms on the 2-D and 3-D Robocrane slices, more for
+    /// 6-D chart creations, see docs/planner.md) and returns the progress.
     pub fn step(&mut self, budget: usize) -> PlanProgress {
         let p = self.search.step(if self.check.is_some() { 0 } else { budget });
         let mut progress = PlanProgress { charts: p.charts, open: p.open, best_heuristic: p.best_heuristic, done: None, verifying: None };
@@ -368,15 +383,20 @@ impl Planner {
             Some(c) => {
                 let edges = c.path.len().saturating_sub(1);
                 for _ in 0..budget.max(1) {
-                    if c.next >= edges {
+                    if c.finished {
                         break;
                     }
-                    c.verification.add_edge(&self.scenario, c.next, &c.path[c.next], &c.path[c.next + 1]);
-                    c.next += 1;
-                }
-                if c.next >= edges && !c.finished {
-                    c.verification.add_poses(&self.scenario, &c.path);
-                    c.finished = true;
+                    if c.next == 0 {
+                        if let Some(first) = c.path.first() {
+                            c.verification.add_pose(&self.scenario, first);
+                        }
+                    }
+                    if c.next < edges {
+                        c.verification.add_edge(&self.scenario, c.next, &c.path[c.next], &c.path[c.next + 1]);
+                        c.verification.add_pose(&self.scenario, &c.path[c.next + 1]);
+                        c.next += 1;
+                    }
+                    c.finished = c.next >= edges;
                 }
                 c
             }
@@ -398,6 +418,12 @@ impl Planner {
         progress.verifying = (!check.finished).then_some((check.next, edges));
         progress.done = check.finished.then_some(check.status);
         progress
+    }
+
+    /// The work done so far (cumulative; differences between calls measure a `step`).
+    pub fn work(&self) -> PlanWork {
+        let (edges, poses) = self.check.as_ref().map_or((0, 0), |c| (c.next, c.verification.wrench_poses));
+        PlanWork { evaluations: self.search.atlas.evaluations(), trajectory_checks: self.search.motion_checks() + edges, pose_checks: poses }
     }
 
     /// The result once [`Planner::step`] reported `done`, `None` before.
@@ -473,17 +499,15 @@ impl PathVerification {
         }
     }
 
-    /// The per-pose wrench test at every pose of `path`.
-    fn add_poses(&mut self, s: &Scenario, path: &[Pose]) {
-        for pose in path {
-            if let Some(w) = wrench_at(s, pose) {
-                self.wrench_poses += 1;
-                if !w.feasible {
-                    self.wrench_infeasible_poses += 1;
-                }
-                if let Some(m) = w.margin {
-                    self.least_wrench_margin = Some(self.least_wrench_margin.map_or(m, |a: f64| a.min(m)));
-                }
+    /// The per-pose wrench test at one path pose.
+    fn add_pose(&mut self, s: &Scenario, pose: &Pose) {
+        if let Some(w) = wrench_at(s, pose) {
+            self.wrench_poses += 1;
+            if !w.feasible {
+                self.wrench_infeasible_poses += 1;
+            }
+            if let Some(m) = w.margin {
+                self.least_wrench_margin = Some(self.least_wrench_margin.map_or(m, |a: f64| a.min(m)));
             }
         }
     }
@@ -495,7 +519,9 @@ pub fn verify_path(s: &Scenario, path: &[Pose]) -> PathVerification {
     for (i, w) in path.windows(2).enumerate() {
         v.add_edge(s, i, &w[0], &w[1]);
     }
-    v.add_poses(s, path);
+    for pose in path {
+        v.add_pose(s, pose);
+    }
     v
 }
 

@@ -95,6 +95,11 @@ pub struct Continuation<M: Manifold> {
     broken: HashSet<(usize, usize)>,
     /// Of those, the pairs whose dense edge was built but rejected by the motion validator.
     rejected: usize,
+    /// Walks from a goal's chart to the goal that could not be followed (a numerical failure,
+    /// counted with the broken edges).
+    goal_walk_failures: usize,
+    /// Motion-validator calls made so far.
+    motion_checks: usize,
     /// Dense edges built so far, by (from, to) chart; `None` for a broken one.
     edges: HashMap<(usize, usize), Option<Vec<Vec<f64>>>>,
     ended: Option<Ended>,
@@ -118,6 +123,8 @@ impl<M: Manifold> Continuation<M> {
             pending: None,
             broken: HashSet::new(),
             rejected: 0,
+            goal_walk_failures: 0,
+            motion_checks: 0,
             edges: HashMap::new(),
             ended: None,
             path: vec![],
@@ -160,9 +167,15 @@ impl<M: Manifold> Continuation<M> {
     }
 
     /// Chart pairs removed from the graph because their dense edge could not be followed (the
-    /// two walks did not meet: a numerical failure, like an expansion failure).
+    /// two walks did not meet or one hit its projection cap: a numerical failure, like an
+    /// expansion failure), plus walks from a goal's chart to the goal that could not be followed.
     pub fn broken_edges(&self) -> usize {
-        self.broken.len() - self.rejected
+        self.broken.len() - self.rejected + self.goal_walk_failures
+    }
+
+    /// Motion-validator calls made so far (one per step of a dense path checked).
+    pub fn motion_checks(&self) -> usize {
+        self.motion_checks
     }
 
     /// Chart pairs removed from the graph because the motion validator rejected their dense edge.
@@ -182,7 +195,8 @@ impl<M: Manifold> Continuation<M> {
 
     /// Does at most `budget` units of work — one unit is one chart-creation attempt (one
     /// expansion direction, with its step shrinking), one pop of the open list, or one edge of a
-    /// path being built — and returns the progress.
+    /// path being built (two walks, each with a capped number of projections, and the motion
+    /// validator on their steps) — and returns the progress.
     pub fn step(&mut self, budget: usize) -> Progress {
         let mut left = budget;
         while left > 0 && self.ended.is_none() {
@@ -284,7 +298,11 @@ impl<M: Manifold> Continuation<M> {
             return;
         }
         let c = p.chain[p.chain.len() - 1];
-        match self.atlas.walk(c, &p.t).filter(|e| self.motions_valid(e)) {
+        let last = self.atlas.walk(c, &p.t);
+        if last.is_none() {
+            self.goal_walk_failures += 1;
+        }
+        match last.filter(|e| self.motions_valid(e)) {
             Some(last) => {
                 p.points.extend(last.into_iter().skip(1));
                 if let Some(end) = p.points.last_mut() {
@@ -310,7 +328,12 @@ impl<M: Manifold> Continuation<M> {
     }
 
     /// Whether the motion validator accepts every step of a dense path.
-    fn motions_valid(&self, dense: &[Vec<f64>]) -> bool {
-        dense.windows(2).all(|w| self.atlas.manifold.motion_valid(&w[0], &w[1]))
+    fn motions_valid(&mut self, dense: &[Vec<f64>]) -> bool {
+        let manifold = &self.atlas.manifold;
+        let checks = &mut self.motion_checks;
+        dense.windows(2).all(|w| {
+            *checks += 1;
+            manifold.motion_valid(&w[0], &w[1])
+        })
     }
 }
