@@ -18,8 +18,7 @@
 
 use std::rc::Rc;
 
-use super::algebra::H;
-use super::primitives::{all_of, GT, LT};
+use super::primitives::{GT, LT};
 use super::structure::{det_with, minors5, structure_numerators, Local};
 use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
 use crate::model::{Bounds, Wrench};
@@ -72,7 +71,7 @@ impl FacetPolys {
                 Facet { others, load: det_with(&minors, &std::array::from_fn(|j| &load[j])) }
             })
             .collect();
-        let len2 = local.cables.iter().map(|(_, s)| s[0].mul(&s[0]).add(&s[1].mul(&s[1])).add(&s[2].mul(&s[2]))).collect();
+        let len2 = local.len2();
         FacetPolys { facets, len2, weight: w.clone() }
     }
 
@@ -108,18 +107,17 @@ impl Condition for WrenchClosure {
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let tol = sweep.tol;
         let polys = FacetPolys::of(sweep, &self.wrench);
-        let h = |p: &Bern| H { p: p.clone(), k: 0 };
+        // Some d_k of the facet with the given sign (`GT`: positive), lazily.
+        let some_side = |f: &Facet, side: bool| {
+            f.others.iter().fold(Partition::constant(Truth::False), |acc, (_, d)| {
+                if acc.is_all(Truth::True) { acc } else { acc.or(&Partition::atom(d, side, tol)) }
+            })
+        };
         let mut holds = Partition::constant(Truth::True);
         let mut any_facet = false;
         for f in polys.facets.iter().filter(|f| !f.degenerate()) {
             any_facet = true;
-            let positive = f.others.iter().fold(Partition::constant(Truth::False), |acc, (_, d)| {
-                if acc.is_all(Truth::True) { acc } else { acc.or(&all_of!(tol; h(d) => GT)) }
-            });
-            let negative = f.others.iter().fold(Partition::constant(Truth::False), |acc, (_, d)| {
-                if acc.is_all(Truth::True) { acc } else { acc.or(&all_of!(tol; h(d) => LT)) }
-            });
-            holds = holds.and(&positive).and(&negative);
+            holds = holds.and(&some_side(f, GT)).and(&some_side(f, LT));
             if holds.is_all(Truth::False) {
                 break;
             }

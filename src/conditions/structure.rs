@@ -32,6 +32,11 @@ impl Local {
         }
     }
 
+    /// P_i = ‖s̃_i‖² per cable (the squared cable lengths times w²).
+    pub(crate) fn len2(&self) -> Vec<Bern> {
+        self.cables.iter().map(|(_, s)| s[0].mul(&s[0]).add(&s[1].mul(&s[1])).add(&s[2].mul(&s[2]))).collect()
+    }
+
     pub(crate) fn restrict(&self, a: f64, b: f64) -> Local {
         let r = |p: &Bern| p.restrict(a, b);
         Local {

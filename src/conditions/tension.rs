@@ -89,21 +89,12 @@ impl TensionPolys {
         for &i in cables {
             let others: Vec<usize> = (0..6).filter(|&c| c != i).collect();
             let minors = minors5(&n, &[others[0], others[1], others[2], others[3], others[4]]);
-            // Cofactors C_ji = (−1)^{i+j} M_ji, and g_j = w^{k_j} C_ji.
-            let g: Vec<Bern> = (0..6)
-                .map(|j| {
-                    let c = if (i + j) % 2 == 0 { minors[j].clone() } else { minors[j].scale(-1.0) };
-                    c.mul(row_weight(j))
-                })
-                .collect();
+            // Cofactors C_ji = (−1)^{i+j} M_ji; Δ = Σ_j Ñ_ji C_ji; g_j = w^{k_j} C_ji.
+            let cofactors: Vec<Bern> = (0..6).map(|j| if (i + j) % 2 == 0 { minors[j].clone() } else { minors[j].scale(-1.0) }).collect();
             if delta.is_none() {
-                let mut d = Bern::constant(0.0);
-                for j in 0..6 {
-                    let c = if (i + j) % 2 == 0 { minors[j].clone() } else { minors[j].scale(-1.0) };
-                    d = d.add(&n[j][i].mul(&c));
-                }
-                delta = Some(d);
+                delta = Some((0..6).fold(Bern::constant(0.0), |d, j| d.add(&n[j][i].mul(&cofactors[j]))));
             }
+            let g: Vec<Bern> = cofactors.iter().enumerate().map(|(j, c)| c.mul(row_weight(j))).collect();
             let a = (0..6).fold(Bern::constant(0.0), |acc, j| acc.add(&g[j].scale(wrench.nominal[j])));
             let mut b = Bern::constant(0.0);
             for j in 0..6 {
@@ -116,7 +107,7 @@ impl TensionPolys {
             }
             columns.push((i, a, b));
         }
-        let len2 = local.cables.iter().map(|(_, s)| s[0].mul(&s[0]).add(&s[1].mul(&s[1])).add(&s[2].mul(&s[2]))).collect();
+        let len2 = local.len2();
         TensionPolys { span, delta: delta.unwrap_or_else(|| Bern::constant(0.0)), columns, len2, local }
     }
 }
