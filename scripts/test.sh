@@ -10,6 +10,9 @@
 #                                      against the CLI that step 1 built)
 #   7. tests/browser/e2e-view.mjs      the page's 3-D view, plots, exports and planning end to end
 #                                      (compares with the CLI: builds the release binary if missing)
+#   8. python/ (maturin, pytest)       the wheel built and installed into target/venv; pytest
+#                                      compares it with the CLI that step 1 built, runs the sweep
+#                                      example serially, on threads and on a Dask LocalCluster
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -42,5 +45,13 @@ node tests/browser/e2e-edit.mjs target/page
 
 step "browser end-to-end test of the analysis area"
 node tests/browser/e2e-view.mjs target/page
+
+step "Python package: build the wheel, install it into target/venv, pytest"
+# The dev profile (opt-level 2) reuses step 1's build of the core; --force-reinstall replaces
+# an older build of the same version.
+rm -f target/wheels/cablenav-*.whl
+target/venv/bin/maturin build --quiet -m python/Cargo.toml -o target/wheels
+target/venv/bin/pip install --quiet --disable-pip-version-check --force-reinstall --no-deps target/wheels/cablenav-*.whl
+(cd python && CABLENAV="$PWD/../target/debug/cablenav" ../target/venv/bin/python -m pytest -q -p no:cacheprovider tests)
 
 step "all tests passed in $((SECONDS - started)) s"
