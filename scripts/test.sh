@@ -13,6 +13,10 @@
 #   8. python/ (maturin, pytest)       the wheel built and installed into target/venv; pytest
 #                                      compares it with the CLI that step 1 built, runs the sweep
 #                                      example serially, on threads and on a Dask LocalCluster
+#   9. npm/ (wasm-pack, node --test)   the npm package built for --target web and bundler, packed,
+#                                      unpacked as a user installs it and tested in node against
+#                                      the CLI; docs/course-page.html (the package without Leptos)
+#                                      in headless Chromium
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -53,5 +57,12 @@ rm -f target/wheels/cablenav-*.whl
 target/venv/bin/maturin build --quiet -m python/Cargo.toml -o target/wheels
 target/venv/bin/pip install --quiet --disable-pip-version-check --force-reinstall --no-deps target/wheels/cablenav-*.whl
 (cd python && CABLENAV="$PWD/../target/debug/cablenav" ../target/venv/bin/python -m pytest -q -p no:cacheprovider tests)
+
+step "npm package: wasm-pack (web, bundler), npm pack, node test, the course page in Chromium"
+# After step 4: the release wasm32 build of the core's dependencies is reused.
+rm -f target/npm/cablenav-*.tgz
+npm/build.sh --pack
+(cd npm && CABLENAV="$PWD/../target/debug/cablenav" node --test test/)
+node tests/browser/course-page.mjs
 
 step "all tests passed in $((SECONDS - started)) s"
