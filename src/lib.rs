@@ -22,6 +22,7 @@
 pub mod cli;
 pub mod conditions;
 pub mod error;
+pub mod lattice;
 pub mod model;
 pub mod plan;
 pub mod png;

@@ -473,7 +473,7 @@ fn trajectory_forms() {
 
 #[test]
 fn format_field() {
-    expect(|v| v["format"] = json!("cablenav-scenario/2"), "format", "cablenav-scenario/1");
+    expect(|v| v["format"] = json!("cablenav-scenario/3"), "format", "cablenav-scenario/1");
     expect(|v| v["format"] = json!(1), "format", "cablenav-scenario/1");
     expect(
         |v| {

@@ -462,7 +462,7 @@ pub(crate) fn edge_trajectory(index: usize, a: &Pose, b: &Pose) -> Trajectory {
     } else {
         b.rotation
     };
-    Trajectory { name: format!("edge {index}"), translation: Translation::Line(a.position, b.position), orientation: Orientation::Slerp(a.rotation, qb) }
+    Trajectory::single(format!("edge {index}"), Translation::Line(a.position, b.position), Orientation::Slerp(a.rotation, qb))
 }
 
 impl PathVerification {
