@@ -4,7 +4,11 @@
 
 use crate::error::{Error, Result};
 use crate::model::Coord;
-use crate::plan::{plan, PlanParams, PlanReport, PlanStatus};
+use crate::lattice::{Lattice, LatticeReport, LatticeSpec};
+use crate::plan::choice::{run as run_planner, Details, PlannerKind, PlannerOptions};
+use crate::plan::lattice::LatticePlanReport;
+use crate::plan::{PlanReport, PlanStatus};
+use crate::scenario::with_trajectory;
 use crate::report::{PoseReport, RayReport, Side, TensionEnvelope, VerifyReport};
 use crate::verify::slice::{default_range, Class, SliceMap};
 use crate::verify::{check_pose, ray, slice, tension_envelope, verify_pointwise, verify_trajectory};
@@ -19,7 +23,9 @@ usage:
   cablenav check  SCENARIO --pose NAME [--json]
   cablenav envelope SCENARIO [--trajectory NAME] [--samples N] [--json]
   cablenav slice  SCENARIO --pose NAME --axes A,B --res N [--range LO HI LO HI] [--png FILE] [--json]
-  cablenav plan   SCENARIO --query NAME [--max-charts N] [--radius R] [--epsilon E] [--json]
+  cablenav lattice SCENARIO --pose NAME --axes A,B[,C…] --range LO HI [LO HI …] --steps N[,N…] [--json]
+  cablenav plan   SCENARIO --query NAME [--planner atlas|lattice] [--steps N] [--max-charts N]
+                  [--radius R] [--epsilon E] [--out FILE] [--json]
 
 SCENARIO is a cablenav-scenario/1 JSON file (docs/scenario-format.md).
 verify  feasible/infeasible t-sections of a trajectory (exact; --pointwise DT samples instead)
@@ -28,9 +34,13 @@ check   lengths, distances, violated conditions and the wrench set's tension ran
 envelope  each cable's least and greatest tension over the wrench set along a trajectory
 slice   classify a res×res grid over two coordinates (others from the pose) and find the
         connected components of its feasible cells; angles default to [-pi, pi]
-plan    a wrench-feasible, interference-free path for a query of the scenario (Henderson atlas +
-        A*, docs/planner.md): found / no_path (start component exhausted) / budget, the path
-        re-verified edge by edge";
+lattice the thesis' ray lattice over the chosen coordinates (others from the pose): every ray's
+        exact feasible intervals, the graph of feasible pieces and its components (docs/lattice.md)
+plan    a feasible path for a query of the scenario. --planner atlas (default; 6 cables with a
+        wrench set): Henderson atlas + A*, docs/planner.md, found / no_path / budget, the path
+        re-verified edge by edge. --planner lattice (any robot): ray lattice with --steps values
+        per free coordinate (default 7) + A* + Bézier smoothing, verified exactly and repaired,
+        docs/lattice.md. --out FILE writes the scenario with the planned trajectory added";
 
 /// Parsed options of one command.
 struct Opts {
@@ -39,10 +49,11 @@ struct Opts {
 }
 
 impl Opts {
-    fn parse(args: &[String], slice: bool) -> Result<Opts> {
+    fn parse(args: &[String], command: &str) -> Result<Opts> {
+        let slice = command == "slice";
         let takes = |f: &str| match f {
             "--trajectory" | "--pointwise" | "--pose" | "--vary" | "--axes" | "--res" | "--png" | "--samples" | "--query" | "--max-charts"
-            | "--radius" | "--epsilon" => Some(1),
+            | "--radius" | "--epsilon" | "--planner" | "--steps" | "--out" => Some(1),
             "--range" => Some(if slice { 4 } else { 2 }),
             "--json" => Some(0),
             _ => None,
@@ -52,7 +63,11 @@ impl Opts {
         while i < args.len() {
             let a = &args[i];
             if a.starts_with("--") {
-                let n = takes(a).ok_or_else(|| Error::new(a.as_str(), "unknown option"))?;
+                let mut n = takes(a).ok_or_else(|| Error::new(a.as_str(), "unknown option"))?;
+                if command == "lattice" && a == "--range" {
+                    // LO HI per axis: every number that follows
+                    n = args[i + 1..].iter().take_while(|x| x.parse::<f64>().is_ok()).count();
+                }
                 if i + 1 + n > args.len() {
                     return Err(Error::new(a.as_str(), format!("needs {n} value(s)")));
                 }
@@ -115,7 +130,7 @@ pub fn run(args: &[String], read: Read, write: Write) -> Result<String> {
     if command == "--help" || command == "-h" || command == "help" {
         return Ok(USAGE.to_string());
     }
-    let o = Opts::parse(rest, command == "slice")?;
+    let o = Opts::parse(rest, command)?;
     let path = match o.positional.as_slice() {
         [p] => p.as_str(),
         [] => return Err(Error::new("SCENARIO", "no scenario file given")),
@@ -182,25 +197,75 @@ pub fn run(args: &[String], read: Read, write: Write) -> Result<String> {
             }
             if o.json() { to_json(&map) } else { Ok(slice_text(&map)) }
         }
+        "lattice" => {
+            o.allow(&["--pose", "--axes", "--range", "--steps", "--json"])?;
+            let pose = scenario.pose(o.required("--pose")?)?;
+            let axes_text = o.required("--axes")?;
+            let axes = axes_text
+                .split(',')
+                .map(|a| Coord::parse(a.trim()).ok_or_else(|| Error::new("--axes", format!("{:?} is not one of x, y, z, phi, theta, sigma", a.trim()))))
+                .collect::<Result<Vec<Coord>>>()?;
+            let range = o.get("--range").ok_or_else(|| Error::new("--range", "is required"))?;
+            let v = range.iter().map(|x| number("--range", x)).collect::<Result<Vec<f64>>>()?;
+            if v.len() % 2 != 0 {
+                return Err(Error::new("--range", format!("needs LO HI pairs, got {} numbers", v.len())));
+            }
+            let ranges = v.chunks(2).map(|p| [p[0], p[1]]).collect();
+            let steps = o
+                .required("--steps")?
+                .split(',')
+                .map(|n| n.trim().parse::<usize>().map_err(|_| Error::new("--steps", format!("not a whole number: {n:?}"))))
+                .collect::<Result<Vec<usize>>>()?;
+            let spec = LatticeSpec::new(axes, ranges, steps, pose.coords())?;
+            let report = Lattice::build(&scenario, spec).report().ok_or_else(|| Error::new("lattice", "the lattice stopped before its end"))?;
+            if o.json() { to_json(&report) } else { Ok(lattice_text(&report)) }
+        }
         "plan" => {
-            o.allow(&["--query", "--max-charts", "--radius", "--epsilon", "--json"])?;
+            o.allow(&["--query", "--planner", "--steps", "--max-charts", "--radius", "--epsilon", "--out", "--json"])?;
             let query = o.required("--query")?;
-            let mut params = PlanParams::default();
+            let kind = PlannerKind::parse(o.one("--planner").unwrap_or("atlas"))?;
+            let mut options = PlannerOptions::new(kind);
+            let only = |flag: &str, for_kind: PlannerKind| {
+                if o.one(flag).is_some() && kind != for_kind {
+                    Err(Error::new(flag, format!("is an option of --planner {}", for_kind.name())))
+                } else {
+                    Ok(())
+                }
+            };
+            for flag in ["--max-charts", "--radius", "--epsilon"] {
+                only(flag, PlannerKind::Atlas)?;
+            }
+            only("--steps", PlannerKind::Lattice)?;
             if let Some(n) = o.one("--max-charts") {
-                params.max_charts = n.parse().map_err(|_| Error::new("--max-charts", format!("not a whole number: {n:?}")))?;
+                options.atlas.max_charts = n.parse().map_err(|_| Error::new("--max-charts", format!("not a whole number: {n:?}")))?;
             }
             if let Some(r) = o.one("--radius") {
-                params.radius = number("--radius", r)?;
+                options.atlas.radius = number("--radius", r)?;
             }
             if let Some(e) = o.one("--epsilon") {
-                params.epsilon = number("--epsilon", e)?;
+                options.atlas.epsilon = number("--epsilon", e)?;
             }
-            let (outcome, seconds) = timed(|| plan(&scenario, query, params));
-            let report = outcome.map_err(|e| match e.field.as_str() {
+            if let Some(n) = o.one("--steps") {
+                options.lattice.steps = n.parse().map_err(|_| Error::new("--steps", format!("not a whole number: {n:?}")))?;
+            }
+            let result = run_planner(&scenario, query, &options, &clock).map_err(|e| match e.field.as_str() {
                 "radius" | "epsilon" | "max_charts" => Error::new(format!("--{}", e.field.replace('_', "-")), e.reason),
                 _ => e,
-            })?.report(query, seconds);
-            if o.json() { to_json(&report) } else { Ok(plan_text(&report)) }
+            })?;
+            let mut out = match (&result.details, o.json()) {
+                (details, true) => to_json(details)?,
+                (Details::Atlas(r), false) => plan_text(r),
+                (Details::Lattice(r), false) => lattice_plan_text(r),
+            };
+            if let Some(file) = o.one("--out") {
+                let traj = result.trajectory.as_ref().ok_or_else(|| Error::new("--out", "no trajectory was planned: nothing to write"))?;
+                let (text, name) = with_trajectory(&read(path)?, traj)?;
+                write(file, text.as_bytes())?;
+                if !o.json() {
+                    out += &format!("\n  wrote {file} with the trajectory \"{name}\" (check it: cablenav verify {file} --trajectory \"{name}\")\n");
+                }
+            }
+            Ok(out)
         }
         other => Err(Error::new("", format!("unknown command {other:?}\n{USAGE}"))),
     }
@@ -321,26 +386,73 @@ fn envelope_text(e: &TensionEnvelope) -> String {
     out
 }
 
-/// Runs `f` and measures its wall-clock seconds (NaN on wasm32, which has no `Instant`).
-fn timed<T>(f: impl FnOnce() -> T) -> (T, f64) {
+/// Seconds since a fixed origin (NaN on wasm32, which has no `Instant`).
+fn clock() -> f64 {
     #[cfg(not(target_arch = "wasm32"))]
     {
-        let start = std::time::Instant::now();
-        let out = f();
-        (out, start.elapsed().as_secs_f64())
+        use std::sync::OnceLock;
+        static ORIGIN: OnceLock<std::time::Instant> = OnceLock::new();
+        ORIGIN.get_or_init(std::time::Instant::now).elapsed().as_secs_f64()
     }
     #[cfg(target_arch = "wasm32")]
     {
-        (f(), f64::NAN)
+        f64::NAN
     }
 }
 
-fn plan_text(r: &PlanReport) -> String {
-    let status = match r.status {
+fn status_name(s: PlanStatus) -> &'static str {
+    match s {
         PlanStatus::Found => "found",
         PlanStatus::NoPath => "no_path",
         PlanStatus::Budget => "budget",
-    };
+        PlanStatus::Unrepaired => "unrepaired",
+    }
+}
+
+fn lattice_text(r: &LatticeReport) -> String {
+    let axes: Vec<String> = r.axes.iter().zip(&r.ranges).zip(&r.steps).map(|((a, g), n)| format!("{a} ∈ [{}, {}] ({n} values)", g[0], g[1])).collect();
+    let mut out = format!("lattice over {}: {} rays, {} feasible pieces, {} component(s)\n", axes.join(", "), r.rays.len(), r.pieces, r.components);
+    out += &format!("  grid points: {} of {} feasible on every ray through them", r.feasible_points, r.grid_points);
+    if r.disagreements > 0 {
+        out += &format!(" ({} where the rays through them disagree)", r.disagreements);
+    }
+    out += "\n";
+    if r.uncertain_rays > 0 {
+        out += &format!("  warning: {} ray(s) have uncertain sections (counted as infeasible)\n", r.uncertain_rays);
+    }
+    const SHOWN: usize = 200;
+    for (ray, comps) in r.rays.iter().zip(&r.piece_components).take(SHOWN) {
+        let at: Vec<String> = ray.fixed.iter().filter(|(k, _)| r.axes.contains(k)).map(|(k, v)| format!("{k} = {v:.6}")).collect();
+        let pieces: Vec<String> = ray.feasible.iter().zip(comps).map(|(iv, c)| format!("[{:.6}, {:.6}] (component {c})", iv[0], iv[1])).collect();
+        out += &format!("  {} at {}: {}\n", ray.vary, at.join(", "), if pieces.is_empty() { "none".to_string() } else { pieces.join(" ∪ ") });
+    }
+    if r.rays.len() > SHOWN {
+        out += &format!("  … {} more rays (--json prints all)\n", r.rays.len() - SHOWN);
+    }
+    out + &notes(&r.conservative, &r.warnings)
+}
+
+fn lattice_plan_text(r: &LatticePlanReport) -> String {
+    let mut out = format!("plan {} (lattice): {} ({:.3} s)\n  {}\n", r.query, status_name(r.status), r.seconds, r.message);
+    out += &format!(
+        "  lattice: {} rays, {} component(s); {} of {} segments to cell corners verified; A* expanded {} points\n",
+        r.rays, r.components, r.segments[0], r.segments[1], r.expanded
+    );
+    if !r.polyline.is_empty() {
+        out += &format!("  A* polyline: {} points, length {:.6}; {} waypoints\n", r.polyline.len(), r.polyline_length, r.waypoints.len());
+        out += &format!("  smoothed: {} piece(s) ({} single polyline edges) after {} repair(s)\n", r.pieces, r.polyline_pieces, r.repairs);
+        for (i, c) in r.waypoints.iter().enumerate() {
+            out += &format!("  {i:5}  p = [{:.6}, {:.6}, {:.6}]  (φ, θ, σ) = ({:.6}, {:.6}, {:.6})\n", c[0], c[1], c[2], c[3], c[4], c[5]);
+        }
+    }
+    if let Some(v) = &r.verification {
+        out += &format!("  verified: feasible t ∈ {}; infeasible t ∈ {}; uncertain t ∈ {}\n", intervals(&v.feasible), intervals(&v.infeasible), intervals(&v.uncertain));
+    }
+    out
+}
+
+fn plan_text(r: &PlanReport) -> String {
+    let status = status_name(r.status);
     let (a, p) = (&r.atlas, &r.atlas.params);
     let mut out = format!(
         "plan {}: {status} ({} charts, {}-D, {:.3} s; r = {}, ε = {}, δ = {}, κ = {}, margins ≥ {}, ≤ {} charts)\n",
@@ -363,6 +475,7 @@ fn plan_text(r: &PlanReport) -> String {
         }
         PlanStatus::NoPath => out += "  the atlas of the start's connected component is exhausted without reaching the goal: no path at this resolution\n",
         PlanStatus::Budget => out += "  the chart budget ran out: nothing is claimed (raise --max-charts)\n",
+        PlanStatus::Unrepaired => {}
     }
     if a.expansion_failures > 0 {
         out += &format!("  warning: {} expansion direction(s) failed; a no_path here is not certified\n", a.expansion_failures);

@@ -20,7 +20,7 @@ use crate::conditions::{for_scenario, Condition};
 use crate::error::{Error, Result};
 use crate::model::Coord;
 use crate::scenario::Scenario;
-use crate::verify::{check_ray_range, ray_sections};
+use crate::verify::{check_ray_range, ray_sections, Sections};
 use serde::Serialize;
 
 /// Most grid values along one axis.
@@ -222,7 +222,8 @@ pub struct Ray {
     /// The grid indices of the other axes (the varied axis' entry is 0).
     #[serde(skip)]
     pub cell: Vec<usize>,
-    /// The other chosen axes' values: `{"z": 0.8667, …}` in axis order.
+    /// Every other coordinate's value (the other axes' grid values and the fixed coordinates):
+    /// `{"y": 2, "z": 0.8667, "phi": 0, …}` in the order x, y, z, φ, θ, σ.
     #[serde(serialize_with = "as_object")]
     pub fixed: Vec<(&'static str, f64)>,
     /// Feasible intervals of the varied coordinate, certified (the lattice's pieces).
@@ -335,6 +336,13 @@ impl Lattice {
         &self.scenario
     }
 
+    /// The exact sections of the ray through `c` along axis `a` over the axis' range (rays through
+    /// points off the grid: a planner's start and goal).
+    pub fn cast(&self, c: [f64; 6], a: usize) -> Sections {
+        let [lo, hi] = self.spec.ranges[a];
+        ray_sections(&self.scenario, &self.conditions, c, self.spec.axes[a], lo, hi)
+    }
+
     /// Ray `r` computed exactly.
     fn compute(&self, r: usize) -> Ray {
         let spec = &self.spec;
@@ -343,7 +351,7 @@ impl Lattice {
         let coord = spec.axes[a];
         let [lo, hi] = spec.ranges[a];
         let sec = ray_sections(&self.scenario, &self.conditions, c, coord, lo, hi);
-        let fixed = (0..spec.axes.len()).filter(|&b| b != a).map(|b| (spec.axes[b].name(), spec.value(b, cell[b]))).collect();
+        let fixed = Coord::ALL.into_iter().filter(|&k| k != coord).map(|k| (k.name(), c[k.index()])).collect();
         Ray { vary: coord.name(), axis: a, cell, fixed, feasible: sec.feasible, uncertain: sec.uncertain }
     }
 

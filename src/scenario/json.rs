@@ -236,6 +236,8 @@ pub struct RawQuery {
     pub goal: String,
     #[serde(default)]
     pub fixed: Vec<String>,
+    #[serde(default)]
+    pub region: Option<Ordered<Fixed<f64, 2>>>,
 }
 
 /// What a fixed-size array holds, for messages such as "expected 3 numbers".

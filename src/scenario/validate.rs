@@ -777,7 +777,26 @@ fn queries(raw: &[RawQuery], poses: &[(String, Pose)]) -> Result<Vec<Query>> {
             }
             fixed.push(c);
         }
-        out.push(Query { name: q.name.clone(), start: q.start.clone(), goal: q.goal.clone(), fixed });
+        let mut region: Vec<(Coord, [f64; 2])> = Vec::new();
+        for (name, Fixed([lo, hi])) in q.region.iter().flat_map(|r| r.0.iter()) {
+            let f = format!("{path}.region.{name}");
+            let Some(c) = Coord::parse(name) else {
+                let names: Vec<&str> = Coord::ALL.iter().map(|c| c.name()).collect();
+                return Err(Error::new(f, format!("unknown coordinate \"{name}\"; expected one of {}", names.join(", "))));
+            };
+            if fixed.contains(&c) {
+                return Err(Error::new(f, format!("coordinate \"{name}\" is fixed by this query: it has no range")));
+            }
+            if region.iter().any(|(r, _)| *r == c) {
+                return Err(Error::new(f, format!("coordinate \"{name}\" is given twice")));
+            }
+            let (lo, hi) = (num(&format!("{f}[0]"), *lo)?, num(&format!("{f}[1]"), *hi)?);
+            if lo >= hi {
+                return Err(Error::new(f, format!("needs LO < HI, got [{lo}, {hi}]")));
+            }
+            region.push((c, [lo, hi]));
+        }
+        out.push(Query { name: q.name.clone(), start: q.start.clone(), goal: q.goal.clone(), fixed, region });
     }
     Ok(out)
 }
