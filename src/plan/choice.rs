@@ -136,7 +136,7 @@ impl PathPlanner for AtlasPlanner {
                 Segment { translation: t.translation, orientation: t.orientation }
             })
             .collect();
-        let trajectory = (o.status == PlanStatus::Found).then(|| Trajectory::piecewise(format!("{} (atlas)", self.query), pieces)).flatten();
+        let trajectory = (o.status == PlanStatus::Found).then(|| Trajectory::piecewise(format!("{}-atlas", self.query), pieces)).flatten();
         Some(PlanResult { status: o.status, trajectory, details: Details::Atlas(o.report(&self.query, seconds)) })
     }
 }

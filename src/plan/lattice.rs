@@ -660,7 +660,7 @@ impl LatticePlanner {
 
     fn assemble(&self) -> Trajectory {
         let pieces: Vec<Segment> = self.runs.iter().map(|r| run_segment(&r.points)).collect();
-        Trajectory::piecewise(format!("{} (lattice)", self.query), pieces).unwrap_or_else(|| run_trajectory(&[self.start.coords(), self.start.coords()], "empty"))
+        Trajectory::piecewise(format!("{}-lattice", self.query), pieces).unwrap_or_else(|| run_trajectory(&[self.start.coords(), self.start.coords()], "empty"))
     }
 
     /// The result once finished.
