@@ -492,6 +492,7 @@ fn robocrane_full_6d_query_ends_honestly() {
             assert!(out.path.is_empty());
         }
         PlanStatus::NoPath => panic!("q1 and q2 are connected on a 2-D slice, so not in 6-D"),
+        PlanStatus::Unrepaired => panic!("the atlas planner re-verifies its path; it never reports unrepaired"),
     }
 }
 

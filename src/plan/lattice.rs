@@ -580,11 +580,14 @@ impl LatticePlanner {
 
     fn search_unit(&mut self) {
         let goal = self.ends[1];
-        let Some(Open { v, .. }) = self.open.pop() else {
+        let Some(Open { f, h, v }) = self.open.pop() else {
             self.status = Some(PlanStatus::NoPath);
             self.stage = Stage::Done;
             return;
         };
+        if f - h > self.g.get(&v).copied().unwrap_or(f64::INFINITY) {
+            return; // a stale entry: v was reached more cheaply since
+        }
         self.expanded += 1;
         if v == goal {
             let mut path = vec![v];

@@ -45,6 +45,7 @@ impl RunState {
             RunState::Done(PlanStatus::Found) => "found",
             RunState::Done(PlanStatus::NoPath) => "no_path",
             RunState::Done(PlanStatus::Budget) => "budget",
+            RunState::Done(PlanStatus::Unrepaired) => "unrepaired",
             RunState::Cancelled => "cancelled",
             RunState::Failed(_) => "error",
         }
@@ -80,6 +81,7 @@ pub fn summary(o: &PlanOutcome) -> String {
         ),
         PlanStatus::NoPath => format!("No path at this resolution: the start's component was exhausted after {} charts.", o.charts),
         PlanStatus::Budget => format!("Chart budget exhausted after {} charts: nothing is claimed.", o.charts),
+        PlanStatus::Unrepaired => "The path could not be verified feasible everywhere.".to_string(),
     }
 }
 
