@@ -104,13 +104,14 @@ pub trait PathPlanner {
 struct AtlasPlanner {
     planner: Planner,
     query: String,
-    first_h: Option<f64>,
+    /// The least heuristic before any work (the start's distance to the goal), for the fraction.
+    first_h: f64,
 }
 
 impl PathPlanner for AtlasPlanner {
     fn step(&mut self, budget: usize) -> Progress {
         let p = self.planner.step(budget);
-        let first = *self.first_h.get_or_insert(p.best_heuristic);
+        let first = self.first_h;
         let fraction = if p.done.is_some() {
             1.0
         } else if first.is_finite() && first > 0.0 && p.best_heuristic.is_finite() {
@@ -171,7 +172,11 @@ impl PathPlanner for LatticePlanner {
 /// The planner `options.kind` for query `query` of `scenario`, ready to step.
 pub fn planner(scenario: &Scenario, query: &str, options: &PlannerOptions) -> Result<Box<dyn PathPlanner>> {
     Ok(match options.kind {
-        PlannerKind::Atlas => Box::new(AtlasPlanner { planner: Planner::new(scenario, query, options.atlas)?, query: query.to_string(), first_h: None }),
+        PlannerKind::Atlas => {
+            let mut planner = Planner::new(scenario, query, options.atlas)?;
+            let first_h = planner.step(0).best_heuristic;
+            Box::new(AtlasPlanner { planner, query: query.to_string(), first_h })
+        }
         PlannerKind::Lattice => Box::new(LatticePlanner::new(scenario, query, options.lattice)?),
     })
 }

@@ -8,6 +8,7 @@ use super::geom::{polyline, ticks, Scale};
 use super::slice::{default_axes, default_pose, default_range, path_points, slice_copies, Overlay};
 use super::strip::css;
 use super::Chart;
+use crate::app::Shared;
 use crate::logic::fmt_num;
 use cablenav::lattice::{Lattice, LatticeReport, LatticeSpec};
 use cablenav::model::Coord;
@@ -80,7 +81,7 @@ pub fn LatticePanel(parsed: Memo<crate::app::Parsed>, overlay: Signal<Overlay>) 
     let axes = RwSignal::new([Coord::X, Coord::Y]);
     let range = RwSignal::new([[0.0, 1.0]; 2]);
     let steps = RwSignal::new(7usize);
-    let report = RwSignal::new(None::<Rc<Result<LatticeReport, String>>>);
+    let report = RwSignal::new(None::<Shared<Result<LatticeReport, String>>>);
     let progress = RwSignal::new(None::<(usize, usize)>);
     let build: Rc<RefCell<Option<Build>>> = Rc::new(RefCell::new(None));
     let generation = Rc::new(std::cell::Cell::new(0u32));
@@ -105,7 +106,7 @@ pub fn LatticePanel(parsed: Memo<crate::app::Parsed>, overlay: Signal<Overlay>) 
             .map_err(|e| e.to_string())
             .and_then(|p| LatticeSpec::new(axes.get_untracked().to_vec(), range.get_untracked().to_vec(), vec![steps.get_untracked()], p.coords()).map_err(|e| e.to_string()));
         match spec {
-            Err(e) => report.set(Some(Rc::new(Err(e)))),
+            Err(e) => report.set(Some(Shared::new(Err(e)))),
             Ok(spec) => {
                 g1.set(g1.get() + 1);
                 *b1.borrow_mut() = Some(Build { lattice: Lattice::new(&s, spec), generation: g1.get() });
@@ -170,7 +171,7 @@ pub fn LatticePanel(parsed: Memo<crate::app::Parsed>, overlay: Signal<Overlay>) 
             <button data-testid="lattice-cancel" on:click=cancel disabled=move || !running()>"Cancel"</button>
             <progress data-testid="lattice-progress" max="1" prop:value=move || progress.get().map_or(0.0, |(d, t)| d as f64 / t.max(1) as f64) aria-label="lattice progress"></progress>
         </div>
-        {move || report.get().map(|r| match r.as_ref() {
+        {move || report.get().map(|r| match r.0.as_ref() {
             Err(e) => view! { <p class="error">{format!("Lattice: {e}")}</p> }.into_any(),
             Ok(r) => view! { <LatticeView report=r.clone() overlay /> }.into_any(),
         })}
@@ -182,7 +183,7 @@ fn now() -> f64 {
 }
 
 /// Builds the lattice of `generation` for one frame's slice, then schedules the next frame.
-fn pump(build: Rc<RefCell<Option<Build>>>, generation: u32, report: RwSignal<Option<Rc<Result<LatticeReport, String>>>>, progress: RwSignal<Option<(usize, usize)>>) {
+fn pump(build: Rc<RefCell<Option<Build>>>, generation: u32, report: RwSignal<Option<Shared<Result<LatticeReport, String>>>>, progress: RwSignal<Option<(usize, usize)>>) {
     request_animation_frame(move || {
         let mut slot = build.borrow_mut();
         let Some(b) = slot.as_mut().filter(|b| b.generation == generation) else { return };
@@ -196,7 +197,7 @@ fn pump(build: Rc<RefCell<Option<Build>>>, generation: u32, report: RwSignal<Opt
             *slot = None;
             drop(slot);
             progress.set(None);
-            report.set(Some(Rc::new(r)));
+            report.set(Some(Shared::new(r)));
         } else {
             drop(slot);
             progress.set(Some((p.rays_done, p.rays_total)));
