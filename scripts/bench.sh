@@ -4,6 +4,8 @@
 # (re)writes docs/benchmarks.md with the machine, the commands and the numbers.
 #   scripts/bench.sh             run both benchmarks, write docs/benchmarks.md
 #   scripts/bench.sh --no-write  run both, print the results, leave docs/benchmarks.md alone
+#   scripts/bench.sh --lattice   only the ray lattice cases (examples/bench/lattice.rs), native and
+#                                wasm; rewrites only the "Ray lattice" section of docs/benchmarks.md
 # Needs the wasm tools from scripts/install.sh (wasm32 target, wasm-bindgen-test-runner 0.2.130).
 # Timings are wall-clock: run it on an otherwise idle machine (the load average is recorded).
 set -euo pipefail
@@ -12,10 +14,47 @@ export PATH="$HOME/.cargo/bin:$PATH"
 
 WRITE=1
 [ "${1:-}" = "--no-write" ] && WRITE=0
+LATTICE_ONLY=0
+[ "${1:-}" = "--lattice" ] && LATTICE_ONLY=1
 OUT=docs/benchmarks.md
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 say() { printf '[bench] %s\n' "$*" >&2; }
+
+LATTICE_NATIVE_CMD="cargo run --release --example bench -- lattice"
+LATTICE_WASM_CMD="CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner cargo test --release --target wasm32-unknown-unknown --features bench --test bench_wasm -- --nocapture bench_wasm_lattice"
+# The ray lattice section (Table 3.2 and lattice planning) from BENCH lines in "$1", to stdout.
+lattice_section() {
+  awk -v date="$(date -u '+%Y-%m-%d %H:%M UTC')" -v load_before="$2" -v load_after="$3" \
+      -v commit="$(git rev-parse --short HEAD 2>/dev/null || echo unknown)" \
+      -v native_cmd="$LATTICE_NATIVE_CMD" -v wasm_cmd="$LATTICE_WASM_CMD" \
+      -f scripts/bench-lattice-section.awk "$1"
+}
+# The ray lattice cases, native then wasm, into "$1".
+run_lattice() {
+  cargo run -q --release --example bench -- lattice > "$1"
+  CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
+    cargo test -q --release --target wasm32-unknown-unknown --features bench --test bench_wasm -- --nocapture bench_wasm_lattice >> "$1"
+}
+if [ "$LATTICE_ONLY" = 1 ]; then
+  say "building (release, native and wasm32)"
+  cargo build --release --example bench >&2
+  cargo test --release --target wasm32-unknown-unknown --features bench --test bench_wasm --no-run >&2
+  before=$(cut -d' ' -f1-3 /proc/loadavg)
+  say "ray lattice cases: $LATTICE_NATIVE_CMD; $LATTICE_WASM_CMD"
+  run_lattice "$TMP/lattice.txt"
+  after=$(cut -d' ' -f1-3 /proc/loadavg)
+  grep '^BENCH ' "$TMP/lattice.txt" >&2 || true
+  lattice_section "$TMP/lattice.txt" "$before" "$after" > "$TMP/section.md"
+  if grep -q '<!-- lattice:begin' "$OUT"; then
+    awk -v f="$TMP/section.md" '/<!-- lattice:begin/ { while ((getline l < f) > 0) print l; skip = 1; next } /<!-- lattice:end -->/ { skip = 0; next } !skip' "$OUT" > "$TMP/out.md"
+  else
+    { cat "$OUT"; echo; cat "$TMP/section.md"; } > "$TMP/out.md"
+  fi
+  cp "$TMP/out.md" "$OUT"
+  say "wrote the ray lattice section of $OUT"
+  exit 0
+fi
 
 NATIVE_CMD="cargo run --release --example bench"
 # The wasm benchmark is a wasm-bindgen test behind the `bench` feature (so the ordinary
@@ -38,8 +77,8 @@ CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
 LOAD_AFTER=$(cut -d' ' -f1-3 /proc/loadavg)
 
 grep -h '^BENCH ' "$TMP/native.txt" "$TMP/wasm.txt" > "$TMP/all.txt"
-n_native=$(grep -c '^BENCH native ' "$TMP/all.txt" || true)
-n_wasm=$(grep -c '^BENCH wasm ' "$TMP/all.txt" || true)
+n_native=$(grep '^BENCH native ' "$TMP/all.txt" | grep -vc ' lattice/' || true)
+n_wasm=$(grep '^BENCH wasm ' "$TMP/all.txt" | grep -vc ' lattice/' || true)
 if [ "$n_native" -ne 18 ] || [ "$n_wasm" -ne 18 ]; then
   say "expected 18 native and 18 wasm results, got $n_native and $n_wasm:"
   cat "$TMP/native.txt" "$TMP/wasm.txt" >&2
@@ -236,6 +275,13 @@ TOTAL_GZ=$(sed -nE 's/.*wasm\+js gzip ([0-9]+) B.*/\1/p' <<<"$WEIGHT")
   echo
   awk -v b="$TOTAL_GZ" 'BEGIN { printf "| target | measured | |\n|---|---|---|\n| wasm + js ≤ 1.5 MB gzip | %.2f MB (%d B) | %s |\n", b / 1e6, b, (b <= 1500000 ? "yes" : "**no**") }'
 } >> "$TMP/benchmarks.md"
+
+# The ray lattice section, in the same run.
+say "ray lattice cases"
+L_BEFORE=$(cut -d' ' -f1-3 /proc/loadavg)
+cargo run -q --release --example bench -- lattice > "$TMP/lattice.txt"
+grep ' lattice/' "$TMP/wasm.txt" >> "$TMP/lattice.txt" || true
+{ echo; lattice_section "$TMP/lattice.txt" "$L_BEFORE" "$(cut -d' ' -f1-3 /proc/loadavg)"; } >> "$TMP/benchmarks.md"
 
 if [ "$WRITE" = 1 ]; then
   cp "$TMP/benchmarks.md" "$OUT"

@@ -8,7 +8,11 @@
 
 use crate::error::{Error, Result};
 use crate::model::Coord;
-use crate::plan::{PlanParams, PlanReport, PlanStatus, Planner};
+use crate::lattice::{Lattice, LatticeReport, LatticeSpec};
+use crate::model::Trajectory;
+use crate::plan::choice::{self, Details, PlannerKind, PlannerOptions};
+use crate::plan::lattice::{LatticeParams, LatticePlanReport};
+use crate::plan::{PlanParams, PlanReport, PlanStatus};
 use crate::report::{PoseReport, RayReport, Side, TensionEnvelope, VerifyReport};
 use crate::verify::slice::{default_range, Class, SliceMap};
 use crate::verify::{check_pose, ray, slice, tension_envelope, verify_pointwise, verify_trajectory};
@@ -57,12 +61,28 @@ pub enum Request {
         /// Ranges of the two axes (`None`: [-π, π] for angles; position axes need one).
         range: Option<[[f64; 2]; 2]>,
     },
-    /// A wrench-feasible, interference-free path for one of the scenario's queries.
+    /// The thesis' ray lattice over `axes` (the others from the pose): every ray's exact feasible
+    /// intervals, the graph of feasible pieces and its components (docs/lattice.md).
+    Lattice {
+        /// Pose the other coordinates come from.
+        pose: String,
+        /// The chosen coordinates.
+        axes: Vec<Coord>,
+        /// [LO, HI] per axis.
+        ranges: Vec<[f64; 2]>,
+        /// Grid values: one number for every axis, or one per axis.
+        steps: Vec<usize>,
+    },
+    /// A feasible path for one of the scenario's queries, by the atlas or the lattice planner.
     Plan {
         /// Query name.
         query: String,
-        /// Planner parameters (defaults: [`PlanParams::default`]).
+        /// Atlas planner parameters (defaults: [`PlanParams::default`]).
         params: PlanParams,
+        /// Which planner.
+        planner: PlannerKind,
+        /// Lattice planner parameters (defaults: [`LatticeParams::default`]).
+        lattice: LatticeParams,
     },
 }
 
@@ -79,8 +99,12 @@ pub enum Output {
     Envelope(TensionEnvelope),
     /// Of [`Request::Slice`].
     Slice(SliceMap),
-    /// Of [`Request::Plan`].
-    Plan(PlanReport),
+    /// Of [`Request::Plan`] with the atlas planner, and the path as a trajectory.
+    Plan(PlanReport, Option<Trajectory>),
+    /// Of [`Request::Lattice`].
+    Lattice(LatticeReport),
+    /// Of [`Request::Plan`] with the lattice planner, and its smoothed trajectory.
+    LatticePlan(LatticePlanReport, Option<Trajectory>),
 }
 
 /// How far a long command has come, for progress bars: `done` of `total` units of `stage`.
@@ -120,26 +144,47 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
             };
             Output::Slice(slice(scenario, pose, *axes, *res, range)?)
         }
-        Request::Plan { query, params } => {
+        Request::Lattice { pose, axes, ranges, steps } => {
+            let spec = LatticeSpec::new(axes.clone(), ranges.clone(), steps.clone(), scenario.pose(pose)?.coords())?;
+            let mut lattice = Lattice::new(scenario, spec);
+            loop {
+                let p = lattice.step(16);
+                if p.done {
+                    break;
+                }
+                progress(Progress { stage: "rays", done: p.rays_done, total: p.rays_total });
+            }
+            Output::Lattice(lattice.report().ok_or_else(|| Error::new("lattice", "the lattice stopped before its end"))?)
+        }
+        Request::Plan { query, params, planner, lattice } => {
             let option = |e: Error| match e.field.as_str() {
                 "radius" | "epsilon" | "max_charts" => Error::new(format!("--{}", e.field.replace('_', "-")), e.reason),
                 _ => e,
             };
-            let (outcome, seconds) = timed(|| -> Result<_> {
-                let mut planner = Planner::new(scenario, query, *params).map_err(option)?;
+            let options = PlannerOptions { kind: *planner, atlas: *params, lattice: *lattice };
+            // the planner is picked by name and stepped through the common interface
+            let (result, seconds) = timed(|| -> Result<_> {
+                let mut p = choice::planner(scenario, query, &options).map_err(option)?;
                 loop {
-                    let p = planner.step(1000);
-                    if p.done.is_some() {
+                    let step = p.step(1000);
+                    if step.done.is_some() {
                         break;
                     }
-                    progress(match p.verifying {
-                        Some((done, total)) => Progress { stage: "path edges verified", done, total },
-                        None => Progress { stage: "charts", done: p.charts, total: params.max_charts },
-                    });
+                    progress(Progress { stage: "planning (‰)", done: (step.fraction * 1000.0) as usize, total: 1000 });
                 }
-                planner.outcome().ok_or_else(|| Error::new("plan", "the planner stopped without an outcome"))
+                p.result(0.0).ok_or_else(|| Error::new("plan", "the planner stopped without a result"))
             });
-            Output::Plan(outcome?.report(query, seconds))
+            let result = result?;
+            match result.details {
+                Details::Atlas(mut r) => {
+                    r.seconds = seconds;
+                    Output::Plan(r, result.trajectory)
+                }
+                Details::Lattice(mut r) => {
+                    r.seconds = seconds;
+                    Output::LatticePlan(r, result.trajectory)
+                }
+            }
         }
     })
 }
@@ -153,7 +198,9 @@ impl Output {
             Output::Check(r) => to_json(r),
             Output::Envelope(r) => to_json(r),
             Output::Slice(r) => to_json(r),
-            Output::Plan(r) => to_json(r),
+            Output::Plan(r, _) => to_json(r),
+            Output::Lattice(r) => to_json(r),
+            Output::LatticePlan(r, _) => to_json(r),
         };
         // Serialising these plain structs cannot fail; non-finite floats become null.
         text.unwrap_or_else(|e| format!("{{\"error\": {:?}}}", e.to_string()))
@@ -167,7 +214,18 @@ impl Output {
             Output::Check(r) => check_text(r),
             Output::Envelope(r) => envelope_text(r),
             Output::Slice(r) => slice_text(r),
-            Output::Plan(r) => plan_text(r),
+            Output::Plan(r, _) => plan_text(r),
+            Output::Lattice(r) => lattice_text(r),
+            Output::LatticePlan(r, _) => lattice_plan_text(r),
+        }
+    }
+
+    /// The planned motion of a plan (the atlas' path as line + slerp pieces, the lattice
+    /// planner's smoothed trajectory), for `--out`; `None` for other commands or without a path.
+    pub fn trajectory(&self) -> Option<&Trajectory> {
+        match self {
+            Output::Plan(_, t) | Output::LatticePlan(_, t) => t.as_ref(),
+            _ => None,
         }
     }
 }
@@ -305,12 +363,59 @@ fn timed<T>(f: impl FnOnce() -> T) -> (T, f64) {
     }
 }
 
-fn plan_text(r: &PlanReport) -> String {
-    let status = match r.status {
+fn status_name(s: PlanStatus) -> &'static str {
+    match s {
         PlanStatus::Found => "found",
         PlanStatus::NoPath => "no_path",
         PlanStatus::Budget => "budget",
-    };
+        PlanStatus::Unrepaired => "unrepaired",
+    }
+}
+
+fn lattice_text(r: &LatticeReport) -> String {
+    let axes: Vec<String> = r.axes.iter().zip(&r.ranges).zip(&r.steps).map(|((a, g), n)| format!("{a} ∈ [{}, {}] ({n} values)", g[0], g[1])).collect();
+    let mut out = format!("lattice over {}: {} rays, {} feasible pieces, {} component(s)\n", axes.join(", "), r.rays.len(), r.pieces, r.components);
+    out += &format!("  grid points: {} of {} feasible on every ray through them", r.feasible_points, r.grid_points);
+    if r.disagreements > 0 {
+        out += &format!(" ({} where the rays through them disagree)", r.disagreements);
+    }
+    out += "\n";
+    if r.uncertain_rays > 0 {
+        out += &format!("  warning: {} ray(s) have uncertain sections (counted as infeasible)\n", r.uncertain_rays);
+    }
+    const SHOWN: usize = 200;
+    for (ray, comps) in r.rays.iter().zip(&r.piece_components).take(SHOWN) {
+        let at: Vec<String> = ray.fixed.iter().filter(|(k, _)| r.axes.contains(k)).map(|(k, v)| format!("{k} = {v:.6}")).collect();
+        let pieces: Vec<String> = ray.feasible.iter().zip(comps).map(|(iv, c)| format!("[{:.6}, {:.6}] (component {c})", iv[0], iv[1])).collect();
+        out += &format!("  {} at {}: {}\n", ray.vary, at.join(", "), if pieces.is_empty() { "none".to_string() } else { pieces.join(" ∪ ") });
+    }
+    if r.rays.len() > SHOWN {
+        out += &format!("  … {} more rays (--json prints all)\n", r.rays.len() - SHOWN);
+    }
+    out + &notes(&r.conservative, &r.warnings)
+}
+
+fn lattice_plan_text(r: &LatticePlanReport) -> String {
+    let mut out = format!("plan {} (lattice): {} ({:.3} s)\n  {}\n", r.query, status_name(r.status), r.seconds, r.message);
+    out += &format!(
+        "  lattice: {} rays, {} component(s); {} of {} segments to cell corners verified; A* expanded {} points\n",
+        r.rays, r.components, r.segments[0], r.segments[1], r.expanded
+    );
+    if !r.polyline.is_empty() {
+        out += &format!("  A* polyline: {} points, length {:.6}; {} waypoints\n", r.polyline.len(), r.polyline_length, r.waypoints.len());
+        out += &format!("  smoothed: {} piece(s) ({} single polyline edges) after {} repair(s)\n", r.pieces, r.polyline_pieces, r.repairs);
+        for (i, c) in r.waypoints.iter().enumerate() {
+            out += &format!("  {i:5}  p = [{:.6}, {:.6}, {:.6}]  (φ, θ, σ) = ({:.6}, {:.6}, {:.6})\n", c[0], c[1], c[2], c[3], c[4], c[5]);
+        }
+    }
+    if let Some(v) = &r.verification {
+        out += &format!("  verified: feasible t ∈ {}; infeasible t ∈ {}; uncertain t ∈ {}\n", intervals(&v.feasible), intervals(&v.infeasible), intervals(&v.uncertain));
+    }
+    out
+}
+
+fn plan_text(r: &PlanReport) -> String {
+    let status = status_name(r.status);
     let (a, p) = (&r.atlas, &r.atlas.params);
     let mut out = format!(
         "plan {}: {status} ({} charts, {}-D, {:.3} s; r = {}, ε = {}, δ = {}, κ = {}, margins ≥ {}, ≤ {} charts)\n",
@@ -333,6 +438,7 @@ fn plan_text(r: &PlanReport) -> String {
         }
         PlanStatus::NoPath => out += "  the atlas of the start's connected component is exhausted without reaching the goal: no path at this resolution\n",
         PlanStatus::Budget => out += "  the chart budget ran out: nothing is claimed (raise --max-charts)\n",
+        PlanStatus::Unrepaired => {}
     }
     if a.expansion_failures > 0 {
         out += &format!("  warning: {} expansion direction(s) failed; a no_path here is not certified\n", a.expansion_failures);

@@ -24,6 +24,7 @@
 pub mod command;
 pub mod conditions;
 pub mod error;
+pub mod lattice;
 pub mod model;
 pub mod plan;
 pub mod png;

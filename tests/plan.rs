@@ -420,7 +420,7 @@ fn robocrane_other_component_is_no_path() {
     let other = Pose::from_coords([0.0, 0.0, 2.0, phi, theta, 7.0 * PI / 36.0]);
     assert!(wrench_at(&s, &other).unwrap().feasible);
     s.poses.push(("island".to_string(), other));
-    s.queries.push(Query { name: "island-q1".to_string(), start: "island".to_string(), goal: "q1".to_string(), fixed: vec![Coord::X, Coord::Y, Coord::Z, Coord::Sigma] });
+    s.queries.push(Query { name: "island-q1".to_string(), start: "island".to_string(), goal: "q1".to_string(), fixed: vec![Coord::X, Coord::Y, Coord::Z, Coord::Sigma], region: vec![] });
     let out = plan(&s, "island-q1", PlanParams::default()).unwrap();
     assert_eq!(out.status, PlanStatus::NoPath);
     assert_eq!((out.atlas.expansion_failures, out.atlas.broken_edges), (0, 0), "a certified no_path");
@@ -481,7 +481,7 @@ fn robocrane_paths_avoid_obstacles() {
 #[test]
 fn robocrane_full_6d_query_ends_honestly() {
     let mut s = robocrane();
-    s.queries.push(Query { name: "6d".to_string(), start: "q1".to_string(), goal: "q2".to_string(), fixed: vec![] });
+    s.queries.push(Query { name: "6d".to_string(), start: "q1".to_string(), goal: "q2".to_string(), fixed: vec![], region: vec![] });
     let params = PlanParams { max_charts: 20, ..PlanParams::default() };
     let out = plan(&s, "6d", params).unwrap();
     assert_eq!(out.atlas.dimension, 6);
@@ -492,6 +492,7 @@ fn robocrane_full_6d_query_ends_honestly() {
             assert!(out.path.is_empty());
         }
         PlanStatus::NoPath => panic!("q1 and q2 are connected on a 2-D slice, so not in 6-D"),
+        PlanStatus::Unrepaired => panic!("the atlas planner re-verifies its path; it never reports unrepaired"),
     }
 }
 
@@ -542,7 +543,7 @@ fn bad_input_is_reported() {
     s.poses.push(("flipped".to_string(), Pose::from_coords([0.0, 0.0, -2.0, 0.0, 0.0, 0.0])));
     s.poses.push(("elsewhere".to_string(), Pose::from_coords([0.0, 0.0, 1.5, 2.0, 0.9, 7.0 * PI / 36.0])));
     s.poses.push(("flat".to_string(), Pose::from_coords([0.0, 0.0, 0.0, 0.0, 0.0, 0.0])));
-    let q = |name: &str, start: &str, goal: &str, fixed: Vec<Coord>| Query { name: name.into(), start: start.into(), goal: goal.into(), fixed };
+    let q = |name: &str, start: &str, goal: &str, fixed: Vec<Coord>| Query { name: name.into(), start: start.into(), goal: goal.into(), fixed, region: vec![] };
     s.queries.push(q("bad-start", "flipped", "q1", vec![]));
     s.queries.push(q("off-slice", "q1", "elsewhere", vec![Coord::Z]));
     s.queries.push(q("singular-goal", "q1", "flat", vec![]));
@@ -569,7 +570,7 @@ fn bad_input_is_reported() {
 #[test]
 fn every_step_unit_does_bounded_work() {
     let mut s = robocrane();
-    s.queries.push(Query { name: "q1-q3".to_string(), start: "q1".to_string(), goal: "q3".to_string(), fixed: vec![Coord::X, Coord::Y, Coord::Z, Coord::Sigma] });
+    s.queries.push(Query { name: "q1-q3".to_string(), start: "q1".to_string(), goal: "q3".to_string(), fixed: vec![Coord::X, Coord::Y, Coord::Z, Coord::Sigma], region: vec![] });
     let mut p = Planner::new(&s, "q1-q3", PlanParams::default()).unwrap();
     let mut last = p.work();
     let (mut most_evaluations, mut most_trajectories, mut most_poses, mut units) = (0, 0, 0, 0);

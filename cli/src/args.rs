@@ -3,6 +3,8 @@
 
 use cablenav::command::Request;
 use cablenav::model::Coord;
+use cablenav::plan::choice::PlannerKind;
+use cablenav::plan::lattice::LatticeParams;
 use cablenav::plan::PlanParams;
 use clap::{Parser, Subcommand};
 use clap_complete::Shell;
@@ -17,7 +19,7 @@ Exit codes:
   70  internal error: a bug (please report the command and the scenario)
   74  the report could not be written to stdout";
 
-const SCENARIO_HELP: &str = "A cablenav-scenario/1 JSON file (docs/scenario-format.md)";
+const SCENARIO_HELP: &str = "A cablenav-scenario/1 or /2 JSON file (docs/scenario-format.md)";
 
 /// Exact feasibility of cable-driven parallel robot motions.
 ///
@@ -120,9 +122,33 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// A wrench-feasible, interference-free path for a query of the scenario (Henderson atlas +
-    /// A*, docs/planner.md): found / no_path (start component exhausted) / budget, the path
-    /// re-verified edge by edge
+    /// The thesis' ray lattice over the chosen coordinates (the others from the pose): every
+    /// ray's exact feasible intervals, the graph of feasible pieces and its components
+    /// (docs/lattice.md)
+    #[command(after_help = EXIT_CODES)]
+    Lattice {
+        #[arg(value_name = "SCENARIO", help = SCENARIO_HELP)]
+        scenario: String,
+        /// The pose the other coordinates come from
+        #[arg(long, value_name = "NAME")]
+        pose: String,
+        /// The coordinates, comma-separated (x, y, z, phi, theta, sigma)
+        #[arg(long, value_name = "A,B[,C…]")]
+        axes: String,
+        /// One LO HI pair per axis, in the order of --axes
+        #[arg(long, num_args = 2.., value_names = ["LO", "HI"], value_parser = finite, allow_negative_numbers = true)]
+        range: Vec<f64>,
+        /// Grid values per axis (both ends of the range count): one number, or one per axis (7,9)
+        #[arg(long, value_name = "N[,N…]")]
+        steps: String,
+        /// Print the report as JSON
+        #[arg(long)]
+        json: bool,
+    },
+    /// A feasible path for a query of the scenario. --planner atlas (default; 6 cables with a
+    /// wrench set): Henderson atlas + A*, docs/planner.md, found / no_path / budget, the path
+    /// re-verified edge by edge. --planner lattice (any robot): ray lattice + A* + Bézier
+    /// smoothing, verified exactly and repaired, docs/lattice.md
     #[command(after_help = EXIT_CODES)]
     Plan {
         #[arg(value_name = "SCENARIO", help = SCENARIO_HELP)]
@@ -130,6 +156,16 @@ pub enum Command {
         /// The query (start and goal poses) to plan
         #[arg(long, value_name = "NAME")]
         query: String,
+        /// The planner: atlas or lattice
+        #[arg(long, value_name = "NAME", default_value = "atlas")]
+        planner: String,
+        /// Lattice planner: grid values per free coordinate [default: 7]
+        #[arg(long, value_name = "N")]
+        steps: Option<usize>,
+        /// Write the scenario with the planned trajectory added (as QUERY-lattice or QUERY-atlas)
+        /// to FILE, so that `cablenav verify FILE --trajectory NAME` checks it
+        #[arg(long, value_name = "FILE")]
+        out: Option<String>,
         /// Chart budget: the planner stops with `budget` after this many charts
         #[arg(long, value_name = "N", default_value_t = PlanParams::default().max_charts)]
         max_charts: usize,
@@ -162,6 +198,8 @@ pub struct Invocation {
     pub json: bool,
     /// Where to write the slice map's PNG.
     pub png: Option<String>,
+    /// Where to write the scenario with the planned trajectory added.
+    pub out: Option<String>,
 }
 
 const COORDS: [&str; 6] = ["x", "y", "z", "phi", "theta", "sigma"];
@@ -169,7 +207,7 @@ const COORDS: [&str; 6] = ["x", "y", "z", "phi", "theta", "sigma"];
 impl Command {
     /// The core request of a command that reads a scenario (not of `completions`).
     pub fn invocation(self) -> cablenav::Result<Invocation> {
-        let plain = |scenario, request, json| Ok(Invocation { scenario, request, json, png: None });
+        let plain = |scenario, request, json| Ok(Invocation { scenario, request, json, png: None, out: None });
         match self {
             Command::Verify { scenario, trajectory, pointwise, json } => plain(scenario, Request::Verify { trajectory, pointwise }, json),
             Command::Ray { scenario, pose, vary, range, json } => {
@@ -180,11 +218,31 @@ impl Command {
             Command::Envelope { scenario, trajectory, samples, json } => plain(scenario, Request::Envelope { trajectory, samples }, json),
             Command::Slice { scenario, pose, axes, res, range, png, json } => {
                 let range = range.map(|r| [[r[0], r[1]], [r[2], r[3]]]);
-                Ok(Invocation { scenario, request: Request::Slice { pose, axes, res, range }, json, png })
+                Ok(Invocation { scenario, request: Request::Slice { pose, axes, res, range }, json, png, out: None })
             }
-            Command::Plan { scenario, query, max_charts, radius, epsilon, json } => {
+            Command::Lattice { scenario, pose, axes, range, steps, json } => {
+                let axes = axes
+                    .split(',')
+                    .map(|a| Coord::parse(a.trim()).ok_or_else(|| cablenav::Error::new("--axes", format!("{:?} is not one of x, y, z, phi, theta, sigma", a.trim()))))
+                    .collect::<cablenav::Result<Vec<Coord>>>()?;
+                if range.len() % 2 != 0 {
+                    return Err(cablenav::Error::new("--range", format!("needs LO HI pairs, got {} numbers", range.len())));
+                }
+                let ranges = range.chunks(2).map(|p| [p[0], p[1]]).collect();
+                let steps = steps
+                    .split(',')
+                    .map(|n| n.trim().parse::<usize>().map_err(|_| cablenav::Error::new("--steps", format!("not a whole number: {n:?}"))))
+                    .collect::<cablenav::Result<Vec<usize>>>()?;
+                plain(scenario, Request::Lattice { pose, axes, ranges, steps }, json)
+            }
+            Command::Plan { scenario, query, planner, steps, out, max_charts, radius, epsilon, json } => {
+                let planner = PlannerKind::parse(&planner)?;
+                if steps.is_some() && planner != PlannerKind::Lattice {
+                    return Err(cablenav::Error::new("--steps", "is an option of --planner lattice"));
+                }
                 let params = PlanParams { max_charts, radius, epsilon, ..PlanParams::default() };
-                plain(scenario, Request::Plan { query, params }, json)
+                let lattice = LatticeParams { steps: steps.unwrap_or(LatticeParams::default().steps), ..LatticeParams::default() };
+                Ok(Invocation { scenario, request: Request::Plan { query, params, planner, lattice }, json, png: None, out })
             }
             Command::Completions { .. } => Err(cablenav::Error::new("completions", "reads no scenario")),
         }

@@ -16,7 +16,7 @@ use std::fmt;
 
 /// Reads a scenario file by path.
 pub type Read<'a> = &'a dyn Fn(&str) -> cablenav::Result<String>;
-/// Writes an output file (`--png`) by path.
+/// Writes an output file (`--png`, `--out`) by path.
 pub type Write<'a> = &'a dyn Fn(&str, &[u8]) -> cablenav::Result<()>;
 
 /// Why a command failed.
@@ -97,5 +97,14 @@ where
     if let (Output::Slice(map), Some(png)) = (&output, &invocation.png) {
         write(png, &map.png())?;
     }
-    Ok(if invocation.json { output.json() } else { output.text() })
+    let mut printed = if invocation.json { output.json() } else { output.text() };
+    if let Some(file) = &invocation.out {
+        let traj = output.trajectory().ok_or_else(|| cablenav::Error::new("--out", "no trajectory was planned: nothing to write"))?;
+        let (text, name) = cablenav::scenario::with_trajectory(&read(path)?, traj)?;
+        write(file, text.as_bytes())?;
+        if !invocation.json {
+            printed += &format!("\n  wrote {file} with the trajectory \"{name}\" (check it: cablenav verify {file} --trajectory {name})\n");
+        }
+    }
+    Ok(printed)
 }

@@ -10,25 +10,37 @@
 //!   Q ∝ Qs + τ (Qe − Qs cos θ)/cos²(θ/2) − τ² h² Qs (a form with no division by sin θ, stable
 //!   as θ → 0), and t = 2·atan(hτ)/θ.
 //! * A ray in x, y or z: λ maps linearly onto the range; w = 1.
-//! * A ray in an angle of tilt-and-torsion: the range is cut into pieces at most π/2 wide; on a
-//!   piece starting at γ0 the angle is γ0 + 2·atan(hλ), and a rotation by ψ about an axis k is the
+//! * A ray in an angle of tilt-and-torsion: the range is cut into pieces at most [`ANGLE_PIECE`]
+//!   (π/8) wide; on a piece starting at γ0 the angle is γ0 + 2·atan(hλ), and a rotation by ψ about an axis k is the
 //!   quaternion (1, tan(ψ/2)·k) up to scale.
 
 use super::pose::{Coord, Pose};
-use super::trajectory::{Orientation, Trajectory, Translation};
+use super::trajectory::{Orientation, Segment, Trajectory, Translation};
 use crate::poly::Bern;
 use nalgebra::{Quaternion, UnitQuaternion};
 use std::f64::consts::FRAC_PI_2;
 
+/// Widest piece of an angle ray. On a piece of width ψ the rotation numerator and the weight grow
+/// like powers of (1 + h²λ²), h = tan(ψ/2): at ψ = π/2
+/// (h = 1) the wrench conditions' high powers of w span orders of magnitude over [0, 1] and their
+/// sign tests stayed undecided over most of a piece (Robocrane φ-rays: uncertain over half the
+/// range); at π/8 (h ≈ 0.2) they decide, and the ray is faster for it.
+pub const ANGLE_PIECE: f64 = FRAC_PI_2 / 4.0;
+
 /// How λ ∈ [0, 1] maps to the parameter a user sees.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Param {
-    /// A trajectory: λ = τ, t = 2·atan(hτ)/θ (t = τ when θ = 0).
+    /// A trajectory's piece: λ = τ, its own t = 2·atan(hτ)/θ (t = τ when θ = 0), mapped onto
+    /// the piece's share [t0, t1] of the whole trajectory's t.
     Trajectory {
         /// Slerp angle θ between the quaternions.
         theta: f64,
         /// tan(θ/2).
         h: f64,
+        /// The whole trajectory's t where the piece starts (0 for a one-piece trajectory).
+        t0: f64,
+        /// The whole trajectory's t where the piece ends (1 for a one-piece trajectory).
+        t1: f64,
     },
     /// A linear coordinate: value = lo + (hi − lo)·λ.
     Linear {
@@ -52,11 +64,16 @@ impl Param {
     /// The user-facing value (t for trajectories) at λ; exactly the range's ends at λ = 0 and 1.
     pub fn value(&self, lam: f64) -> f64 {
         match *self {
-            Param::Trajectory { theta, h } => {
-                if theta < 1e-9 || lam <= 0.0 || lam >= 1.0 {
+            Param::Trajectory { theta, h, t0, t1 } => {
+                let local = if theta < 1e-9 || lam <= 0.0 || lam >= 1.0 {
                     lam.clamp(0.0, 1.0)
                 } else {
                     (2.0 * (h * lam).atan() / theta).clamp(0.0, 1.0)
+                };
+                if local >= 1.0 {
+                    t1
+                } else {
+                    t0 + (t1 - t0) * local
                 }
             }
             Param::Linear { lo, hi } => lo * (1.0 - lam) + hi * lam,
@@ -73,11 +90,12 @@ impl Param {
     /// An upper bound on |d value / dλ| over [0, 1].
     pub fn max_slope(&self) -> f64 {
         match *self {
-            Param::Trajectory { theta, h } => {
+            Param::Trajectory { theta, h, t0, t1 } => {
+                let span = t1 - t0;
                 if theta < 1e-9 {
-                    1.0
+                    span
                 } else {
-                    2.0 * h / theta
+                    span * 2.0 * h / theta
                 }
             }
             Param::Linear { lo, hi } => (hi - lo).abs(),
@@ -175,11 +193,16 @@ impl Motion {
         Motion { position, rotation, weight, param }
     }
 
-    /// The motion of a trajectory, in λ = τ.
-    pub fn trajectory(traj: &Trajectory) -> Motion {
-        let Orientation::Slerp(qs, qe) = &traj.orientation;
+    /// The motions of a trajectory, one per piece, each in λ = the piece's τ.
+    pub fn trajectory(traj: &Trajectory) -> Vec<Motion> {
+        traj.pieces().iter().enumerate().map(|(k, seg)| Motion::segment(seg, traj.piece_span(k))).collect()
+    }
+
+    /// The motion of one piece covering `span` of its trajectory's t, in λ = τ.
+    fn segment(seg: &Segment, [t0, t1]: [f64; 2]) -> Motion {
+        let Orientation::Slerp(qs, qe) = &seg.orientation;
         let (s, e) = (qs.quaternion(), qe.quaternion());
-        let theta = traj.theta();
+        let theta = seg.theta();
         let cos = theta.cos();
         let h = (theta / 2.0).tan();
         let half_cos2 = (theta / 2.0).cos().powi(2);
@@ -191,14 +214,21 @@ impl Motion {
             vec![s.j, lin.j, quad.j],
             vec![s.k, lin.k, quad.k],
         ];
-        Motion::from_parts(translation_bernstein(&traj.translation), &n, Param::Trajectory { theta, h })
+        Motion::from_parts(translation_bernstein(&seg.translation), &n, Param::Trajectory { theta, h, t0, t1 })
     }
 
     /// The motions of a ray: `coord` runs from `lo` to `hi`, the other coordinates stay at
     /// `pose`'s (x, y, z, φ, θ, σ). Linear coordinates give one piece; angles one piece per
-    /// π/2 or less of range.
+    /// [`ANGLE_PIECE`] or less of range.
     pub fn ray(pose: &Pose, coord: Coord, lo: f64, hi: f64) -> Vec<Motion> {
-        let c = pose.coords();
+        Motion::ray_through(pose.coords(), coord, lo, hi)
+    }
+
+    /// The motions of a ray through the coordinates `c` (x, y, z, φ, θ, σ) as given — not the
+    /// canonical angles of their rotation, which may differ: a lattice's rays keep the user's
+    /// angle triple.
+    pub fn ray_through(c: [f64; 6], coord: Coord, lo: f64, hi: f64) -> Vec<Motion> {
+        let pose = Pose::from_coords(c);
         if !coord.is_angle() {
             let i = coord.index();
             let position = [0, 1, 2].map(|k| {
@@ -210,7 +240,7 @@ impl Motion {
             });
             return vec![Motion::from_parts(position, &quat_const(&pose.rotation), Param::Linear { lo, hi })];
         }
-        let pieces = (((hi - lo).abs() / FRAC_PI_2).ceil() as usize).max(1);
+        let pieces = (((hi - lo).abs() / ANGLE_PIECE).ceil() as usize).max(1);
         let position = [0, 1, 2].map(|k| Bern::constant(c[k]));
         (0..pieces)
             .map(|k| {
@@ -255,12 +285,12 @@ mod tests {
     fn trajectory_motion_matches_slerp_and_polynomial() {
         let qs = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.9);
         let qe = UnitQuaternion::from_euler_angles(-0.5, 0.4, -0.1);
-        let traj = Trajectory {
-            name: "t".into(),
-            translation: Translation::Polynomial([vec![1.0, 2.0, -1.0], vec![0.5, 0.0, 0.0, 3.0], vec![2.0]]),
-            orientation: Orientation::Slerp(qs, qe),
-        };
-        let m = Motion::trajectory(&traj);
+        let traj = Trajectory::single(
+            "t",
+            Translation::Polynomial([vec![1.0, 2.0, -1.0], vec![0.5, 0.0, 0.0, 3.0], vec![2.0]]),
+            Orientation::Slerp(qs, qe),
+        );
+        let m = &Motion::trajectory(&traj)[0];
         for i in 0..=10 {
             let tau = i as f64 / 10.0;
             let t = m.param.value(tau);
@@ -276,7 +306,7 @@ mod tests {
         let pose = Pose::from_coords([1.0, 2.0, 3.0, 0.4, 0.7, -0.3]);
         for coord in [Coord::Phi, Coord::Theta, Coord::Sigma] {
             let pieces = Motion::ray(&pose, coord, -2.5, 2.0);
-            assert_eq!(pieces.len(), 3);
+            assert_eq!(pieces.len(), (4.5 / ANGLE_PIECE).ceil() as usize);
             for m in &pieces {
                 for i in 0..=4 {
                     let lam = i as f64 / 4.0;

@@ -56,8 +56,8 @@ fn conservative_labels(conditions: &[Box<dyn Condition>]) -> Vec<String> {
 /// to [`BOUNDARY_TOL`] in t with its active constraint, or reported in `uncertain`.
 pub fn verify_trajectory(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport> {
     let conditions = for_scenario(s);
-    let motion = Motion::trajectory(traj);
-    let (overall, per) = violation_pieces(&conditions, s, std::slice::from_ref(&motion), BOUNDARY_TOL);
+    let motions = Motion::trajectory(traj);
+    let (overall, per) = violation_pieces(&conditions, s, &motions, BOUNDARY_TOL);
     let sec = sections(&overall, &per, BOUNDARY_TOL);
     let mut warnings = s.warnings.clone();
     if !sec.uncertain.is_empty() {
@@ -91,17 +91,9 @@ fn trajectory_report(traj: &Trajectory, sec: Sections, method: &str, step: Optio
 /// Exact feasible intervals of one pose coordinate over [lo, hi], the others held at `pose`'s.
 pub fn ray(s: &Scenario, pose_name: &str, coord: Coord, lo: f64, hi: f64) -> Result<RayReport> {
     let pose = s.pose(pose_name)?;
-    if !(lo.is_finite() && hi.is_finite()) || lo >= hi {
-        return Err(Error::new("--range", format!("needs finite LO < HI, got {lo} {hi}")));
-    }
-    if coord.is_angle() && hi - lo > 64.0 * std::f64::consts::PI {
-        return Err(Error::new("--range", "an angle range wider than 64π is not meaningful"));
-    }
+    check_ray_range(coord, lo, hi)?;
     let conditions = for_scenario(s);
-    let motions = Motion::ray(pose, coord, lo, hi);
-    let tol = BOUNDARY_TOL * (hi - lo).abs().max(1.0);
-    let (overall, per) = violation_pieces(&conditions, s, &motions, tol);
-    let sec = sections(&overall, &per, tol);
+    let sec = ray_sections(s, &conditions, pose.coords(), coord, lo, hi);
     Ok(RayReport {
         vary: coord.name().to_string(),
         pose: pose_name.to_string(),
@@ -113,6 +105,28 @@ pub fn ray(s: &Scenario, pose_name: &str, coord: Coord, lo: f64, hi: f64) -> Res
         conservative: conservative_labels(&conditions),
         warnings: s.warnings.clone(),
     })
+}
+
+/// Checks a ray's range: finite LO < HI, and an angle range at most 64π wide.
+pub fn check_ray_range(coord: Coord, lo: f64, hi: f64) -> Result<()> {
+    if !(lo.is_finite() && hi.is_finite()) || lo >= hi {
+        return Err(Error::new("--range", format!("needs finite LO < HI, got {lo} {hi}")));
+    }
+    if coord.is_angle() && hi - lo > 64.0 * std::f64::consts::PI {
+        return Err(Error::new("--range", "an angle range wider than 64π is not meaningful"));
+    }
+    Ok(())
+}
+
+/// The sections of the ray through the coordinates `c` (x, y, z, φ, θ, σ, the angles as given)
+/// along `coord` over [lo, hi] (checked with [`check_ray_range`]) under `conditions` (the
+/// scenario's, [`for_scenario`]), exactly; boundaries certified to [`BOUNDARY_TOL`] relative to
+/// the range. What [`ray`] reports, and what the ray lattice is made of.
+pub fn ray_sections(s: &Scenario, conditions: &[Box<dyn Condition>], c: [f64; 6], coord: Coord, lo: f64, hi: f64) -> Sections {
+    let motions = Motion::ray_through(c, coord, lo, hi);
+    let tol = BOUNDARY_TOL * (hi - lo).abs().max(1.0);
+    let (overall, per) = violation_pieces(conditions, s, &motions, tol);
+    sections(&overall, &per, tol)
 }
 
 /// Wrench feasibility of the scenario's 6-cable robot at `pose` (Bohigas et al. §3), if the

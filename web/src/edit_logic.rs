@@ -848,7 +848,7 @@ mod tests {
     fn key_order_survives_edits() {
         let mut d = doc();
         set(&mut d, &Path::of(&["poses"]).i(0).k("position").i(0), number(3.0));
-        assert_eq!(pose_names(&d), ["start", "end", "fig310"]);
+        assert_eq!(pose_names(&d), ["start", "end", "fig310", "box-left", "box-right"]);
         let text = serde_json::to_string(&d).unwrap();
         assert!(text.starts_with("{\"format\""), "{text}");
     }
@@ -942,9 +942,9 @@ mod tests {
     fn poses_add_and_rename_everywhere() {
         let mut d = doc();
         assert_eq!(add_pose(&mut d), "pose 1");
-        assert_eq!(pose_names(&d), ["start", "end", "fig310", "pose 1"]);
+        assert_eq!(pose_names(&d), ["start", "end", "fig310", "box-left", "box-right", "pose 1"]);
         rename_pose(&mut d, 0, "begin").unwrap();
-        assert_eq!(pose_names(&d), ["begin", "end", "fig310", "pose 1"]);
+        assert_eq!(pose_names(&d), ["begin", "end", "fig310", "box-left", "box-right", "pose 1"]);
         assert_eq!(d["trajectories"][1]["orientation"]["slerp"], json!(["begin", "end"]));
         assert!(rename_pose(&mut d, 1, "begin").is_err());
         assert!(rename_pose(&mut d, 1, " ").is_err());

@@ -1,12 +1,16 @@
 //! Planning from the page: pick a planner and a query, run it with a progress bar and a Cancel
-//! button. The core's resumable [`cablenav::plan::Planner`] is advanced in bounded `step` calls
-//! from animation frames, [`SLICE_MS`] of work per frame, so the page stays responsive; Cancel
-//! stops calling `step` and drops the planner.
+//! button. The core's resumable planner ([`cablenav::plan::choice::PathPlanner`]: the atlas or the
+//! ray lattice, picked by name) is advanced in bounded `step` calls from animation frames,
+//! [`SLICE_MS`] of work per frame, so the page stays responsive; Cancel stops calling `step` and
+//! drops the planner.
 
 use crate::app::{Parsed, Shared};
 use crate::logic::fmt_num;
 use crate::workbench::Planned;
-use cablenav::plan::{PlanOutcome, PlanParams, PlanProgress, PlanStatus, Planner};
+use cablenav::model::Pose;
+use cablenav::plan::choice::{planner, Details, PathPlanner, PlanResult, PlannerKind, PlannerOptions, Progress};
+use cablenav::plan::PlanStatus;
+use crate::view3d::scene::Rgba;
 use leptos::prelude::*;
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -19,7 +23,22 @@ pub const SLICE_MS: f64 = 8.0;
 
 /// The planners the page offers: (id, label, available).
 pub const PLANNERS: [(&str, &str, bool); 2] =
-    [("continuation", "Atlas continuation (Bohigas et al.)", true), ("ray-lattice", "Ray lattice (not available yet)", false)];
+    [("continuation", "Atlas continuation (Bohigas et al.)", true), ("ray-lattice", "Ray lattice + A* + Bézier (Zhang)", true)];
+
+/// Colour of the lattice planner's A* polyline, drawn beside the smoothed path.
+pub const POLYLINE: Rgba = [0.93, 0.55, 0.12, 1.0];
+
+/// Poses sampled along a planned trajectory for the page's view and plots.
+const PATH_SAMPLES: usize = 200;
+
+/// The core's planner kind for a page planner id.
+pub fn kind_of(id: &str) -> Option<PlannerKind> {
+    match id {
+        "continuation" => Some(PlannerKind::Atlas),
+        "ray-lattice" => Some(PlannerKind::Lattice),
+        _ => None,
+    }
+}
 
 /// Where a run is.
 #[derive(Debug, Clone, PartialEq)]
@@ -45,51 +64,83 @@ impl RunState {
             RunState::Done(PlanStatus::Found) => "found",
             RunState::Done(PlanStatus::NoPath) => "no_path",
             RunState::Done(PlanStatus::Budget) => "budget",
+            RunState::Done(PlanStatus::Unrepaired) => "unrepaired",
             RunState::Cancelled => "cancelled",
             RunState::Failed(_) => "error",
         }
     }
 }
 
-/// Progress as a fraction for the bar: how much of the start's distance to the goal the search
-/// front has covered, 1 − h/h₀, never going back (h₀: the least heuristic before any step).
-pub fn fraction(first_h: f64, p: &PlanProgress, shown: f64) -> f64 {
+/// Progress as a fraction for the bar, never going back.
+pub fn fraction(p: &Progress, shown: f64) -> f64 {
     if p.done.is_some() {
         return 1.0;
     }
-    if !(first_h.is_finite() && first_h > 0.0 && p.best_heuristic.is_finite()) {
-        return shown;
-    }
-    (1.0 - p.best_heuristic / first_h).clamp(0.0, 0.99).max(shown)
+    p.fraction.clamp(0.0, 0.99).max(shown)
 }
 
-/// One line describing an outcome.
-pub fn summary(o: &PlanOutcome) -> String {
-    let v = &o.verification;
-    match o.status {
-        PlanStatus::Found => format!(
-            "Path found: {} poses, {} charts. Re-verified: {} edge(s), {} infeasible and {} uncertain section(s); {} of {} poses wrench-infeasible{}.",
-            o.path.len(),
-            o.charts,
-            v.edges,
-            v.infeasible_sections,
-            v.uncertain_sections,
-            v.wrench_infeasible_poses,
-            v.wrench_poses,
-            v.least_wrench_margin.map_or(String::new(), |m| format!(", least wrench margin {}", fmt_num(m)))
-        ),
-        PlanStatus::NoPath => format!("No path at this resolution: the start's component was exhausted after {} charts.", o.charts),
-        PlanStatus::Budget => format!("Chart budget exhausted after {} charts: nothing is claimed.", o.charts),
+/// One line describing a result.
+pub fn summary(r: &PlanResult) -> String {
+    match &r.details {
+        Details::Atlas(o) => {
+            let v = &o.verification;
+            match o.status {
+                PlanStatus::Found => format!(
+                    "Path found: {} poses, {} charts. Re-verified: {} edge(s), {} infeasible and {} uncertain section(s); {} of {} poses wrench-infeasible{}.",
+                    o.path.len(),
+                    o.charts,
+                    v.edges,
+                    v.infeasible_sections,
+                    v.uncertain_sections,
+                    v.wrench_infeasible_poses,
+                    v.wrench_poses,
+                    v.least_wrench_margin.map_or(String::new(), |m| format!(", least wrench margin {}", fmt_num(m)))
+                ),
+                PlanStatus::NoPath => format!("No path at this resolution: the start's component was exhausted after {} charts.", o.charts),
+                PlanStatus::Budget => format!("Chart budget exhausted after {} charts: nothing is claimed.", o.charts),
+                PlanStatus::Unrepaired => "The path could not be verified feasible everywhere.".to_string(),
+            }
+        }
+        Details::Lattice(l) => match l.status {
+            PlanStatus::Found | PlanStatus::Unrepaired => format!(
+                "{}. A* polyline: {} points; smoothed into {} piece(s) after {} repair(s); {} rays, {} component(s).",
+                capitalised(&l.message),
+                l.polyline.len(),
+                l.pieces,
+                l.repairs,
+                l.rays,
+                l.components
+            ),
+            _ => format!("{}.", capitalised(&l.message)),
+        },
     }
+}
+
+fn capitalised(s: &str) -> String {
+    let mut c = s.chars();
+    c.next().map_or(String::new(), |f| f.to_uppercase().chain(c).collect())
+}
+
+/// The page's copy of a found path: the trajectory sampled (the atlas' path poses, or the lattice
+/// planner's smoothed trajectory at [`PATH_SAMPLES`] + 1 poses) and the lattice's A* polyline.
+pub fn planned_of(query: String, r: &PlanResult) -> Option<Planned> {
+    let traj = r.trajectory.as_ref()?;
+    let (poses, polyline): (Vec<Pose>, Vec<Pose>) = match &r.details {
+        Details::Atlas(o) => (o.path.iter().map(|p| Pose::from_quaternion(p.position.into(), p.quaternion)).collect(), vec![]),
+        Details::Lattice(l) => (
+            (0..=PATH_SAMPLES).map(|k| traj.pose_at(k as f64 / PATH_SAMPLES as f64)).collect(),
+            l.polyline.iter().map(|&c| Pose::from_coords(c)).collect(),
+        ),
+    };
+    let (start, goal) = (*poses.first()?, *poses.last()?);
+    Some(Planned { query, start, goal, poses, polyline })
 }
 
 /// A run in progress: the planner and what the page shows of it.
 struct Run {
-    planner: Planner,
+    planner: Box<dyn PathPlanner>,
     generation: u32,
     query: String,
-    /// The least heuristic before any work: the start's distance to the goal.
-    first_h: f64,
 }
 
 /// The signals a run updates.
@@ -116,37 +167,28 @@ fn pump(run: Rc<RefCell<Option<Run>>>, generation: u32, ui: Ui) {
         while p.done.is_none() && now() - started < SLICE_MS {
             p = r.planner.step(1);
         }
-        let first_h = r.first_h;
-        ui.progress.update(|shown| *shown = fraction(first_h, &p, *shown));
+        ui.progress.update(|shown| *shown = fraction(&p, *shown));
         drop(slot);
+        ui.detail.set(p.stage.clone());
         match p.done {
-            None => {
-                ui.detail.set(format!("{} charts, {} open, distance to goal {}", p.charts, p.open, fmt_num(p.best_heuristic)));
-                pump(run, generation, ui)
-            }
-            Some(_) => {
-                ui.detail.set(format!("{} charts; re-verifying the path…", p.charts));
-                finish(run, generation, ui)
-            }
+            None => pump(run, generation, ui),
+            Some(_) => finish(run, generation, ui),
         }
     });
 }
 
-/// In the next frame: the outcome (the planner re-verifies the path edge by edge), its summary and
-/// the end state; the path itself is handed to the page a frame later, so that drawing it does not
-/// share a frame with the verification.
+/// In the next frame: the result, its summary and the end state; the path itself is handed to the
+/// page a frame later, so that drawing it does not share a frame with the work.
 fn finish(run: Rc<RefCell<Option<Run>>>, generation: u32, ui: Ui) {
     request_animation_frame(move || {
         let Some(r) = run.borrow_mut().take_if(|r| r.generation == generation) else { return };
-        let Some(o) = r.planner.outcome() else {
-            ui.state.set(RunState::Failed("the planner ended without an outcome".into()));
+        let Some(o) = r.planner.result(f64::NAN) else {
+            ui.state.set(RunState::Failed("the planner ended without a result".into()));
             return;
         };
         ui.detail.set(summary(&o));
         ui.state.set(RunState::Done(o.status));
-        if o.status == PlanStatus::Found && !o.path.is_empty() {
-            let (start, goal) = (o.path[0], o.path[o.path.len() - 1]);
-            let planned = Planned { query: r.query, start, goal, poses: o.path };
+        if let Some(planned) = planned_of(r.query, &o) {
             request_animation_frame(move || ui.planned.set(Some(Shared::new(planned))));
         }
     });
@@ -158,6 +200,7 @@ pub fn Planning(parsed: Memo<Parsed>, planned: RwSignal<Option<Shared<Planned>>>
     let query = RwSignal::new(String::new());
     let planner_id = RwSignal::new(PLANNERS[0].0.to_string());
     let budget = RwSignal::new(20_000usize);
+    let steps = RwSignal::new(cablenav::plan::lattice::LatticeParams::default().steps);
     let ui = Ui { state: RwSignal::new(RunState::Idle), progress: RwSignal::new(0.0), detail: RwSignal::new(String::new()), planned };
     let run: Rc<RefCell<Option<Run>>> = Rc::new(RefCell::new(None));
     let generation = Rc::new(std::cell::Cell::new(0u32));
@@ -178,19 +221,20 @@ pub fn Planning(parsed: Memo<Parsed>, planned: RwSignal<Option<Shared<Planned>>>
     let start = move |_| {
         let parsed = parsed.get_untracked();
         let Ok(s) = parsed.0.as_ref() else { return };
-        if !PLANNERS.iter().any(|(id, _, ok)| *ok && *id == planner_id.get_untracked()) {
+        let Some(kind) = kind_of(&planner_id.get_untracked()) else {
             ui.state.set(RunState::Failed(format!("the planner “{}” is not available", planner_id.get_untracked())));
             return;
-        }
-        let params = PlanParams { max_charts: budget.get_untracked(), ..PlanParams::default() };
+        };
+        let mut options = PlannerOptions::new(kind);
+        options.atlas.max_charts = budget.get_untracked();
+        options.lattice.steps = steps.get_untracked();
         let q = query.get_untracked();
         planned.set(None);
-        match Planner::new(s, &q, params) {
+        match planner(s, &q, &options) {
             Err(e) => ui.state.set(RunState::Failed(e.to_string())),
-            Ok(mut planner) => {
+            Ok(planner) => {
                 gen2.set(gen2.get() + 1);
-                let first_h = planner.step(0).best_heuristic;
-                *run2.borrow_mut() = Some(Run { planner, generation: gen2.get(), query: q, first_h });
+                *run2.borrow_mut() = Some(Run { planner, generation: gen2.get(), query: q });
                 ui.progress.set(0.0);
                 ui.detail.set("starting…".into());
                 ui.state.set(RunState::Running);
@@ -225,7 +269,16 @@ pub fn Planning(parsed: Memo<Parsed>, planned: RwSignal<Option<Shared<Planned>>>
                     }).collect_view()}
                 </select>
             </label>
-            <label>
+            <label hidden=move || planner_id.get() != "ray-lattice">
+                "Lattice steps "
+                <input class="num" type="number" min="2" step="1" data-testid="plan-steps" prop:value=move || steps.get().to_string()
+                    on:change=move |ev| {
+                        if let Ok(v) = event_target_value(&ev).trim().parse::<usize>() {
+                            steps.set(v)
+                        }
+                    } />
+            </label>
+            <label hidden=move || planner_id.get() == "ray-lattice">
                 "Chart budget "
                 <input class="num" type="number" min="1" step="1000" prop:value=move || budget.get().to_string()
                     on:change=move |ev| {
@@ -252,50 +305,68 @@ pub fn Planning(parsed: Memo<Parsed>, planned: RwSignal<Option<Shared<Planned>>>
 mod tests {
     use super::*;
 
-    fn progress(h: f64, done: Option<PlanStatus>) -> PlanProgress {
-        PlanProgress { charts: 1, open: 1, best_heuristic: h, done, verifying: None }
+    fn progress(fraction: f64, done: Option<PlanStatus>) -> Progress {
+        Progress { stage: String::new(), fraction, done }
     }
 
     #[test]
     fn the_bar_only_moves_forward() {
-        assert_eq!(fraction(2.0, &progress(2.0, None), 0.0), 0.0);
-        assert_eq!(fraction(2.0, &progress(1.0, None), 0.0), 0.5);
-        assert_eq!(fraction(2.0, &progress(1.5, None), 0.5), 0.5, "a worse front does not move it back");
-        assert_eq!(fraction(2.0, &progress(0.0, None), 0.5), 0.99, "full only when done");
-        assert_eq!(fraction(2.0, &progress(0.3, Some(PlanStatus::Found)), 0.5), 1.0);
-        assert_eq!(fraction(f64::INFINITY, &progress(1.0, None), 0.2), 0.2);
+        assert_eq!(fraction(&progress(0.0, None), 0.0), 0.0);
+        assert_eq!(fraction(&progress(0.5, None), 0.0), 0.5);
+        assert_eq!(fraction(&progress(0.25, None), 0.5), 0.5, "a smaller estimate does not move it back");
+        assert_eq!(fraction(&progress(1.0, None), 0.5), 0.99, "full only when done");
+        assert_eq!(fraction(&progress(0.3, Some(PlanStatus::Found)), 0.5), 1.0);
     }
 
     #[test]
     fn state_names() {
         assert_eq!(RunState::Done(PlanStatus::NoPath).name(), "no_path");
         assert_eq!(RunState::Failed("x".into()).name(), "error");
-        assert_eq!(PLANNERS.iter().filter(|p| p.2).count(), 1);
+        assert_eq!(PLANNERS.iter().filter(|p| p.2).count(), 2);
+        assert!(PLANNERS.iter().all(|p| kind_of(p.0).is_some()));
     }
 
-    #[test]
-    fn robocrane_plans_from_the_page_logic_and_the_path_ends_at_the_query() {
-        let s = crate::logic::parse_scenario(crate::presets::PRESETS[crate::presets::find("robocrane").unwrap()].json).unwrap();
-        let mut p = Planner::new(&s, "q1-q2", PlanParams { max_charts: 20_000, ..PlanParams::default() }).unwrap();
-        let first = p.step(0);
-        assert_eq!(first.done, None);
+    /// Steps a planner one unit at a time, as the page does, and returns its result.
+    fn run_stepwise(s: &cablenav::Scenario, query: &str, kind: PlannerKind) -> PlanResult {
+        let mut p = planner(s, query, &PlannerOptions::new(kind)).unwrap();
         let mut shown = 0.0;
         let mut seen = vec![];
-        let mut last = first;
         for _ in 0..200_000 {
-            last = p.step(1);
-            shown = fraction(first.best_heuristic, &last, shown);
+            let last = p.step(1);
+            shown = fraction(&last, shown);
             seen.push(shown);
             if last.done.is_some() {
                 break;
             }
         }
-        assert_eq!(last.done, Some(PlanStatus::Found));
         assert_eq!(shown, 1.0);
-        assert!(seen.iter().any(|&f| f > 0.0 && f < 1.0), "the bar moves before the end: {seen:?}");
-        let o = p.outcome().unwrap();
-        assert_eq!(o.path[0], *s.pose("q1").unwrap());
-        assert_eq!(*o.path.last().unwrap(), *s.pose("q2").unwrap());
-        assert!(summary(&o).starts_with("Path found:"), "{}", summary(&o));
+        assert!(seen.iter().any(|&f| f > 0.0 && f < 1.0), "the bar moves before the end");
+        p.result(0.0).unwrap()
+    }
+
+    #[test]
+    fn robocrane_plans_from_the_page_logic_and_the_path_ends_at_the_query() {
+        let s = crate::logic::parse_scenario(crate::presets::PRESETS[crate::presets::find("robocrane").unwrap()].json).unwrap();
+        let r = run_stepwise(&s, "q1-q2", PlannerKind::Atlas);
+        assert_eq!(r.status, PlanStatus::Found);
+        let p = planned_of("q1-q2".into(), &r).unwrap();
+        assert!((p.poses[0].position - s.pose("q1").unwrap().position).norm() < 1e-12);
+        assert!(p.poses[0].rotation.angle_to(&s.pose("q1").unwrap().rotation) < 1e-9);
+        assert!(p.poses.last().unwrap().rotation.angle_to(&s.pose("q2").unwrap().rotation) < 1e-9);
+        assert!(p.polyline.is_empty());
+        assert!(summary(&r).starts_with("Path found:"), "{}", summary(&r));
+    }
+
+    #[test]
+    fn the_lattice_planner_plans_around_the_tree_from_the_page_logic() {
+        let s = crate::logic::parse_scenario(crate::presets::PRESETS[crate::presets::find("cdpr7-tree").unwrap()].json).unwrap();
+        let r = run_stepwise(&s, "around-tree", PlannerKind::Lattice);
+        assert_eq!(r.status, PlanStatus::Found);
+        let p = planned_of("around-tree".into(), &r).unwrap();
+        assert_eq!(p.poses.len(), PATH_SAMPLES + 1);
+        assert!(p.polyline.len() >= 3, "the A* polyline is kept beside the smoothed path");
+        assert!((p.start.position - s.pose("tree-left").unwrap().position).norm() < 1e-12);
+        assert!((p.goal.position - s.pose("tree-right").unwrap().position).norm() < 1e-12);
+        assert!(summary(&r).starts_with("Path found and verified feasible"), "{}", summary(&r));
     }
 }
