@@ -14,6 +14,8 @@ mod cable_length;
 mod cable_shape;
 pub mod primitives;
 mod closure;
+pub mod exists;
+mod offset;
 mod structure;
 mod tension;
 pub mod tube;
