@@ -9,7 +9,8 @@
 //! and sums to 1, all coefficients of all rows above their error bounds prove the polynomial
 //! positive on the whole (v, λ) box.
 //!
-//! λ is bisected; on each λ-strip the v-interval is searched depth first for a box on which some
+//! λ is bisected (every few levels the polynomials are built afresh on the strip, so that their
+//! error bounds follow their local magnitudes); on each λ-strip the v-interval is searched depth first for a box on which some
 //! conjunction is certainly true (then Φ holds for every λ of the strip), while boxes on which
 //! every conjunction has a certainly false atom are dropped (if all are, no v works anywhere on the
 //! strip). A strip neither proved nor refuted within the box budget is bisected; one narrower than
@@ -187,18 +188,24 @@ const MAX_V_DEPTH: usize = 48;
 /// is within rounding of zero (no narrower strip can do better; it is reported `Unknown`).
 const BLUR_WIDTH: f64 = 64.0;
 
+/// Every this many λ-bisections the clauses are built afresh on the strip (from the inputs
+/// restricted to it) instead of being split, so that their error bounds follow the polynomials'
+/// magnitudes there rather than over all of [0, 1].
+const REBUILD_EVERY: usize = 4;
+
 /// The set of λ ∈ [0, 1] where some v ∈ [0, 1] satisfies one of the clauses, certified to `tol`.
-pub fn exists(clauses: Vec<Clause>, tol: f64) -> Partition {
-    let clauses: Vec<Clause> = clauses.into_iter().filter(|c| !c.is_empty()).collect();
-    if clauses.is_empty() {
-        return Partition::constant(Truth::False);
-    }
+/// `build(lo, hi)` gives the clauses for λ ∈ [lo, hi], re-parametrised to [0, 1].
+pub fn exists(build: &dyn Fn(f64, f64) -> Vec<Clause>, tol: f64) -> Partition {
     let mut out = Vec::new();
-    strips(clauses, 0.0, 1.0, 0, tol, &mut out);
+    strips(build, build(0.0, 1.0), 0.0, 1.0, 0, tol, &mut out);
     Partition::from_pieces(out)
 }
 
-fn strips(clauses: Vec<Clause>, lo: f64, hi: f64, depth: usize, tol: f64, out: &mut Vec<(f64, Truth)>) {
+fn strips(build: &dyn Fn(f64, f64) -> Vec<Clause>, clauses: Vec<Clause>, lo: f64, hi: f64, depth: usize, tol: f64, out: &mut Vec<(f64, Truth)>) {
+    let clauses: Vec<Clause> = clauses.into_iter().filter(|c| !c.is_empty()).collect();
+    if clauses.is_empty() {
+        return out.push((hi, Truth::False));
+    }
     let (t, blurred) = search_v(&clauses, BASE_BUDGET + 3 * depth);
     if t != Truth::Unknown {
         return out.push((hi, t));
@@ -206,15 +213,20 @@ fn strips(clauses: Vec<Clause>, lo: f64, hi: f64, depth: usize, tol: f64, out: &
     if hi - lo <= 0.125 * tol || (blurred && hi - lo <= BLUR_WIDTH * tol) {
         return out.push((hi, Truth::Unknown));
     }
-    let (mut left, mut right) = (Vec::with_capacity(clauses.len()), Vec::with_capacity(clauses.len()));
-    for c in &clauses {
-        let (l, r): (Clause, Clause) = c.iter().map(Atom::split_lambda).unzip();
-        left.push(l);
-        right.push(r);
-    }
     let mid = 0.5 * (lo + hi);
-    strips(left, lo, mid, depth + 1, tol, out);
-    strips(right, mid, hi, depth + 1, tol, out);
+    let (left, right) = if (depth + 1) % REBUILD_EVERY == 0 {
+        (build(lo, mid), build(mid, hi))
+    } else {
+        let (mut left, mut right) = (Vec::with_capacity(clauses.len()), Vec::with_capacity(clauses.len()));
+        for c in &clauses {
+            let (l, r): (Clause, Clause) = c.iter().map(Atom::split_lambda).unzip();
+            left.push(l);
+            right.push(r);
+        }
+        (left, right)
+    };
+    strips(build, left, lo, mid, depth + 1, tol, out);
+    strips(build, right, mid, hi, depth + 1, tol, out);
 }
 
 /// Whether some v-box of the strip certainly satisfies a clause (True), none can (False), or
@@ -286,15 +298,19 @@ fn search_v(clauses: &[Clause], mut budget: usize) -> (Truth, bool) {
 mod tests {
     use super::*;
 
-    fn lin(a: f64, b: f64) -> Bern {
-        Bern::from_bernstein(vec![a, a + b])
+    /// a + bλ on [lo, hi], re-parametrised.
+    fn lin(a: f64, b: f64, (lo, hi): (f64, f64)) -> Bern {
+        Bern::from_bernstein(vec![a + b * lo, a + b * hi])
     }
 
     #[test]
     fn tangent_parabola_gives_a_certified_boundary() {
         // ∃v: (v − 0.5)² < λ − 0.3  ⇔  λ > 0.3
-        let p = VPoly::in_v(&[0.25, -1.0, 1.0]).sub(&VPoly::of(lin(-0.3, 1.0)));
-        let part = exists(vec![vec![Atom::new(&p, false)]], 1e-10);
+        let build = |lo, hi| {
+            let p = VPoly::in_v(&[0.25, -1.0, 1.0]).sub(&VPoly::of(lin(-0.3, 1.0, (lo, hi))));
+            vec![vec![Atom::new(&p, false)]]
+        };
+        let part = exists(&build, 1e-10);
         let iv = part.intervals();
         assert_eq!(iv.len(), 3, "{iv:?}");
         assert_eq!((iv[0].2, iv[1].2, iv[2].2), (Truth::False, Truth::Unknown, Truth::True));
@@ -304,10 +320,13 @@ mod tests {
     #[test]
     fn conjunctions_and_disjunctions() {
         // (v > 0.8 ∧ v < λ) ∨ (v < 0.1 ∧ λ < 0.2)  ⇔  λ > 0.8 or λ < 0.2
-        let v = VPoly::in_v(&[0.0, 1.0]);
-        let c1 = vec![Atom::new(&v.sub(&VPoly::in_v(&[0.8])), true), Atom::new(&v.sub(&VPoly::of(lin(0.0, 1.0))), false)];
-        let c2 = vec![Atom::new(&v.sub(&VPoly::in_v(&[0.1])), false), Atom::new(&VPoly::of(lin(-0.2, 1.0)), false)];
-        let part = exists(vec![c1, c2], 1e-10);
+        let build = |lo, hi| {
+            let v = VPoly::in_v(&[0.0, 1.0]);
+            let c1 = vec![Atom::new(&v.sub(&VPoly::in_v(&[0.8])), true), Atom::new(&v.sub(&VPoly::of(lin(0.0, 1.0, (lo, hi)))), false)];
+            let c2 = vec![Atom::new(&v.sub(&VPoly::in_v(&[0.1])), false), Atom::new(&VPoly::of(lin(-0.2, 1.0, (lo, hi))), false)];
+            vec![c1, c2]
+        };
+        let part = exists(&build, 1e-10);
         let iv = part.intervals();
         let truth_at = |x: f64| iv.iter().find(|p| p.0 <= x && x <= p.1).unwrap().2;
         assert_eq!(truth_at(0.1), Truth::True);

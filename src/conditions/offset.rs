@@ -17,9 +17,9 @@
 //! The ellipsoid, whose offset surface is not a quadric, is handled through Lagrange duality (see
 //! [`ellipsoid_clear`]).
 
-use super::algebra::HVec;
+use super::algebra::{HVec, H};
 use super::exists::{exists, Atom, Clause, VPoly};
-use crate::poly::{Bern, Partition, Truth};
+use crate::poly::{Bern, Partition};
 use crate::query::EllipsoidFrame;
 use nalgebra::Vector3;
 
@@ -122,22 +122,35 @@ fn torus(a: &V, s: &HVec, w: &Bern, centre: &V, axis: &V, r: f64, c: f64) -> Vec
 /// radius r.
 #[allow(clippy::too_many_arguments)]
 pub fn cylinder_near(a: &V, s: &HVec, w: &Bern, from: &V, to: &V, r: f64, c: f64, tol: f64) -> Partition {
+    exists(&|lo, hi| with_restricted(s, w, lo, hi, |s, w| cylinder_clauses(a, s, w, from, to, r, c)), tol)
+}
+
+/// The inputs restricted to λ ∈ [lo, hi] (re-parametrised to [0, 1]), passed to `f`.
+fn with_restricted<T>(s: &HVec, w: &Bern, lo: f64, hi: f64, f: impl FnOnce(&HVec, &Bern) -> T) -> T {
+    if lo == 0.0 && hi == 1.0 {
+        return f(s, w);
+    }
+    let rs: HVec = [0, 1, 2].map(|i| H { p: s[i].p.restrict(lo, hi), k: s[i].k });
+    f(&rs, &w.restrict(lo, hi))
+}
+
+fn cylinder_clauses(a: &V, s: &HVec, w: &Bern, from: &V, to: &V, r: f64, c: f64) -> Vec<Clause> {
     let len = (to - from).norm();
     let axis = (to - from) / len;
     let mid = 0.5 * (from + to);
     let Some(range) = u_range(a, s, w, &mid, (0.5 * len + c).hypot(r + c)) else {
-        return Partition::constant(Truth::False);
+        return vec![];
     };
     let line = CableLine::new(a, s, w, from, range);
     let (h, rho2) = line.axial(&axis);
     let w = &line.w;
     if c <= 0.0 {
-        return exists(vec![slab(&h, &rho2, w, r, 0.0, len)], tol);
+        return vec![slab(&h, &rho2, w, r, 0.0, len)];
     }
     let mut clauses = vec![slab(&h, &rho2, w, r + c, 0.0, len), slab(&h, &rho2, w, r, -c, len + c)];
     clauses.extend(torus(a, s, &line.w.0[0], from, &axis, r, c));
     clauses.extend(torus(a, s, &line.w.0[0], to, &axis, r, c));
-    exists(clauses, tol)
+    clauses
 }
 
 /// Where the cable comes closer than c > 0 to the solid cone, apart from its apex (the ball of
@@ -148,13 +161,18 @@ pub fn cylinder_near(a: &V, s: &HVec, w: &Bern, from: &V, to: &V, r: f64, c: f64
 /// linear condition on ρ is squared with the sign of its other side.
 #[allow(clippy::too_many_arguments)]
 pub fn cone_near(a: &V, s: &HVec, w: &Bern, apex: &V, axis: &V, half_angle: f64, height: f64, c: f64, tol: f64) -> Partition {
+    exists(&|lo, hi| with_restricted(s, w, lo, hi, |s, w| cone_clauses(a, s, w, apex, axis, half_angle, height, c)), tol)
+}
+
+#[allow(clippy::too_many_arguments)]
+fn cone_clauses(a: &V, s: &HVec, w: &Bern, apex: &V, axis: &V, half_angle: f64, height: f64, c: f64) -> Vec<Clause> {
     let (sa, ca) = half_angle.sin_cos();
     let radius = height * half_angle.tan();
     let slant = height / ca;
     // the cone lies within the ball around its axis' midpoint through the rim
     let mid = apex + axis * (0.5 * height);
     let Some(range) = u_range(a, s, w, &mid, (0.5 * height).hypot(radius) + c) else {
-        return Partition::constant(Truth::False);
+        return vec![];
     };
     let line = CableLine::new(a, s, w, apex, range);
     let (h, rho2) = line.axial(axis);
@@ -177,7 +195,7 @@ pub fn cone_near(a: &V, s: &HVec, w: &Bern, apex: &V, axis: &V, half_angle: f64,
     beside.push(gt(&rho2.scale(sa * sa).sub(&h.mul(&h).scale(ca * ca))));
     let mut clauses = vec![ahead, beside, slab(&h, &rho2, w, radius, height - c, height + c)];
     clauses.extend(torus(a, s, &line.w.0[0], &(apex + axis * height), axis, radius, c));
-    exists(clauses, tol)
+    clauses
 }
 
 /// Where the cable stays at least c > 0 from the solid ellipsoid (the complement is the violation).
@@ -190,10 +208,15 @@ pub fn cone_near(a: &V, s: &HVec, w: &Bern, apex: &V, axis: &V, half_angle: f64,
 /// α + β + γ ≥ 0, and the vertex outside (0, 1) or 4αγ − β² ≥ 0. With t = v/(1 − v) and the
 /// positive factor (1 − v)⁴ Π(1 + m_i t), α, β and γ are polynomials in (v, λ).
 pub fn ellipsoid_clear(a: &V, s: &HVec, w: &Bern, frame: &EllipsoidFrame, c: f64, tol: f64) -> Partition {
+    exists(&|lo, hi| with_restricted(s, w, lo, hi, |s, w| ellipsoid_clauses(a, s, w, frame, c)), tol)
+}
+
+/// The clauses of [`ellipsoid_clear`]; one always-true clause when no part of the cable comes near.
+fn ellipsoid_clauses(a: &V, s: &HVec, w: &Bern, frame: &EllipsoidFrame, c: f64) -> Vec<Clause> {
     let m = frame.m;
     let reach = 1.0 / m.min().max(f64::MIN_POSITIVE).sqrt() + c;
     let Some(range) = u_range(a, s, w, &frame.center, reach) else {
-        return Partition::constant(Truth::True);
+        return vec![vec![Atom::new(&VPoly::in_v(&[1.0]), true)]];
     };
     let line = CableLine::new(a, s, w, &frame.center, range);
     // p_i(v) = (1 − v)(1 + m_i t) = 1 + (m_i − 1) v
@@ -218,10 +241,9 @@ pub fn ellipsoid_clear(a: &V, s: &HVec, w: &Bern, frame: &EllipsoidFrame, c: f64
         c.push(extra);
         c
     };
-    let clauses = vec![
+    vec![
         with(gt(&beta)),
         with(lt(&alpha.scale(2.0).add(&beta))),
         with(gt(&alpha.mul(&gamma).scale(4.0).sub(&beta.mul(&beta)))),
-    ];
-    exists(clauses, tol)
+    ]
 }

@@ -56,8 +56,8 @@ fn conservative_labels(conditions: &[Box<dyn Condition>]) -> Vec<String> {
 /// to [`BOUNDARY_TOL`] in t with its active constraint, or reported in `uncertain`.
 pub fn verify_trajectory(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport> {
     let conditions = for_scenario(s);
-    let motion = Motion::trajectory(traj);
-    let (overall, per) = violation_pieces(&conditions, s, std::slice::from_ref(&motion), BOUNDARY_TOL);
+    let motions = Motion::trajectory(traj);
+    let (overall, per) = violation_pieces(&conditions, s, &motions, BOUNDARY_TOL);
     let sec = sections(&overall, &per, BOUNDARY_TOL);
     let mut warnings = s.warnings.clone();
     if !sec.uncertain.is_empty() {
