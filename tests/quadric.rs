@@ -26,7 +26,7 @@ const TRAJECTORIES: usize = 24;
 const TRAJ_PER_SCENARIO: usize = 4;
 /// Samples of t per trajectory (besides the probes around boundaries).
 #[cfg(not(target_arch = "wasm32"))]
-const SAMPLES: usize = 1500;
+const SAMPLES: usize = 1000;
 #[cfg(target_arch = "wasm32")]
 const SAMPLES: usize = 500;
 

@@ -180,8 +180,8 @@ impl Atom {
 /// A conjunction of atoms.
 pub type Clause = Vec<Atom>;
 
-/// Boxes a strip may examine at λ-depth d: `BASE_BUDGET + 3·d`.
-const BASE_BUDGET: usize = 24;
+/// Boxes a strip may examine at λ-depth d: `BASE_BUDGET + 2·d`.
+const BASE_BUDGET: usize = 12;
 /// Deepest v-subdivision.
 const MAX_V_DEPTH: usize = 48;
 /// A strip at most this many tolerances wide is not bisected further when what is left undecided
@@ -206,7 +206,7 @@ fn strips(build: &dyn Fn(f64, f64) -> Vec<Clause>, clauses: Vec<Clause>, lo: f64
     if clauses.is_empty() {
         return out.push((hi, Truth::False));
     }
-    let (t, blurred) = search_v(&clauses, BASE_BUDGET + 3 * depth);
+    let (t, blurred) = search_v(&clauses, BASE_BUDGET + 2 * depth);
     if t != Truth::Unknown {
         return out.push((hi, t));
     }
