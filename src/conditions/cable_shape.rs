@@ -1,18 +1,4 @@
 //! Cable–obstacle clearance: the distance from a cable to an obstacle must be at least the
-//! clearance.
-//!
-//! Meshes (and boxes) and spheres are exact. Ellipsoids, cylinders and cones take the clearance by
-//! testing an enlarged shape that contains every point within the clearance of the obstacle, so
-//! they are conservative when the clearance is positive (reports say so):
-//! * ellipsoid M: the ellipsoid M_c with M_c⁻¹ = (1 + 1/p)·M⁻¹ + (1 + p)·c²·I, p = c/g, g the
-//!   geometric mean of the semi-axes (contains the Minkowski sum with the ball of radius c for any
-//!   p > 0);
-//! * cylinder: the capsule around its axis with radius r + c (also covers the flat ends);
-//! * cone: the cone with the apex moved back by c/sin α along the axis and the height extended by
-//!   c/sin α + c (its lateral surface is the lateral surface offset by c, its base lies c beyond
-//!   the original base).
-
-//! Cable–obstacle clearance: the distance from a cable to an obstacle must be at least the
 //! clearance. Every shape is exact: meshes (and boxes) and spheres by point/segment/face tests,
 //! cylinders, cones and ellipsoids with a clearance through their offset solids
 //! ([`super::offset`]), and without one through the solid itself.

@@ -152,12 +152,6 @@ pub trait Condition {
     /// How reports name it: `"cables 2-5"`, `"cable 3 - box"`, `"cable 4 length"`.
     fn label(&self) -> String;
 
-    /// `true` if the violation set is exact; `false` if it is a conservative superset (the
-    /// condition tests an enlarged shape), which reports say.
-    fn exact(&self) -> bool {
-        true
-    }
-
     /// What the condition is about, for classifying poses (slice maps).
     fn kind(&self) -> Kind;
 
