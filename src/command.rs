@@ -248,12 +248,9 @@ fn intervals(v: &[[f64; 2]]) -> String {
     v.iter().map(|iv| format!("[{:.9}, {:.9}]", iv[0], iv[1])).collect::<Vec<_>>().join(" ∪ ")
 }
 
-/// The closing lines of a report: conservative conditions and warnings.
-fn notes(conservative: &[String], warnings: &[String]) -> String {
+/// The closing lines of a report: its warnings.
+fn notes(warnings: &[String]) -> String {
     let mut out = String::new();
-    if !conservative.is_empty() {
-        out += &format!("  conservative (enlarged shapes): {}\n", conservative.join(", "));
-    }
     for w in warnings {
         out += &format!("  warning: {w}\n");
     }
@@ -273,7 +270,7 @@ fn verify_text(r: &VerifyReport) -> String {
         out += &format!("  boundary t = {:.9} (τ = {:.9}): {} → {}\n", b.t, b.tau, b.constraint, side(b.enters));
     }
     out += &format!("  uncertain  t ∈ {}\n", intervals(&r.uncertain));
-    out + &notes(&r.conservative, &r.warnings)
+    out + &notes(&r.warnings)
 }
 
 fn ray_text(r: &RayReport) -> String {
@@ -284,7 +281,7 @@ fn ray_text(r: &RayReport) -> String {
         out += &format!("  boundary {} = {:.9}: {} → {}\n", r.vary, b.value, b.constraint, side(b.enters));
     }
     out += &format!("  uncertain  {} ∈ {}\n", r.vary, intervals(&r.uncertain));
-    out + &notes(&r.conservative, &r.warnings)
+    out + &notes(&r.warnings)
 }
 
 fn check_text(r: &PoseReport) -> String {
@@ -294,8 +291,7 @@ fn check_text(r: &PoseReport) -> String {
     for c in &r.checks {
         let d = c.distance.map_or("-".to_string(), |d| format!("{d:.6}"));
         let mark = if c.violated { "VIOLATED" } else { "ok" };
-        let exact = if c.exact { "" } else { " (conservative)" };
-        out += &format!("  {:<28} {:>12}  {}{}\n", c.constraint, d, mark, exact);
+        out += &format!("  {:<28} {:>12}  {}\n", c.constraint, d, mark);
     }
     if let Some(w) = &r.wrench {
         let verdict = if w.feasible { "feasible" } else { "infeasible" };

@@ -14,6 +14,8 @@ mod cable_length;
 mod cable_shape;
 pub mod primitives;
 mod closure;
+pub mod exists;
+mod offset;
 mod structure;
 mod tension;
 pub mod tube;
@@ -149,12 +151,6 @@ pub enum Kind {
 pub trait Condition {
     /// How reports name it: `"cables 2-5"`, `"cable 3 - box"`, `"cable 4 length"`.
     fn label(&self) -> String;
-
-    /// `true` if the violation set is exact; `false` if it is a conservative superset (the
-    /// condition tests an enlarged shape), which reports say.
-    fn exact(&self) -> bool {
-        true
-    }
 
     /// What the condition is about, for classifying poses (slice maps).
     fn kind(&self) -> Kind;

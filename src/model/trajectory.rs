@@ -49,10 +49,12 @@ pub struct Segment {
 }
 
 impl Segment {
-    /// The slerp angle θ ∈ [0, π] with cos θ = Qs·Qe (the quaternions' signs as given).
+    /// The slerp angle θ ∈ [0, π] with cos θ = Qs·Qe (the quaternions' signs as given), taken as
+    /// 2·atan2(|Qe − Qs|, |Qe + Qs|), which unlike acos stays accurate near 0 and π.
     pub fn theta(&self) -> f64 {
         let Orientation::Slerp(qs, qe) = &self.orientation;
-        qs.quaternion().dot(qe.quaternion()).clamp(-1.0, 1.0).acos()
+        let (s, e) = (qs.quaternion(), qe.quaternion());
+        2.0 * (e - s).norm().atan2((e + s).norm())
     }
 
     /// τ at slerp parameter t: τ = tan(tθ/2)/tan(θ/2), or t when θ = 0; exactly 0 and 1 at the

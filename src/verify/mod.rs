@@ -48,10 +48,6 @@ fn append_mapped(out: &mut Vec<Piece>, p: &Partition, param: &Param) {
     }
 }
 
-fn conservative_labels(conditions: &[Box<dyn Condition>]) -> Vec<String> {
-    conditions.iter().filter(|c| !c.exact()).map(|c| c.label()).collect()
-}
-
 /// Exact verification of a trajectory: feasible and infeasible t-intervals, each boundary certified
 /// to [`BOUNDARY_TOL`] in t with its active constraint, or reported in `uncertain`.
 pub fn verify_trajectory(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport> {
@@ -63,11 +59,11 @@ pub fn verify_trajectory(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport
     if !sec.uncertain.is_empty() {
         warnings.push(format!("{} section(s) could not be certified either way; see \"uncertain\"", sec.uncertain.len()));
     }
-    Ok(trajectory_report(traj, sec, "exact", None, conservative_labels(&conditions), warnings))
+    Ok(trajectory_report(traj, sec, "exact", None, warnings))
 }
 
 /// Builds the report of a trajectory from its sections in t.
-fn trajectory_report(traj: &Trajectory, sec: Sections, method: &str, step: Option<f64>, conservative: Vec<String>, warnings: Vec<String>) -> VerifyReport {
+fn trajectory_report(traj: &Trajectory, sec: Sections, method: &str, step: Option<f64>, warnings: Vec<String>) -> VerifyReport {
     let to_tau = |v: &[[f64; 2]]| v.iter().map(|iv| [traj.tau_of_t(iv[0]), traj.tau_of_t(iv[1])]).collect();
     VerifyReport {
         trajectory: traj.name.clone(),
@@ -83,7 +79,6 @@ fn trajectory_report(traj: &Trajectory, sec: Sections, method: &str, step: Optio
         feasible: sec.feasible,
         infeasible: sec.infeasible,
         uncertain: sec.uncertain,
-        conservative,
         warnings,
     }
 }
@@ -102,7 +97,6 @@ pub fn ray(s: &Scenario, pose_name: &str, coord: Coord, lo: f64, hi: f64) -> Res
         infeasible: sec.infeasible,
         boundaries: sec.boundaries.into_iter().map(|(value, constraint, enters)| RayBoundary { value, constraint, enters }).collect(),
         uncertain: sec.uncertain,
-        conservative: conservative_labels(&conditions),
         warnings: s.warnings.clone(),
     })
 }
@@ -221,7 +215,7 @@ pub fn check_pose(s: &Scenario, name: &str, pose: &Pose) -> PoseReport {
         .iter()
         .map(|c| {
             let r = c.check(&cables);
-            CheckEntry { constraint: c.label(), violated: r.violated, distance: r.distance, exact: c.exact() }
+            CheckEntry { constraint: c.label(), violated: r.violated, distance: r.distance }
         })
         .collect();
     let violated: Vec<String> = checks.iter().filter(|c| c.violated).map(|c| c.constraint.clone()).collect();
