@@ -15,6 +15,8 @@
 //!   point-wise at a pose.
 //! * [`verify`] computes feasible intervals along trajectories and rays, exactly and point-wise,
 //!   and per-pose checks; [`report`] holds the serialisable results.
+//! * [`parallel`] spreads many independent queries (slice cells, batch verification) over
+//!   threads natively; single queries stay single-threaded.
 //! * [`cli`] is the command line over all of it (the `cablenav` binary is a thin wrapper).
 //!
 //! The crate has no web dependency and builds for native targets and `wasm32-unknown-unknown`.
@@ -23,6 +25,7 @@ pub mod cli;
 pub mod conditions;
 pub mod error;
 pub mod model;
+pub mod parallel;
 pub mod plan;
 pub mod png;
 pub mod poly;

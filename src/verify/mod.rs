@@ -66,6 +66,13 @@ pub fn verify_trajectory(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport
     Ok(trajectory_report(traj, sec, "exact", None, conservative_labels(&conditions), warnings))
 }
 
+/// Exact verification of every trajectory of the scenario (what `cablenav verify SCENARIO --all`
+/// reports), in file order. The trajectories are verified in parallel on native targets (each
+/// one single-threaded, as [`verify_trajectory`]), in order on wasm.
+pub fn verify_all(s: &Scenario) -> Vec<Result<VerifyReport>> {
+    crate::parallel::map_with(s.trajectories.len(), || (), |_, i| verify_trajectory(s, &s.trajectories[i]))
+}
+
 /// Builds the report of a trajectory from its sections in t.
 fn trajectory_report(traj: &Trajectory, sec: Sections, method: &str, step: Option<f64>, conservative: Vec<String>, warnings: Vec<String>) -> VerifyReport {
     let to_tau = |v: &[[f64; 2]]| v.iter().map(|iv| [traj.tau_of_t(iv[0]), traj.tau_of_t(iv[1])]).collect();
