@@ -560,52 +560,6 @@ fn bad_input_is_reported() {
     assert_eq!(err(&nowrench, "q1-q2", PlanParams::default()).field, "wrench");
 }
 
-// ---------------------------------------------------------------------------------------------
-// Command line
-
-fn cli(args: &str) -> cablenav::Result<String> {
-    let args: Vec<String> = args.split_whitespace().map(String::from).collect();
-    let read = |path: &str| match path {
-        "robocrane.json" => Ok(ROBOCRANE.to_string()),
-        other => Err(cablenav::Error::new(other, "cannot read: no such file")),
-    };
-    cablenav::cli::run(&args, &read, &|_, _| Ok(()))
-}
-
-/// `cablenav plan --json` prints the documented fields, the path from the start pose exactly to
-/// the goal pose exactly, and the verification; bad options are errors naming the option.
-#[test]
-fn cli_plan_prints_the_documented_report() {
-    let v: serde_json::Value = serde_json::from_str(&cli("plan robocrane.json --query q1-q2 --json").unwrap()).unwrap();
-    assert_eq!(v["status"], "found");
-    assert!(v["charts"].as_u64().unwrap() > 1);
-    assert!(v["seconds"].is_number() || v["seconds"].is_null());
-    assert_eq!(v["verification"]["infeasible_sections"], 0);
-    let path = v["path"].as_array().unwrap();
-    let s = robocrane();
-    let (start, goal) = (s.pose("q1").unwrap(), s.pose("q2").unwrap());
-    let first = &path[0];
-    let last = &path[path.len() - 1];
-    assert_eq!(first["quaternion"], serde_json::json!(start.quaternion()));
-    assert_eq!(last["quaternion"], serde_json::json!(goal.quaternion()));
-    assert_eq!(first["position"], serde_json::json!([0.0, 0.0, 2.0]));
-    assert_eq!(first["tilt_torsion"].as_array().unwrap().len(), 3);
-    let text = cli("plan robocrane.json --query q1-q2 --radius 0.3 --epsilon 0.3 --max-charts 5000").unwrap();
-    assert!(text.starts_with("plan q1-q2: found"), "{text}");
-    let budget = cli("plan robocrane.json --query q5-q6 --max-charts 3").unwrap();
-    assert!(budget.starts_with("plan q5-q6: budget (3 charts"), "{budget}");
-    for (args, field) in [
-        ("plan robocrane.json", "--query"),
-        ("plan robocrane.json --query q1-q2 --radius -1", "--radius"),
-        ("plan robocrane.json --query q1-q2 --epsilon x", "--epsilon"),
-        ("plan robocrane.json --query q1-q2 --max-charts 0", "--max-charts"),
-        ("plan robocrane.json --query q1-q2 --pose q1", "--pose"),
-    ] {
-        assert_eq!(cli(args).unwrap_err().field, field, "{args}");
-    }
-    assert_eq!(cli("plan robocrane.json --query q9").unwrap_err().field, "query");
-}
-
 /// Every `step` unit does bounded work, counted in manifold evaluations and exact-verifier calls
 /// (not in time). On q1 → q3 (φ, θ free) a final walk to the goal used to creep towards a fold of
 /// its chart's map: one unit made 2.2 million projections (tens of seconds). With the walks'
