@@ -11,7 +11,7 @@ use crate::model::Coord;
 use crate::plan::{PlanParams, PlanReport, PlanStatus, Planner};
 use crate::report::{PoseReport, RayReport, Side, TensionEnvelope, VerifyReport};
 use crate::verify::slice::{default_range, Class, SliceMap};
-use crate::verify::{check_pose, ray, slice, tension_envelope, verify_pointwise, verify_trajectory};
+use crate::verify::{check_pose, ray, slice, tension_envelope, verify_all, verify_pointwise, verify_trajectory};
 use crate::Scenario;
 use serde::Serialize;
 
@@ -22,6 +22,11 @@ pub enum Request {
     Verify {
         /// Trajectory name (`None`: the scenario's first).
         trajectory: Option<String>,
+        /// Sample step Δt instead of the exact verifier.
+        pointwise: Option<f64>,
+    },
+    /// [`Request::Verify`] for every trajectory of the scenario, in parallel on native targets.
+    VerifyAll {
         /// Sample step Δt instead of the exact verifier.
         pointwise: Option<f64>,
     },
@@ -71,6 +76,8 @@ pub enum Request {
 pub enum Output {
     /// Of [`Request::Verify`].
     Verify(VerifyReport),
+    /// Of [`Request::VerifyAll`]: one report per trajectory, in file order.
+    VerifyAll(Vec<VerifyReport>),
     /// Of [`Request::Ray`].
     Ray(RayReport),
     /// Of [`Request::Check`].
@@ -104,6 +111,7 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
                 None => verify_trajectory(scenario, traj)?,
             })
         }
+        Request::VerifyAll { pointwise } => Output::VerifyAll(verify_all(scenario, *pointwise)?),
         Request::Ray { pose, vary, range } => Output::Ray(ray(scenario, pose, *vary, range[0], range[1])?),
         Request::Check { pose } => Output::Check(check_pose(scenario, pose, scenario.pose(pose)?)),
         Request::Envelope { trajectory, samples } => {
@@ -149,6 +157,7 @@ impl Output {
     pub fn json(&self) -> String {
         let text = match self {
             Output::Verify(r) => to_json(r),
+            Output::VerifyAll(r) => to_json(r),
             Output::Ray(r) => to_json(r),
             Output::Check(r) => to_json(r),
             Output::Envelope(r) => to_json(r),
@@ -163,6 +172,7 @@ impl Output {
     pub fn text(&self) -> String {
         match self {
             Output::Verify(r) => verify_text(r),
+            Output::VerifyAll(r) => r.iter().map(verify_text).collect::<Vec<_>>().join("\n"),
             Output::Ray(r) => ray_text(r),
             Output::Check(r) => check_text(r),
             Output::Envelope(r) => envelope_text(r),
