@@ -2,6 +2,8 @@
 # README command 2: every test. Installs what is missing (scripts/install.sh), then runs, stopping
 # at the first failure:
 #   1. cargo test --workspace          native unit, integration and doc tests (core + web logic)
+#   1b. fuzz/ on stable            1e5 seeded inputs per fuzz target (scenario, verify, CASPR, URL
+#                                      fragment), no panic allowed; prints the counts
 #   2. wasm-pack test --node           the core's tests compiled to wasm32, run in node
 #   3. wasm-pack test --chrome web     the editor's component tests, in headless Chromium (chromedriver)
 #   4. scripts/build-page.sh           the page, built as `trunk serve` builds it (no trunk needed)
@@ -29,6 +31,9 @@ scripts/install.sh
 
 step "cargo test --workspace"
 cargo test --workspace
+
+step "stable fuzzing: 1e5 inputs per target (fuzz/src/bin/stable.rs)"
+cargo run --release --manifest-path fuzz/Cargo.toml --bin stable -- --runs 100000 --seed 1
 
 step "wasm-pack test --node (core crate on wasm32)"
 wasm-pack test --node

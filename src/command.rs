@@ -15,7 +15,7 @@ use crate::plan::lattice::{LatticeParams, LatticePlanReport};
 use crate::plan::{PlanParams, PlanReport, PlanStatus};
 use crate::report::{PoseReport, RayReport, Side, TensionEnvelope, VerifyReport};
 use crate::verify::slice::{default_range, Class, SliceMap};
-use crate::verify::{check_pose, ray, slice, tension_envelope, verify_pointwise, verify_trajectory};
+use crate::verify::{check_pose, ray, slice, tension_envelope, verify_all, verify_pointwise, verify_trajectory};
 use crate::Scenario;
 use serde::Serialize;
 
@@ -26,6 +26,11 @@ pub enum Request {
     Verify {
         /// Trajectory name (`None`: the scenario's first).
         trajectory: Option<String>,
+        /// Sample step Δt instead of the exact verifier.
+        pointwise: Option<f64>,
+    },
+    /// [`Request::Verify`] for every trajectory of the scenario, in parallel on native targets.
+    VerifyAll {
         /// Sample step Δt instead of the exact verifier.
         pointwise: Option<f64>,
     },
@@ -91,6 +96,8 @@ pub enum Request {
 pub enum Output {
     /// Of [`Request::Verify`].
     Verify(VerifyReport),
+    /// Of [`Request::VerifyAll`]: one report per trajectory, in file order.
+    VerifyAll(Vec<VerifyReport>),
     /// Of [`Request::Ray`].
     Ray(RayReport),
     /// Of [`Request::Check`].
@@ -128,6 +135,7 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
                 None => verify_trajectory(scenario, traj)?,
             })
         }
+        Request::VerifyAll { pointwise } => Output::VerifyAll(verify_all(scenario, *pointwise)?),
         Request::Ray { pose, vary, range } => Output::Ray(ray(scenario, pose, *vary, range[0], range[1])?),
         Request::Check { pose } => Output::Check(check_pose(scenario, pose, scenario.pose(pose)?)),
         Request::Envelope { trajectory, samples } => {
@@ -194,6 +202,7 @@ impl Output {
     pub fn json(&self) -> String {
         let text = match self {
             Output::Verify(r) => to_json(r),
+            Output::VerifyAll(r) => to_json(r),
             Output::Ray(r) => to_json(r),
             Output::Check(r) => to_json(r),
             Output::Envelope(r) => to_json(r),
@@ -210,6 +219,7 @@ impl Output {
     pub fn text(&self) -> String {
         match self {
             Output::Verify(r) => verify_text(r),
+            Output::VerifyAll(r) => r.iter().map(verify_text).collect::<Vec<_>>().join("\n"),
             Output::Ray(r) => ray_text(r),
             Output::Check(r) => check_text(r),
             Output::Envelope(r) => envelope_text(r),

@@ -15,6 +15,8 @@
 //!   point-wise at a pose.
 //! * [`verify`] computes feasible intervals along trajectories and rays, exactly and point-wise,
 //!   and per-pose checks; [`report`] holds the serialisable results.
+//! * [`parallel`] spreads many independent queries (slice cells, batch verification) over
+//!   threads natively; single queries stay single-threaded.
 //! * [`command`] is the commands over all of it — typed requests, JSON and text output — shared
 //!   by the `cablenav` CLI (the `cli/` crate, which parses command lines with clap), the Python
 //!   package (`python/`) and the npm package (`npm/`).
@@ -26,6 +28,7 @@ pub mod conditions;
 pub mod error;
 pub mod lattice;
 pub mod model;
+pub mod parallel;
 pub mod plan;
 pub mod png;
 pub mod poly;

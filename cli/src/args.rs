@@ -43,8 +43,11 @@ pub enum Command {
         #[arg(value_name = "SCENARIO", help = SCENARIO_HELP)]
         scenario: String,
         /// The trajectory to verify [default: the scenario's first]
-        #[arg(long, value_name = "NAME")]
+        #[arg(long, value_name = "NAME", conflicts_with = "all")]
         trajectory: Option<String>,
+        /// Verify every trajectory of the scenario (in parallel; one report each, in file order)
+        #[arg(long)]
+        all: bool,
         /// Sample every DT in t instead of verifying exactly (1e-7 ≤ DT ≤ 1)
         #[arg(long, value_name = "DT", value_parser = finite, allow_negative_numbers = true)]
         pointwise: Option<f64>,
@@ -209,7 +212,8 @@ impl Command {
     pub fn invocation(self) -> cablenav::Result<Invocation> {
         let plain = |scenario, request, json| Ok(Invocation { scenario, request, json, png: None, out: None });
         match self {
-            Command::Verify { scenario, trajectory, pointwise, json } => plain(scenario, Request::Verify { trajectory, pointwise }, json),
+            Command::Verify { scenario, all: true, pointwise, json, .. } => plain(scenario, Request::VerifyAll { pointwise }, json),
+            Command::Verify { scenario, trajectory, pointwise, json, .. } => plain(scenario, Request::Verify { trajectory, pointwise }, json),
             Command::Ray { scenario, pose, vary, range, json } => {
                 let vary = Coord::parse(&vary).ok_or_else(|| cablenav::Error::new("--vary", format!("{vary:?} is not one of x, y, z, phi, theta, sigma")))?;
                 plain(scenario, Request::Ray { pose, vary, range: [range[0], range[1]] }, json)

@@ -36,6 +36,24 @@ fn verify_json_has_the_documented_fields() {
     assert_eq!(p["method"], "pointwise");
 }
 
+/// `verify --all` gives one report per trajectory, in file order, each the same as verifying that
+/// trajectory alone (the batch runs in parallel; the results must not depend on it).
+#[test]
+fn verify_all_reports_every_trajectory_in_order() {
+    let all = json("verify tree.json --all --json");
+    let reports = all.as_array().expect("an array of reports");
+    assert_eq!(reports.iter().map(|r| r["trajectory"].as_str().unwrap()).collect::<Vec<_>>(), ["linear", "quadratic"]);
+    for r in reports {
+        let name = r["trajectory"].as_str().unwrap();
+        assert_eq!(r, &json(&format!("verify tree.json --trajectory {name} --json")), "{name}");
+    }
+    let sampled = json("verify tree.json --all --pointwise 0.01 --json");
+    assert!(sampled.as_array().unwrap().iter().all(|r| r["method"] == "pointwise"));
+    let text = cli("verify tree.json --all").unwrap();
+    assert!(text.starts_with("trajectory linear (exact)") && text.contains("trajectory quadratic (exact)"));
+    assert!(cli("verify tree.json --all --trajectory linear").is_err(), "--all and --trajectory conflict");
+}
+
 #[test]
 fn ray_and_check_outputs() {
     let v = json("ray box.json --pose fig310 --vary x --range 0.2 3.8 --json");

@@ -7,7 +7,7 @@ use super::algebra::{hvec_const, HVec};
 use super::offset::{cone_near, cylinder_near, ellipsoid_clear};
 use super::primitives::{point_segment, segment_cone, segment_face, segment_segment, ConeSolid};
 use super::tube::Bound;
-use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
+use super::{on_undecided, Condition, Kind, PoseCables, PoseCheck, Sweep};
 use crate::poly::{Partition, Truth};
 use crate::query::{
     point_cone_dist, point_cylinder_dist, point_segment_dist2, segment_crosses_triangle, segment_meets_cone, segment_min_convex,
@@ -97,58 +97,62 @@ impl Condition for CableShape {
     }
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
-        let Sweep { alg, cables, tol, motion, .. } = sweep;
-        let w = &motion.weight;
-        let tol = *tol;
-        let cable = &cables[self.cable];
-        let far = |b: &Bound| cable.tube.clear_of(b);
-        if far(&self.bound) {
-            return Partition::constant(Truth::False);
-        }
+        let cable = &sweep.cables[self.cable];
+        let undecided = cable.tube.undecided_in(&self.bound);
         let a = cable.base;
-        let s = &cable.s;
         let c = self.clearance;
-        match &self.geom {
-            Geom::Mesh { faces, edges } => {
-                let mut acc = Partition::constant(Truth::False);
-                for (p, q) in edges {
-                    if acc.is_all(Truth::True) || far(&Bound::Capsule(*p, *q, c)) {
-                        continue;
-                    }
-                    let r: HVec = hvec_const(&(p - a));
-                    let t: HVec = hvec_const(&(q - p));
-                    acc = acc.or(&segment_segment(alg, &r, s, &t, c, tol));
-                }
-                for (tri, bound) in faces {
-                    if acc.is_all(Truth::True) || far(bound) {
-                        continue;
-                    }
-                    acc = acc.or(&segment_face(alg, &a, s, tri, c, tol));
-                }
-                acc
+        // which mesh edges and faces the tube of the whole motion cannot clear
+        let near: Vec<bool> = match &self.geom {
+            Geom::Mesh { faces, edges } if !undecided.is_empty() => {
+                let edges = edges.iter().map(|(p, q)| !cable.tube.clear_of(&Bound::Capsule(*p, *q, c)));
+                edges.chain(faces.iter().map(|(_, bound)| !cable.tube.clear_of(bound))).collect()
             }
-            Geom::Sphere { center, reach, .. } => point_segment(alg, &hvec_const(&(center - a)), s, *reach, None, tol),
-            Geom::Ellipsoid { metric, frame } => {
-                if c > 0.0 {
-                    ellipsoid_clear(&a, s, w, frame, c, tol).not()
-                } else {
-                    point_segment(alg, &hvec_const(&(frame.center - a)), s, 1.0, Some(metric), tol)
+            _ => Vec::new(),
+        };
+        on_undecided(sweep, &undecided, &[self.cable], |alg, w, s, tol| {
+            let s = s[0];
+            match &self.geom {
+                Geom::Mesh { faces, edges } => {
+                    let mut acc = Partition::constant(Truth::False);
+                    for ((p, q), _) in edges.iter().zip(&near).filter(|(_, &n)| n) {
+                        if acc.is_all(Truth::True) {
+                            break;
+                        }
+                        let r: HVec = hvec_const(&(p - a));
+                        let t: HVec = hvec_const(&(q - p));
+                        acc = acc.or(&segment_segment(alg, &r, s, &t, c, tol));
+                    }
+                    for ((tri, _), _) in faces.iter().zip(&near[edges.len()..]).filter(|(_, &n)| n) {
+                        if acc.is_all(Truth::True) {
+                            break;
+                        }
+                        acc = acc.or(&segment_face(alg, &a, s, tri, c, tol));
+                    }
+                    acc
                 }
-            }
-            Geom::Cylinder { from, to, radius } => cylinder_near(&a, s, w, from, to, *radius, c, tol),
-            Geom::Cone { solid, half_angle } => {
-                if c > 0.0 {
-                    let apex = point_segment(alg, &hvec_const(&(solid.apex - a)), s, c, None, tol);
-                    if apex.is_all(Truth::True) {
-                        apex
+                Geom::Sphere { center, reach, .. } => point_segment(alg, &hvec_const(&(center - a)), s, *reach, None, tol),
+                Geom::Ellipsoid { metric, frame } => {
+                    if c > 0.0 {
+                        ellipsoid_clear(&a, s, w, frame, c, tol).not()
                     } else {
-                        apex.or(&cone_near(&a, s, w, &solid.apex, &solid.axis, *half_angle, solid.height, c, tol))
+                        point_segment(alg, &hvec_const(&(frame.center - a)), s, 1.0, Some(metric), tol)
                     }
-                } else {
-                    segment_cone(alg, &a, s, solid, tol)
+                }
+                Geom::Cylinder { from, to, radius } => cylinder_near(&a, s, w, from, to, *radius, c, tol),
+                Geom::Cone { solid, half_angle } => {
+                    if c > 0.0 {
+                        let apex = point_segment(alg, &hvec_const(&(solid.apex - a)), s, c, None, tol);
+                        if apex.is_all(Truth::True) {
+                            apex
+                        } else {
+                            apex.or(&cone_near(&a, s, w, &solid.apex, &solid.axis, *half_angle, solid.height, c, tol))
+                        }
+                    } else {
+                        segment_cone(alg, &a, s, solid, tol)
+                    }
                 }
             }
-        }
+        })
     }
 
     fn check(&self, cables: &PoseCables) -> PoseCheck {

@@ -3,6 +3,7 @@
 
 pub mod caspr;
 pub mod json;
+pub mod link;
 pub mod validate;
 
 use crate::error::{Error, Result};

@@ -62,6 +62,18 @@ pub fn verify_trajectory(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport
     Ok(trajectory_report(traj, sec, "exact", None, warnings))
 }
 
+/// Verification of every trajectory of the scenario (what `cablenav verify SCENARIO --all`
+/// reports), in file order: exact, or point-wise with step `pointwise`. The trajectories are
+/// verified in parallel on native targets (each one single-threaded, as [`verify_trajectory`]),
+/// in order on wasm. The first error (in file order) is returned.
+pub fn verify_all(s: &Scenario, pointwise: Option<f64>) -> Result<Vec<VerifyReport>> {
+    let reports = crate::parallel::map_with(s.trajectories.len(), || (), |_, i| match pointwise {
+        Some(dt) => verify_pointwise(s, &s.trajectories[i], dt),
+        None => verify_trajectory(s, &s.trajectories[i]),
+    });
+    reports.into_iter().collect()
+}
+
 /// Builds the report of a trajectory from its sections in t.
 fn trajectory_report(traj: &Trajectory, sec: Sections, method: &str, step: Option<f64>, warnings: Vec<String>) -> VerifyReport {
     let to_tau = |v: &[[f64; 2]]| v.iter().map(|iv| [traj.tau_of_t(iv[0]), traj.tau_of_t(iv[1])]).collect();

@@ -133,7 +133,6 @@ pub fn slice(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range:
         }
     }
     let fixed = s.pose(pose_name)?.coords();
-    let conditions = for_scenario(s);
     let mut map = SliceMap {
         axes: [axes[0].name().to_string(), axes[1].name().to_string()],
         range,
@@ -145,14 +144,18 @@ pub fn slice(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range:
         component: vec![None; res * res],
         pose_components: vec![],
     };
-    for j in 0..res {
-        for i in 0..res {
-            let mut c = fixed;
-            c[axes[0].index()] = map.center(0, i);
-            c[axes[1].index()] = map.center(1, j);
-            map.classes.push(classify(s, &conditions, &Pose::from_coords(c)));
-        }
-    }
+    // rows in parallel natively (each worker with its own conditions), in order on wasm
+    let rows = crate::parallel::map_with(res, || for_scenario(s), |conditions, j| {
+        (0..res)
+            .map(|i| {
+                let mut c = fixed;
+                c[axes[0].index()] = map.center(0, i);
+                c[axes[1].index()] = map.center(1, j);
+                classify(s, conditions, &Pose::from_coords(c))
+            })
+            .collect::<Vec<_>>()
+    });
+    map.classes = rows.concat();
     label_components(&mut map);
     map.fraction_feasible = map.classes.iter().filter(|&&c| c == Class::Feasible).count() as f64 / (res * res) as f64;
     map.pose_components = poses_on_slice(s, &map, axes);
