@@ -28,7 +28,7 @@ impl Bar {
         let Some(bar) = &self.bar else { return };
         if p.stage != self.stage {
             self.stage = p.stage;
-            bar.reset();
+            bar.reset_elapsed();
             bar.set_message(p.stage);
         }
         bar.set_length(p.total as u64);

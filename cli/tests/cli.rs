@@ -240,3 +240,20 @@ fn binary_exit_codes_and_silent_stderr_when_piped() {
     let v: serde_json::Value = serde_json::from_slice(&plan.stdout).unwrap();
     assert_eq!(v["status"], "found");
 }
+
+/// On a terminal (a pseudo-terminal made by util-linux's `script`) a long command draws its
+/// progress bar on stderr, fed by the planner's counters, and clears it before the report.
+#[test]
+fn binary_draws_a_progress_bar_on_a_terminal() {
+    use std::process::Command;
+    let exe = env!("CARGO_BIN_EXE_cablenav");
+    let scenario = concat!(env!("CARGO_MANIFEST_DIR"), "/../static/scenarios/robocrane.json");
+    let command = format!("{exe} plan {scenario} --query q1-q2");
+    let out = Command::new("script").args(["-qec", &command, "/dev/null"]).output().expect("util-linux `script` runs");
+    assert!(out.status.success(), "{out:?}");
+    let tty = String::from_utf8_lossy(&out.stdout);
+    assert!(tty.contains("path edges verified"), "no progress bar on the terminal:\n{tty}");
+    assert!(tty.contains("\u{1b}[2K"), "the bar is not cleared:\n{tty}");
+    let report = tty.rsplit("\u{1b}[2K").next().unwrap_or("");
+    assert!(report.trim_start().starts_with("plan q1-q2: found"), "{report}");
+}
