@@ -398,7 +398,7 @@ fn lattice_text(r: &LatticeReport) -> String {
     if r.rays.len() > SHOWN {
         out += &format!("  … {} more rays (--json prints all)\n", r.rays.len() - SHOWN);
     }
-    out + &notes(&r.conservative, &r.warnings)
+    out + &notes(&r.warnings)
 }
 
 fn lattice_plan_text(r: &LatticePlanReport) -> String {

@@ -32,7 +32,6 @@ export interface VerifyReport {
   infeasible_tau: Interval[];
   boundaries: { t: number; tau: number; constraint: string; enters: "feasible" | "infeasible" }[];
   uncertain: Interval[];
-  conservative: string[];
   warnings: string[];
 }
 
@@ -45,7 +44,6 @@ export interface RayReport {
   infeasible: Interval[];
   boundaries: { value: number; constraint: string; enters: "feasible" | "infeasible" }[];
   uncertain: Interval[];
-  conservative: string[];
   warnings: string[];
 }
 

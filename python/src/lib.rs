@@ -181,7 +181,7 @@ fn coord(field: &str, name: &str) -> Result<Coord, Error> {
 ///
 /// Returns the dict `cablenav verify SCENARIO --json` prints: `trajectory`, `method`,
 /// `feasible`/`infeasible`/`uncertain` t-intervals, `feasible_tau`, `boundaries` (t, τ, the
-/// constraint, the side entered), `conservative`, `warnings`. `trajectory` defaults to the
+/// constraint, the side entered), `warnings`. `trajectory` defaults to the
 /// scenario's first.
 #[pyfunction]
 #[pyo3(signature = (scenario, trajectory=None, *, pointwise=None))]

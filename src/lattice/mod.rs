@@ -426,7 +426,6 @@ impl Lattice {
             point_components: (0..points).map(|flat| self.component_at(&self.spec.point_indices(flat))).collect(),
             disagreements: g.disagreements,
             uncertain_rays: self.rays.iter().filter(|r| !r.uncertain.is_empty()).count(),
-            conservative: self.conditions.iter().filter(|c| !c.exact()).map(|c| c.label()).collect(),
             warnings: self.scenario.warnings.clone(),
         })
     }
@@ -464,8 +463,6 @@ pub struct LatticeReport {
     pub disagreements: usize,
     /// Rays with an uncertain section.
     pub uncertain_rays: usize,
-    /// Conditions tested conservatively (enlarged shapes).
-    pub conservative: Vec<String>,
     /// The scenario's warnings.
     pub warnings: Vec<String>,
 }
