@@ -14,7 +14,7 @@ use support::harness::*;
 use support::reference::*;
 
 /// Widest uncertain section allowed (docs/verification.md, "Long slerps").
-const UNCERTAIN_MAX: f64 = 1e-8;
+const UNCERTAIN_MAX: f64 = 1e-7;
 
 #[cfg(not(target_arch = "wasm32"))]
 const SCENARIOS: usize = 60;
