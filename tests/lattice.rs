@@ -197,6 +197,13 @@ fn atlas_and_lattice_behind_one_interface() {
         let traj = p.result(0.0).unwrap().trajectory.expect("a trajectory");
         let r = cablenav::verify::verify_trajectory(&s, &traj).unwrap();
         assert_eq!(r.feasible, vec![[0.0, 1.0]], "{kind:?}: {r:?}");
+        if let cablenav::plan::choice::Details::Lattice(d) = p.result(0.0).unwrap().details {
+            // The shortest lattice path: θ down to 0 (0.9 rad), φ across at θ = 0 where every φ is
+            // the same rotation (cost 0), θ up again (0.9 rad) — the same natively and in wasm32.
+            // (A* once recomputed an entry's cost as f − h, which rounding made exceed g: live
+            // entries were skipped, giving a longer path natively, 2.753, and no path in wasm32.)
+            assert!((d.polyline_length - 1.8).abs() < 1e-9, "{}: {:?}", d.polyline_length, d.polyline);
+        }
     }
     assert_eq!(PlannerKind::parse("grid").unwrap_err().field, "--planner");
 }

@@ -79,8 +79,8 @@ fn tree_profile_matches_brute_force_distances_and_the_pose_check() {
     let p = clearances_along(&s, traj, n).unwrap();
     assert_eq!(p.samples.len(), n + 1);
     assert_eq!((p.clearance_cable_cable, p.clearance_cable_obstacle), (0.1, 0.2));
-    let cone_labels: Vec<String> = (1..=7).map(|i| format!("cable {i} - cone")).collect();
-    assert_eq!(p.membership_only, cone_labels);
+    // every clearance condition reports its exact distance now (cones included)
+    assert!(p.membership_only.is_empty(), "{:?}", p.membership_only);
     for (k, sample) in p.samples.iter().enumerate() {
         let t = k as f64 / n as f64;
         assert_eq!(sample.t, t);
@@ -95,8 +95,14 @@ fn tree_profile_matches_brute_force_distances_and_the_pose_check() {
                 }
             }
         }
+        // the reference knows spheres and cylinders: where one of them is nearest the distances
+        // agree; where the cone is nearer, it is below the reference's least
         let co = sample.cable_obstacle.as_ref().unwrap();
-        assert!((co.distance - best).abs() < 1e-7, "t = {t}: {co:?} vs {best}");
+        if co.between.ends_with("- cone") {
+            assert!(co.distance <= best + 1e-7, "t = {t}: {co:?} vs {best}");
+        } else {
+            assert!((co.distance - best).abs() < 1e-7, "t = {t}: {co:?} vs {best}");
+        }
         // the same conditions as the per-pose check, in the same order
         assert_eq!(sample.violated, check_pose(&s, "sample", &pose).violated, "t = {t}");
     }

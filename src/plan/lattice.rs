@@ -79,11 +79,15 @@ struct EndRay {
     feasible: Vec<[f64; 2]>,
 }
 
-/// An open-list entry (least f first, ties: least h).
+/// An open-list entry (least f first, ties: least h). `g` is the cost from the start with which
+/// `v` was pushed: the entry is stale exactly when `g` is no longer `v`'s best cost (an exact
+/// comparison of the stored number; recomputing it as f − h can exceed it by a rounding error,
+/// which skipped live entries, platform-dependently).
 #[derive(Debug, Clone, Copy)]
 struct Open {
     f: f64,
     h: f64,
+    g: f64,
     v: usize,
 }
 impl PartialEq for Open {
@@ -549,7 +553,7 @@ impl LatticePlanner {
         let s = self.ends[0];
         let h = self.heuristic(s);
         self.g.insert(s, 0.0);
-        self.open.push(Open { f: h, h, v: s });
+        self.open.push(Open { f: h, h, g: 0.0, v: s });
         self.stage = Stage::Search;
     }
 
@@ -580,12 +584,12 @@ impl LatticePlanner {
 
     fn search_unit(&mut self) {
         let goal = self.ends[1];
-        let Some(Open { f, h, v }) = self.open.pop() else {
+        let Some(Open { g: g_pushed, v, .. }) = self.open.pop() else {
             self.status = Some(PlanStatus::NoPath);
             self.stage = Stage::Done;
             return;
         };
-        if f - h > self.g.get(&v).copied().unwrap_or(f64::INFINITY) {
+        if g_pushed > self.g.get(&v).copied().unwrap_or(f64::INFINITY) {
             return; // a stale entry: v was reached more cheaply since
         }
         self.expanded += 1;
@@ -608,7 +612,7 @@ impl LatticePlanner {
                 self.g.insert(w, gw);
                 self.parent.insert(w, v);
                 let h = self.heuristic(w);
-                self.open.push(Open { f: gw + h, h, v: w });
+                self.open.push(Open { f: gw + h, h, g: gw, v: w });
             }
         }
     }

@@ -90,8 +90,9 @@ pub struct ClearanceProfile {
     pub clearance_cable_cable: f64,
     /// The required cable–obstacle clearance.
     pub clearance_cable_obstacle: f64,
-    /// Cable–obstacle conditions decided by membership only (no distance: ellipsoids, cones);
-    /// their violations appear in each sample's `violated` but not in `cable_obstacle`.
+    /// Cable–obstacle conditions decided by membership only (none of today's shapes: every one
+    /// reports an exact distance); their violations would appear in each sample's `violated` but
+    /// not in `cable_obstacle`.
     pub membership_only: Vec<String>,
 }
 
