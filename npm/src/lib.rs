@@ -195,12 +195,22 @@ fn scenario_error(e: Error) -> JsValue {
 
 /// Runs `request` on the scenario and returns the report as a plain object.
 fn call(scenario: JsValue, request: Result<Request, Error>) -> Result<JsValue, JsValue> {
+    call_renaming(scenario, request, None)
+}
+
+/// [`call`], where an error about the core's option `rename.0` names the argument `rename.1`
+/// (for arguments named differently from the option, e.g. `ranges` for `--range`).
+fn call_renaming(scenario: JsValue, request: Result<Request, Error>, rename: Option<(&str, &str)>) -> Result<JsValue, JsValue> {
     let text = match scenario.as_string() {
         Some(text) => text,
         None => js_sys::JSON::stringify(&scenario)?.as_string().unwrap_or_default(),
     };
     let scenario = Scenario::from_json(&text).map_err(scenario_error)?;
-    let output = command::run(&scenario, &request.map_err(scenario_error)?, &mut |_| {}).map_err(scenario_error)?;
+    let renamed = |e: Error| match rename {
+        Some((option, name)) if e.field == option => Error::new(name, e.reason),
+        _ => e,
+    };
+    let output = command::run(&scenario, &request.map_err(scenario_error)?, &mut |_| {}).map_err(|e| scenario_error(renamed(e)))?;
     js_sys::JSON::parse(&output.json())
 }
 
@@ -273,14 +283,7 @@ pub fn lattice(
     ranges: Vec<f64>,
     #[wasm_bindgen(unchecked_param_type = "number | number[]")] steps: JsValue,
 ) -> Result<JsValue, JsValue> {
-    let request = lattice_request(pose, &axes, &ranges, &steps);
-    call(scenario, request).map_err(|e| {
-        // the option --range is the argument `ranges` here
-        if js_sys::Reflect::get(&e, &"field".into()).ok().and_then(|f| f.as_string()).as_deref() == Some("range") {
-            let _ = js_sys::Reflect::set(&e, &"field".into(), &"ranges".into());
-        }
-        e
-    })
+    call_renaming(scenario, lattice_request(pose, &axes, &ranges, &steps), Some(("--range", "ranges")))
 }
 
 /// The [`Request::Lattice`] of `lattice`'s arguments.
