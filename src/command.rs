@@ -14,8 +14,9 @@ use crate::plan::choice::{self, Details, PlannerKind, PlannerOptions};
 use crate::plan::lattice::{LatticeParams, LatticePlanReport};
 use crate::plan::{PlanParams, PlanReport, PlanStatus};
 use crate::report::{PoseReport, RayReport, Side, TensionEnvelope, VerifyReport};
-use crate::verify::slice::{default_range, Class, SliceMap};
-use crate::verify::{check_pose, ray, slice, tension_envelope, verify_all, verify_pointwise, verify_trajectory};
+use crate::verify::slice::{default_range, slice_counted, Class, SliceMap};
+use crate::verify::{check_pose, ray, tension_envelope, verify_all_counted, verify_pointwise, verify_trajectory};
+use std::sync::atomic::{AtomicUsize, Ordering};
 use crate::Scenario;
 use serde::Serialize;
 
@@ -135,7 +136,10 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
                 None => verify_trajectory(scenario, traj)?,
             })
         }
-        Request::VerifyAll { pointwise } => Output::VerifyAll(verify_all(scenario, *pointwise)?),
+        Request::VerifyAll { pointwise } => {
+            let total = scenario.trajectories.len();
+            Output::VerifyAll(counted("trajectories verified", total, progress, |done| verify_all_counted(scenario, *pointwise, done))?)
+        }
         Request::Ray { pose, vary, range } => Output::Ray(ray(scenario, pose, *vary, range[0], range[1])?),
         Request::Check { pose } => Output::Check(check_pose(scenario, pose, scenario.pose(pose)?)),
         Request::Envelope { trajectory, samples } => {
@@ -150,7 +154,7 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
                     [pick(axes[0])?, pick(axes[1])?]
                 }
             };
-            Output::Slice(slice(scenario, pose, *axes, *res, range)?)
+            Output::Slice(counted("slice rows", *res, progress, |done| slice_counted(scenario, pose, *axes, *res, range, done))?)
         }
         Request::Lattice { pose, axes, ranges, steps } => {
             let spec = LatticeSpec::new(axes.clone(), ranges.clone(), steps.clone(), scenario.pose(pose)?.coords())?;
@@ -195,6 +199,28 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
             }
         }
     })
+}
+
+/// Runs `work`, which counts its finished units (of `total`) in the counter it is given, and
+/// reports that count to `progress` as `stage`. Natively the work runs on a scoped thread (it
+/// spreads over rayon's workers itself) while this one polls the counter every 50 ms; on wasm
+/// (no threads) it runs here and the count is reported once, at the end.
+fn counted<T: Send>(stage: &'static str, total: usize, progress: &mut dyn FnMut(Progress), work: impl FnOnce(&AtomicUsize) -> T + Send) -> T {
+    let done = AtomicUsize::new(0);
+    #[cfg(not(target_arch = "wasm32"))]
+    let result = std::thread::scope(|scope| {
+        let worker = scope.spawn(|| work(&done));
+        progress(Progress { stage, done: 0, total });
+        while !worker.is_finished() {
+            std::thread::sleep(std::time::Duration::from_millis(50));
+            progress(Progress { stage, done: done.load(Ordering::Relaxed), total });
+        }
+        worker.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic))
+    });
+    #[cfg(target_arch = "wasm32")]
+    let result = work(&done);
+    progress(Progress { stage, done: done.load(Ordering::Relaxed), total });
+    result
 }
 
 impl Output {

@@ -26,13 +26,13 @@ impl Bar {
     /// Shows `p`; a new stage restarts the bar with its own length.
     pub fn update(&mut self, p: Progress) {
         let Some(bar) = &self.bar else { return };
+        bar.set_length(p.total as u64);
+        bar.set_position(p.done as u64);
         if p.stage != self.stage {
             self.stage = p.stage;
             bar.reset_elapsed();
             bar.set_message(p.stage);
         }
-        bar.set_length(p.total as u64);
-        bar.set_position(p.done as u64);
     }
 
     /// Removes the bar before the report is printed.

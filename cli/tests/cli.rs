@@ -242,7 +242,7 @@ fn binary_exit_codes_and_silent_stderr_when_piped() {
 }
 
 /// On a terminal (a pseudo-terminal made by util-linux's `script`) a long command draws its
-/// progress bar on stderr, fed by the planner's counters, and clears it before the report.
+/// progress bar on stderr, fed by the planner's progress fraction, and clears it before the report.
 #[test]
 fn binary_draws_a_progress_bar_on_a_terminal() {
     use std::process::Command;
@@ -252,8 +252,36 @@ fn binary_draws_a_progress_bar_on_a_terminal() {
     let out = Command::new("script").args(["-qec", &command, "/dev/null"]).output().expect("util-linux `script` runs");
     assert!(out.status.success(), "{out:?}");
     let tty = String::from_utf8_lossy(&out.stdout);
-    assert!(tty.contains("path edges verified"), "no progress bar on the terminal:\n{tty}");
+    assert!(tty.contains("planning (‰)"), "no progress bar on the terminal:\n{tty}");
     assert!(tty.contains("\u{1b}[2K"), "the bar is not cleared:\n{tty}");
     let report = tty.rsplit("\u{1b}[2K").next().unwrap_or("");
     assert!(report.trim_start().starts_with("plan q1-q2: found"), "{report}");
+}
+
+/// `lattice`, `slice` and `verify --all` draw their bars (fed by the core's counters) on a
+/// terminal and clear them; piped, stderr stays empty and stdout is exactly the report the
+/// terminal shows after the bar.
+#[test]
+fn long_commands_draw_bars_on_a_terminal_and_print_the_same_report_when_piped() {
+    use std::process::Command;
+    let exe = env!("CARGO_BIN_EXE_cablenav");
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/..");
+    let box_ = format!("{root}/static/scenarios/cdpr7-box.json");
+    let robocrane = format!("{root}/static/scenarios/robocrane.json");
+    let runs: [(&str, Vec<String>); 3] = [
+        ("rays", ["lattice", &box_, "--pose", "start", "--axes", "x,y,z", "--range", "0.2", "3.8", "1.1", "2.9", "0.3", "3.7", "--steps", "7"].map(String::from).to_vec()),
+        ("slice rows", ["slice", &robocrane, "--pose", "q1", "--axes", "phi,theta", "--res", "200"].map(String::from).to_vec()),
+        ("trajectories verified", ["verify", &box_, "--all"].map(String::from).to_vec()),
+    ];
+    for (stage, args) in runs {
+        let out = Command::new("script").args(["-qec", &format!("{exe} {}", args.join(" ")), "/dev/null"]).output().expect("util-linux `script` runs");
+        assert!(out.status.success(), "{out:?}");
+        let tty = String::from_utf8_lossy(&out.stdout).replace("\r\n", "\n");
+        assert!(tty.contains(stage), "{}: no progress bar on the terminal:\n{tty}", args[0]);
+        assert!(tty.contains("\u{1b}[2K"), "{}: the bar is not cleared:\n{tty}", args[0]);
+        let report = tty.rsplit("\u{1b}[2K").next().unwrap_or("").trim_start_matches(['\r', '\n']);
+        let piped = Command::new(exe).args(&args).output().unwrap();
+        assert!(piped.status.success() && piped.stderr.is_empty(), "{}: {}", args[0], String::from_utf8_lossy(&piped.stderr));
+        assert_eq!(report, String::from_utf8_lossy(&piped.stdout), "{}", args[0]);
+    }
 }

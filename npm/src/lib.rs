@@ -8,6 +8,8 @@
 
 use cablenav::command::{self, Request};
 use cablenav::model::Coord;
+use cablenav::plan::choice::PlannerKind;
+use cablenav::plan::lattice::LatticeParams;
 use cablenav::plan::PlanParams;
 use cablenav::{Error, Scenario};
 use wasm_bindgen::prelude::*;
@@ -115,6 +117,52 @@ export interface PlanReport {
   };
 }
 
+/** What `lattice` returns (`cablenav lattice --json`); grid points first axis fastest. */
+export interface LatticeReport {
+  axes: Coord[];
+  ranges: Interval[];
+  steps: number[];
+  /** x, y, z, phi, theta, sigma the other coordinates are held at. */
+  fixed: [number, number, number, number, number, number];
+  rays: { vary: Coord; fixed: Partial<Record<Coord, number>>; feasible: Interval[]; uncertain?: Interval[] }[];
+  pieces: number;
+  edges: number;
+  components: number;
+  piece_components: number[][];
+  grid_points: number;
+  feasible_points: number;
+  point_components: (number | null)[];
+  disagreements: number;
+  uncertain_rays: number;
+  warnings: string[];
+}
+
+/** A pose as its six coordinates x, y, z, phi, theta, sigma. */
+export type Coords = [number, number, number, number, number, number];
+
+/** What `plan(…, "lattice")` returns (`cablenav plan --planner lattice --json`); `seconds` is null in WebAssembly. */
+export interface LatticePlanReport {
+  query: string;
+  status: "found" | "no_path" | "unrepaired";
+  message: string;
+  axes: Coord[];
+  ranges: Interval[];
+  steps: number[];
+  rays: number;
+  components: number;
+  segments: [number, number];
+  expanded: number;
+  polyline: Coords[];
+  polyline_length: number;
+  waypoints: Coords[];
+  pieces: number;
+  polyline_pieces: number;
+  repairs: number;
+  verification: VerifyReport | null;
+  params: { steps: number; rotation_length: number; max_halvings: number };
+  seconds: number | null;
+}
+
 /** Thrown by every function: `field` is the JSON path (`robot.cables[3].base`) or the argument. */
 export interface ScenarioError extends Error {
   name: "ScenarioError";
@@ -147,12 +195,22 @@ fn scenario_error(e: Error) -> JsValue {
 
 /// Runs `request` on the scenario and returns the report as a plain object.
 fn call(scenario: JsValue, request: Result<Request, Error>) -> Result<JsValue, JsValue> {
+    call_renaming(scenario, request, None)
+}
+
+/// [`call`], where an error about the core's option `rename.0` names the argument `rename.1`
+/// (for arguments named differently from the option, e.g. `ranges` for `--range`).
+fn call_renaming(scenario: JsValue, request: Result<Request, Error>, rename: Option<(&str, &str)>) -> Result<JsValue, JsValue> {
     let text = match scenario.as_string() {
         Some(text) => text,
         None => js_sys::JSON::stringify(&scenario)?.as_string().unwrap_or_default(),
     };
     let scenario = Scenario::from_json(&text).map_err(scenario_error)?;
-    let output = command::run(&scenario, &request.map_err(scenario_error)?, &mut |_| {}).map_err(scenario_error)?;
+    let renamed = |e: Error| match rename {
+        Some((option, name)) if e.field == option => Error::new(name, e.reason),
+        _ => e,
+    };
+    let output = command::run(&scenario, &request.map_err(scenario_error)?, &mut |_| {}).map_err(|e| scenario_error(renamed(e)))?;
     js_sys::JSON::parse(&output.json())
 }
 
@@ -213,19 +271,61 @@ pub fn slice(
     call(scenario, request)
 }
 
-/// A wrench-feasible, interference-free path for one of the scenario's queries, re-verified
-/// edge by edge. Runs to the end: call it in a Web Worker on a page.
-#[wasm_bindgen(unchecked_return_type = "PlanReport")]
+/// The thesis' ray lattice over `axes` (the others held at the pose's): every ray's exact
+/// feasible intervals, the graph of feasible pieces and its components. `ranges` is
+/// [lo1, hi1, lo2, hi2, …], one pair per axis; `steps` the grid values per axis (both ends
+/// count): one number for every axis, or an array with one per axis.
+#[wasm_bindgen(unchecked_return_type = "LatticeReport")]
+pub fn lattice(
+    #[wasm_bindgen(unchecked_param_type = "ScenarioInput")] scenario: JsValue,
+    pose: String,
+    #[wasm_bindgen(unchecked_param_type = "Coord[]")] axes: Vec<String>,
+    ranges: Vec<f64>,
+    #[wasm_bindgen(unchecked_param_type = "number | number[]")] steps: JsValue,
+) -> Result<JsValue, JsValue> {
+    call_renaming(scenario, lattice_request(pose, &axes, &ranges, &steps), Some(("--range", "ranges")))
+}
+
+/// The [`Request::Lattice`] of `lattice`'s arguments.
+fn lattice_request(pose: String, axes: &[String], ranges: &[f64], steps: &JsValue) -> Result<Request, Error> {
+    let axes = axes.iter().map(|a| coord("axes", a)).collect::<Result<Vec<Coord>, Error>>()?;
+    if ranges.len() % 2 != 0 {
+        return Err(Error::new("ranges", format!("needs [lo, hi] pairs, got {} numbers", ranges.len())));
+    }
+    let ranges = ranges.chunks(2).map(|p| [p[0], p[1]]).collect();
+    let whole = |v: &JsValue| v.as_f64().filter(|n| n.fract() == 0.0 && *n >= 0.0 && *n <= u32::MAX as f64).map(|n| n as usize);
+    let steps = match whole(steps) {
+        Some(n) => vec![n],
+        None if js_sys::Array::is_array(steps) => js_sys::Array::from(steps).iter().map(|v| whole(&v)).collect::<Option<Vec<usize>>>().ok_or_else(|| Error::new("steps", "needs whole numbers"))?,
+        None => return Err(Error::new("steps", "needs a whole number or an array of them")),
+    };
+    Ok(Request::Lattice { pose, axes, ranges, steps })
+}
+
+/// A feasible path for one of the scenario's queries, re-verified exactly. `planner` is
+/// "atlas" (default; Henderson atlas + A* with `maxCharts`, `radius`, `epsilon`; 6 cables with a
+/// wrench set) or "lattice" (ray lattice with `steps` grid values per free coordinate, default
+/// 7, + A* + Bézier smoothing; any robot). Runs to the end: call it in a Web Worker on a page.
+#[wasm_bindgen(unchecked_return_type = "PlanReport | LatticePlanReport")]
 pub fn plan(
     #[wasm_bindgen(unchecked_param_type = "ScenarioInput")] scenario: JsValue,
     query: String,
     #[wasm_bindgen(js_name = maxCharts)] max_charts: Option<usize>,
     radius: Option<f64>,
     epsilon: Option<f64>,
+    #[wasm_bindgen(unchecked_param_type = "\"atlas\" | \"lattice\" | undefined")] planner: Option<String>,
+    steps: Option<usize>,
 ) -> Result<JsValue, JsValue> {
     let d = PlanParams::default();
     let params = PlanParams { max_charts: max_charts.unwrap_or(d.max_charts), radius: radius.unwrap_or(d.radius), epsilon: epsilon.unwrap_or(d.epsilon), ..d };
-    call(scenario, Ok(Request::Plan { query, params }))
+    let request = PlannerKind::parse(planner.as_deref().unwrap_or("atlas")).and_then(|planner| {
+        if steps.is_some() && planner != PlannerKind::Lattice {
+            return Err(Error::new("steps", "is an option of the \"lattice\" planner"));
+        }
+        let lattice = LatticeParams { steps: steps.unwrap_or(LatticeParams::default().steps), ..LatticeParams::default() };
+        Ok(Request::Plan { query, params, planner, lattice })
+    });
+    call(scenario, request)
 }
 
 /// The package's version.

@@ -78,6 +78,25 @@ test('check, ray, envelope, slice and plan equal the CLI (to the last bits of li
   assert.equal(ours.status, 'found');
 });
 
+test('lattice and the lattice planner equal the CLI (to the last bits of libm)', () => {
+  const box = join(root, 'static', 'scenarios', 'cdpr7-box.json');
+  const ours = cablenav.lattice(preset('cdpr7-box.json'), 'start', ['x', 'y', 'z'], [0.2, 3.8, 1.1, 2.9, 0.3, 3.7], 5);
+  close(ours, cli('lattice', box, '--pose', 'start', '--axes', 'x,y,z', '--range', 0.2, 3.8, 1.1, 2.9, 0.3, 3.7, '--steps', 5));
+  assert.deepEqual(ours.steps, [5, 5, 5]);
+  assert.equal(ours.rays.length, 75);
+  close(
+    cablenav.lattice(JSON.parse(preset('cdpr7-box.json')), 'start', ['x', 'y'], [0, 4, 0, 4], [5, 3]),
+    cli('lattice', box, '--pose', 'start', '--axes', 'x,y', '--range', 0, 4, 0, 4, '--steps', '5,3'),
+  );
+  const plan = cablenav.plan(preset('cdpr7-box.json'), 'over-box', undefined, undefined, undefined, 'lattice', 5);
+  const theirs = cli('plan', box, '--query', 'over-box', '--planner', 'lattice', '--steps', 5);
+  assert.equal(plan.seconds, null); // no clock in the core on wasm32
+  delete plan.seconds;
+  delete theirs.seconds;
+  close(plan, theirs);
+  assert.deepEqual(plan.steps, [5, 5, 5]);
+});
+
 test('errors are ScenarioErrors naming the field', () => {
   const scenario = JSON.parse(preset('cdpr7.json'));
   const throws = (f, field) => {
@@ -100,6 +119,12 @@ test('errors are ScenarioErrors naming the field', () => {
   throws(() => cablenav.slice(good, 'start', 'x', 'y', 10), 'range');
   throws(() => cablenav.slice(good, 'start', 'x', 'y', 10, [0, 1, 2]), 'range');
   throws(() => cablenav.plan(preset('robocrane.json'), 'q1-q2', 0), 'maxCharts');
+  throws(() => cablenav.plan(good, 'q1-q2', undefined, undefined, undefined, 'rrt'), 'planner');
+  throws(() => cablenav.plan(good, 'q1-q2', undefined, undefined, undefined, 'atlas', 5), 'steps');
+  throws(() => cablenav.lattice(good, 'start', ['x', 'w'], [0, 1, 0, 1], 5), 'axes');
+  throws(() => cablenav.lattice(good, 'start', ['x', 'y'], [0, 1, 0, 1], 1), 'steps');
+  throws(() => cablenav.lattice(good, 'start', ['x', 'y'], [0, 1, 0, 1], 'many'), 'steps');
+  throws(() => cablenav.lattice(good, 'start', ['x', 'y'], [0, 1], 5), 'ranges');
 });
 
 test('the bundler entry loads (ES module import of the .wasm) and agrees with the web entry', () => {
@@ -111,9 +136,9 @@ test('the bundler entry loads (ES module import of the .wasm) and agrees with th
 test('the TypeScript declarations type every function with its report', () => {
   for (const target of ['web', 'bundler']) {
     const dts = readFileSync(join(installed, target, 'cablenav.d.ts'), 'utf8');
-    for (const [fn, report] of [['verify', 'VerifyReport'], ['check', 'PoseReport'], ['ray', 'RayReport'], ['envelope', 'TensionEnvelope'], ['slice', 'SliceMap'], ['plan', 'PlanReport']]) {
+    for (const [fn, report] of [['verify', 'VerifyReport'], ['check', 'PoseReport'], ['ray', 'RayReport'], ['envelope', 'TensionEnvelope'], ['slice', 'SliceMap'], ['lattice', 'LatticeReport'], ['plan', 'PlanReport \\| LatticePlanReport']]) {
       assert.match(dts, new RegExp(`export function ${fn}\\(scenario: ScenarioInput[^)]*\\): ${report};`), `${target}: ${fn}`);
-      assert.match(dts, new RegExp(`export interface ${report} \\{`), `${target}: ${report}`);
+      for (const name of report.split(' \\| ')) assert.match(dts, new RegExp(`export interface ${name} \\{`), `${target}: ${name}`);
     }
   }
   assert.equal(cablenav.version(), JSON.parse(readFileSync(join(installed, 'package.json'), 'utf8')).version);

@@ -9,6 +9,8 @@
 
 use cablenav::command::{self, Request};
 use cablenav::model::Coord;
+use cablenav::plan::choice::PlannerKind;
+use cablenav::plan::lattice::LatticeParams;
 use cablenav::plan::PlanParams;
 use cablenav::{Error, Scenario};
 use pyo3::exceptions::{PyTypeError, PyValueError};
@@ -161,12 +163,22 @@ fn scenario_error(py: Python<'_>, e: Error, path: Option<&str>) -> PyErr {
 
 /// Runs `request` on the scenario with the GIL released and returns the report as Python data.
 fn call(py: Python<'_>, scenario: &Bound<'_, PyAny>, request: Result<Request, Error>) -> PyResult<Py<PyAny>> {
+    call_renaming(py, scenario, request, None)
+}
+
+/// [`call`], where an error about the core's option `rename.0` names the parameter `rename.1`
+/// (for parameters named differently from the option, e.g. `ranges` for `--range`).
+fn call_renaming(py: Python<'_>, scenario: &Bound<'_, PyAny>, request: Result<Request, Error>, rename: Option<(&str, &str)>) -> PyResult<Py<PyAny>> {
     let source = Source::of(scenario)?;
     let request = request.map_err(|e| scenario_error(py, e, None))?;
     let json = py
         .detach(|| -> cablenav::Result<String> {
             let scenario = source.load()?;
             Ok(command::run(&scenario, &request, &mut |_| {})?.json())
+        })
+        .map_err(|e| match rename {
+            Some((option, name)) if e.field == option => Error::new(name, e.reason),
+            _ => e,
         })
         .map_err(|e| scenario_error(py, e, source.path()))?;
     Ok(py.import("json")?.call_method1("loads", (json,))?.unbind())
@@ -238,18 +250,53 @@ fn slice(py: Python<'_>, scenario: &Bound<'_, PyAny>, pose: String, axes: (Strin
     call(py, scenario, request)
 }
 
-/// A wrench-feasible, interference-free path for one of the scenario's queries (Henderson atlas +
-/// A*), re-verified edge by edge.
+/// The thesis' ray lattice over `axes` (the others held at `pose`'s): every ray's exact feasible
+/// intervals, the graph of feasible pieces and its connected components.
 ///
-/// Returns the dict `cablenav plan SCENARIO --query QUERY --json` prints: `status` ("found",
-/// "no_path" or "budget"), `path`, `verification`, `atlas`, `charts`, `seconds`. Unset
-/// parameters take the CLI's defaults.
+/// `axes` is a sequence of coordinate names, e.g. ("x", "y"); `ranges` one (lo, hi) per axis,
+/// angles in radians; `steps` the grid values per axis (both ends count): one int for every
+/// axis, or one per axis. Returns the dict `cablenav lattice SCENARIO --pose POSE --axes A,B
+/// --range LO HI LO HI --steps N --json` prints (`rays` with their `feasible` intervals,
+/// `pieces`, `edges`, `components`, `point_components`, …).
 #[pyfunction]
-#[pyo3(signature = (scenario, query, *, max_charts=None, radius=None, epsilon=None))]
-fn plan(py: Python<'_>, scenario: &Bound<'_, PyAny>, query: String, max_charts: Option<usize>, radius: Option<f64>, epsilon: Option<f64>) -> PyResult<Py<PyAny>> {
+#[pyo3(signature = (scenario, pose, axes, ranges, steps))]
+fn lattice(py: Python<'_>, scenario: &Bound<'_, PyAny>, pose: String, axes: Vec<String>, ranges: Vec<(f64, f64)>, steps: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+    let steps: Vec<usize> = match steps.extract::<usize>() {
+        Ok(n) => vec![n],
+        Err(_) => steps.extract().map_err(|_| PyTypeError::new_err("steps must be an int or a sequence of ints"))?,
+    };
+    let request = axes
+        .iter()
+        .map(|a| coord("axes", a))
+        .collect::<Result<Vec<Coord>, Error>>()
+        .map(|axes| Request::Lattice { pose, axes, ranges: ranges.iter().map(|r| [r.0, r.1]).collect(), steps });
+    call_renaming(py, scenario, request, Some(("--range", "ranges")))
+}
+
+/// A feasible path for one of the scenario's queries, re-verified exactly.
+///
+/// `planner="atlas"` (default; 6 cables with a wrench set): Henderson atlas + A*, with
+/// `max_charts`, `radius`, `epsilon`. `planner="lattice"` (any robot): ray lattice with `steps`
+/// grid values per free coordinate (default 7) + A* + Bézier smoothing, verified and repaired.
+/// Returns the dict `cablenav plan SCENARIO --query QUERY [--planner lattice --steps N] --json`
+/// prints: for the atlas `status` ("found", "no_path" or "budget"), `path`, `verification`,
+/// `atlas`, `charts`, `seconds`; for the lattice `status` ("found", "no_path" or "unrepaired"),
+/// `message`, `polyline`, `waypoints`, `verification`, `seconds`, …. Unset parameters take the
+/// CLI's defaults.
+#[pyfunction]
+#[pyo3(signature = (scenario, query, *, planner="atlas", steps=None, max_charts=None, radius=None, epsilon=None))]
+#[allow(clippy::too_many_arguments)]
+fn plan(py: Python<'_>, scenario: &Bound<'_, PyAny>, query: String, planner: &str, steps: Option<usize>, max_charts: Option<usize>, radius: Option<f64>, epsilon: Option<f64>) -> PyResult<Py<PyAny>> {
     let d = PlanParams::default();
     let params = PlanParams { max_charts: max_charts.unwrap_or(d.max_charts), radius: radius.unwrap_or(d.radius), epsilon: epsilon.unwrap_or(d.epsilon), ..d };
-    call(py, scenario, Ok(Request::Plan { query, params }))
+    let request = PlannerKind::parse(planner).and_then(|planner| {
+        if steps.is_some() && planner != PlannerKind::Lattice {
+            return Err(Error::new("--steps", "is an option of planner=\"lattice\""));
+        }
+        let lattice = LatticeParams { steps: steps.unwrap_or(LatticeParams::default().steps), ..LatticeParams::default() };
+        Ok(Request::Plan { query, params, planner, lattice })
+    });
+    call(py, scenario, request)
 }
 
 /// The native module; `cablenav/__init__.py` re-exports it.
@@ -262,6 +309,7 @@ fn _cablenav(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(ray, m)?)?;
     m.add_function(wrap_pyfunction!(envelope, m)?)?;
     m.add_function(wrap_pyfunction!(slice, m)?)?;
+    m.add_function(wrap_pyfunction!(lattice, m)?)?;
     m.add_function(wrap_pyfunction!(plan, m)?)?;
     Ok(())
 }

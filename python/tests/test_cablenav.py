@@ -53,6 +53,20 @@ def test_envelope_slice_and_plan_equal_the_cli(cli):
     assert ours == theirs and ours["status"] == "found"
 
 
+def test_lattice_and_the_lattice_planner_equal_the_cli(cli):
+    box = ROOT / "static" / "scenarios" / "cdpr7-box.json"
+    ours = cablenav.lattice(box, "start", ("x", "y", "z"), ((0.2, 3.8), (1.1, 2.9), (0.3, 3.7)), 5)
+    theirs = cli("lattice", box, "--pose", "start", "--axes", "x,y,z", "--range", 0.2, 3.8, 1.1, 2.9, 0.3, 3.7, "--steps", 5)
+    assert ours == theirs and ours["steps"] == [5, 5, 5] and len(ours["rays"]) == 75
+    assert cablenav.lattice(box, "start", ["x", "y"], [(0, 4), (0, 4)], [5, 3]) == cli(
+        "lattice", box, "--pose", "start", "--axes", "x,y", "--range", 0, 4, 0, 4, "--steps", "5,3"
+    )
+    ours = cablenav.plan(box, "over-box", planner="lattice", steps=5)
+    theirs = cli("plan", box, "--query", "over-box", "--planner", "lattice", "--steps", 5)
+    assert ours.pop("seconds") >= 0 and theirs.pop("seconds") >= 0  # wall-clock time differs
+    assert ours == theirs and ours["steps"] == [5, 5, 5]
+
+
 def test_errors_carry_the_field():
     scenario = load(ROOT / "static" / "scenarios" / "cdpr7.json")
     bad = json.loads(json.dumps(scenario))
@@ -77,6 +91,11 @@ def test_errors_carry_the_field():
         (lambda: cablenav.plan(ROOT / "static" / "scenarios" / "robocrane.json", "q1-q2", radius=-1.0), "radius"),
         (lambda: cablenav.plan(ROOT / "static" / "scenarios" / "robocrane.json", "q1-q2", max_charts=0), "max_charts"),
         (lambda: cablenav.plan(scenario, "q1-q2"), "query"),
+        (lambda: cablenav.plan(scenario, "q1-q2", planner="rrt"), "planner"),
+        (lambda: cablenav.plan(scenario, "q1-q2", steps=5), "steps"),
+        (lambda: cablenav.lattice(scenario, "start", ("x", "w"), ((0, 1), (0, 1)), 5), "axes"),
+        (lambda: cablenav.lattice(scenario, "start", ("x", "y"), ((0, 1), (0, 1)), 1), "steps"),
+        (lambda: cablenav.lattice(scenario, "start", ("x", "y"), ((0, 1),), 5), "ranges"),
     ]
     for call, field in cases:
         with pytest.raises(cablenav.ScenarioError) as e:

@@ -10,6 +10,7 @@ pub use pointwise::verify_pointwise;
 pub use sections::{push_merged, sections, Labelled, Piece, Sections};
 pub use slice::{slice, SliceMap};
 
+use std::sync::atomic::{AtomicUsize, Ordering};
 use crate::conditions::{cables_at, for_scenario, Condition, PoseCables, Sweep};
 use crate::model::{Bounds, Wrench};
 use crate::query::wrench::{closure_holds, static_margin};
@@ -67,9 +68,19 @@ pub fn verify_trajectory(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport
 /// verified in parallel on native targets (each one single-threaded, as [`verify_trajectory`]),
 /// in order on wasm. The first error (in file order) is returned.
 pub fn verify_all(s: &Scenario, pointwise: Option<f64>) -> Result<Vec<VerifyReport>> {
-    let reports = crate::parallel::map_with(s.trajectories.len(), || (), |_, i| match pointwise {
-        Some(dt) => verify_pointwise(s, &s.trajectories[i], dt),
-        None => verify_trajectory(s, &s.trajectories[i]),
+    verify_all_counted(s, pointwise, &AtomicUsize::new(0))
+}
+
+/// [`verify_all`], adding 1 to `done` after each trajectory is verified (from any worker
+/// thread), so that a caller on another thread can show progress.
+pub fn verify_all_counted(s: &Scenario, pointwise: Option<f64>, done: &AtomicUsize) -> Result<Vec<VerifyReport>> {
+    let reports = crate::parallel::map_with(s.trajectories.len(), || (), |_, i| {
+        let report = match pointwise {
+            Some(dt) => verify_pointwise(s, &s.trajectories[i], dt),
+            None => verify_trajectory(s, &s.trajectories[i]),
+        };
+        done.fetch_add(1, Ordering::Relaxed);
+        report
     });
     reports.into_iter().collect()
 }

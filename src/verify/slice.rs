@@ -2,6 +2,7 @@
 //! pose, each cell classified by the conditions at its centre; and the 4-neighbour connected
 //! components of the feasible cells (Bohigas et al. Fig. 5).
 
+use std::sync::atomic::{AtomicUsize, Ordering};
 use crate::conditions::{cables_at, for_scenario, Condition, Kind};
 use crate::error::{Error, Result};
 use crate::model::{Coord, Pose};
@@ -121,6 +122,12 @@ fn classify(s: &Scenario, conditions: &[Box<dyn Condition>], pose: &Pose) -> Cla
 
 /// Classifies the slice of `s` through pose `pose_name` over `axes` with `res` cells per side.
 pub fn slice(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range: [[f64; 2]; 2]) -> Result<SliceMap> {
+    slice_counted(s, pose_name, axes, res, range, &AtomicUsize::new(0))
+}
+
+/// [`slice`], adding 1 to `rows_done` after each of the `res` rows is classified (from any
+/// worker thread), so that a caller on another thread can show progress.
+pub fn slice_counted(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range: [[f64; 2]; 2], rows_done: &AtomicUsize) -> Result<SliceMap> {
     if axes[0] == axes[1] {
         return Err(Error::new("--axes", "the two axes must differ"));
     }
@@ -146,14 +153,16 @@ pub fn slice(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range:
     };
     // rows in parallel natively (each worker with its own conditions), in order on wasm
     let rows = crate::parallel::map_with(res, || for_scenario(s), |conditions, j| {
-        (0..res)
+        let row = (0..res)
             .map(|i| {
                 let mut c = fixed;
                 c[axes[0].index()] = map.center(0, i);
                 c[axes[1].index()] = map.center(1, j);
                 classify(s, conditions, &Pose::from_coords(c))
             })
-            .collect::<Vec<_>>()
+            .collect::<Vec<_>>();
+        rows_done.fetch_add(1, Ordering::Relaxed);
+        row
     });
     map.classes = rows.concat();
     label_components(&mut map);

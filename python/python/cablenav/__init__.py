@@ -14,9 +14,10 @@ is the JSON path (``robot.cables[3].base``) or the argument (``range``). Calls r
 the GIL, so threads run them in parallel; :mod:`cablenav.sweep` sweeps candidate
 designs with ``concurrent.futures`` or on a Dask cluster.
 
-``lattice`` (the thesis' ray lattice) joins these functions once the core has it.
+``lattice`` computes the thesis' ray lattice; ``plan(..., planner="lattice", steps=7)``
+plans on it (any robot), ``plan(...)`` with the atlas (6 cables with a wrench set).
 """
 
-from ._cablenav import ScenarioError, __version__, check, envelope, plan, ray, slice, verify
+from ._cablenav import ScenarioError, __version__, check, envelope, lattice, plan, ray, slice, verify
 
-__all__ = ["ScenarioError", "__version__", "check", "envelope", "plan", "ray", "slice", "verify"]
+__all__ = ["ScenarioError", "__version__", "check", "envelope", "lattice", "plan", "ray", "slice", "verify"]

@@ -1,7 +1,7 @@
 """Type stubs of the native module (python/src/lib.rs); see the docstrings there."""
 
 import os
-from typing import Any, Dict, Optional, Tuple, Union
+from typing import Any, Dict, Optional, Sequence, Tuple, Union
 
 Scenario = Union[Dict[str, Any], str, "os.PathLike[str]"]
 """A scenario: a dict, a JSON string (starting with ``{``) or a path to a JSON file."""
@@ -42,12 +42,24 @@ def slice(
 ) -> Report:
     """A res × res classified grid over two coordinates and its feasible components."""
 
+def lattice(
+    scenario: Scenario,
+    pose: str,
+    axes: Sequence[str],
+    ranges: Sequence[Tuple[float, float]],
+    steps: Union[int, Sequence[int]],
+) -> Report:
+    """The ray lattice over ``axes`` (others from ``pose``): rays' feasible intervals, pieces, components."""
+
 def plan(
     scenario: Scenario,
     query: str,
     *,
+    planner: str = "atlas",
+    steps: Optional[int] = None,
     max_charts: Optional[int] = None,
     radius: Optional[float] = None,
     epsilon: Optional[float] = None,
 ) -> Report:
-    """A wrench-feasible, interference-free path for a query, re-verified edge by edge."""
+    """A feasible path for a query: ``planner`` "atlas" (Henderson atlas + A*) or "lattice" (ray lattice
+    with ``steps`` grid values per free coordinate + A* + Bézier), re-verified exactly."""
