@@ -35,6 +35,9 @@ const CABLE_TIGHT: Rgba = [0.9, 0.57, 0.12, 1.0];
 const CABLE_OUT: Rgba = [0.56, 0.23, 0.83, 1.0];
 const PLATFORM: Rgba = [0.35, 0.4, 0.47, 0.6];
 const ANCHOR: Rgba = [0.12, 0.14, 0.16, 1.0];
+/// Draggable handles, and the selected one.
+const HANDLE: Rgba = [0.95, 0.78, 0.1, 1.0];
+const HANDLE_SELECTED: Rgba = [1.0, 0.45, 0.0, 1.0];
 const GRID: Rgba = [0.8, 0.83, 0.86, 1.0];
 const AXES: [Rgba; 3] = [[0.85, 0.2, 0.2, 1.0], [0.2, 0.65, 0.25, 1.0], [0.2, 0.35, 0.9, 1.0]];
 /// Obstacle colours, by obstacle index, translucent.
@@ -170,6 +173,13 @@ pub struct SceneInput<'a> {
     pub trajectory: &'a [Polyline],
     /// The planned path, if any.
     pub path: Option<&'a Polyline>,
+    /// The draggable handles (m, world frame), the selected one's index and, for it, the axis
+    /// (0, 1, 2) a drag is constrained to, if any.
+    pub handles: &'a [DVec3],
+    /// The selected handle.
+    pub selected: Option<usize>,
+    /// The selected handle's drag axis, drawn as a guide line.
+    pub axis: Option<usize>,
 }
 
 /// Builds the vertex data of a scene.
@@ -232,6 +242,20 @@ pub fn build(input: &SceneInput) -> Geometry {
     for (k, o) in s.obstacles.iter().enumerate() {
         push_tris(&mut g.translucent, &tessellate::shape(&o.shape), OBSTACLES[k % OBSTACLES.len()]);
     }
+
+    // handles: small cubes, the selected one larger and orange, with its drag axis as a line
+    let (mut idle, mut picked) = (Tris::default(), Tris::default());
+    for (i, h) in input.handles.iter().enumerate() {
+        let sel = input.selected == Some(i);
+        let r = extent * if sel { 0.014 } else { 0.01 };
+        tessellate::cuboid(if sel { &mut picked } else { &mut idle }, std::array::from_fn(|c| *h + DVec3::new(bit(c, 0), bit(c, 1), bit(c, 2)) * r));
+        if let (true, Some(k)) = (sel, input.axis) {
+            let dir = DVec3::from_array(std::array::from_fn(|j| if j == k { extent } else { 0.0 }));
+            line(&mut g.lines, *h - dir, *h + dir, AXES[k]);
+        }
+    }
+    push_tris(&mut g.solid, &idle, HANDLE);
+    push_tris(&mut g.solid, &picked, HANDLE_SELECTED);
     g
 }
 
@@ -324,7 +348,7 @@ mod tests {
         let pieces = trajectory_polylines(traj, &logic::strip(&report));
         let pose = traj.pose_at(0.3);
         let states = cable_states(&s, &pose);
-        let g = build(&SceneInput { scenario: &s, pose: Some(pose), cables: &states, trajectory: &pieces, path: None });
+        let g = build(&SceneInput { scenario: &s, pose: Some(pose), cables: &states, trajectory: &pieces, path: None, handles: &[], selected: None, axis: None });
         assert_eq!(g.solid.len() % STRIDE, 0);
         assert_eq!(g.lines.len() % (2 * STRIDE), 0);
         // the platform box and the three obstacles, translucent
@@ -337,7 +361,7 @@ mod tests {
         assert!(solid.contains(&GREEN), "the feasible section");
         assert!(!solid.contains(&PATH), "no path given");
         // without a pose: no cables, no platform
-        let bare = build(&SceneInput { scenario: &s, pose: None, cables: &[], trajectory: &[], path: None });
+        let bare = build(&SceneInput { scenario: &s, pose: None, cables: &[], trajectory: &[], path: None, handles: &[], selected: None, axis: None });
         assert!(bare.solid.len() < g.solid.len());
         assert!(!colours(&bare.solid).contains(&RED));
     }
