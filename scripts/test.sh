@@ -10,6 +10,9 @@
 #                                      against the CLI that step 1 built)
 #   7. tests/browser/e2e-view.mjs      the page's 3-D view, plots, exports and planning end to end
 #                                      (compares with the CLI: builds the release binary if missing)
+#   8. tests/browser/e2e-workbench.mjs the layout at 1366×768 and 390×844, dragging a via point in
+#                                      3-D (against the CLI), undo/redo, planning in a Web Worker
+#                                      while typing and orbiting
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -42,5 +45,8 @@ node tests/browser/e2e-edit.mjs target/page
 
 step "browser end-to-end test of the analysis area"
 node tests/browser/e2e-view.mjs target/page
+
+step "browser end-to-end test of the workbench (layout, drag, undo, workers)"
+node tests/browser/e2e-workbench.mjs target/page
 
 step "all tests passed in $((SECONDS - started)) s"

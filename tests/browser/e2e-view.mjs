@@ -190,7 +190,7 @@ await test('the WebGL canvas draws the scene, the sections in green and red, and
   if (zoomed.drawn <= orbited.drawn) throw new Error(`zooming in did not enlarge the scene: ${orbited.drawn} → ${zoomed.drawn}`);
   // resize with the page
   k = await draws(page);
-  await page.setViewportSize({ width: 800, height: 900 });
+  await page.setViewportSize({ width: 1000, height: 900 }); // narrower, still the wide layout (side panel beside the view)
   await waitDraws(page, k + 1);
   const resized = await pixels(page);
   if (resized.width >= before.width) throw new Error(`canvas did not shrink with the page: ${before.width} → ${resized.width}`);

@@ -113,6 +113,7 @@ for (const [w, h] of [[1366, 768], [390, 844]]) {
     await page.screenshot({ path: join(artifacts, `layout-${w}x${h}.png`) });
     // the editor's sections open: still nothing wider than the viewport
     for (const d of await page.$$('[data-testid="scenario-editor"] details:not([open]) > summary')) await d.click();
+    await page.evaluate(() => window.scrollTo(0, 0));
     await checkLayout(page, `${w}×${h}, editor open`).catch(async (e) => { await page.screenshot({ path: join(artifacts, `layout-${w}x${h}-open.png`), fullPage: true }); throw e; });
     await page.screenshot({ path: join(artifacts, `layout-${w}x${h}-full.png`), fullPage: true });
     // embed mode: the view and the strip only
@@ -132,6 +133,29 @@ const context = await browser.newContext({ viewport: { width: 1366, height: 768 
 const problems = watchProblems(context);
 const page = await context.newPage();
 await page.goto(`${base}/`, { waitUntil: 'load' });
+
+await test('honest visuals: a hovered boundary shows its clearance tubes in 3-D; the clearance plot marks samples and certified boundaries', async () => {
+  await pickPreset(page, 'cdpr7-tree');
+  const scenario = JSON.parse(await source(page));
+  const canvas = page.locator('canvas[data-testid="view3d"]');
+  const tick = page.locator('svg[data-testid="strip"] [data-testid="boundary"]').first();
+  const label = await tick.locator('title').textContent();
+  const cable = /cable (\d+) - /.exec(label)?.[1];
+  if (!cable) throw new Error(`expected a cable–obstacle boundary: ${label}`);
+  await tick.hover();
+  const want = `${cable}:${scenario.clearance.cable_obstacle}`;
+  await page.waitForFunction((w) => document.querySelector('canvas[data-testid="view3d"]').dataset.tubes === w, want, { timeout: TIMEOUT });
+  await page.screenshot({ path: join(artifacts, 'boundary-tubes.png') });
+  await page.mouse.move(5, 5);
+  await page.waitForFunction(() => document.querySelector('canvas[data-testid="view3d"]').dataset.tubes === '', null, { timeout: TIMEOUT });
+  const ticks = await page.locator('svg[data-testid="strip"] [data-testid="boundary"]').count();
+  const certified = await page.locator('[data-testid="distance-certified"]').count();
+  const samples = await page.locator('[data-testid="distance-sample"]').count();
+  if (certified !== ticks) throw new Error(`${certified} certified boundaries on the clearance plot for ${ticks} in the strip`);
+  if (samples < 100) throw new Error(`only ${samples} sample marks on the clearance plot`);
+  problems.assertNone();
+  return `tubes ${want} while hovering "${label}"; clearance plot: ${certified} certified boundary, ${samples} samples marked`;
+});
 
 await test('dragging a via point of cdpr7-tree "quadratic" re-verifies as the CLI does, and the editor follows', async () => {
   await pickPreset(page, 'cdpr7-tree');
@@ -224,13 +248,20 @@ await test('undo restores the previous scenario exactly; redo and Reset too', as
 });
 
 await test('a long planning run in a worker: typing and orbiting meanwhile, worst frame under 50 ms, typed text kept', async () => {
+  // Robocrane's q1 → q2 with no coordinate fixed: the 6-D search runs for minutes
   await pickPreset(page, 'robocrane');
-  await page.selectOption('select[data-testid="plan-query"]', 'q5-q6');
-  await page.waitForFunction(() => !document.querySelector('[data-testid="plan-run"]').disabled, null, { timeout: TIMEOUT });
-  // the editor's JSON box (an editor field whose typing does not change the scenario until applied)
+  const scenario = JSON.parse(await source(page));
+  scenario.queries.push({ name: 'q1-q2 6-D', start: 'q1', goal: 'q2', fixed: [] });
   const details = page.locator('details.editor');
   if (!(await details.evaluate((d) => d.open))) await details.locator('summary').click();
   const box = page.locator('textarea[data-testid="source"]');
+  await box.fill(JSON.stringify(scenario, null, 1));
+  await page.click('button[data-testid="apply"]');
+  await page.waitForSelector('section[data-testid="result"][data-origin="edited"]', { timeout: TIMEOUT });
+  await page.selectOption('select[data-testid="plan-query"]', 'q1-q2 6-D');
+  await page.waitForFunction(() => !document.querySelector('[data-testid="plan-run"]').disabled, null, { timeout: TIMEOUT });
+  // the editor's JSON box is the field typed into: typing there does not change the scenario
+  // until it is applied, so the run goes on
   await page.click('[data-testid="plan-run"]');
   await page.waitForSelector('[data-testid="plan-status"][data-state="running"]', { state: 'attached', timeout: TIMEOUT });
   // wait until the worker reports progress: the run is under way off the main thread
@@ -255,16 +286,17 @@ await test('a long planning run in a worker: typing and orbiting meanwhile, wors
   const frames = await stopFrames(page);
   const drawsAfter = Number(await canvas.getAttribute('data-draws'));
   const text = await box.inputValue();
+  const status = await page.textContent('[data-testid="plan-status"]');
+  if (states.some((s) => s !== 'running')) throw new Error(`the run was not going all along: ${states}; ${status}`);
   await page.click('[data-testid="plan-cancel"]');
   await page.waitForSelector('[data-testid="plan-status"][data-state="cancelled"]', { state: 'attached', timeout: TIMEOUT });
   if (!text.endsWith(typed)) throw new Error(`typed text lost: …${JSON.stringify(text.slice(-40))}`);
-  if (states.some((s) => s !== 'running')) throw new Error(`the run was not going all along: ${states}`);
   if (drawsAfter <= drawsBefore) throw new Error('orbiting did not redraw the view');
   const f = stats(frames);
   writeFileSync(join(artifacts, 'planning-frames.json'), JSON.stringify(frames));
   if (f.worst >= FRAME_LIMIT_MS) throw new Error(`worst frame ${f.worst.toFixed(1)} ms while planning (median ${f.median.toFixed(1)} over ${f.n}): ${frames.map((x) => x.toFixed(0)).join(' ')}`);
   problems.assertNone();
-  return `${f.n} frames while typing and orbiting during the run: median ${f.median.toFixed(1)} ms, worst ${f.worst.toFixed(1)} ms; ${drawsAfter - drawsBefore} redraws`;
+  return `${status.trim()}; ${f.n} frames while typing and orbiting during the run: median ${f.median.toFixed(1)} ms, worst ${f.worst.toFixed(1)} ms; ${drawsAfter - drawsBefore} redraws`;
 });
 
 await browser.close();

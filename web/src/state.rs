@@ -231,6 +231,12 @@ pub struct PageState {
     pub history: Undo,
 }
 
+/// The strip's boundary the user points at (hover, focus or tap), if any: the 3-D view shows the
+/// platform there with the clearance tubes of the boundary's constraint. Provided as context by
+/// the workbench, read by the strip's ticks.
+#[derive(Clone, Copy)]
+pub struct Focus(pub RwSignal<Option<crate::logic::Tick>>);
+
 #[cfg(test)]
 mod tests {
     use super::*;

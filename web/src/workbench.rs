@@ -4,7 +4,8 @@
 //! everything else through the core.
 
 use crate::results::{ResultTables, StripResult};
-use crate::state::{Follow, PageState, Parsed, Planned, Shared};
+use crate::logic::Tick;
+use crate::state::{Focus, Follow, PageState, Parsed, Planned, Shared};
 use crate::logic::{self, fmt_num, StripModel};
 use crate::planning::Planning;
 use crate::plots::distance::DistancePlot;
@@ -129,6 +130,7 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
     let selected = RwSignal::new(None::<usize>);
     let constraint = RwSignal::new(Constraint::View);
     let update_ms = RwSignal::new(None::<f64>);
+    let drag_active = RwSignal::new(false);
     let nudge_step = RwSignal::new(0.05f64);
     // a new scenario or trajectory with fewer handles drops a selection past the end
     Effect::new(move |_| {
@@ -161,8 +163,12 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
     let path_piece: Memo<Option<Shared<Polyline>>> =
         Memo::new(move |_| planned.get().map(|p| Shared::new(Polyline { colour: PATH, poses: p.0.poses.clone() })));
 
+    // a boundary pointed at in the strip: the platform goes there, with its clearance tubes
+    let focus = RwSignal::new(None::<Tick>);
+    provide_context(Focus(focus));
+    let focused = move || focus.get().filter(|_| follow.get() == Follow::Trajectory);
     let shown_pose: Memo<Option<Pose>> = Memo::new(move |_| {
-        let u = scrub.get();
+        let u = focused().map_or_else(|| scrub.get(), |t| t.t);
         followed(parsed, planned, follow, trajectory, |_, path| path.pose_at(u))
     });
 
@@ -171,6 +177,7 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         let s = scenario_of(&parsed)?;
         let pose = shown_pose.get();
         let cables = pose.map(|p| profile::cable_states(s, &p)).unwrap_or_default();
+        let tubes = focused().map(|t| scene::clearance_tubes(s, &t.constraint)).unwrap_or_default();
         let pieces = trajectory_pieces.get();
         let path = path_piece.get();
         let points: Vec<DVec3> = handle_list.with(|h| h.iter().map(|h| DVec3::from_array(h.at)).collect());
@@ -187,6 +194,7 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
             handles: &points,
             selected: selected.get(),
             axis,
+            tubes: &tubes,
         });
         let sections = strip
             .get()
@@ -198,16 +206,24 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
             sections,
             cables: cables.iter().map(|c| scene::cable_look(c).0).collect::<Vec<_>>().join(" "),
             path_poses: path.map_or(0, |p| p.0.poses.len()),
+            tubes: tubes.iter().map(|(i, r)| format!("{}:{}", i + 1, logic::fmt_exact(*r))).collect::<Vec<_>>().join(" "),
         }))
     });
 
-    let profile_data = Memo::new(move |_| {
+    // the plots follow a drag at its end (the strip and the view follow every move)
+    let profile_data = Memo::new(move |prev: Option<&Option<_>>| {
+        if let (true, Some(p)) = (drag_active.get(), prev) {
+            return p.clone();
+        }
         followed(parsed, planned, follow, trajectory, |s, path| {
             let r = profile::clearances_at(s, &path.samples(PLOT_SAMPLES)).map_err(|e| e.to_string());
             Some(Shared::new((r, format!("{}; x: {}", path.name(), path.param()))))
         })
     });
-    let envelope = Memo::new(move |_| {
+    let envelope = Memo::new(move |prev: Option<&Option<_>>| {
+        if let (true, Some(p)) = (drag_active.get(), prev) {
+            return p.clone();
+        }
         followed(parsed, planned, follow, trajectory, |s, path| {
             let r = profile::tension_at(s, &path.name(), &path.samples(PLOT_SAMPLES)).map_err(|e| e.to_string());
             Some(Shared::new((r, path.param())))
@@ -267,6 +283,7 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
             if let (Some(grip), Some(doc)) = (grip, doc) {
                 history.begin_batch();
                 dragging.set_value(Some((grip, doc)));
+                drag_active.set(true);
             }
         }
         HandleEvent::Move(_, to) => {
@@ -289,6 +306,7 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         }
         HandleEvent::End => {
             dragging.set_value(None);
+            drag_active.set(false);
             history.end_batch();
         }
     });
@@ -488,6 +506,10 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
                 <DistancePlot
                     profile=Signal::derive(move || profile_data.get().map(|p| p.0.0.clone()))
                     label=Signal::derive(move || profile_data.get().map(|p| p.0.1.clone()).unwrap_or_default())
+                    certified=Signal::derive(move || match (follow.get(), strip.get()) {
+                        (Follow::Trajectory, Some(m)) => m.ticks.iter().map(|t| (t.t, t.label.clone())).collect(),
+                        _ => vec![],
+                    })
                 />
             </div>
             <div class="panel wide" data-testid="panel-tension">

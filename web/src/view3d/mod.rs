@@ -29,6 +29,8 @@ pub struct SceneView {
     pub cables: String,
     /// Poses in the drawn planned path (0: none).
     pub path_poses: usize,
+    /// The clearance tubes drawn, `cable:radius` (1-based cables) joined by spaces (`data-tubes`).
+    pub tubes: String,
 }
 
 /// The canvas's mutable state, shared by its event handlers.
@@ -232,6 +234,7 @@ pub fn View3d(scene: Memo<Option<Shared<SceneView>>>, handles: Handles) -> impl 
                 data-sections=attr(|v| v.sections.clone())
                 data-cables=attr(|v| v.cables.clone())
                 data-path-poses=attr(|v| v.path_poses.to_string())
+                data-tubes=attr(|v| v.tubes.clone())
                 on:pointerdown=move |ev: web_sys::PointerEvent| {
                     let Some(c) = canvas_ref.get_untracked() else { return };
                     let pan = ev.button() == 2 || ev.shift_key();

@@ -39,29 +39,27 @@ pub fn parallelism() -> usize {
     web_sys::window().map_or(1.0, |w| w.navigator().hardware_concurrency()).clamp(1.0, 8.0) as usize
 }
 
-/// The absolute URLs of the page's JS module and its wasm, from the preload links that both
-/// builds write into the page (`<link rel="modulepreload">`, `<link rel="preload" as="fetch">`).
-fn module_urls() -> Result<(String, String), String> {
+/// The absolute URL of the page's JS module, from the preload link that both builds write into
+/// the page (`<link rel="modulepreload">`).
+fn module_url() -> Result<String, String> {
     let doc = web_sys::window().and_then(|w| w.document()).ok_or("no document")?;
     let base = doc.base_uri().ok().flatten().ok_or("no base URI")?;
-    let href = |selector: &str| -> Result<String, String> {
-        let rel = doc
-            .query_selector(selector)
-            .ok()
-            .flatten()
-            .and_then(|e| e.get_attribute("href"))
-            .ok_or_else(|| format!("the page has no {selector} link to start a worker from"))?;
-        web_sys::Url::new_with_base(&rel, &base).map(|u| u.href()).map_err(|_| format!("bad URL {rel}"))
-    };
-    Ok((href("link[rel=modulepreload][href$='.js']")?, href("link[rel=preload][href$='.wasm']")?))
+    let rel = doc
+        .query_selector("link[rel=modulepreload][href$='.js']")
+        .ok()
+        .flatten()
+        .and_then(|e| e.get_attribute("href"))
+        .ok_or("the page has no modulepreload link to start a worker from")?;
+    web_sys::Url::new_with_base(&rel, &base).map(|u| u.href()).map_err(|_| format!("bad URL {rel}"))
 }
 
 /// Starts `job` in a new worker; `on_reply` gets its replies (the last one final: not
 /// [`Reply::Progress`]). A worker that fails to start or crashes gives a [`Reply::Failed`].
 pub fn start(job: &Job, mut on_reply: impl FnMut(Reply) + 'static) -> Result<Running, String> {
-    let (js, wasm) = module_urls()?;
-    // the page's module, started again: `main` finds no window and serves jobs (worker::serve)
-    let source = format!("import init from {js:?};\nawait init({{ module_or_path: {wasm:?} }});\n");
+    let js = module_url()?;
+    // the page's module, started again from the page's compiled wasm module (posted first, so the
+    // worker neither fetches nor compiles it again): `main` finds no window and serves jobs
+    let source = format!("import init from {js:?};\nself.onmessage = (e) => {{ self.onmessage = null; init({{ module_or_path: e.data }}); }};\n");
     let parts = js_sys::Array::of1(&JsValue::from_str(&source));
     let kind = web_sys::BlobPropertyBag::new();
     kind.set_type("text/javascript");
@@ -95,5 +93,6 @@ pub fn start(job: &Job, mut on_reply: impl FnMut(Reply) + 'static) -> Result<Run
     });
     worker.set_onmessage(Some(onmessage.as_ref().unchecked_ref()));
     worker.set_onerror(Some(onerror.as_ref().unchecked_ref()));
+    worker.post_message(&wasm_bindgen::module()).map_err(|e| format!("cannot send the module to the worker: {e:?}"))?;
     Ok(Running { worker, script_url, _onmessage: onmessage, _onerror: onerror })
 }

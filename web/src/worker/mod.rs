@@ -1,8 +1,8 @@
 //! Heavy work off the main thread. The page's own wasm module is started a second time in a
-//! dedicated Web Worker (a module worker whose script imports the page's JS and inits the same
-//! `.wasm`; `main` sees no `window` and calls [`serve`] instead of mounting the page), so both
-//! builds (scripts/build-page.sh and trunk) produce the worker with no extra file and no extra
-//! page weight.
+//! dedicated Web Worker (a module worker whose script imports the page's JS and inits it with the
+//! page's already compiled `WebAssembly.Module`, posted to it; `main` sees no `window` and calls
+//! [`serve`] instead of mounting the page), so both builds (scripts/build-page.sh and trunk)
+//! produce the worker with no extra file and no extra page weight.
 //!
 //! [`protocol`] holds the jobs and replies (JSON over `postMessage`) and [`jobs`] runs them —
 //! plain Rust, tested natively; [`host`] starts workers from the page and [`serve`] is the
