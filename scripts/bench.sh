@@ -237,6 +237,9 @@ TOTAL_GZ=$(sed -nE 's/.*wasm\+js gzip ([0-9]+) B.*/\1/p' <<<"$WEIGHT")
   awk -v b="$TOTAL_GZ" 'BEGIN { printf "| target | measured | |\n|---|---|---|\n| wasm + js ≤ 1.5 MB gzip | %.2f MB (%d B) | %s |\n", b / 1e6, b, (b <= 1500000 ? "yes" : "**no**") }'
 } >> "$TMP/benchmarks.md"
 
+say "page drag updates: tests/browser/bench-drag.mjs (headless Chromium)"
+node tests/browser/bench-drag.mjs "$TMP/page" >> "$TMP/benchmarks.md"
+
 if [ "$WRITE" = 1 ]; then
   cp "$TMP/benchmarks.md" "$OUT"
   say "wrote $OUT"
