@@ -12,12 +12,11 @@
 //   the worst frame stays under 50 ms and the typed text is kept.
 // Ends with "N passed, M failed"; exits 1 on failure.
 
-import { execFileSync } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, writeFileSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { launchChromium, readSections, requirePage, runner, serve, watchProblems } from './harness.mjs';
+import { cliSections, cliVerify as cliVerifyAt, launchChromium, readSections, requirePage, runner, serve, watchProblems } from './harness.mjs';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const root = resolve(here, '..', '..');
@@ -27,16 +26,7 @@ const scratch = mkdtempSync(join(tmpdir(), 'cablenav-wb-'));
 const TIMEOUT = 60_000;
 const FRAME_LIMIT_MS = 50;
 
-const cliPath = join(root, 'target', 'release', 'cablenav');
-function cliVerify(file, trajectory) {
-  if (!existsSync(cliPath)) execFileSync('cargo', ['build', '--release', '-q', '--bin', 'cablenav'], { cwd: root, stdio: 'inherit' });
-  return JSON.parse(execFileSync(cliPath, ['verify', file, '--trajectory', trajectory, '--json'], { cwd: root, encoding: 'utf8' }));
-}
-function cliSections(report) {
-  const out = [];
-  for (const kind of ['feasible', 'infeasible', 'uncertain']) for (const [t0, t1] of report[kind]) out.push({ kind, t0, t1 });
-  return out.sort((a, b) => a.t0 - b.t0 || a.t1 - b.t1);
-}
+const cliVerify = (file, trajectory) => cliVerifyAt(root, file, trajectory);
 async function stripSections(page) {
   return (await readSections(page)).map(({ kind, t0, t1 }) => ({ kind, t0, t1 })).sort((a, b) => a.t0 - b.t0 || a.t1 - b.t1);
 }
