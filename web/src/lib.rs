@@ -1,5 +1,5 @@
 //! The cablenav web page (Leptos, client-side rendering). `state` holds the page's state types,
-//! `app` the page and its result components, `editor` the scenario editor, `persist` sharing and
+//! `app` the page and its top bar, `editor` the scenario editor, `persist` sharing and
 //! autosave, `help` the help panel, `workbench` the analysis area (`view3d` the WebGL view,
 //! `plots` the SVG plots, `planning` the planning controls), `results` the verdict's strip and
 //! tables, `worker` the Web Workers that run planning and slice maps; `logic` and
