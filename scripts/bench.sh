@@ -2,8 +2,13 @@
 # Benchmarks exact verification against the point-wise baseline and the planner on the Robocrane
 # queries, natively and as wasm in node, measures the page weight (scripts/build-page.sh), and
 # (re)writes docs/benchmarks.md with the machine, the commands and the numbers.
-#   scripts/bench.sh             run both benchmarks, write docs/benchmarks.md
-#   scripts/bench.sh --no-write  run both, print the results, leave docs/benchmarks.md alone
+#   scripts/bench.sh                  run both benchmarks, write docs/benchmarks.md
+#   scripts/bench.sh --no-write       run both, print the results, leave docs/benchmarks.md alone
+#   scripts/bench.sh --before REF     also run the native benchmark of commit REF (e.g. main) in the
+#                                     same run, right before this one: a "before" column and ratios
+#   scripts/bench.sh --lattice        only the ray lattice cases (examples/bench/lattice.rs), native and
+#                                     wasm; rewrites only the "Ray lattice" section of docs/benchmarks.md
+#   (--no-write and --before combine)
 # Needs the wasm tools from scripts/install.sh (wasm32 target, wasm-bindgen-test-runner 0.2.130).
 # Timings are wall-clock: run it on an otherwise idle machine (the load average is recorded).
 set -euo pipefail
@@ -11,11 +16,56 @@ cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
 
 WRITE=1
-[ "${1:-}" = "--no-write" ] && WRITE=0
+BEFORE=""
+LATTICE_ONLY=0
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --no-write) WRITE=0 ;;
+    --before) BEFORE="$2"; shift ;;
+    --lattice) LATTICE_ONLY=1 ;;
+    *) echo "usage: scripts/bench.sh [--no-write] [--before REF] | --lattice" >&2; exit 2 ;;
+  esac
+  shift
+done
 OUT=docs/benchmarks.md
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 say() { printf '[bench] %s\n' "$*" >&2; }
+
+LATTICE_NATIVE_CMD="cargo run --release --example bench -- lattice"
+LATTICE_WASM_CMD="CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner cargo test --release --target wasm32-unknown-unknown --features bench --test bench_wasm -- --nocapture bench_wasm_lattice"
+# The ray lattice section (Table 3.2 and lattice planning) from BENCH lines in "$1", to stdout.
+lattice_section() {
+  awk -v date="$(date -u '+%Y-%m-%d %H:%M UTC')" -v load_before="$2" -v load_after="$3" \
+      -v commit="$(git rev-parse --short HEAD 2>/dev/null || echo unknown)" \
+      -v native_cmd="$LATTICE_NATIVE_CMD" -v wasm_cmd="$LATTICE_WASM_CMD" \
+      -f scripts/bench-lattice-section.awk "$1"
+}
+# The ray lattice cases, native then wasm, into "$1".
+run_lattice() {
+  cargo run -q --release --example bench -- lattice > "$1"
+  CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
+    cargo test -q --release --target wasm32-unknown-unknown --features bench --test bench_wasm -- --nocapture bench_wasm_lattice >> "$1"
+}
+if [ "$LATTICE_ONLY" = 1 ]; then
+  say "building (release, native and wasm32)"
+  cargo build --release --example bench >&2
+  cargo test --release --target wasm32-unknown-unknown --features bench --test bench_wasm --no-run >&2
+  before=$(cut -d' ' -f1-3 /proc/loadavg)
+  say "ray lattice cases: $LATTICE_NATIVE_CMD; $LATTICE_WASM_CMD"
+  run_lattice "$TMP/lattice.txt"
+  after=$(cut -d' ' -f1-3 /proc/loadavg)
+  grep '^BENCH ' "$TMP/lattice.txt" >&2 || true
+  lattice_section "$TMP/lattice.txt" "$before" "$after" > "$TMP/section.md"
+  if grep -q '<!-- lattice:begin' "$OUT"; then
+    awk -v f="$TMP/section.md" '/<!-- lattice:begin/ { while ((getline l < f) > 0) print l; skip = 1; next } /<!-- lattice:end -->/ { skip = 0; next } !skip' "$OUT" > "$TMP/out.md"
+  else
+    { cat "$OUT"; echo; cat "$TMP/section.md"; } > "$TMP/out.md"
+  fi
+  cp "$TMP/out.md" "$OUT"
+  say "wrote the ray lattice section of $OUT"
+  exit 0
+fi
 
 NATIVE_CMD="cargo run --release --example bench"
 # The wasm benchmark is a wasm-bindgen test behind the `bench` feature (so the ordinary
@@ -27,9 +77,28 @@ WASM_CMD="CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner ca
 # Build first, so that compiling does not overlap the measurements.
 say "building (release, native and wasm32)"
 cargo build --release --example bench >&2
+BEFORE_ID=""
+if [ -n "$BEFORE" ]; then
+  # the same benchmark at commit REF, exported to and built in target/bench-before/ (kept, so a
+  # rerun rebuilds nothing)
+  BEFORE_ID=$(git rev-parse --short "$BEFORE")
+  say "building the benchmark of $BEFORE ($BEFORE_ID) in target/bench-before"
+  SRC="target/bench-before/src-$BEFORE_ID"
+  if [ ! -d "$SRC" ]; then
+    mkdir -p "$SRC"
+    git archive "$BEFORE_ID" | tar -x -C "$SRC"
+  fi
+  CARGO_TARGET_DIR="$PWD/target/bench-before/target" cargo build --release --example bench --manifest-path "$SRC/Cargo.toml" >&2
+fi
 cargo test --release --target wasm32-unknown-unknown --features bench --test bench_wasm --no-run >&2
 
 LOAD_BEFORE=$(cut -d' ' -f1-3 /proc/loadavg)
+if [ -n "$BEFORE" ]; then
+  say "native benchmark of $BEFORE_ID"
+  target/bench-before/target/release/examples/bench | sed 's/^BENCH native /BENCH before /' > "$TMP/before.txt"
+else
+  : > "$TMP/before.txt"
+fi
 say "native benchmark: $NATIVE_CMD"
 cargo run -q --release --example bench > "$TMP/native.txt"
 say "wasm benchmark (node): $WASM_CMD"
@@ -37,9 +106,9 @@ CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
   cargo test --release --target wasm32-unknown-unknown --features bench --test bench_wasm -- --nocapture > "$TMP/wasm.txt"
 LOAD_AFTER=$(cut -d' ' -f1-3 /proc/loadavg)
 
-grep -h '^BENCH ' "$TMP/native.txt" "$TMP/wasm.txt" > "$TMP/all.txt"
-n_native=$(grep -c '^BENCH native ' "$TMP/all.txt" || true)
-n_wasm=$(grep -c '^BENCH wasm ' "$TMP/all.txt" || true)
+grep -h '^BENCH ' "$TMP/before.txt" "$TMP/native.txt" "$TMP/wasm.txt" > "$TMP/all.txt"
+n_native=$(grep '^BENCH native ' "$TMP/all.txt" | grep -vc ' lattice/' || true)
+n_wasm=$(grep '^BENCH wasm ' "$TMP/all.txt" | grep -vc ' lattice/' || true)
 if [ "$n_native" -ne 18 ] || [ "$n_wasm" -ne 18 ]; then
   say "expected 18 native and 18 wasm results, got $n_native and $n_wasm:"
   cat "$TMP/native.txt" "$TMP/wasm.txt" >&2
@@ -56,7 +125,7 @@ COMMIT=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 if [ -n "$(git status --porcelain --untracked-files=no 2>/dev/null)" ]; then COMMIT="$COMMIT (with uncommitted changes)"; fi
 DATE=$(date -u '+%Y-%m-%d %H:%M UTC')
 
-awk -v nproc="$(nproc)" -v cpu="$CPU" -v mhz="$MHZ" -v rustc="$RUSTC" -v node="$NODE" -v runner="$RUNNER" \
+awk -v before_id="$BEFORE_ID" -v nproc="$(nproc)" -v cpu="$CPU" -v mhz="$MHZ" -v rustc="$RUSTC" -v node="$NODE" -v runner="$RUNNER" \
     -v commit="$COMMIT" -v date="$DATE" -v load_before="$LOAD_BEFORE" -v load_after="$LOAD_AFTER" \
     -v native_cmd="$NATIVE_CMD" -v wasm_cmd="$WASM_CMD" '
 function us(x) { # a time given in microseconds, readably
@@ -66,6 +135,7 @@ function us(x) { # a time given in microseconds, readably
 }
 function ratio(a, b) { return (b > 0) ? sprintf("%.2f×", a / b) : "–" }
 function yes(ok) { return ok ? "**met**" : "**missed**" }
+$2 == "before" { med[$2, $3] = $4; best[$2, $3] = $5; summ_before[$3] = $8; next }
 { med[$2, $3] = $4; best[$2, $3] = $5; calls[$2, $3] = $6; samples[$2, $3] = $7; summ[$3] = $8 }
 END {
   n = split("tree/quadratic/exact tree/quadratic/pointwise-0.01 tree/quadratic/pointwise-0.001 cdpr7/quadratic/exact cdpr7/quadratic/pointwise-0.001 box/linear/exact box/linear/pointwise-0.001 box/ray-fig310-x/exact crane/pose-wrench crane/q1-q2/exact crane/q1-q2/pointwise-0.001 crane/tilt/exact crane/tilt/pointwise-0.001 crane/slice-400", cases, " ")
@@ -102,6 +172,7 @@ END {
   print "| node | " node " |"
   print "| wasm runner | " runner " |"
   print "| cablenav | commit " commit " |"
+  if (before_id != "") print "| before | commit " before_id ", native, run right before the rest (same machine, same load) |"
   print ""
   print "The machine is a shared 2-core VM; other jobs may have been running (see the load average), which"
   print "inflates wall-clock times. The medians are robust to short interruptions but not to sustained"
@@ -127,12 +198,22 @@ END {
   print ""
   print "## Results"
   print ""
-  print "| case | native median | native best | wasm median | wasm best | wasm / native (median) | calls (native / wasm) | result |"
-  print "|---|---:|---:|---:|---:|---:|---:|---|"
+  if (before_id != "") {
+    print "| case | native median | native best | before (" before_id ") median | before best | before / after (median) | wasm median | wasm best | wasm / native (median) | calls (native / wasm) | result |"
+    print "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
+  } else {
+    print "| case | native median | native best | wasm median | wasm best | wasm / native (median) | calls (native / wasm) | result |"
+    print "|---|---:|---:|---:|---:|---:|---:|---|"
+  }
   for (i = 1; i <= n; i++) {
     c = cases[i]
     r = summ[c]; gsub(";", ", ", r); gsub("=", " ", r)
-    printf "| %s | %s | %s | %s | %s | %s | %d / %d | %s |\n", what[c], us(med["native", c]), us(best["native", c]), us(med["wasm", c]), us(best["wasm", c]), ratio(med["wasm", c], med["native", c]), calls["native", c], calls["wasm", c], r
+    if (before_id != "") {
+      if (summ_before[c] != "" && summ_before[c] != summ[c]) r = r " (before: " summ_before[c] ")"
+      printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %d / %d | %s |\n", what[c], us(med["native", c]), us(best["native", c]), us(med["before", c]), us(best["before", c]), ratio(med["before", c], med["native", c]), us(med["wasm", c]), us(best["wasm", c]), ratio(med["wasm", c], med["native", c]), calls["native", c], calls["wasm", c], r
+    } else {
+      printf "| %s | %s | %s | %s | %s | %s | %d / %d | %s |\n", what[c], us(med["native", c]), us(best["native", c]), us(med["wasm", c]), us(best["wasm", c]), ratio(med["wasm", c], med["native", c]), calls["native", c], calls["wasm", c], r
+    }
   }
   print ""
   agree = (summ["tree/quadratic/exact"] == summ["tree/quadratic/pointwise-0.01"] && summ["tree/quadratic/exact"] == summ["tree/quadratic/pointwise-0.001"] && summ["cdpr7/quadratic/exact"] == summ["cdpr7/quadratic/pointwise-0.001"] && summ["box/linear/exact"] == summ["box/linear/pointwise-0.001"])
@@ -236,6 +317,13 @@ TOTAL_GZ=$(sed -nE 's/.*wasm\+js gzip ([0-9]+) B.*/\1/p' <<<"$WEIGHT")
   echo
   awk -v b="$TOTAL_GZ" 'BEGIN { printf "| target | measured | |\n|---|---|---|\n| wasm + js ≤ 1.5 MB gzip | %.2f MB (%d B) | %s |\n", b / 1e6, b, (b <= 1500000 ? "yes" : "**no**") }'
 } >> "$TMP/benchmarks.md"
+
+# The ray lattice section, in the same run.
+say "ray lattice cases"
+L_BEFORE=$(cut -d' ' -f1-3 /proc/loadavg)
+cargo run -q --release --example bench -- lattice > "$TMP/lattice.txt"
+grep ' lattice/' "$TMP/wasm.txt" >> "$TMP/lattice.txt" || true
+{ echo; lattice_section "$TMP/lattice.txt" "$L_BEFORE" "$(cut -d' ' -f1-3 /proc/loadavg)"; } >> "$TMP/benchmarks.md"
 
 say "page drag updates: tests/browser/bench-drag.mjs (headless Chromium)"
 node tests/browser/bench-drag.mjs "$TMP/page" >> "$TMP/benchmarks.md"

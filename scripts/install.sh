@@ -2,7 +2,8 @@
 # Installs every tool cablenav needs, idempotently and pinned. Safe to run again: each step
 # checks first and does nothing when the right version is already there.
 #   scripts/install.sh            tools for the tests (wasm target, wasm-bindgen, wasm-pack, chromium,
-#                                 chromium-driver, playwright-core)
+#                                 chromium-driver, playwright-core, and a Python virtual environment
+#                                 target/venv with maturin, pytest and dask[distributed])
 #   scripts/install.sh --serve    also trunk, for `scripts/serve.sh`
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,6 +12,8 @@ WASM_BINDGEN_VERSION=0.2.130   # must match the `wasm-bindgen = "=0.2.130"` pin 
 WASM_PACK_VERSION=0.15.1
 TRUNK_VERSION=0.21.14          # 0.22 needs a newer rustc than these machines have
 PLAYWRIGHT_CORE_VERSION=1.64.1
+# The Python package's build and tests (python/): pinned, installed into target/venv.
+PYTHON_TOOLS=(maturin==1.16.0 pytest==9.2.0 "dask[distributed]==2026.8.0")
 
 say() { printf '[install] %s\n' "$*" >&2; }
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -71,5 +74,23 @@ if [ ! -f tests/browser/node_modules/playwright-core/package.json ] || \
    ! grep -q "\"version\": \"$PLAYWRIGHT_CORE_VERSION\"" tests/browser/node_modules/playwright-core/package.json; then
   say "installing playwright-core $PLAYWRIGHT_CORE_VERSION (npm; drives Debian's chromium, downloads no browser)"
   (cd tests/browser && PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm install --no-audit --no-fund --no-package-lock --silent)
+fi
+VENV=target/venv
+if [ ! -x "$VENV/bin/python" ]; then
+  say "creating the Python virtual environment $VENV"
+  python3 -m venv "$VENV"
+fi
+if ! "$VENV/bin/python" - "${PYTHON_TOOLS[@]}" <<'PY' 2>/dev/null
+import sys
+from importlib.metadata import version
+for spec in sys.argv[1:]:
+    name, wanted = spec.split("==")
+    if version(name.split("[")[0]) != wanted:
+        sys.exit(1)
+import distributed  # the [distributed] extra
+PY
+then
+  say "installing ${PYTHON_TOOLS[*]} into $VENV (pip, PyPI)"
+  "$VENV/bin/python" -m pip install --quiet --disable-pip-version-check "${PYTHON_TOOLS[@]}"
 fi
 say "tools ready"

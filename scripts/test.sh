@@ -2,6 +2,8 @@
 # README command 2: every test. Installs what is missing (scripts/install.sh), then runs, stopping
 # at the first failure:
 #   1. cargo test --workspace          native unit, integration and doc tests (core + web logic)
+#   1b. fuzz/ on stable            1e5 seeded inputs per fuzz target (scenario, verify, CASPR, URL
+#                                      fragment), no panic allowed; prints the counts
 #   2. wasm-pack test --node           the core's tests compiled to wasm32, run in node
 #   3. wasm-pack test --chrome web     the editor's component tests, in headless Chromium (chromedriver)
 #   4. scripts/build-page.sh           the page, built as `trunk serve` builds it (no trunk needed)
@@ -13,6 +15,13 @@
 #   8. tests/browser/e2e-workbench.mjs the layout at 1366×768 and 390×844, dragging a via point in
 #                                      3-D (against the CLI), undo/redo, planning in a Web Worker
 #                                      while typing and orbiting
+#   9. python/ (maturin, pytest)       the wheel built and installed into target/venv; pytest
+#                                      compares it with the CLI that step 1 built, runs the sweep
+#                                      example serially, on threads and on a Dask LocalCluster
+#  10. npm/ (wasm-pack, node --test)   the npm package built for --target web and bundler, packed,
+#                                      unpacked as a user installs it and tested in node against
+#                                      the CLI; docs/course-page.html (the package without Leptos)
+#                                      in headless Chromium
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -25,6 +34,9 @@ scripts/install.sh
 
 step "cargo test --workspace"
 cargo test --workspace
+
+step "stable fuzzing: 1e5 inputs per target (fuzz/src/bin/stable.rs)"
+cargo run --release --manifest-path fuzz/Cargo.toml --bin stable -- --runs 100000 --seed 1
 
 step "wasm-pack test --node (core crate on wasm32)"
 wasm-pack test --node
@@ -48,5 +60,20 @@ node tests/browser/e2e-view.mjs target/page
 
 step "browser end-to-end test of the workbench (layout, drag, undo, workers)"
 node tests/browser/e2e-workbench.mjs target/page
+
+step "Python package: build the wheel, install it into target/venv, pytest"
+# The dev profile (opt-level 2) reuses step 1's build of the core; --force-reinstall replaces
+# an older build of the same version.
+rm -f target/wheels/cablenav-*.whl
+target/venv/bin/maturin build --quiet -m python/Cargo.toml -o target/wheels
+target/venv/bin/pip install --quiet --disable-pip-version-check --force-reinstall --no-deps target/wheels/cablenav-*.whl
+(cd python && CABLENAV="$PWD/../target/debug/cablenav" ../target/venv/bin/python -m pytest -q -p no:cacheprovider tests)
+
+step "npm package: wasm-pack (web, bundler), npm pack, node test, the course page in Chromium"
+# After step 4: the release wasm32 build of the core's dependencies is reused.
+rm -f target/npm/cablenav-*.tgz
+npm/build.sh --pack
+(cd npm && CABLENAV="$PWD/../target/debug/cablenav" node --test test/)
+node tests/browser/course-page.mjs
 
 step "all tests passed in $((SECONDS - started)) s"

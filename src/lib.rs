@@ -15,14 +15,20 @@
 //!   point-wise at a pose.
 //! * [`verify`] computes feasible intervals along trajectories and rays, exactly and point-wise,
 //!   and per-pose checks; [`report`] holds the serialisable results.
-//! * [`cli`] is the command line over all of it (the `cablenav` binary is a thin wrapper).
+//! * [`parallel`] spreads many independent queries (slice cells, batch verification) over
+//!   threads natively; single queries stay single-threaded.
+//! * [`command`] is the commands over all of it — typed requests, JSON and text output — shared
+//!   by the `cablenav` CLI (the `cli/` crate, which parses command lines with clap), the Python
+//!   package (`python/`) and the npm package (`npm/`).
 //!
 //! The crate has no web dependency and builds for native targets and `wasm32-unknown-unknown`.
 
-pub mod cli;
+pub mod command;
 pub mod conditions;
 pub mod error;
+pub mod lattice;
 pub mod model;
+pub mod parallel;
 pub mod plan;
 pub mod png;
 pub mod poly;

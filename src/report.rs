@@ -47,9 +47,6 @@ pub struct VerifyReport {
     pub boundaries: Vec<Boundary>,
     /// t-intervals that could not be certified either way (never guessed).
     pub uncertain: Vec<[f64; 2]>,
-    /// Conditions tested conservatively (an enlarged shape): infeasible sections near them may be
-    /// feasible in truth.
-    pub conservative: Vec<String>,
     /// Notes for the user (from the scenario and the verification).
     pub warnings: Vec<String>,
 }
@@ -82,8 +79,6 @@ pub struct RayReport {
     pub boundaries: Vec<RayBoundary>,
     /// Value intervals that could not be certified.
     pub uncertain: Vec<[f64; 2]>,
-    /// Conditions tested conservatively.
-    pub conservative: Vec<String>,
     /// Notes for the user.
     pub warnings: Vec<String>,
 }
@@ -98,8 +93,6 @@ pub struct CheckEntry {
     /// The distance it is about (cable–cable, cable–obstacle surface, or the cable length), when
     /// computed; for capsules (cylinders) the distance to the capsule.
     pub distance: Option<f64>,
-    /// Whether the test is exact (false: conservative enlarged shape).
-    pub exact: bool,
 }
 
 /// Wrench feasibility at one pose (6 cables): the tension range of each cable over the wrench set.

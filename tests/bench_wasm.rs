@@ -9,6 +9,8 @@
 
 #[path = "../examples/bench/cases.rs"]
 mod cases;
+#[path = "../examples/bench/lattice.rs"]
+mod lattice;
 
 use wasm_bindgen::prelude::wasm_bindgen;
 use wasm_bindgen_test::{console_log, wasm_bindgen_test};
@@ -24,4 +26,11 @@ extern "C" {
 fn bench_wasm() {
     let now = || performance_now();
     cases::run_all("wasm", "", &now, &mut |line| console_log!("{line}"));
+}
+
+/// The ray lattice cases (`scripts/bench.sh --lattice` runs only this test).
+#[wasm_bindgen_test]
+fn bench_wasm_lattice() {
+    let now = || performance_now();
+    lattice::run_lattice("wasm", "", &now, &mut |line| console_log!("{line}"));
 }

@@ -2,16 +2,22 @@
 //!
 //!     cargo run --release --example bench            # every case
 //!     cargo run --release --example bench -- tree/   # the cases whose id contains "tree/"
+//!     cargo run --release --example bench -- lattice # the ray lattice cases (lattice.rs) instead
 //!
 //! `scripts/bench.sh` runs it together with the wasm-in-node benchmark (`tests/bench_wasm.rs`,
 //! same cases from `cases.rs`) and writes `docs/benchmarks.md`.
 
 mod cases;
+mod lattice;
 
 fn main() {
     let origin = std::time::Instant::now();
     let now = move || origin.elapsed().as_secs_f64() * 1000.0;
     let filter = std::env::args().nth(1).unwrap_or_default();
+    if filter.starts_with("lattice") {
+        lattice::run_lattice("native", &filter, &now, &mut |line| println!("{line}"));
+        return;
+    }
     let results = cases::run_all("native", &filter, &now, &mut |line| println!("{line}"));
     let get = |c: &str| results.iter().find(|m| m.case == c).map(|m| m.median_us).unwrap_or(f64::NAN);
     eprintln!();

@@ -62,18 +62,18 @@ impl Alg {
         &self.wpow[k]
     }
 
-    fn lift(&mut self, a: &H, k: usize) -> Bern {
-        if a.k == k {
-            a.p.clone()
-        } else {
-            a.p.mul(self.power(k - a.k))
-        }
-    }
-
     fn combine(&mut self, a: &H, b: &H, sign: f64) -> H {
         let k = a.k.max(b.k);
-        let (pa, pb) = (self.lift(a, k), self.lift(b, k));
-        H { p: if sign > 0.0 { pa.add(&pb) } else { pa.sub(&pb) }, k }
+        let op = |x: &Bern, y: &Bern| if sign > 0.0 { x.add(y) } else { x.sub(y) };
+        // only the operand with fewer powers of w is lifted (multiplied by the missing ones)
+        let p = if a.k == b.k {
+            op(&a.p, &b.p)
+        } else if a.k < k {
+            op(&a.p.mul(self.power(k - a.k)), &b.p)
+        } else {
+            op(&a.p, &b.p.mul(self.power(k - b.k)))
+        };
+        H { p, k }
     }
 
     /// a + b.

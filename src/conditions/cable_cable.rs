@@ -3,8 +3,8 @@
 
 use super::algebra::{hvec_const, HVec};
 use super::primitives::segment_segment;
-use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
-use crate::poly::{Partition, Truth};
+use super::{on_undecided, Condition, Kind, PoseCables, PoseCheck, Sweep};
+use crate::poly::Partition;
 use crate::query::segment_segment_dist;
 
 /// Clearance between cables `i` and `j` (0-based; reports number them from 1).
@@ -28,13 +28,10 @@ impl Condition for CableCable {
     }
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
-        let Sweep { alg, cables, tol, .. } = sweep;
-        let (ci, cj) = (&cables[self.i], &cables[self.j]);
-        if ci.tube.clear_of_tube(&cj.tube, self.clearance) {
-            return Partition::constant(Truth::False);
-        }
+        let (ci, cj) = (&sweep.cables[self.i], &sweep.cables[self.j]);
+        let undecided = ci.tube.undecided_near(&cj.tube, self.clearance);
         let r: HVec = hvec_const(&(cj.base - ci.base));
-        segment_segment(alg, &r, &ci.s, &cj.s, self.clearance, *tol)
+        on_undecided(sweep, &undecided, &[self.i, self.j], |alg, _, s, tol| segment_segment(alg, &r, s[0], s[1], self.clearance, tol))
     }
 
     fn check(&self, cables: &PoseCables) -> PoseCheck {

@@ -1,37 +1,32 @@
 //! Cable–obstacle clearance: the distance from a cable to an obstacle must be at least the
-//! clearance.
-//!
-//! Meshes (and boxes) and spheres are exact. Ellipsoids, cylinders and cones take the clearance by
-//! testing an enlarged shape that contains every point within the clearance of the obstacle, so
-//! they are conservative when the clearance is positive (reports say so):
-//! * ellipsoid M: the ellipsoid M_c with M_c⁻¹ = (1 + 1/p)·M⁻¹ + (1 + p)·c²·I, p = c/g, g the
-//!   geometric mean of the semi-axes (contains the Minkowski sum with the ball of radius c for any
-//!   p > 0);
-//! * cylinder: the capsule around its axis with radius r + c (also covers the flat ends);
-//! * cone: the cone with the apex moved back by c/sin α along the axis and the height extended by
-//!   c/sin α + c (its lateral surface is the lateral surface offset by c, its base lies c beyond
-//!   the original base).
+//! clearance. Every shape is exact: meshes (and boxes) and spheres by point/segment/face tests,
+//! cylinders, cones and ellipsoids with a clearance through their offset solids
+//! ([`super::offset`]), and without one through the solid itself.
 
 use super::algebra::{hvec_const, HVec};
+use super::offset::{cone_near, cylinder_near, ellipsoid_clear};
 use super::primitives::{point_segment, segment_cone, segment_face, segment_segment, ConeSolid};
 use super::tube::Bound;
-use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
+use super::{on_undecided, Condition, Kind, PoseCables, PoseCheck, Sweep};
 use crate::poly::{Partition, Truth};
-use crate::query::{point_segment_dist2, segment_crosses_triangle, segment_meets_cone, segment_segment_dist, segment_triangle_dist};
+use crate::query::{
+    point_cone_dist, point_cylinder_dist, point_segment_dist2, segment_crosses_triangle, segment_meets_cone, segment_min_convex,
+    segment_triangle_dist, EllipsoidFrame,
+};
 use crate::shape::{Obstacle, Shape};
 use nalgebra::{Matrix3, Vector3};
 use std::collections::BTreeSet;
 
 type V = Vector3<f64>;
 
-/// The tested geometry, with the clearance already applied where the shape is enlarged.
+/// The tested geometry.
 #[derive(Debug, Clone)]
 enum Geom {
     Mesh { faces: Vec<([V; 3], Bound)>, edges: Vec<(V, V)> },
     Sphere { center: V, radius: f64, reach: f64 },
-    Ellipsoid { center: V, metric: Matrix3<f64> },
-    Capsule { from: V, to: V, radius: f64, reach: f64 },
-    Cone(ConeSolid),
+    Ellipsoid { metric: Matrix3<f64>, frame: EllipsoidFrame },
+    Cylinder { from: V, to: V, radius: f64 },
+    Cone { solid: ConeSolid, half_angle: f64 },
 }
 
 /// Clearance between one cable and one obstacle.
@@ -40,7 +35,6 @@ pub struct CableShape {
     cable: usize,
     name: String,
     clearance: f64,
-    exact: bool,
     geom: Geom,
     bound: Bound,
 }
@@ -48,7 +42,7 @@ pub struct CableShape {
 impl CableShape {
     /// The condition for cable `cable` (0-based) against `obstacle` with clearance `c`.
     pub fn new(cable: usize, obstacle: &Obstacle, c: f64) -> CableShape {
-        let (geom, bound, exact) = match &obstacle.shape {
+        let (geom, bound) = match &obstacle.shape {
             Shape::Mesh(mesh) => {
                 let faces: Vec<([V; 3], Bound)> = (0..mesh.triangles.len())
                     .map(|k| {
@@ -66,41 +60,30 @@ impl CableShape {
                         }
                     }
                 }
-                (Geom::Mesh { faces, edges }, Bound::ball_around(&mesh.vertices, c), true)
+                (Geom::Mesh { faces, edges }, Bound::ball_around(&mesh.vertices, c))
             }
             Shape::Sphere { center, radius } => {
                 let reach = radius + c;
-                (Geom::Sphere { center: *center, radius: *radius, reach }, Bound::Ball(*center, reach), true)
+                (Geom::Sphere { center: *center, radius: *radius, reach }, Bound::Ball(*center, reach))
             }
             Shape::Ellipsoid { center, matrix } => {
-                let inv = matrix.try_inverse().unwrap_or_else(Matrix3::identity);
-                let inv_c = if c > 0.0 {
-                    let g = matrix.determinant().powf(-1.0 / 6.0);
-                    let p = c / g;
-                    inv * (1.0 + 1.0 / p) + Matrix3::identity() * ((1.0 + p) * c * c)
-                } else {
-                    inv
-                };
-                let metric = inv_c.try_inverse().unwrap_or(*matrix);
-                // the largest semi-axis is at most √(trace M_c⁻¹)
-                let reach = inv_c.trace().max(0.0).sqrt();
-                (Geom::Ellipsoid { center: *center, metric }, Bound::Ball(*center, reach), c == 0.0)
+                let frame = EllipsoidFrame::new(*center, matrix);
+                // the largest semi-axis is 1/√(least eigenvalue)
+                let reach = 1.0 / frame.m.min().max(f64::MIN_POSITIVE).sqrt() + c;
+                (Geom::Ellipsoid { metric: *matrix, frame }, Bound::Ball(*center, reach))
             }
             Shape::Cylinder { from, to, radius } => {
-                let reach = radius + c;
-                (Geom::Capsule { from: *from, to: *to, radius: *radius, reach }, Bound::Capsule(*from, *to, reach), false)
+                (Geom::Cylinder { from: *from, to: *to, radius: *radius }, Bound::Capsule(*from, *to, radius + c))
             }
             Shape::Cone { apex, axis, half_angle, height } => {
-                let sin = half_angle.sin();
-                let apex = apex - axis * (c / sin);
-                let height = height + c / sin + c;
-                let base = apex + axis * height;
+                let base = apex + axis * *height;
                 // the cone lies in the capsule around its axis with the base radius
-                let r = height * half_angle.tan();
-                (Geom::Cone(ConeSolid { apex, axis: *axis, cos2: half_angle.cos().powi(2), height }), Bound::Capsule(apex, base, r), c == 0.0)
+                let r = height * half_angle.tan() + c;
+                let solid = ConeSolid { apex: *apex, axis: *axis, cos2: half_angle.cos().powi(2), height: *height };
+                (Geom::Cone { solid, half_angle: *half_angle }, Bound::Capsule(*apex, base, r))
             }
         };
-        CableShape { cable, name: obstacle.name.clone(), clearance: c, exact, geom, bound }
+        CableShape { cable, name: obstacle.name.clone(), clearance: c, geom, bound }
     }
 }
 
@@ -113,49 +96,63 @@ impl Condition for CableShape {
         format!("cable {} - {}", self.cable + 1, self.name)
     }
 
-    fn exact(&self) -> bool {
-        self.exact
-    }
-
     fn violation(&self, sweep: &mut Sweep) -> Partition {
-        let Sweep { alg, cables, tol, .. } = sweep;
-        let tol = *tol;
-        let cable = &cables[self.cable];
-        let far = |b: &Bound| cable.tube.clear_of(b);
-        if far(&self.bound) {
-            return Partition::constant(Truth::False);
-        }
+        let cable = &sweep.cables[self.cable];
+        let undecided = cable.tube.undecided_in(&self.bound);
         let a = cable.base;
-        let s = &cable.s;
         let c = self.clearance;
-        match &self.geom {
-            Geom::Mesh { faces, edges } => {
-                let mut acc = Partition::constant(Truth::False);
-                for (p, q) in edges {
-                    if acc.is_all(Truth::True) || far(&Bound::Capsule(*p, *q, c)) {
-                        continue;
-                    }
-                    let r: HVec = hvec_const(&(p - a));
-                    let t: HVec = hvec_const(&(q - p));
-                    acc = acc.or(&segment_segment(alg, &r, s, &t, c, tol));
-                }
-                for (tri, bound) in faces {
-                    if acc.is_all(Truth::True) || far(bound) {
-                        continue;
-                    }
-                    acc = acc.or(&segment_face(alg, &a, s, tri, c, tol));
-                }
-                acc
+        // which mesh edges and faces the tube of the whole motion cannot clear
+        let near: Vec<bool> = match &self.geom {
+            Geom::Mesh { faces, edges } if !undecided.is_empty() => {
+                let edges = edges.iter().map(|(p, q)| !cable.tube.clear_of(&Bound::Capsule(*p, *q, c)));
+                edges.chain(faces.iter().map(|(_, bound)| !cable.tube.clear_of(bound))).collect()
             }
-            Geom::Sphere { center, reach, .. } => point_segment(alg, &hvec_const(&(center - a)), s, *reach, None, tol),
-            Geom::Ellipsoid { center, metric } => point_segment(alg, &hvec_const(&(center - a)), s, 1.0, Some(metric), tol),
-            Geom::Capsule { from, to, reach, .. } => {
-                let r = hvec_const(&(from - a));
-                let t = hvec_const(&(to - from));
-                segment_segment(alg, &r, s, &t, *reach, tol)
+            _ => Vec::new(),
+        };
+        on_undecided(sweep, &undecided, &[self.cable], |alg, w, s, tol| {
+            let s = s[0];
+            match &self.geom {
+                Geom::Mesh { faces, edges } => {
+                    let mut acc = Partition::constant(Truth::False);
+                    for ((p, q), _) in edges.iter().zip(&near).filter(|(_, &n)| n) {
+                        if acc.is_all(Truth::True) {
+                            break;
+                        }
+                        let r: HVec = hvec_const(&(p - a));
+                        let t: HVec = hvec_const(&(q - p));
+                        acc = acc.or(&segment_segment(alg, &r, s, &t, c, tol));
+                    }
+                    for ((tri, _), _) in faces.iter().zip(&near[edges.len()..]).filter(|(_, &n)| n) {
+                        if acc.is_all(Truth::True) {
+                            break;
+                        }
+                        acc = acc.or(&segment_face(alg, &a, s, tri, c, tol));
+                    }
+                    acc
+                }
+                Geom::Sphere { center, reach, .. } => point_segment(alg, &hvec_const(&(center - a)), s, *reach, None, tol),
+                Geom::Ellipsoid { metric, frame } => {
+                    if c > 0.0 {
+                        ellipsoid_clear(&a, s, w, frame, c, tol).not()
+                    } else {
+                        point_segment(alg, &hvec_const(&(frame.center - a)), s, 1.0, Some(metric), tol)
+                    }
+                }
+                Geom::Cylinder { from, to, radius } => cylinder_near(&a, s, w, from, to, *radius, c, tol),
+                Geom::Cone { solid, half_angle } => {
+                    if c > 0.0 {
+                        let apex = point_segment(alg, &hvec_const(&(solid.apex - a)), s, c, None, tol);
+                        if apex.is_all(Truth::True) {
+                            apex
+                        } else {
+                            apex.or(&cone_near(&a, s, w, &solid.apex, &solid.axis, *half_angle, solid.height, c, tol))
+                        }
+                    } else {
+                        segment_cone(alg, &a, s, solid, tol)
+                    }
+                }
             }
-            Geom::Cone(cone) => segment_cone(alg, &a, s, cone, tol),
-        }
+        })
     }
 
     fn check(&self, cables: &PoseCables) -> PoseCheck {
@@ -172,14 +169,20 @@ impl Condition for CableShape {
                 let d = point_segment_dist2(center, &a, &s, None).sqrt();
                 PoseCheck { violated: d < *reach, distance: Some(d - radius) }
             }
-            Geom::Ellipsoid { center, metric } => {
-                PoseCheck { violated: point_segment_dist2(center, &a, &s, Some(metric)) < 1.0, distance: None }
+            Geom::Ellipsoid { metric, frame } => {
+                let d = segment_min_convex(&a, &s, |x| frame.point_dist(x));
+                let violated = if c > 0.0 { d < c } else { point_segment_dist2(&frame.center, &a, &s, Some(metric)) < 1.0 };
+                PoseCheck { violated, distance: Some(d) }
             }
-            Geom::Capsule { from, to, radius, reach } => {
-                let d = segment_segment_dist(&a, &s, from, &(to - from));
-                PoseCheck { violated: d < *reach, distance: Some(d - radius) }
+            Geom::Cylinder { from, to, radius } => {
+                let d = segment_min_convex(&a, &s, |x| point_cylinder_dist(x, from, to, *radius));
+                PoseCheck { violated: if c > 0.0 { d < c } else { d == 0.0 }, distance: Some(d) }
             }
-            Geom::Cone(k) => PoseCheck { violated: segment_meets_cone(&a, &s, &k.apex, &k.axis, k.cos2, k.height), distance: None },
+            Geom::Cone { solid: k, half_angle } => {
+                let d = segment_min_convex(&a, &s, |x| point_cone_dist(x, &k.apex, &k.axis, *half_angle, k.height));
+                let violated = if c > 0.0 { d < c } else { segment_meets_cone(&a, &s, &k.apex, &k.axis, k.cos2, k.height) };
+                PoseCheck { violated, distance: Some(d) }
+            }
         }
     }
 }

@@ -14,6 +14,8 @@ mod cable_length;
 mod cable_shape;
 pub mod primitives;
 mod closure;
+pub mod exists;
+mod offset;
 mod structure;
 mod tension;
 pub mod tube;
@@ -28,7 +30,7 @@ use std::cell::OnceCell;
 use std::rc::Rc;
 
 use crate::model::{Motion, Pose, Robot, Wrench};
-use crate::poly::Partition;
+use crate::poly::{Bern, Partition, Truth};
 use crate::query::wrench::{tension_ranges_at, TensionRange};
 use crate::scenario::Scenario;
 use algebra::{Alg, HVec};
@@ -86,6 +88,36 @@ impl Sweep {
             .collect();
         Sweep { alg: Alg::new(w), cables, tol, motion: motion.clone(), tension: None, facets: None }
     }
+}
+
+/// The violation set of a condition that the tube pruning decided outside `undecided` (ordered,
+/// disjoint λ-intervals): `False` there, and on each undecided interval what `exact` finds on the
+/// motion restricted to it — the powers of the restricted w, that w, the restricted cable vectors
+/// s of `cables` (in that order), and the tolerance in the local parameter — mapped back. Exact
+/// work is thus done only where the pruning could not decide.
+pub fn on_undecided(
+    sweep: &mut Sweep,
+    undecided: &[(f64, f64)],
+    cables: &[usize],
+    mut exact: impl FnMut(&mut Alg, &Bern, &[&HVec], f64) -> Partition,
+) -> Partition {
+    if let [(a, b)] = undecided {
+        if *a <= 0.0 && *b >= 1.0 {
+            let Sweep { alg, cables: swept, tol, motion, .. } = sweep;
+            let s: Vec<&HVec> = cables.iter().map(|&i| &swept[i].s).collect();
+            return exact(alg, &motion.weight, &s, *tol);
+        }
+    }
+    let mut out = Partition::constant(Truth::False);
+    for &(a, b) in undecided {
+        let w = sweep.motion.weight.restrict(a, b);
+        let mut alg = Alg::new(&w);
+        let s: Vec<HVec> = cables.iter().map(|&i| sweep.cables[i].s.clone().map(|h| algebra::H { p: h.p.restrict(a, b), k: h.k })).collect();
+        let s_ref: Vec<&HVec> = s.iter().collect();
+        let inner = exact(&mut alg, &w, &s_ref, sweep.tol / (b - a));
+        out = out.splice((a, b), &inner, (a, b));
+    }
+    out
 }
 
 /// The outcome of a condition at one pose.
@@ -149,12 +181,6 @@ pub enum Kind {
 pub trait Condition {
     /// How reports name it: `"cables 2-5"`, `"cable 3 - box"`, `"cable 4 length"`.
     fn label(&self) -> String;
-
-    /// `true` if the violation set is exact; `false` if it is a conservative superset (the
-    /// condition tests an enlarged shape), which reports say.
-    fn exact(&self) -> bool {
-        true
-    }
 
     /// What the condition is about, for classifying poses (slice maps).
     fn kind(&self) -> Kind;

@@ -1,7 +1,7 @@
 //! Cheap certified pruning before any polynomial is built.
 //!
-//! On each of n sub-intervals of λ (n = 1, then 4, then 16, each finer level built only when the
-//! coarser one cannot decide), a cable's moving end stays in the convex hull of the
+//! On each dyadic piece of λ ([0, 1], then its halves, … down to width 2^−DEPTH, each piece halved
+//! only where the coarser one cannot decide), a cable's moving end stays in the convex hull of the
 //! rational Bézier control points of that piece (when all weights are positive), hence in a ball
 //! (centre c, radius ρ). Every point a + u·(x − a) of the cable then lies within u·ρ ≤ ρ of the
 //! fixed segment a → c. So if the distance from that segment to another cable's segment, or to a
@@ -11,15 +11,12 @@
 use crate::poly::Bern;
 use crate::query::{point_segment_dist2, segment_segment_dist};
 use nalgebra::Vector3;
-use std::cell::OnceCell;
+use std::cell::RefCell;
 
 type V = Vector3<f64>;
 
 /// Centre and radius.
 type Ball = (V, f64);
-
-/// Numbers of sub-intervals of the successive levels.
-pub const LEVELS: [usize; 3] = [1, 4, 16];
 
 /// A simple solid around an obstacle (or part of one), already grown by the clearance.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -53,14 +50,34 @@ impl Bound {
     }
 }
 
-/// The balls holding a cable's moving end on each piece, level by level, built on demand.
+/// Deepest level of the dyadic refinement: pieces of width 2^−DEPTH in λ.
+pub const DEPTH: usize = 6;
+
+
+
+/// The balls holding a cable's moving end on dyadic pieces of λ (level l: 2^l pieces of width
+/// 2^−l), built on demand and kept: every condition of the cable refines the same pieces, so the
+/// work is shared between them.
 #[derive(Debug, Clone)]
 pub struct Tube {
     /// The fixed end (base anchor).
     pub base: V,
-    tip: [Bern; 3],
-    w: Bern,
-    levels: [OnceCell<Option<Vec<Ball>>>; 3],
+    pieces: RefCell<Pieces>,
+}
+
+/// The dyadic pieces built so far, in heap order (node 1 is [0, 1], node k has the halves 2k and
+/// 2k + 1), in one flat store: per node, the Bernstein coefficients of X̂₀, X̂₁, X̂₂ and w restricted
+/// to the piece (kept to make its halves), their error bounds, and its ball (`None` where a weight
+/// is not certainly positive).
+#[derive(Debug, Clone)]
+struct Pieces {
+    /// Coefficients per polynomial (common degree + 1).
+    len: usize,
+    /// Where node k's entries start in `coeffs` / `errs` and `balls` (`u32::MAX`: not built).
+    slot: Vec<u32>,
+    coeffs: Vec<f64>,
+    errs: Vec<[f64; 4]>,
+    balls: Vec<Option<Ball>>,
 }
 
 /// Slack covering the rounding of the distance computations.
@@ -68,65 +85,171 @@ fn slack(scale: f64) -> f64 {
     1e-9 * (1.0 + scale)
 }
 
-/// `p` cut into `n` equal pieces, each re-parametrised to [0, 1].
-fn cut(p: &Bern, n: usize) -> Vec<Bern> {
-    let mut out = Vec::with_capacity(n);
-    let mut rest = p.clone();
-    for j in 0..n - 1 {
-        let (left, right) = rest.split(1.0 / (n - j) as f64);
-        out.push(left);
-        rest = right;
-    }
-    out.push(rest);
-    out
-}
-
-/// Centre and radius of a ball holding X̂/w over [0, 1], or `None` when a weight is not
-/// certainly positive.
-fn hull_ball(x: [&Bern; 3], w: &Bern) -> Option<(V, f64)> {
-    let w_min = w.c.iter().copied().fold(f64::INFINITY, f64::min);
-    if !(w_min > 2.0 * w.err) {
+/// Centre and radius of a ball holding X̂/w over the piece whose coefficients are `c` (X̂₀, X̂₁,
+/// X̂₂, w, each `len` long) with error bounds `err`, or `None` when a weight is not certainly
+/// positive. The control points X̂_j/w_j are in the ball; so is the curve (convex hull).
+fn hull_ball(c: &[f64], err: &[f64; 4], len: usize) -> Option<Ball> {
+    let (x, w) = (&c[..3 * len], &c[3 * len..4 * len]);
+    let w_min = w.iter().copied().fold(f64::INFINITY, f64::min);
+    if !(w_min > 2.0 * err[3]) {
         return None;
     }
-    let pts: Vec<V> = (0..w.c.len()).map(|j| V::new(x[0].c[j], x[1].c[j], x[2].c[j]) / w.c[j]).collect();
-    let (centre, r) = ball(&pts);
-    let mag = pts.iter().map(|p| p.abs().max()).fold(0.0, f64::max);
-    let err = (x.iter().map(|p| p.err).fold(0.0, f64::max) + mag * w.err) / (w_min - w.err);
-    Some((centre, r + err + slack(mag)))
+    let point = |j: usize| V::new(x[j], x[len + j], x[2 * len + j]) / w[j];
+    let centre = (0..len).map(point).sum::<V>() / len as f64;
+    let (mut r, mut mag) = (0.0f64, 0.0f64);
+    for j in 0..len {
+        let p = point(j);
+        r = r.max((p - centre).norm());
+        mag = mag.max(p.abs().max());
+    }
+    let e = (err[0].max(err[1]).max(err[2]) + mag * err[3]) / (w_min - err[3]);
+    Some((centre, r + e + slack(mag)))
+}
+
+/// The λ-interval of dyadic node `k` (heap order).
+fn node_interval(k: usize) -> (f64, f64) {
+    let level = usize::BITS - 1 - k.leading_zeros();
+    let width = 1.0 / (1u64 << level) as f64;
+    let start = (k - (1usize << level)) as f64 * width;
+    (start, start + width)
+}
+
+/// Appends [a, b] to ordered intervals, merging it with the last one when they touch.
+fn push_interval(out: &mut Vec<(f64, f64)>, (a, b): (f64, f64)) {
+    match out.last_mut() {
+        Some(last) if last.1 >= a => last.1 = b,
+        _ => out.push((a, b)),
+    }
+}
+
+/// Unit roundoff of f64.
+const U: f64 = f64::EPSILON * 0.5;
+
+/// The halves at 1/2 of the Bernstein coefficients `c` (de Casteljau), written to `left` and
+/// `right`; returns the added coefficient error bound (as [`Bern::split`] bounds it).
+fn halve(c: &[f64], left: &mut [f64], right: &mut [f64]) -> f64 {
+    let n = c.len() - 1;
+    right.copy_from_slice(c);
+    left[0] = right[0];
+    for level in 1..=n {
+        for k in 0..=(n - level) {
+            right[k] = 0.5 * (right[k] + right[k + 1]);
+        }
+        left[level] = right[0];
+    }
+    (2 * n + 2) as f64 * U * c.iter().fold(0.0f64, |m, x| m.max(x.abs()))
+}
+
+impl Pieces {
+    /// Builds node k and its sibling from their parent, which must exist.
+    fn build_pair(&mut self, k: usize) {
+        let len = self.len;
+        let parent = self.slot[k / 2] as usize;
+        // the halves are appended to the store: the left one at `at`, the right one after it
+        let at = self.coeffs.len();
+        self.coeffs.resize(at + 8 * len, 0.0);
+        let (old, new) = self.coeffs.split_at_mut(at);
+        let (left, right) = new.split_at_mut(4 * len);
+        let mut errs = [0.0; 4];
+        for i in 0..4 {
+            let src = &old[(parent * 4 + i) * len..(parent * 4 + i + 1) * len];
+            errs[i] = self.errs[parent][i] + halve(src, &mut left[i * len..(i + 1) * len], &mut right[i * len..(i + 1) * len]);
+        }
+        let k0 = k & !1;
+        for (j, start) in [(k0, at), (k0 + 1, at + 4 * len)] {
+            self.slot[j] = self.balls.len() as u32;
+            self.errs.push(errs);
+            self.balls.push(hull_ball(&self.coeffs[start..start + 4 * len], &errs, len));
+        }
+    }
 }
 
 impl Tube {
     /// The tube of the cable from `base` to X̂/w.
     pub fn new(base: V, tip: &[Bern; 3], w: &Bern) -> Tube {
         let n = tip.iter().map(Bern::degree).max().unwrap_or(0).max(w.degree());
-        Tube { base, tip: tip.clone().map(|p| p.elevate(n)), w: w.elevate(n), levels: Default::default() }
+        let polys = [tip[0].elevate(n), tip[1].elevate(n), tip[2].elevate(n), w.elevate(n)];
+        let nodes = 2 << DEPTH;
+        let mut coeffs = Vec::with_capacity(nodes * 4 * (n + 1));
+        coeffs.extend(polys.iter().flat_map(|p| p.c.iter().copied()));
+        let errs = polys.map(|p| p.err);
+        let ball = hull_ball(&coeffs, &errs, n + 1);
+        let mut slot = vec![u32::MAX; nodes];
+        slot[1] = 0;
+        let (mut all_errs, mut balls) = (Vec::with_capacity(nodes), Vec::with_capacity(nodes));
+        all_errs.push(errs);
+        balls.push(ball);
+        let pieces = Pieces { len: n + 1, slot, coeffs, errs: all_errs, balls };
+        Tube { base, pieces: RefCell::new(pieces) }
     }
 
-    fn level(&self, l: usize) -> Option<&Vec<Ball>> {
-        self.levels[l]
-            .get_or_init(|| {
-                let n = LEVELS[l];
-                let (xs, ws) = (self.tip.clone().map(|p| cut(&p, n)), cut(&self.w, n));
-                (0..n).map(|k| hull_ball([&xs[0][k], &xs[1][k], &xs[2][k]], &ws[k])).collect()
-            })
-            .as_ref()
+    /// The ball of dyadic node `k`, building it, its sibling and their missing ancestors.
+    fn ball_of(&self, k: usize) -> Option<Ball> {
+        let slot = self.pieces.borrow().slot[k];
+        if slot != u32::MAX {
+            return self.pieces.borrow().balls[slot as usize];
+        }
+        self.ball_of(k / 2);
+        let mut pieces = self.pieces.borrow_mut();
+        pieces.build_pair(k);
+        let slot = pieces.slot[k] as usize;
+        pieces.balls[slot]
     }
 
-    /// Whether the cable stays farther than `gap` from the other cable on every piece.
+    /// The λ-intervals (ordered, disjoint, unions of dyadic pieces down to width 2^−DEPTH) where
+    /// the pruning cannot decide. `margin` gives, for the balls of this tube and of `other` (if
+    /// given) on one piece, how far the fixed segments through the balls' centres stay beyond
+    /// the gap, and the sum of the radii: the piece is decided when the margin exceeds the radii;
+    /// it is halved (smaller balls) only while the margin is positive, since where the centres'
+    /// segments themselves come within the gap no refinement can decide.
+    fn undecided(&self, other: Option<&Tube>, margin: &dyn Fn(&Ball, Option<&Ball>) -> (f64, f64)) -> Vec<(f64, f64)> {
+        let mut out = Vec::new();
+        let mut stack = vec![1usize];
+        while let Some(k) = stack.pop() {
+            let mine = self.ball_of(k);
+            let theirs = other.map(|t| t.ball_of(k));
+            let (m, radii) = match (mine, theirs) {
+                (Some(b), None) => margin(&b, None),
+                (Some(b), Some(Some(c))) => margin(&b, Some(&c)),
+                _ => (f64::INFINITY, f64::INFINITY), // a weight not certainly positive: halve
+            };
+            if m > radii {
+                continue;
+            }
+            let levels_left = DEPTH - (usize::BITS - 1 - k.leading_zeros()) as usize;
+            if levels_left == 0 || !(m > radii / (1u64 << levels_left) as f64) {
+                push_interval(&mut out, node_interval(k));
+            } else {
+                stack.push(2 * k + 1);
+                stack.push(2 * k);
+            }
+        }
+        out
+    }
+
+    /// Where the cable may come within `gap` of the other cable: the λ-intervals the balls could
+    /// not clear (empty when the two stay farther apart throughout).
+    pub fn undecided_near(&self, other: &Tube, gap: f64) -> Vec<(f64, f64)> {
+        self.undecided(Some(other), &|(c, r), theirs| {
+            let (d, q) = theirs.expect("a ball of the other tube");
+            let dist = segment_segment_dist(&self.base, &(c - self.base), &other.base, &(d - other.base));
+            (dist - gap - slack(c.abs().max() + d.abs().max()), r + q)
+        })
+    }
+
+    /// Where the cable may enter `bound` (already grown by the clearance): the λ-intervals the
+    /// balls could not clear.
+    pub fn undecided_in(&self, bound: &Bound) -> Vec<(f64, f64)> {
+        self.undecided(None, &|(c, r), _| (bound.distance_from(&self.base, &(c - self.base)) - slack(c.abs().max()), *r))
+    }
+
+    /// Whether the cable stays farther than `gap` from the other cable throughout.
     pub fn clear_of_tube(&self, other: &Tube, gap: f64) -> bool {
-        (0..LEVELS.len()).any(|l| match (self.level(l), other.level(l)) {
-            (Some(a), Some(b)) => a.iter().zip(b).all(|((c, r), (d, q))| {
-                let dist = segment_segment_dist(&self.base, &(c - self.base), &other.base, &(d - other.base));
-                dist - r - q > gap + slack(c.abs().max() + d.abs().max())
-            }),
-            _ => false,
-        })
+        self.undecided_near(other, gap).is_empty()
     }
 
-    /// Whether the cable stays outside `bound` (already grown by the clearance) on every piece.
+    /// Whether the cable stays outside `bound` (already grown by the clearance) throughout.
     pub fn clear_of(&self, bound: &Bound) -> bool {
-        (0..LEVELS.len()).any(|l| {
-            self.level(l).is_some_and(|pieces| pieces.iter().all(|(c, r)| bound.distance_from(&self.base, &(c - self.base)) - r > slack(c.abs().max())))
-        })
+        self.undecided_in(bound).is_empty()
     }
 }

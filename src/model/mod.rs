@@ -11,5 +11,5 @@ pub mod wrench;
 pub use motion::Motion;
 pub use pose::{Coord, Pose};
 pub use robot::{Bounds, Cable, Clearance, Robot};
-pub use trajectory::{Orientation, Trajectory, Translation};
+pub use trajectory::{Orientation, Segment, Trajectory, Translation};
 pub use wrench::{PointFrame, Wrench};

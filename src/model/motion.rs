@@ -10,25 +10,37 @@
 //!   Q ∝ Qs + τ (Qe − Qs cos θ)/cos²(θ/2) − τ² h² Qs (a form with no division by sin θ, stable
 //!   as θ → 0), and t = 2·atan(hτ)/θ.
 //! * A ray in x, y or z: λ maps linearly onto the range; w = 1.
-//! * A ray in an angle of tilt-and-torsion: the range is cut into pieces at most π/2 wide; on a
-//!   piece starting at γ0 the angle is γ0 + 2·atan(hλ), and a rotation by ψ about an axis k is the
+//! * A ray in an angle of tilt-and-torsion: the range is cut into pieces at most [`ANGLE_PIECE`]
+//!   (π/8) wide; on a piece starting at γ0 the angle is γ0 + 2·atan(hλ), and a rotation by ψ about an axis k is the
 //!   quaternion (1, tan(ψ/2)·k) up to scale.
 
 use super::pose::{Coord, Pose};
-use super::trajectory::{Orientation, Trajectory, Translation};
-use crate::poly::Bern;
+use super::trajectory::{Orientation, Segment, Trajectory, Translation};
+use crate::poly::{binomial, Bern};
 use nalgebra::{Quaternion, UnitQuaternion};
 use std::f64::consts::FRAC_PI_2;
+
+/// Widest piece of an angle ray. On a piece of width ψ the rotation numerator and the weight grow
+/// like powers of (1 + h²λ²), h = tan(ψ/2): at ψ = π/2
+/// (h = 1) the wrench conditions' high powers of w span orders of magnitude over [0, 1] and their
+/// sign tests stayed undecided over most of a piece (Robocrane φ-rays: uncertain over half the
+/// range); at π/8 (h ≈ 0.2) they decide, and the ray is faster for it.
+pub const ANGLE_PIECE: f64 = FRAC_PI_2 / 4.0;
 
 /// How λ ∈ [0, 1] maps to the parameter a user sees.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Param {
-    /// A trajectory: λ = τ, t = 2·atan(hτ)/θ (t = τ when θ = 0).
+    /// A piece [t0, t1] of a trajectory's t that rotates by ψ at a constant rate:
+    /// t = t0 + (t1 − t0)·2·atan(hλ)/ψ with h = tan(ψ/2) (t = t0 + (t1 − t0)·λ when ψ = 0).
     Trajectory {
-        /// Slerp angle θ between the quaternions.
-        theta: f64,
-        /// tan(θ/2).
+        /// The piece's rotation angle ψ.
+        psi: f64,
+        /// tan(ψ/2).
         h: f64,
+        /// The whole trajectory's t at λ = 0.
+        t0: f64,
+        /// The whole trajectory's t at λ = 1.
+        t1: f64,
     },
     /// A linear coordinate: value = lo + (hi − lo)·λ.
     Linear {
@@ -52,11 +64,16 @@ impl Param {
     /// The user-facing value (t for trajectories) at λ; exactly the range's ends at λ = 0 and 1.
     pub fn value(&self, lam: f64) -> f64 {
         match *self {
-            Param::Trajectory { theta, h } => {
-                if theta < 1e-9 || lam <= 0.0 || lam >= 1.0 {
+            Param::Trajectory { psi, h, t0, t1 } => {
+                let local = if psi < 1e-9 || lam <= 0.0 || lam >= 1.0 {
                     lam.clamp(0.0, 1.0)
                 } else {
-                    (2.0 * (h * lam).atan() / theta).clamp(0.0, 1.0)
+                    (2.0 * (h * lam).atan() / psi).clamp(0.0, 1.0)
+                };
+                if local >= 1.0 {
+                    t1
+                } else {
+                    t0 + (t1 - t0) * local
                 }
             }
             Param::Linear { lo, hi } => lo * (1.0 - lam) + hi * lam,
@@ -73,11 +90,12 @@ impl Param {
     /// An upper bound on |d value / dλ| over [0, 1].
     pub fn max_slope(&self) -> f64 {
         match *self {
-            Param::Trajectory { theta, h } => {
-                if theta < 1e-9 {
-                    1.0
+            Param::Trajectory { psi, h, t0, t1 } => {
+                let span = t1 - t0;
+                if psi < 1e-9 {
+                    span
                 } else {
-                    2.0 * h / theta
+                    span * 2.0 * h / psi
                 }
             }
             Param::Linear { lo, hi } => (hi - lo).abs(),
@@ -168,6 +186,31 @@ fn translation_bernstein(tr: &Translation) -> [Bern; 3] {
     }
 }
 
+/// The cut points 0 = t_0 < … < t_n = 1 of a slerp of angle θ: equal pieces of at most π/2 of
+/// rotation, refined where cos(tθ/2) halves (t = 2·acos(2^−j)/θ), so that on every piece the
+/// Möbius denominator 1 − T0·hλ = cos(tθ/2)/(cos(t0θ/2)·cos(ψ/2)) stays within a factor of about
+/// 3 of 1: near θ = π the translation, polynomial in τ = tan(tθ/2)/tan(θ/2), runs almost wholly
+/// in a short stretch before t = 1, and these cuts follow it.
+fn slerp_cuts(theta: f64) -> Vec<f64> {
+    let pieces = ((theta / FRAC_PI_2).ceil() as usize).max(1);
+    let mut cuts: Vec<f64> = (0..=pieces).map(|k| k as f64 / pieces as f64).collect();
+    if theta > 1e-9 {
+        let mut j = 1;
+        while 0.5f64.powi(j) > (theta / 2.0).cos() && j < 60 {
+            cuts.push(2.0 * 0.5f64.powi(j).acos() / theta);
+            j += 1;
+        }
+    }
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
+    cuts
+}
+
+/// p^k.
+fn power(p: &Bern, k: usize) -> Bern {
+    (0..k).fold(Bern::constant(1.0), |acc, _| acc.mul(p))
+}
+
 impl Motion {
     fn from_parts(position: [Bern; 3], n: &QuatPoly, param: Param) -> Motion {
         let (rotation, weight) = rotation_of(n);
@@ -175,30 +218,105 @@ impl Motion {
         Motion { position, rotation, weight, param }
     }
 
-    /// The motion of a trajectory, in λ = τ.
-    pub fn trajectory(traj: &Trajectory) -> Motion {
-        let Orientation::Slerp(qs, qe) = &traj.orientation;
+    /// The motion with position `position`/`den` (den > 0 on [0, 1]) and rotation from `n`.
+    fn from_rational(position: [Bern; 3], den: Bern, n: &QuatPoly, param: Param) -> Motion {
+        let (rotation, w) = rotation_of(n);
+        let position = position.map(|p| p.mul(&w));
+        let rotation = rotation.map(|row| row.map(|m| m.mul(&den)));
+        Motion { position, rotation, weight: w.mul(&den), param }
+    }
+
+    /// The motions of a trajectory: for each of its pieces (format 2), one per stretch of at most
+    /// π/2 of rotation, so that long slerps (up to π) keep small, well-conditioned coefficients.
+    pub fn trajectory(traj: &Trajectory) -> Vec<Motion> {
+        traj.pieces().iter().enumerate().flat_map(|(k, seg)| Motion::segment(seg, traj.piece_span(k))).collect()
+    }
+
+    /// The motions of one piece covering `span` of its trajectory's t.
+    ///
+    /// On the stretch t ∈ [t0, t1] of the piece's own t with rotation ψ = θ(t1 − t0) and h = tan(ψ/2), λ is the tan-half-
+    /// angle parameter of the piece: t = t0 + 2·atan(hλ)/θ. The rotation is the slerp from Q(t0) to
+    /// Q(t1), N(λ) = Q0 + λ·(Q1 − Q0 cos ψ)/cos²(ψ/2) − λ²h²Q0 (as for the whole trajectory), and
+    /// τ(λ) = tan(t θ/2)/tan(θ/2) is the Möbius map (T0 + hλ)/(tan(θ/2)·(1 − T0·hλ)),
+    /// T0 = tan(t0 θ/2), so a translation of degree d in τ becomes P̃(λ)/D(λ)^d with
+    /// D = 1 − T0·hλ > 0 (homogeneous Bernstein substitution).
+    fn segment(seg: &Segment, [from, to]: [f64; 2]) -> Vec<Motion> {
+        let Orientation::Slerp(qs, qe) = &seg.orientation;
+        let theta = seg.theta();
+        let cuts = slerp_cuts(theta);
+        let pieces = cuts.len() - 1;
+        let translation = translation_bernstein(&seg.translation);
+        let whole = |t: f64| if t >= 1.0 { to } else { from + (to - from) * t };
         let (s, e) = (qs.quaternion(), qe.quaternion());
-        let theta = traj.theta();
-        let cos = theta.cos();
-        let h = (theta / 2.0).tan();
-        let half_cos2 = (theta / 2.0).cos().powi(2);
-        let lin: Quaternion<f64> = (e - s * cos) / half_cos2;
-        let quad: Quaternion<f64> = -s * (h * h);
-        let n: QuatPoly = [
-            vec![s.w, lin.w, quad.w],
-            vec![s.i, lin.i, quad.i],
-            vec![s.j, lin.j, quad.j],
-            vec![s.k, lin.k, quad.k],
-        ];
-        Motion::from_parts(translation_bernstein(&traj.translation), &n, Param::Trajectory { theta, h })
+        // Q(t) on the slerp's great circle (signs as given, so consecutive ends are ψ apart)
+        let q_at = |t: f64| -> Quaternion<f64> {
+            if t <= 0.0 {
+                *s
+            } else if t >= 1.0 {
+                *e
+            } else {
+                seg.pose_at(t).rotation.into_inner()
+            }
+        };
+        (0..pieces)
+            .map(|k| {
+                let (t0, t1) = (cuts[k], cuts[k + 1]);
+                let psi = theta * (t1 - t0);
+                let (q0, q1) = (q_at(t0), q_at(t1));
+                let h = (psi / 2.0).tan();
+                let lin: Quaternion<f64> = (q1 - q0 * psi.cos()) / (psi / 2.0).cos().powi(2);
+                let quad: Quaternion<f64> = -q0 * (h * h);
+                let n: QuatPoly = [
+                    vec![q0.w, lin.w, quad.w],
+                    vec![q0.i, lin.i, quad.i],
+                    vec![q0.j, lin.j, quad.j],
+                    vec![q0.k, lin.k, quad.k],
+                ];
+                let param = Param::Trajectory { psi, h, t0: whole(t0), t1: whole(t1) };
+                if pieces == 1 {
+                    return Motion::from_parts(translation.clone(), &n, param);
+                }
+                // τ(λ) = num/den with num = (T0 + hλ)/tan(θ/2), den = 1 − T0·hλ (both linear)
+                let (big_t0, tan_half) = ((t0 * theta / 2.0).tan(), (theta / 2.0).tan());
+                let num = Bern::from_bernstein(vec![big_t0 / tan_half, (big_t0 + h) / tan_half]);
+                let den = Bern::from_bernstein(vec![1.0, 1.0 - big_t0 * h]);
+                let rest = den.sub(&num);
+                let position = translation.clone().map(|p| {
+                    // Σ c_j C(d,j) τ^j (1−τ)^(d−j) · den^d = Σ c_j C(d,j) num^j (den − num)^(d−j)
+                    let d = p.degree();
+                    let mut acc = Bern::constant(0.0);
+                    for j in 0..=d {
+                        let mut term = Bern::constant(p.c[j] * binomial(d, j));
+                        for _ in 0..j {
+                            term = term.mul(&num);
+                        }
+                        for _ in j..d {
+                            term = term.mul(&rest);
+                        }
+                        acc = acc.add(&term);
+                    }
+                    acc
+                });
+                // every coordinate's numerator over the common den^degree
+                let degree = translation.iter().map(Bern::degree).max().unwrap_or(0);
+                let position = [0, 1, 2].map(|i| position[i].mul(&power(&den, degree - translation[i].degree())));
+                Motion::from_rational(position, power(&den, degree), &n, param)
+            })
+            .collect()
     }
 
     /// The motions of a ray: `coord` runs from `lo` to `hi`, the other coordinates stay at
     /// `pose`'s (x, y, z, φ, θ, σ). Linear coordinates give one piece; angles one piece per
-    /// π/2 or less of range.
+    /// [`ANGLE_PIECE`] or less of range.
     pub fn ray(pose: &Pose, coord: Coord, lo: f64, hi: f64) -> Vec<Motion> {
-        let c = pose.coords();
+        Motion::ray_through(pose.coords(), coord, lo, hi)
+    }
+
+    /// The motions of a ray through the coordinates `c` (x, y, z, φ, θ, σ) as given — not the
+    /// canonical angles of their rotation, which may differ: a lattice's rays keep the user's
+    /// angle triple.
+    pub fn ray_through(c: [f64; 6], coord: Coord, lo: f64, hi: f64) -> Vec<Motion> {
+        let pose = Pose::from_coords(c);
         if !coord.is_angle() {
             let i = coord.index();
             let position = [0, 1, 2].map(|k| {
@@ -210,7 +328,7 @@ impl Motion {
             });
             return vec![Motion::from_parts(position, &quat_const(&pose.rotation), Param::Linear { lo, hi })];
         }
-        let pieces = (((hi - lo).abs() / FRAC_PI_2).ceil() as usize).max(1);
+        let pieces = (((hi - lo).abs() / ANGLE_PIECE).ceil() as usize).max(1);
         let position = [0, 1, 2].map(|k| Bern::constant(c[k]));
         (0..pieces)
             .map(|k| {
@@ -254,20 +372,32 @@ mod tests {
     #[test]
     fn trajectory_motion_matches_slerp_and_polynomial() {
         let qs = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.9);
-        let qe = UnitQuaternion::from_euler_angles(-0.5, 0.4, -0.1);
-        let traj = Trajectory {
-            name: "t".into(),
-            translation: Translation::Polynomial([vec![1.0, 2.0, -1.0], vec![0.5, 0.0, 0.0, 3.0], vec![2.0]]),
-            orientation: Orientation::Slerp(qs, qe),
-        };
-        let m = Motion::trajectory(&traj);
-        for i in 0..=10 {
-            let tau = i as f64 / 10.0;
-            let t = m.param.value(tau);
-            let (p, r) = m.eval(tau);
-            let want_q = qs.slerp(&qe, t);
-            assert!((r - want_q.to_rotation_matrix().matrix()).norm() < 1e-12, "rotation at τ={tau}");
-            assert!((p - traj.translation.at(tau)).norm() < 1e-12);
+        let translation = Translation::Polynomial([vec![1.0, 2.0, -1.0], vec![0.5, 0.0, 0.0, 3.0], vec![2.0]]);
+        // slerp angles θ (cos θ = Qs·Qe): short (one piece), long (two) and almost π (two; over the
+        // whole slerp tan(θ/2) would be about 2000)
+        for (angle, pieces) in [(1.2, 1), (2.5, 2), (std::f64::consts::PI - 1e-3, 2)] {
+            let qe = qs * UnitQuaternion::from_axis_angle(&nalgebra::Unit::new_normalize(Vector3::new(0.3, -0.5, 0.8)), 2.0 * angle);
+            assert!((qs.quaternion().dot(qe.quaternion()) - f64::cos(angle)).abs() < 1e-12);
+            let traj = Trajectory::single("t", translation.clone(), Orientation::Slerp(qs, qe));
+            let motions = Motion::trajectory(&traj);
+            assert!(motions.len() >= pieces, "θ = {angle}");
+            if angle <= FRAC_PI_2 {
+                assert_eq!(motions.len(), 1);
+            }
+            let mut last_t = 0.0;
+            for m in &motions {
+                assert_eq!(m.param.value(0.0), last_t);
+                for i in 0..=10 {
+                    let lam = i as f64 / 10.0;
+                    let t = m.param.value(lam);
+                    let (p, r) = m.eval(lam);
+                    let want = traj.pose_at(t);
+                    assert!((r - want.matrix()).norm() < 1e-11, "rotation at t={t}, θ = {angle}: {}", (r - want.matrix()).norm());
+                    assert!((p - want.position).norm() < 1e-9 * (1.0 + want.position.norm()), "position at t={t}, θ = {angle}: {p} vs {}", want.position);
+                }
+                last_t = m.param.value(1.0);
+            }
+            assert_eq!(last_t, 1.0);
         }
     }
 
@@ -276,7 +406,7 @@ mod tests {
         let pose = Pose::from_coords([1.0, 2.0, 3.0, 0.4, 0.7, -0.3]);
         for coord in [Coord::Phi, Coord::Theta, Coord::Sigma] {
             let pieces = Motion::ray(&pose, coord, -2.5, 2.0);
-            assert_eq!(pieces.len(), 3);
+            assert_eq!(pieces.len(), (4.5 / ANGLE_PIECE).ceil() as usize);
             for m in &pieces {
                 for i in 0..=4 {
                     let lam = i as f64 / 4.0;

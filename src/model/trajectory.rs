@@ -1,5 +1,7 @@
 //! Trajectories as the scenario states them (thesis §4.2): a translation that is polynomial in
 //! τ ∈ [0, 1] and an orientation that is a slerp in t ∈ [0, 1], tied by τ = tan(tθ/2)/tan(θ/2).
+//! A piecewise trajectory (format 2) chains such pieces, each starting where the previous ends;
+//! piece k of n covers t ∈ [k/n, (k+1)/n] of the whole.
 
 use super::pose::Pose;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
@@ -28,38 +30,31 @@ pub enum Orientation {
 pub struct Trajectory {
     /// Its name in the scenario.
     pub name: String,
-    /// Translation in τ.
+    /// Translation in τ (of the first piece).
     pub translation: Translation,
-    /// Orientation in t.
+    /// Orientation in t (of the first piece).
+    pub orientation: Orientation,
+    /// The pieces after the first, in order, for a piecewise trajectory (format 2 `pieces`);
+    /// empty for a one-piece trajectory.
+    pub more: Vec<Segment>,
+}
+
+/// One piece of a piecewise trajectory: a translation in its own τ and a slerp in its own t.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Segment {
+    /// Translation in τ ∈ [0, 1].
+    pub translation: Translation,
+    /// Orientation in t ∈ [0, 1].
     pub orientation: Orientation,
 }
 
-impl Translation {
-    /// The position at τ (direct evaluation, used by the point-wise baseline).
-    pub fn at(&self, tau: f64) -> Vector3<f64> {
-        match self {
-            Translation::Polynomial(c) => {
-                Vector3::from_fn(|i, _| c[i].iter().rev().fold(0.0, |acc, &a| acc * tau + a))
-            }
-            Translation::Bezier(points) => {
-                let mut pts = points.clone();
-                for level in (1..pts.len()).rev() {
-                    for k in 0..level {
-                        pts[k] = pts[k] * (1.0 - tau) + pts[k + 1] * tau;
-                    }
-                }
-                pts.first().copied().unwrap_or_else(Vector3::zeros)
-            }
-            Translation::Line(a, b) => a * (1.0 - tau) + b * tau,
-        }
-    }
-}
-
-impl Trajectory {
-    /// The slerp angle θ ∈ [0, π] with cos θ = Qs·Qe (the quaternions' signs as given).
+impl Segment {
+    /// The slerp angle θ ∈ [0, π] with cos θ = Qs·Qe (the quaternions' signs as given), taken as
+    /// 2·atan2(|Qe − Qs|, |Qe + Qs|), which unlike acos stays accurate near 0 and π.
     pub fn theta(&self) -> f64 {
         let Orientation::Slerp(qs, qe) = &self.orientation;
-        qs.quaternion().dot(qe.quaternion()).clamp(-1.0, 1.0).acos()
+        let (s, e) = (qs.quaternion(), qe.quaternion());
+        2.0 * (e - s).norm().atan2((e + s).norm())
     }
 
     /// τ at slerp parameter t: τ = tan(tθ/2)/tan(θ/2), or t when θ = 0; exactly 0 and 1 at the
@@ -85,5 +80,86 @@ impl Trajectory {
             (s * ((1.0 - t) * theta).sin() + e * (t * theta).sin()) / theta.sin()
         };
         Pose { position: self.translation.at(self.tau_of_t(t)), rotation: UnitQuaternion::from_quaternion(q) }
+    }
+}
+
+impl Translation {
+    /// The position at τ (direct evaluation, used by the point-wise baseline).
+    pub fn at(&self, tau: f64) -> Vector3<f64> {
+        match self {
+            Translation::Polynomial(c) => {
+                Vector3::from_fn(|i, _| c[i].iter().rev().fold(0.0, |acc, &a| acc * tau + a))
+            }
+            Translation::Bezier(points) => {
+                let mut pts = points.clone();
+                for level in (1..pts.len()).rev() {
+                    for k in 0..level {
+                        pts[k] = pts[k] * (1.0 - tau) + pts[k + 1] * tau;
+                    }
+                }
+                pts.first().copied().unwrap_or_else(Vector3::zeros)
+            }
+            Translation::Line(a, b) => a * (1.0 - tau) + b * tau,
+        }
+    }
+}
+
+impl Trajectory {
+    /// A one-piece trajectory.
+    pub fn single(name: impl Into<String>, translation: Translation, orientation: Orientation) -> Trajectory {
+        Trajectory { name: name.into(), translation, orientation, more: vec![] }
+    }
+
+    /// A trajectory of one or more pieces (the first must exist: `None` for an empty list).
+    pub fn piecewise(name: impl Into<String>, pieces: Vec<Segment>) -> Option<Trajectory> {
+        let mut it = pieces.into_iter();
+        let first = it.next()?;
+        Some(Trajectory { name: name.into(), translation: first.translation, orientation: first.orientation, more: it.collect() })
+    }
+
+    /// Number of pieces (1 for an ordinary trajectory).
+    pub fn piece_count(&self) -> usize {
+        1 + self.more.len()
+    }
+
+    /// The pieces in order, the first included.
+    pub fn pieces(&self) -> Vec<Segment> {
+        let first = Segment { translation: self.translation.clone(), orientation: self.orientation.clone() };
+        std::iter::once(first).chain(self.more.iter().cloned()).collect()
+    }
+
+    /// The share [t0, t1] of the whole t ∈ [0, 1] that piece `k` covers.
+    pub fn piece_span(&self, k: usize) -> [f64; 2] {
+        let n = self.piece_count() as f64;
+        [k as f64 / n, if k + 1 == self.piece_count() { 1.0 } else { (k + 1) as f64 / n }]
+    }
+
+    /// The piece holding t and t's value within it.
+    fn locate(&self, t: f64) -> (Segment, usize, f64) {
+        let n = self.piece_count();
+        let t = t.clamp(0.0, 1.0);
+        let k = ((t * n as f64).floor() as usize).min(n - 1);
+        let [t0, t1] = self.piece_span(k);
+        let seg = if k == 0 {
+            Segment { translation: self.translation.clone(), orientation: self.orientation.clone() }
+        } else {
+            self.more[k - 1].clone()
+        };
+        (seg, k, ((t - t0) / (t1 - t0)).clamp(0.0, 1.0))
+    }
+
+    /// τ at slerp parameter t: τ = tan(tθ/2)/tan(θ/2), or t when θ = 0; exactly 0 and 1 at the
+    /// ends. For a piecewise trajectory, piece k's own τ mapped onto [k/n, (k+1)/n].
+    pub fn tau_of_t(&self, t: f64) -> f64 {
+        let (seg, k, local) = self.locate(t);
+        let [t0, t1] = self.piece_span(k);
+        t0 + (t1 - t0) * seg.tau_of_t(local)
+    }
+
+    /// The pose at slerp parameter t, evaluated directly: p(τ(t)) and
+    /// Q(t) = (Qs sin((1−t)θ) + Qe sin(tθ)) / sin θ (in the piece holding t).
+    pub fn pose_at(&self, t: f64) -> Pose {
+        let (seg, _, local) = self.locate(t);
+        seg.pose_at(local)
     }
 }

@@ -11,6 +11,8 @@
 
 pub mod atlas;
 pub mod chart;
+pub mod choice;
+pub mod lattice;
 pub mod manifold;
 pub mod search;
 
@@ -104,6 +106,9 @@ pub enum PlanStatus {
     NoPath,
     /// The chart budget ran out first: nothing is claimed.
     Budget,
+    /// A path was found, but some section of it could not be made to verify (the lattice
+    /// planner's smoothed trajectory after every repair): the report says which.
+    Unrepaired,
 }
 
 /// Progress of a running planner.
@@ -462,7 +467,7 @@ pub(crate) fn edge_trajectory(index: usize, a: &Pose, b: &Pose) -> Trajectory {
     } else {
         b.rotation
     };
-    Trajectory { name: format!("edge {index}"), translation: Translation::Line(a.position, b.position), orientation: Orientation::Slerp(a.rotation, qb) }
+    Trajectory::single(format!("edge {index}"), Translation::Line(a.position, b.position), Orientation::Slerp(a.rotation, qb))
 }
 
 impl PathVerification {

@@ -105,26 +105,35 @@ impl Bern {
         if n <= m {
             return self.clone();
         }
-        let r = n - m;
         let mut c = vec![0.0; n + 1];
-        for (k, ck) in c.iter_mut().enumerate() {
-            let lo = k.saturating_sub(r);
-            let hi = k.min(m);
-            let mut s = 0.0;
-            for j in lo..=hi {
-                s += binomial(m, j) * binomial(r, k - j) / binomial(n, k) * self.c[j];
-            }
-            *ck = s;
-        }
+        elevate_into(&self.c, &mut c);
         Bern { c, err: self.err + (m + 4) as f64 * U * self.max_abs() }
     }
 
     fn combine(&self, other: &Bern, sign: f64) -> Bern {
-        let n = self.degree().max(other.degree());
-        let a = self.elevate(n);
-        let b = other.elevate(n);
-        let c: Vec<f64> = a.c.iter().zip(&b.c).map(|(x, y)| x + sign * y).collect();
-        let err = a.err + b.err + U * max_abs(&c);
+        let (m, k) = (self.degree(), other.degree());
+        let n = m.max(k);
+        // Both operands at degree n, the lower one elevated straight into the output buffer.
+        let mut c = vec![0.0; n + 1];
+        let mut err = self.err + other.err;
+        if m < n {
+            elevate_into(&self.c, &mut c);
+            err += (m + 4) as f64 * U * self.max_abs();
+            for (x, y) in c.iter_mut().zip(&other.c) {
+                *x += sign * y;
+            }
+        } else if k < n {
+            elevate_into(&other.c, &mut c);
+            err += (k + 4) as f64 * U * other.max_abs();
+            for (x, y) in c.iter_mut().zip(&self.c) {
+                *x = y + sign * *x;
+            }
+        } else {
+            for ((z, x), y) in c.iter_mut().zip(&self.c).zip(&other.c) {
+                *z = x + sign * y;
+            }
+        }
+        let err = err + U * max_abs(&c);
         Bern { c, err }
     }
 
@@ -153,19 +162,29 @@ impl Bern {
         if n == 0 {
             return self.scale_with_err(other.c[0], other.err);
         }
-        let bm = &pascal_row(m);
-        let bn = &pascal_row(n);
-        let bmn = &pascal_row(m + n);
-        let a: Vec<f64> = self.c.iter().zip(bm.iter()).map(|(x, b)| x * b).collect();
-        let b: Vec<f64> = other.c.iter().zip(bn.iter()).map(|(x, b)| x * b).collect();
         let mut c = vec![0.0; m + n + 1];
-        for (i, ai) in a.iter().enumerate() {
-            for (j, bj) in b.iter().enumerate() {
-                c[i + j] += ai * bj;
+        if m + n <= MAX_DEGREE {
+            let (bm, bn, inv) = (&pascal()[m], &pascal()[n], &inverse_pascal()[m + n]);
+            for (i, (x, bi)) in self.c.iter().zip(bm).enumerate() {
+                let ai = x * bi;
+                for ((ck, y), bj) in c[i..].iter_mut().zip(&other.c).zip(bn) {
+                    *ck += ai * (y * bj);
+                }
             }
-        }
-        for (k, ck) in c.iter_mut().enumerate() {
-            *ck /= bmn[k];
+            for (ck, q) in c.iter_mut().zip(inv) {
+                *ck *= q;
+            }
+        } else {
+            let (bm, bn, bmn) = (pascal_row(m), pascal_row(n), pascal_row(m + n));
+            for (i, (x, bi)) in self.c.iter().zip(&bm).enumerate() {
+                let ai = x * bi;
+                for ((ck, y), bj) in c[i..].iter_mut().zip(&other.c).zip(&bn) {
+                    *ck += ai * (y * bj);
+                }
+            }
+            for (ck, b) in c.iter_mut().zip(&bmn) {
+                *ck /= b;
+            }
         }
         let (ma, mb) = (self.max_abs(), other.max_abs());
         let err = self.err * mb + other.err * ma + self.err * other.err + (m.min(n) + 6) as f64 * U * ma * mb;
@@ -197,17 +216,16 @@ impl Bern {
     /// The two halves of the polynomial split at x, each re-parametrised to [0, 1].
     pub fn split(&self, x: f64) -> (Bern, Bern) {
         let n = self.degree();
-        let mut b = self.c.clone();
+        // de Casteljau in place in `right`: after level l, right[k] (k ≤ n − l) holds the level-l
+        // point k; its first entry is the left half's coefficient l, and right[n − l] is final.
+        let mut right = self.c.clone();
         let mut left = Vec::with_capacity(n + 1);
-        let mut right = vec![0.0; n + 1];
-        left.push(b[0]);
-        right[n] = b[n];
+        left.push(right[0]);
         for level in 1..=n {
             for k in 0..=(n - level) {
-                b[k] = b[k] * (1.0 - x) + b[k + 1] * x;
+                right[k] = right[k] * (1.0 - x) + right[k + 1] * x;
             }
-            left.push(b[0]);
-            right[n - level] = b[n - level];
+            left.push(right[0]);
         }
         let err = self.err + (2 * n + 2) as f64 * U * self.max_abs();
         (Bern { c: left, err }, Bern { c: right, err })
@@ -226,6 +244,38 @@ impl Bern {
     /// Whether every coefficient is exactly zero and the error bound is zero.
     pub fn is_exact_zero(&self) -> bool {
         self.err == 0.0 && self.c.iter().all(|&x| x == 0.0)
+    }
+}
+
+/// 1 / C(n, k), row by row up to MAX_DEGREE.
+fn inverse_pascal() -> &'static Vec<Vec<f64>> {
+    static TABLE: OnceLock<Vec<Vec<f64>>> = OnceLock::new();
+    TABLE.get_or_init(|| pascal().iter().map(|row| row.iter().map(|b| 1.0 / b).collect()).collect())
+}
+
+/// Writes the coefficients `c` (degree m) raised to degree n = out.len() − 1 > m into `out`:
+/// out_k = Σ_j C(m, j) c_j C(n − m, k − j) / C(n, k).
+fn elevate_into(c: &[f64], out: &mut [f64]) {
+    let m = c.len() - 1;
+    let n = out.len() - 1;
+    let r = n - m;
+    out.iter_mut().for_each(|x| *x = 0.0);
+    if n <= MAX_DEGREE {
+        let (bm, br, inv) = (&pascal()[m], &pascal()[r], &inverse_pascal()[n]);
+        for (j, (x, b)) in c.iter().zip(bm).enumerate() {
+            let a = x * b;
+            for (o, q) in out[j..=j + r].iter_mut().zip(br) {
+                *o += a * q;
+            }
+        }
+        for (o, q) in out.iter_mut().zip(inv) {
+            *o *= q;
+        }
+    } else {
+        for (k, o) in out.iter_mut().enumerate() {
+            let (lo, hi) = (k.saturating_sub(r), k.min(m));
+            *o = (lo..=hi).map(|j| binomial(m, j) * binomial(r, k - j) / binomial(n, k) * c[j]).sum();
+        }
     }
 }
 

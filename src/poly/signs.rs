@@ -47,23 +47,27 @@ fn push(out: &mut Vec<(f64, Sign)>, end: f64, s: Sign) {
     out.push((end, s));
 }
 
-/// Sign classification of each coefficient: +1, −1 or 0 (within error of zero).
-fn coefficient_signs(p: &Bern) -> Vec<i8> {
-    p.c.iter()
-        .map(|&c| if c > p.err { 1 } else if c < -p.err { -1 } else { 0 })
-        .collect()
+/// Sign classification of a coefficient: +1, −1 or 0 (within `err` of zero).
+fn sign_of(c: f64, err: f64) -> i8 {
+    if c > err {
+        1
+    } else if c < -err {
+        -1
+    } else {
+        0
+    }
 }
 
 /// Whether the coefficient signs have the pattern s…s ?…? (−s)…(−s) with certain first and last
 /// coefficients: then the polynomial has exactly one root, and it is simple.
-fn single_crossing(signs: &[i8]) -> bool {
-    let (first, last) = (signs[0], signs[signs.len() - 1]);
+fn single_crossing(p: &Bern) -> bool {
+    let (first, last) = (sign_of(p.c[0], p.err), sign_of(p.c[p.degree()], p.err));
     if first == 0 || last == 0 || first == last {
         return false;
     }
     let mut phase = 0; // 0: leading sign, 1: unknowns, 2: trailing sign
-    for &s in signs {
-        phase = match (phase, s) {
+    for &c in &p.c {
+        phase = match (phase, sign_of(c, p.err)) {
             (0, x) if x == first => 0,
             (0 | 1, 0) => 1,
             (_, x) if x == last => 2,
@@ -74,11 +78,10 @@ fn single_crossing(signs: &[i8]) -> bool {
 }
 
 fn recurse(p: &Bern, lo: f64, hi: f64, tol: f64, budget: &mut usize, out: &mut Vec<(f64, Sign)>) {
-    let signs = coefficient_signs(p);
-    if signs.iter().all(|&s| s == 1) {
+    if p.c.iter().all(|&c| c > p.err) {
         return push(out, hi, Sign::Pos);
     }
-    if signs.iter().all(|&s| s == -1) {
+    if p.c.iter().all(|&c| c < -p.err) {
         return push(out, hi, Sign::Neg);
     }
     // Half of tol: an Unknown piece on each side of a split point still merges to at most tol.
@@ -86,8 +89,8 @@ fn recurse(p: &Bern, lo: f64, hi: f64, tol: f64, budget: &mut usize, out: &mut V
         return push(out, hi, Sign::Unknown);
     }
     *budget -= 1;
-    if single_crossing(&signs) {
-        return bisect_root(p, lo, hi, tol, signs[0], out);
+    if single_crossing(p) {
+        return bisect_root(p, lo, hi, tol, sign_of(p.c[0], p.err), out);
     }
     let (left, right) = p.split(0.5);
     let mid = 0.5 * (lo + hi);

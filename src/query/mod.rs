@@ -113,6 +113,115 @@ pub fn segment_meets_cone(a: &V, s: &V, apex: &V, axis: &V, cos2: f64, height: f
     best >= 0.0
 }
 
+/// Distance from point p to the solid finite cylinder with end-face centres `from`, `to` and
+/// radius r (0 inside): in the axial and radial coordinates (h, ρ) it is the distance to the
+/// rectangle [0, L] × [0, r].
+pub fn point_cylinder_dist(p: &V, from: &V, to: &V, r: f64) -> f64 {
+    let d = to - from;
+    let len = d.norm();
+    let e = d / len;
+    let w = p - from;
+    let h = w.dot(&e);
+    let rho = (w - e * h).norm();
+    let dh = (-h).max(h - len).max(0.0);
+    let dr = (rho - r).max(0.0);
+    dh.hypot(dr)
+}
+
+/// Distance from point p to the solid cone with the given apex, unit axis, half-angle α and
+/// height H (0 inside): in the axial and radial coordinates (h, ρ ≥ 0) the cone's section is the
+/// triangle (0, 0), (H, H tan α), (H, 0), and the nearest point lies on its lateral or base edge.
+pub fn point_cone_dist(p: &V, apex: &V, axis: &V, half_angle: f64, height: f64) -> f64 {
+    let w = p - apex;
+    let h = w.dot(axis);
+    let rho = (w - axis * h).norm();
+    let radius = height * half_angle.tan();
+    if h >= 0.0 && h <= height && rho <= h * half_angle.tan() {
+        return 0.0;
+    }
+    let to_edge = |(x0, y0): (f64, f64), (x1, y1): (f64, f64)| {
+        let (dx, dy) = (x1 - x0, y1 - y0);
+        let k = (((h - x0) * dx + (rho - y0) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
+        (h - x0 - k * dx).hypot(rho - y0 - k * dy)
+    };
+    to_edge((0.0, 0.0), (height, radius)).min(to_edge((height, 0.0), (height, radius)))
+}
+
+/// An ellipsoid {x : (x−c)ᵀ M (x−c) ≤ 1} by its principal frame: `axes` holds M's unit
+/// eigenvectors as columns and `m` the eigenvalues (1/semi-axis²).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EllipsoidFrame {
+    /// Centre c.
+    pub center: V,
+    /// Eigenvectors of M, as columns.
+    pub axes: Matrix3<f64>,
+    /// Eigenvalues of M (all > 0).
+    pub m: V,
+}
+
+impl EllipsoidFrame {
+    /// The principal frame of the SPD matrix `matrix` centred at `center`.
+    pub fn new(center: V, matrix: &Matrix3<f64>) -> EllipsoidFrame {
+        let eig = nalgebra::SymmetricEigen::new(*matrix);
+        EllipsoidFrame { center, axes: eig.eigenvectors, m: eig.eigenvalues }
+    }
+
+    /// Distance from point p to the solid ellipsoid (0 inside). Outside, the nearest point is
+    /// y_i = z_i/(1 + m_i t) in principal coordinates z, where t > 0 is the root of
+    /// Σ m_i z_i²/(1 + m_i t)² = 1 (decreasing in t, bracketed by [0, √(Σ z_i²/m_i)] and found by
+    /// bisection to the last bit).
+    pub fn point_dist(&self, p: &V) -> f64 {
+        let z = self.axes.transpose() * (p - self.center);
+        let g = |t: f64| (0..3).map(|i| self.m[i] * (z[i] / (1.0 + self.m[i] * t)).powi(2)).sum::<f64>() - 1.0;
+        if g(0.0) <= 0.0 {
+            return 0.0;
+        }
+        let (mut lo, mut hi) = (0.0f64, (0..3).map(|i| z[i] * z[i] / self.m[i]).sum::<f64>().sqrt());
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            if g(mid) > 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        let t = 0.5 * (lo + hi);
+        (0..3).map(|i| (z[i] * self.m[i] * t / (1.0 + self.m[i] * t)).powi(2)).sum::<f64>().sqrt()
+    }
+}
+
+/// Minimum over the segment a → a + s of a convex function of the point (a distance to a convex
+/// solid): golden-section search on the segment parameter, and both ends.
+pub fn segment_min_convex(a: &V, s: &V, f: impl Fn(&V) -> f64) -> f64 {
+    let g = |u: f64| f(&(a + s * u));
+    let r = (5f64.sqrt() - 1.0) / 2.0;
+    let (mut lo, mut hi) = (0.0f64, 1.0f64);
+    let (mut c, mut d) = (hi - r * (hi - lo), lo + r * (hi - lo));
+    let (mut fc, mut fd) = (g(c), g(d));
+    for _ in 0..120 {
+        if fc < fd {
+            hi = d;
+            d = c;
+            fd = fc;
+            c = hi - r * (hi - lo);
+            fc = g(c);
+        } else {
+            lo = c;
+            c = d;
+            fc = fd;
+            d = lo + r * (hi - lo);
+            fd = g(d);
+        }
+        if hi - lo < 1e-16 {
+            break;
+        }
+    }
+    fc.min(fd).min(g(0.0)).min(g(1.0))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -144,5 +253,28 @@ mod tests {
         assert!(segment_meets_cone(&v(-1., 0., 0.5), &v(2., 0., 0.), &apex, &axis, cos2, 1.0));
         assert!(!segment_meets_cone(&v(-1., 0., 1.5), &v(2., 0., 0.), &apex, &axis, cos2, 1.0));
         assert!(!segment_meets_cone(&v(-1., 0., -0.5), &v(2., 0., 0.), &apex, &axis, cos2, 1.0));
+    }
+
+    #[test]
+    fn quadric_distances_on_hand_cases() {
+        let (p, q) = (v(0., 0., 0.), v(0., 0., 2.));
+        assert!((point_cylinder_dist(&v(3., 0., 1.), &p, &q, 1.0) - 2.0).abs() < 1e-15);
+        assert!((point_cylinder_dist(&v(0.5, 0., 3.), &p, &q, 1.0) - 1.0).abs() < 1e-15);
+        assert!((point_cylinder_dist(&v(4., 0., 6.), &p, &q, 1.0) - 5.0).abs() < 1e-15);
+        assert_eq!(point_cylinder_dist(&v(0.5, 0.5, 1.), &p, &q, 1.0), 0.0);
+        // cone: apex at 0, axis +z, 45°, height 1: the lateral normal through (0, 1, 0) hits the apex
+        let a45 = std::f64::consts::FRAC_PI_4;
+        assert!((point_cone_dist(&v(0., 1., 0.), &p, &v(0., 0., 1.), a45, 1.0) - 0.5f64.sqrt()).abs() < 1e-15);
+        assert!((point_cone_dist(&v(0., 0., -1.), &p, &v(0., 0., 1.), a45, 1.0) - 1.0).abs() < 1e-15);
+        assert!((point_cone_dist(&v(0., 0.5, 3.), &p, &v(0., 0., 1.), a45, 1.0) - 2.0).abs() < 1e-15);
+        assert!((point_cone_dist(&v(0., 2., 2.), &p, &v(0., 0., 1.), a45, 1.0) - 2f64.sqrt()).abs() < 1e-15);
+        // ellipsoid with semi-axes 1, 2, 3
+        let m = Matrix3::from_diagonal(&v(1.0, 0.25, 1.0 / 9.0));
+        let e = EllipsoidFrame::new(v(1., 1., 1.), &m);
+        assert!((e.point_dist(&v(4., 1., 1.)) - 2.0).abs() < 1e-14);
+        assert!((e.point_dist(&v(1., 1., 5.)) - 1.0).abs() < 1e-14);
+        assert_eq!(e.point_dist(&v(1.5, 1., 1.)), 0.0);
+        let d = segment_min_convex(&v(3., -5., 1.), &v(0., 10., 0.), |x| e.point_dist(x));
+        assert!((d - 1.0).abs() < 1e-12, "{d}");
     }
 }

@@ -16,8 +16,12 @@ use std::marker::PhantomData;
 
 use crate::error::{Error, Result};
 
-/// The only scenario format this version reads.
+/// The scenario format version 1, which every writer uses unless it needs version 2.
 pub const FORMAT: &str = "cablenav-scenario/1";
+/// Format version 2: version 1 plus piecewise trajectories (`trajectories[k].pieces`). A file
+/// using pieces must declare it, so that a reader of version 1 refuses the file by its version
+/// instead of by an unknown field.
+pub const FORMAT_2: &str = "cablenav-scenario/2";
 
 /// The whole file.
 #[derive(Debug, Deserialize)]
@@ -184,10 +188,24 @@ pub struct RawPose {
     pub euler_xyz_deg: Option<Fixed<f64, 3>>,
 }
 
+/// A trajectory: `translation` and `orientation`, or (format 2) `pieces` instead (checked in
+/// `validate`).
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawTrajectory {
     pub name: String,
+    #[serde(default)]
+    pub translation: Option<RawTranslation>,
+    #[serde(default)]
+    pub orientation: Option<RawOrientation>,
+    #[serde(default)]
+    pub pieces: Option<Vec<RawPiece>>,
+}
+
+/// One piece of a piecewise trajectory.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawPiece {
     pub translation: RawTranslation,
     pub orientation: RawOrientation,
 }
@@ -218,6 +236,8 @@ pub struct RawQuery {
     pub goal: String,
     #[serde(default)]
     pub fixed: Vec<String>,
+    #[serde(default)]
+    pub region: Option<Ordered<Fixed<f64, 2>>>,
 }
 
 /// What a fixed-size array holds, for messages such as "expected 3 numbers".
@@ -435,11 +455,11 @@ pub fn parse(text: &str) -> Result<RawScenario> {
     let head: FormatOnly = read(text)?;
     match head.format {
         None => {
-            return Err(Error::new("format", format!("missing; this version reads \"{FORMAT}\"")));
+            return Err(Error::new("format", format!("missing; this version reads \"{FORMAT}\" and \"{FORMAT_2}\"")));
         }
-        Some(serde_json::Value::String(s)) if s == FORMAT => {}
+        Some(serde_json::Value::String(s)) if s == FORMAT || s == FORMAT_2 => {}
         Some(other) => {
-            return Err(Error::new("format", format!("unsupported format {other}; this version reads \"{FORMAT}\"")));
+            return Err(Error::new("format", format!("unsupported format {other}; this version reads \"{FORMAT}\" and \"{FORMAT_2}\"")));
         }
     }
     read(text)

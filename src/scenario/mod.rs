@@ -3,6 +3,7 @@
 
 pub mod caspr;
 pub mod json;
+pub mod link;
 pub mod validate;
 
 use crate::error::{Error, Result};
@@ -22,6 +23,9 @@ pub struct Query {
     pub goal: String,
     /// Coordinates held at the start pose's values.
     pub fixed: Vec<Coord>,
+    /// The box a lattice planner searches, per free coordinate (`region` in the file); free
+    /// coordinates not listed get a default range (docs/lattice.md).
+    pub region: Vec<(Coord, [f64; 2])>,
 }
 
 /// A validated scenario: the robot, its surroundings, and the named poses, trajectories and
@@ -86,4 +90,57 @@ impl Scenario {
             }),
         }
     }
+}
+
+/// A trajectory as scenario JSON: `translation` and `orientation`, or `pieces` for a piecewise
+/// one (format 2). Orientations are written as quaternions `[w, x, y, z]` with their signs.
+pub fn trajectory_json(traj: &Trajectory) -> serde_json::Value {
+    use crate::model::{Orientation, Translation};
+    use serde_json::json;
+    let piece = |seg: &crate::model::Segment| {
+        let v3 = |p: &nalgebra::Vector3<f64>| json!([p.x, p.y, p.z]);
+        let translation = match &seg.translation {
+            Translation::Polynomial(c) => json!({"polynomial": c}),
+            Translation::Bezier(points) => json!({"bezier": points.iter().map(v3).collect::<Vec<_>>()}),
+            Translation::Line(a, b) => json!({"line": [v3(a), v3(b)]}),
+        };
+        let Orientation::Slerp(qs, qe) = &seg.orientation;
+        let q = |q: &nalgebra::UnitQuaternion<f64>| json!([q.w, q.i, q.j, q.k]);
+        json!({"translation": translation, "orientation": {"slerp": [q(qs), q(qe)]}})
+    };
+    let pieces = traj.pieces();
+    if pieces.len() == 1 {
+        let mut v = piece(&pieces[0]);
+        v["name"] = json!(traj.name);
+        v
+    } else {
+        json!({"name": traj.name, "pieces": pieces.iter().map(piece).collect::<Vec<_>>()})
+    }
+}
+
+/// The scenario text `text` with `traj` appended to its trajectories under its name, or the name
+/// with ` 2`, ` 3`, … added if that is taken; the format becomes version 2 when the trajectory has
+/// several pieces. Returns the new text (pretty-printed) and the name used. The text must be a
+/// valid scenario.
+pub fn with_trajectory(text: &str, traj: &Trajectory) -> Result<(String, String)> {
+    let scenario = Scenario::from_json(text)?;
+    let mut value: serde_json::Value = serde_json::from_str(text).map_err(|e| Error::new("", format!("malformed JSON: {e}")))?;
+    let taken = |n: &str| scenario.trajectories.iter().any(|t| t.name == n);
+    let mut name = traj.name.clone();
+    let mut k = 2;
+    while taken(&name) {
+        name = format!("{} {k}", traj.name);
+        k += 1;
+    }
+    let mut t = traj.clone();
+    t.name = name.clone();
+    if t.piece_count() > 1 {
+        value["format"] = serde_json::json!(json::FORMAT_2);
+    }
+    match value.get_mut("trajectories").and_then(|v| v.as_array_mut()) {
+        Some(list) => list.push(trajectory_json(&t)),
+        None => value["trajectories"] = serde_json::json!([trajectory_json(&t)]),
+    }
+    let out = serde_json::to_string_pretty(&value).map_err(|e| Error::new("output", e.to_string()))?;
+    Ok((out, name))
 }

@@ -7,11 +7,11 @@ use std::f64::consts::FRAC_PI_2;
 
 use super::json::{
     Fixed, QuatRef, RawBounds, RawCable, RawCableBounds, RawObstacle, RawOrientation, RawPose, RawQuery, RawRobot,
-    RawScenario, RawTrajectory, RawTranslation, RawWrench, ScalarOrList,
+    RawPiece, RawScenario, RawTrajectory, RawTranslation, RawWrench, ScalarOrList,
 };
 use super::{Query, Scenario};
 use crate::error::{finite, Error, Result};
-use crate::model::{Bounds, Cable, Clearance, Coord, Orientation, PointFrame, Pose, Robot, Trajectory, Translation, Wrench};
+use crate::model::{Bounds, Cable, Clearance, Coord, Orientation, PointFrame, Pose, Robot, Segment, Trajectory, Translation, Wrench};
 use crate::shape::{Mesh, Obstacle, Shape};
 
 /// Fewest cables of a 6-DoF robot.
@@ -26,6 +26,11 @@ pub const MAX_TRIANGLES: usize = 100_000;
 /// the exact conditions multiply the translation with itself and with the rotation, so their
 /// degree grows several times faster than this, and the limit keeps exact verification tractable.
 pub const MAX_DEGREE: usize = 10;
+/// Most pieces of one piecewise trajectory.
+pub const MAX_PIECES: usize = 10_000;
+/// Largest gap accepted between consecutive pieces of a trajectory: in position relative to the
+/// coordinates' size (at least 1), and in rotation angle (radians).
+pub const JOIN_TOLERANCE: f64 = 1e-9;
 /// Largest deviation of a quaternion's norm from 1 accepted without a warning.
 pub const UNIT_TOLERANCE: f64 = 1e-9;
 
@@ -37,7 +42,7 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
     let obstacles = obstacles(&raw.obstacles)?;
     let poses = poses(&raw.poses.0, &mut warnings)?;
     check_cable_lengths(&robot, &poses)?;
-    let trajectories = trajectories(&raw.trajectories, &poses, &mut warnings)?;
+    let trajectories = trajectories(&raw.trajectories, raw.format == super::json::FORMAT_2, &poses, &mut warnings)?;
     let queries = queries(&raw.queries, &poses)?;
     let wrench = raw.wrench.as_ref().map(wrench).transpose()?;
     if wrench.is_some() && robot.cables.len() > MAX_WRENCH_CABLES {
@@ -570,6 +575,7 @@ fn unique_name<'a>(path: &str, name: &str, kind: &str, list: &str, earlier: impl
 
 fn trajectories(
     raw: &[RawTrajectory],
+    version_2: bool,
     poses: &[(String, Pose)],
     warnings: &mut Vec<String>,
 ) -> Result<Vec<Trajectory>> {
@@ -577,11 +583,67 @@ fn trajectories(
     for (k, t) in raw.iter().enumerate() {
         let path = format!("trajectories[{k}]");
         unique_name(&path, &t.name, "trajectory", "trajectories", out.iter().map(|o| o.name.as_str()))?;
-        let translation = translation(&format!("{path}.translation"), &t.translation)?;
-        let orientation = orientation(&format!("{path}.orientation"), &t.orientation, poses, warnings)?;
-        out.push(Trajectory { name: t.name.clone(), translation, orientation });
+        let traj = match (&t.pieces, &t.translation, &t.orientation) {
+            (Some(pieces), None, None) => {
+                if !version_2 {
+                    return Err(Error::new(
+                        format!("{path}.pieces"),
+                        format!("piecewise trajectories need \"format\": \"{}\"", super::json::FORMAT_2),
+                    ));
+                }
+                piecewise(&path, &t.name, pieces, poses, warnings)?
+            }
+            (Some(_), _, _) => {
+                return Err(Error::new(format!("{path}.pieces"), "give either pieces or translation and orientation, not both"));
+            }
+            (None, Some(tr), Some(or)) => Trajectory::single(
+                t.name.clone(),
+                translation(&format!("{path}.translation"), tr)?,
+                orientation(&format!("{path}.orientation"), or, poses, warnings)?,
+            ),
+            (None, None, _) => return Err(Error::new(format!("{path}.translation"), "missing field `translation`")),
+            (None, _, None) => return Err(Error::new(format!("{path}.orientation"), "missing field `orientation`")),
+        };
+        out.push(traj);
     }
     Ok(out)
+}
+
+/// A piecewise trajectory: 1 to [`MAX_PIECES`] pieces, each starting where the previous ends
+/// (position and rotation within [`JOIN_TOLERANCE`]).
+fn piecewise(path: &str, name: &str, raw: &[RawPiece], poses: &[(String, Pose)], warnings: &mut Vec<String>) -> Result<Trajectory> {
+    let field = format!("{path}.pieces");
+    if raw.is_empty() || raw.len() > MAX_PIECES {
+        return Err(Error::new(field, format!("needs 1 to {MAX_PIECES} pieces, got {}", raw.len())));
+    }
+    let mut pieces: Vec<Segment> = Vec::with_capacity(raw.len());
+    for (j, p) in raw.iter().enumerate() {
+        let pf = format!("{field}[{j}]");
+        let seg = Segment {
+            translation: translation(&format!("{pf}.translation"), &p.translation)?,
+            orientation: orientation(&format!("{pf}.orientation"), &p.orientation, poses, warnings)?,
+        };
+        if let Some(prev) = pieces.last() {
+            let (a, b) = (prev.pose_at(1.0), seg.pose_at(0.0));
+            let scale = a.position.amax().max(1.0);
+            let gap = (a.position - b.position).norm();
+            if gap > JOIN_TOLERANCE * scale {
+                return Err(Error::new(
+                    format!("{pf}.translation"),
+                    format!("starts {gap:.3e} away from where piece {} ends: the pieces of a trajectory must join", j - 1),
+                ));
+            }
+            let angle = a.rotation.angle_to(&b.rotation);
+            if angle > JOIN_TOLERANCE {
+                return Err(Error::new(
+                    format!("{pf}.orientation"),
+                    format!("starts {angle:.3e} rad away from the rotation where piece {} ends: the pieces of a trajectory must join", j - 1),
+                ));
+            }
+        }
+        pieces.push(seg);
+    }
+    Trajectory::piecewise(name, pieces).ok_or_else(|| Error::new(field, "needs at least one piece"))
 }
 
 fn translation(path: &str, t: &RawTranslation) -> Result<Translation> {
@@ -715,7 +777,26 @@ fn queries(raw: &[RawQuery], poses: &[(String, Pose)]) -> Result<Vec<Query>> {
             }
             fixed.push(c);
         }
-        out.push(Query { name: q.name.clone(), start: q.start.clone(), goal: q.goal.clone(), fixed });
+        let mut region: Vec<(Coord, [f64; 2])> = Vec::new();
+        for (name, Fixed([lo, hi])) in q.region.iter().flat_map(|r| r.0.iter()) {
+            let f = format!("{path}.region.{name}");
+            let Some(c) = Coord::parse(name) else {
+                let names: Vec<&str> = Coord::ALL.iter().map(|c| c.name()).collect();
+                return Err(Error::new(f, format!("unknown coordinate \"{name}\"; expected one of {}", names.join(", "))));
+            };
+            if fixed.contains(&c) {
+                return Err(Error::new(f, format!("coordinate \"{name}\" is fixed by this query: it has no range")));
+            }
+            if region.iter().any(|(r, _)| *r == c) {
+                return Err(Error::new(f, format!("coordinate \"{name}\" is given twice")));
+            }
+            let (lo, hi) = (num(&format!("{f}[0]"), *lo)?, num(&format!("{f}[1]"), *hi)?);
+            if lo >= hi {
+                return Err(Error::new(f, format!("needs LO < HI, got [{lo}, {hi}]")));
+            }
+            region.push((c, [lo, hi]));
+        }
+        out.push(Query { name: q.name.clone(), start: q.start.clone(), goal: q.goal.clone(), fixed, region });
     }
     Ok(out)
 }

@@ -48,26 +48,34 @@ fn append_mapped(out: &mut Vec<Piece>, p: &Partition, param: &Param) {
     }
 }
 
-fn conservative_labels(conditions: &[Box<dyn Condition>]) -> Vec<String> {
-    conditions.iter().filter(|c| !c.exact()).map(|c| c.label()).collect()
-}
-
 /// Exact verification of a trajectory: feasible and infeasible t-intervals, each boundary certified
 /// to [`BOUNDARY_TOL`] in t with its active constraint, or reported in `uncertain`.
 pub fn verify_trajectory(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport> {
     let conditions = for_scenario(s);
-    let motion = Motion::trajectory(traj);
-    let (overall, per) = violation_pieces(&conditions, s, std::slice::from_ref(&motion), BOUNDARY_TOL);
+    let motions = Motion::trajectory(traj);
+    let (overall, per) = violation_pieces(&conditions, s, &motions, BOUNDARY_TOL);
     let sec = sections(&overall, &per, BOUNDARY_TOL);
     let mut warnings = s.warnings.clone();
     if !sec.uncertain.is_empty() {
         warnings.push(format!("{} section(s) could not be certified either way; see \"uncertain\"", sec.uncertain.len()));
     }
-    Ok(trajectory_report(traj, sec, "exact", None, conservative_labels(&conditions), warnings))
+    Ok(trajectory_report(traj, sec, "exact", None, warnings))
+}
+
+/// Verification of every trajectory of the scenario (what `cablenav verify SCENARIO --all`
+/// reports), in file order: exact, or point-wise with step `pointwise`. The trajectories are
+/// verified in parallel on native targets (each one single-threaded, as [`verify_trajectory`]),
+/// in order on wasm. The first error (in file order) is returned.
+pub fn verify_all(s: &Scenario, pointwise: Option<f64>) -> Result<Vec<VerifyReport>> {
+    let reports = crate::parallel::map_with(s.trajectories.len(), || (), |_, i| match pointwise {
+        Some(dt) => verify_pointwise(s, &s.trajectories[i], dt),
+        None => verify_trajectory(s, &s.trajectories[i]),
+    });
+    reports.into_iter().collect()
 }
 
 /// Builds the report of a trajectory from its sections in t.
-fn trajectory_report(traj: &Trajectory, sec: Sections, method: &str, step: Option<f64>, conservative: Vec<String>, warnings: Vec<String>) -> VerifyReport {
+fn trajectory_report(traj: &Trajectory, sec: Sections, method: &str, step: Option<f64>, warnings: Vec<String>) -> VerifyReport {
     let to_tau = |v: &[[f64; 2]]| v.iter().map(|iv| [traj.tau_of_t(iv[0]), traj.tau_of_t(iv[1])]).collect();
     VerifyReport {
         trajectory: traj.name.clone(),
@@ -83,7 +91,6 @@ fn trajectory_report(traj: &Trajectory, sec: Sections, method: &str, step: Optio
         feasible: sec.feasible,
         infeasible: sec.infeasible,
         uncertain: sec.uncertain,
-        conservative,
         warnings,
     }
 }
@@ -91,17 +98,9 @@ fn trajectory_report(traj: &Trajectory, sec: Sections, method: &str, step: Optio
 /// Exact feasible intervals of one pose coordinate over [lo, hi], the others held at `pose`'s.
 pub fn ray(s: &Scenario, pose_name: &str, coord: Coord, lo: f64, hi: f64) -> Result<RayReport> {
     let pose = s.pose(pose_name)?;
-    if !(lo.is_finite() && hi.is_finite()) || lo >= hi {
-        return Err(Error::new("--range", format!("needs finite LO < HI, got {lo} {hi}")));
-    }
-    if coord.is_angle() && hi - lo > 64.0 * std::f64::consts::PI {
-        return Err(Error::new("--range", "an angle range wider than 64π is not meaningful"));
-    }
+    check_ray_range(coord, lo, hi)?;
     let conditions = for_scenario(s);
-    let motions = Motion::ray(pose, coord, lo, hi);
-    let tol = BOUNDARY_TOL * (hi - lo).abs().max(1.0);
-    let (overall, per) = violation_pieces(&conditions, s, &motions, tol);
-    let sec = sections(&overall, &per, tol);
+    let sec = ray_sections(s, &conditions, pose.coords(), coord, lo, hi);
     Ok(RayReport {
         vary: coord.name().to_string(),
         pose: pose_name.to_string(),
@@ -110,9 +109,30 @@ pub fn ray(s: &Scenario, pose_name: &str, coord: Coord, lo: f64, hi: f64) -> Res
         infeasible: sec.infeasible,
         boundaries: sec.boundaries.into_iter().map(|(value, constraint, enters)| RayBoundary { value, constraint, enters }).collect(),
         uncertain: sec.uncertain,
-        conservative: conservative_labels(&conditions),
         warnings: s.warnings.clone(),
     })
+}
+
+/// Checks a ray's range: finite LO < HI, and an angle range at most 64π wide.
+pub fn check_ray_range(coord: Coord, lo: f64, hi: f64) -> Result<()> {
+    if !(lo.is_finite() && hi.is_finite()) || lo >= hi {
+        return Err(Error::new("--range", format!("needs finite LO < HI, got {lo} {hi}")));
+    }
+    if coord.is_angle() && hi - lo > 64.0 * std::f64::consts::PI {
+        return Err(Error::new("--range", "an angle range wider than 64π is not meaningful"));
+    }
+    Ok(())
+}
+
+/// The sections of the ray through the coordinates `c` (x, y, z, φ, θ, σ, the angles as given)
+/// along `coord` over [lo, hi] (checked with [`check_ray_range`]) under `conditions` (the
+/// scenario's, [`for_scenario`]), exactly; boundaries certified to [`BOUNDARY_TOL`] relative to
+/// the range. What [`ray`] reports, and what the ray lattice is made of.
+pub fn ray_sections(s: &Scenario, conditions: &[Box<dyn Condition>], c: [f64; 6], coord: Coord, lo: f64, hi: f64) -> Sections {
+    let motions = Motion::ray_through(c, coord, lo, hi);
+    let tol = BOUNDARY_TOL * (hi - lo).abs().max(1.0);
+    let (overall, per) = violation_pieces(conditions, s, &motions, tol);
+    sections(&overall, &per, tol)
 }
 
 /// Wrench feasibility of the scenario's 6-cable robot at `pose` (Bohigas et al. §3), if the
@@ -207,7 +227,7 @@ pub fn check_pose(s: &Scenario, name: &str, pose: &Pose) -> PoseReport {
         .iter()
         .map(|c| {
             let r = c.check(&cables);
-            CheckEntry { constraint: c.label(), violated: r.violated, distance: r.distance, exact: c.exact() }
+            CheckEntry { constraint: c.label(), violated: r.violated, distance: r.distance }
         })
         .collect();
     let violated: Vec<String> = checks.iter().filter(|c| c.violated).map(|c| c.constraint.clone()).collect();

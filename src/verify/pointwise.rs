@@ -3,7 +3,7 @@
 //! between the samples that disagree, so they are only as good as Δt.
 
 use super::sections::{push_merged, sections, Labelled, Piece};
-use super::{conservative_labels, trajectory_report};
+use super::trajectory_report;
 use crate::conditions::{cables_at, for_scenario};
 use crate::error::{Error, Result};
 use crate::model::Trajectory;
@@ -50,5 +50,5 @@ pub fn verify_pointwise(s: &Scenario, traj: &Trajectory, dt: f64) -> Result<Veri
         .map(|(i, c)| Labelled { label: c.label(), pieces: pieces_of(&|k| states[k][i]) })
         .collect();
     let sec = sections(&overall, &per, 0.0);
-    Ok(trajectory_report(traj, sec, "pointwise", Some(dt), conservative_labels(&conditions), s.warnings.clone()))
+    Ok(trajectory_report(traj, sec, "pointwise", Some(dt), s.warnings.clone()))
 }

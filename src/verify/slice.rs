@@ -159,17 +159,19 @@ pub fn slice_rows(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, r
     if rows.start > rows.end || rows.end > res {
         return Err(Error::new("rows", format!("must lie within 0..{res}, got {}..{}", rows.start, rows.end)));
     }
-    let conditions = for_scenario(s);
-    let mut classes = Vec::with_capacity(res * rows.len());
-    for j in rows {
-        for i in 0..res {
-            let mut c = map.fixed;
-            c[axes[0].index()] = map.center(0, i);
-            c[axes[1].index()] = map.center(1, j);
-            classes.push(classify(s, &conditions, &Pose::from_coords(c)));
-        }
-    }
-    Ok(classes)
+    // rows in parallel natively (each worker with its own conditions), in order on wasm
+    let first = rows.start;
+    let classes = crate::parallel::map_with(rows.len(), || for_scenario(s), |conditions, k| {
+        (0..res)
+            .map(|i| {
+                let mut c = map.fixed;
+                c[axes[0].index()] = map.center(0, i);
+                c[axes[1].index()] = map.center(1, first + k);
+                classify(s, conditions, &Pose::from_coords(c))
+            })
+            .collect::<Vec<_>>()
+    });
+    Ok(classes.concat())
 }
 
 /// The slice map from all its cells' classes (row-major, as [`slice_rows`] gives them): its

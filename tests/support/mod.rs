@@ -18,3 +18,21 @@ pub fn env_usize(name: &str, default: usize) -> usize {
     let _ = name;
     default
 }
+
+/// `per(0..n)` in input order, on two worker threads natively (sequentially in wasm).
+#[cfg(not(target_arch = "wasm32"))]
+pub fn on_two_threads<T: Send>(n: usize, per: &(dyn Fn(usize) -> T + Sync)) -> Vec<T> {
+    let mut out: Vec<(usize, T)> = std::thread::scope(|s| {
+        let handles: Vec<_> =
+            (0..2).map(|w| s.spawn(move || (0..n).filter(|i| i % 2 == w).map(|i| (i, per(i))).collect::<Vec<_>>())).collect();
+        handles.into_iter().flat_map(|h| h.join().expect("worker panicked")).collect()
+    });
+    out.sort_by_key(|r| r.0);
+    out.into_iter().map(|r| r.1).collect()
+}
+
+/// `per(0..n)` in input order.
+#[cfg(target_arch = "wasm32")]
+pub fn on_two_threads<T>(n: usize, per: &dyn Fn(usize) -> T) -> Vec<T> {
+    (0..n).map(per).collect()
+}

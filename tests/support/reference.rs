@@ -415,22 +415,42 @@ pub fn segment_metric_min(p0: V3, p1: V3, center: V3, m: &M3) -> (f64, f64) {
     (q, s)
 }
 
-/// The conservative enlargement of the ellipsoid (x−c)ᵀM(x−c) ≤ 1 by clearance `c`:
-/// M_c⁻¹ = (1+1/p)M⁻¹ + (1+p)c²I with p = c/g, g = det(M)^(−1/6); M_c = M when c = 0.
-pub fn enlarged_ellipsoid_matrix(m: &M3, c: f64) -> M3 {
-    if c == 0.0 {
-        return *m;
+/// Distance from x to the solid ellipsoid (y−c)ᵀM(y−c) ≤ 1 (0 inside), by Lagrange duality:
+/// dist² = max over t ≥ 0 of t·wᵀM(I + tM)⁻¹w − t with w = x − c (a concave function of t, whose
+/// maximiser is at most √(wᵀM⁻¹w)); golden section on t.
+pub fn ellipsoid_point_dist(x: V3, center: V3, m: &M3) -> f64 {
+    let w = x - center;
+    if quad_form(m, w) <= 1.0 {
+        return 0.0;
     }
-    let g = det3(m).powf(-1.0 / 6.0);
-    let p = c / g;
-    let mi = inv3(m);
-    let mut e = [[0.0; 3]; 3];
-    for i in 0..3 {
-        for j in 0..3 {
-            e[i][j] = (1.0 + 1.0 / p) * mi[i][j] + if i == j { (1.0 + p) * c * c } else { 0.0 };
+    let q = |t: f64| {
+        let mut a = *m;
+        for i in 0..3 {
+            for j in 0..3 {
+                a[i][j] = if i == j { 1.0 } else { 0.0 } + t * m[i][j];
+            }
         }
+        let y = mat_vec(&inv3(&a), w);
+        t * mat_vec(m, y).dot(w) - t
+    };
+    let hi = quad_form(&inv3(m), w).sqrt();
+    (-golden_min(|t| -q(t), 0.0, hi)).max(0.0).sqrt()
+}
+
+/// Signed distance from x to the solid cylinder (negative inside: minus the depth).
+pub fn cylinder_sdf(x: V3, from: V3, to: V3, r: f64) -> f64 {
+    let len = (to - from).norm();
+    let e = (to - from) / len;
+    let h = (x - from).dot(e);
+    let rho = (x - from - e * h).norm();
+    // nearest point of the rectangle [0, L] × [0, r] in the (h, ρ) half-plane
+    let (hc, rc) = (h.clamp(0.0, len), rho.min(r));
+    let out = ((h - hc) * (h - hc) + (rho - rc) * (rho - rc)).sqrt();
+    if out > 0.0 {
+        out
+    } else {
+        -(r - rho).min(h).min(len - h)
     }
-    inv3(&e)
 }
 
 /// Solid truncated cone {x : (x−A)·u ≥ |x−A| cos α, (x−A)·u ≤ H}.
@@ -443,15 +463,27 @@ pub struct SolidCone {
 }
 
 impl SolidCone {
-    /// The conservative enlargement by clearance c: apex moved back by c/sin α along the axis,
-    /// height H + c/sin α + c, same α and axis.
-    pub fn enlarged(&self, c: f64) -> SolidCone {
-        let back = c / self.half_angle.sin();
-        SolidCone {
-            apex: self.apex - self.axis * back,
-            axis: self.axis,
-            half_angle: self.half_angle,
-            height: self.height + back + c,
+    /// Signed distance from x (negative inside: minus the depth), by the Voronoi regions of the
+    /// section's features in generator coordinates: along the generator g = h cos α + ρ sin α,
+    /// off it n = ρ cos α − h sin α.
+    pub fn sdf(&self, x: V3) -> f64 {
+        let w = x - self.apex;
+        let h = w.dot(self.axis);
+        let rho = (w - self.axis * h).norm();
+        let (sa, ca) = self.half_angle.sin_cos();
+        let (big_h, big_r) = (self.height, self.height * self.half_angle.tan());
+        let (g, n) = (h * ca + rho * sa, rho * ca - h * sa);
+        if n <= 0.0 && h <= big_h {
+            return -(-n).min(big_h - h);
+        }
+        if h > big_h && rho <= big_r {
+            h - big_h
+        } else if n > 0.0 && g >= 0.0 && g <= big_h / ca {
+            n
+        } else if g < 0.0 {
+            (h * h + rho * rho).sqrt()
+        } else {
+            ((h - big_h) * (h - big_h) + (rho - big_r) * (rho - big_r)).sqrt()
         }
     }
 
@@ -726,8 +758,8 @@ pub struct RefScenario {
 enum Prepared {
     Sphere { center: V3, reach: f64 },
     Mesh { tris: Vec<[V3; 3]>, center: V3, radius: f64 },
-    Ellipsoid { center: V3, mc: M3, scale: f64 },
-    Capsule { from: V3, to: V3, reach: f64 },
+    Ellipsoid { center: V3, m: M3, scale: f64, reach: f64 },
+    Cylinder { from: V3, to: V3, radius: f64 },
     Cone { cone: SolidCone },
 }
 
@@ -814,14 +846,14 @@ impl RefScenario {
                     mesh_prep(triangles.iter().map(|t| [vertices[t[0]], vertices[t[1]], vertices[t[2]]]).collect())
                 }
                 RefShape::Ellipsoid { center, matrix } => {
-                    let mc = enlarged_ellipsoid_matrix(matrix, c);
-                    Prepared::Ellipsoid { center: *center, mc, scale: det3(&mc).powf(-1.0 / 6.0) }
+                    // the largest semi-axis is at most √(trace M⁻¹)
+                    let mi = inv3(matrix);
+                    let reach = (mi[0][0] + mi[1][1] + mi[2][2]).sqrt() + c;
+                    Prepared::Ellipsoid { center: *center, m: *matrix, scale: det3(matrix).powf(-1.0 / 6.0), reach }
                 }
-                RefShape::Cylinder { from, to, radius } => {
-                    Prepared::Capsule { from: *from, to: *to, reach: radius + c }
-                }
+                RefShape::Cylinder { from, to, radius } => Prepared::Cylinder { from: *from, to: *to, radius: *radius },
                 RefShape::Cone { apex, axis, half_angle, height } => Prepared::Cone {
-                    cone: SolidCone { apex: *apex, axis: *axis, half_angle: *half_angle, height: *height }.enlarged(c),
+                    cone: SolidCone { apex: *apex, axis: *axis, half_angle: *half_angle, height: *height },
                 },
             })
             .collect();
@@ -874,9 +906,7 @@ impl Evaluator {
                 tris.iter()
                     .any(|tri| segment_crosses_triangle(a, b, tri).is_some() || segment_triangle_dist(a, b, tri) < c)
             }
-            Prepared::Ellipsoid { center, mc, .. } => segment_metric_min(a, b, *center, mc).0 < 1.0,
-            Prepared::Capsule { from, to, reach } => segment_segment_dist(a, b, *from, *to) < *reach,
-            Prepared::Cone { cone } => cone.meets_segment(a, b),
+            Prepared::Ellipsoid { .. } | Prepared::Cylinder { .. } | Prepared::Cone { .. } => self.curved_check(k, a, b).0,
         }
     }
 
@@ -903,16 +933,54 @@ impl Evaluator {
                 }
                 (violated, margin)
             }
-            Prepared::Ellipsoid { center, mc, scale } => {
-                let q = segment_metric_min(a, b, *center, mc).0;
-                (q < 1.0, (q.sqrt() - 1.0) * scale)
-            }
-            Prepared::Capsule { from, to, reach } => {
-                let d = segment_segment_dist(a, b, *from, *to);
-                (d < *reach, d - reach)
-            }
-            Prepared::Cone { cone } => (cone.meets_segment(a, b), cone.segment_phi_min(a, b)),
+            Prepared::Ellipsoid { .. } | Prepared::Cylinder { .. } | Prepared::Cone { .. } => self.curved_check(k, a, b),
         }
+    }
+
+    /// A curved obstacle against segment (a, b): (violated, margin), the margin being the segment's
+    /// least signed distance to the solid minus the clearance (for the ellipsoid, inside the solid
+    /// the signed distance is replaced by (√q − 1)·scale, q the least value of the quadratic form).
+    /// The signed distance of a convex solid is convex along the segment: golden section. Clearance
+    /// 0 counts entering the interior.
+    pub fn curved_check(&self, k: usize, a: V3, b: V3) -> (bool, f64) {
+        let c = self.scenario.cable_obstacle;
+        let margin = match &self.prepared[k] {
+            Prepared::Ellipsoid { center, m, scale, reach } => {
+                let q = segment_metric_min(a, b, *center, m).0;
+                if q < 1.0 {
+                    (q.sqrt() - 1.0) * scale - c
+                } else {
+                    let far = point_segment_dist(*center, a, b) - reach;
+                    if far > 0.0 {
+                        far
+                    } else {
+                        let f = |u: f64| ellipsoid_point_dist(a + (b - a) * u, *center, m);
+                        golden_min(f, 0.0, 1.0).min(f(0.0)).min(f(1.0)) - c
+                    }
+                }
+            }
+            Prepared::Cylinder { from, to, radius } => {
+                let far = segment_segment_dist(a, b, *from, *to) - radius - c;
+                if far > 0.0 {
+                    far
+                } else {
+                    let f = |u: f64| cylinder_sdf(a + (b - a) * u, *from, *to, *radius);
+                    golden_min(f, 0.0, 1.0).min(f(0.0)).min(f(1.0)) - c
+                }
+            }
+            Prepared::Cone { cone } => {
+                let base = cone.apex + cone.axis * cone.height;
+                let far = segment_segment_dist(a, b, cone.apex, base) - cone.height * cone.half_angle.tan() - c;
+                if far > 0.0 {
+                    far
+                } else {
+                    let f = |u: f64| cone.sdf(a + (b - a) * u);
+                    golden_min(f, 0.0, 1.0).min(f(0.0)).min(f(1.0)) - c
+                }
+            }
+            _ => unreachable!("not a curved obstacle"),
+        };
+        (margin < 0.0, margin)
     }
 
     /// Fast feasibility at t of trajectory `traj` (stops at the first violated condition).

@@ -156,8 +156,8 @@ pub fn gaps(sections: &[Section]) -> Vec<[f64; 2]> {
     out
 }
 
-/// The notes shown under the strip: the scenario's warnings, then the report's, then one line
-/// naming the conditions the core tested conservatively; duplicates dropped.
+/// The notes shown under the strip: the scenario's warnings, then the report's; duplicates
+/// dropped.
 pub fn notes(scenario_warnings: &[String], report: Option<&VerifyReport>) -> Vec<String> {
     let mut out: Vec<String> = Vec::new();
     let report_warnings = report.map(|r| r.warnings.as_slice()).unwrap_or_default();
@@ -165,13 +165,6 @@ pub fn notes(scenario_warnings: &[String], report: Option<&VerifyReport>) -> Vec
         if !out.contains(w) {
             out.push(w.clone());
         }
-    }
-    if let Some(r) = report.filter(|r| !r.conservative.is_empty()) {
-        out.push(format!(
-            "Tested conservatively, with an enlarged shape (infeasible sections near these may be \
-             feasible in truth): {}",
-            r.conservative.join(", ")
-        ));
     }
     out
 }
@@ -195,7 +188,6 @@ mod tests {
                 Boundary { t: 0.25, tau: 0.2, constraint: "cable 1 vs box".into(), enters: Side::Infeasible },
             ],
             uncertain: vec![[0.4, 0.5]],
-            conservative: vec!["cable 3 vs tree".into()],
             warnings: vec!["w".into()],
         }
     }
@@ -245,9 +237,7 @@ mod tests {
     fn notes_merge_without_duplicates() {
         let r = report();
         let n = notes(&["w".into(), "s".into()], Some(&r));
-        assert_eq!(n.len(), 3);
-        assert_eq!(n[..2], ["w", "s"]);
-        assert!(n[2].starts_with("Tested conservatively") && n[2].ends_with(": cable 3 vs tree"));
+        assert_eq!(n, ["w", "s"]);
         assert_eq!(notes(&[], None), Vec::<String>::new());
     }
 

@@ -6,33 +6,15 @@
 //! `<data>` is the scenario JSON, deflated (raw DEFLATE, level 9) and base64url-encoded
 //! without padding.
 
-use base64::engine::general_purpose::URL_SAFE_NO_PAD;
-use base64::Engine;
 use leptos::prelude::*;
 use serde_json::{json, Value};
 use wasm_bindgen::JsCast;
 
 use crate::presets::{self, PRESETS};
+pub use cablenav::scenario::link::{decode_scenario, encode_scenario, MAX_SHARED_BYTES};
 
 /// The localStorage key of the autosaved scenario.
 pub const STORAGE_KEY: &str = "cablenav.autosave";
-/// Largest scenario a shared link may inflate to (bytes), so a crafted link cannot exhaust memory.
-pub const MAX_SHARED_BYTES: usize = 8 << 20;
-
-/// The scenario JSON as hash data: deflated, base64url.
-pub fn encode_scenario(json: &str) -> String {
-    URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(json.as_bytes(), 9))
-}
-
-/// The scenario JSON from hash data; the error says what is wrong with the link.
-pub fn decode_scenario(data: &str) -> Result<String, String> {
-    let bytes = URL_SAFE_NO_PAD
-        .decode(data.trim())
-        .map_err(|e| format!("the shared link is damaged (not base64url: {e})"))?;
-    let raw = miniz_oxide::inflate::decompress_to_vec_with_limit(&bytes, MAX_SHARED_BYTES)
-        .map_err(|e| format!("the shared link is damaged or too large (inflate: {:?})", e.status))?;
-    String::from_utf8(raw).map_err(|_| "the shared link is damaged (not UTF-8 text)".to_string())
-}
 
 /// What a URL hash asks for.
 #[derive(Debug, Clone, PartialEq, Eq)]

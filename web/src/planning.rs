@@ -4,6 +4,7 @@
 //! worker.
 
 use crate::state::{Parsed, Planned, Shared};
+use crate::view3d::scene::Rgba;
 use crate::worker::host::{self, Running};
 use crate::worker::protocol::{pose_from_wire, Job, Reply};
 use leptos::prelude::*;
@@ -13,7 +14,10 @@ use std::rc::Rc;
 /// The planners the page offers: (id, label, available). The id goes to the worker
 /// ([`crate::worker::jobs::planner`] sets it up).
 pub const PLANNERS: [(&str, &str, bool); 2] =
-    [("continuation", "Atlas continuation (Bohigas et al.)", true), ("ray-lattice", "Ray lattice (not available yet)", false)];
+    [("continuation", "Atlas continuation (Bohigas et al.)", true), ("ray-lattice", "Ray lattice + A* + Bézier (Zhang)", true)];
+
+/// Colour of the lattice planner's A* polyline, drawn beside the smoothed path.
+pub const POLYLINE: Rgba = [0.93, 0.55, 0.12, 1.0];
 
 /// Where a run is.
 #[derive(Debug, Clone, PartialEq)]
@@ -22,7 +26,7 @@ pub enum RunState {
     Idle,
     /// Running.
     Running,
-    /// Finished with a status: `found`, `no_path` or `budget`.
+    /// Finished with a status: `found`, `no_path`, `budget` or `unrepaired`.
     Done(String),
     /// Stopped by the user.
     Cancelled,
@@ -60,13 +64,14 @@ fn apply(reply: Reply, query: &str, ui: Ui) -> bool {
             ui.detail.set(detail);
             false
         }
-        Reply::Planned { status, summary, path } => {
+        Reply::Planned { status, summary, path, polyline } => {
             ui.progress.set(1.0);
             ui.detail.set(summary);
-            if status == "found" && !path.is_empty() {
+            if !path.is_empty() {
                 let poses: Vec<_> = path.iter().map(pose_from_wire).collect();
                 let (start, goal) = (poses[0], poses[poses.len() - 1]);
-                ui.planned.set(Some(Shared::new(Planned { query: query.to_string(), start, goal, poses })));
+                let polyline = polyline.iter().map(pose_from_wire).collect();
+                ui.planned.set(Some(Shared::new(Planned { query: query.to_string(), start, goal, poses, polyline })));
             }
             ui.state.set(RunState::Done(status));
             true
@@ -201,6 +206,6 @@ mod tests {
     fn state_names() {
         assert_eq!(RunState::Done("no_path".into()).name(), "no_path");
         assert_eq!(RunState::Failed("x".into()).name(), "error");
-        assert_eq!(PLANNERS.iter().filter(|p| p.2).count(), 1);
+        assert_eq!(PLANNERS.iter().filter(|p| p.2).count(), 2, "the atlas and the ray lattice");
     }
 }

@@ -47,8 +47,10 @@ pub struct Planned {
     pub start: Pose,
     /// Its goal pose.
     pub goal: Pose,
-    /// The path's poses, start to goal.
+    /// The path's poses, start to goal (the lattice planner's smoothed trajectory, sampled).
     pub poses: Vec<Pose>,
+    /// The lattice planner's A* polyline, drawn beside the smoothed path (empty for the atlas).
+    pub polyline: Vec<Pose>,
 }
 
 /// Which path the animation, the plots and the exports follow.

@@ -10,6 +10,7 @@ use crate::logic::{self, fmt_num, StripModel};
 use crate::planning::Planning;
 use crate::plots::distance::DistancePlot;
 use crate::plots::export;
+use crate::plots::lattice::LatticePanel;
 use crate::plots::slice::{Overlay, SlicePanel};
 use crate::plots::tension::TensionPlot;
 use crate::view3d::scene::{self, Polyline, SceneInput, PATH};
@@ -233,7 +234,13 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         let parsed = parsed.get();
         let Some(s) = scenario_of(&parsed) else { return Overlay::default() };
         match (follow.get(), planned.get()) {
-            (Follow::Planned, Some(p)) => Overlay { start: Some(p.0.start), goal: Some(p.0.goal), pieces: vec![Polyline { colour: PATH, poses: p.0.poses.clone() }] },
+            (Follow::Planned, Some(p)) => {
+                let mut pieces = vec![Polyline { colour: PATH, poses: p.0.poses.clone() }];
+                if !p.0.polyline.is_empty() {
+                    pieces.push(Polyline { colour: crate::planning::POLYLINE, poses: p.0.polyline.clone() });
+                }
+                Overlay { start: Some(p.0.start), goal: Some(p.0.goal), pieces }
+            }
             _ => {
                 let t = s.trajectories.get(traj_index(s));
                 Overlay { start: t.map(|t| t.pose_at(0.0)), goal: t.map(|t| t.pose_at(1.0)), pieces: (*trajectory_pieces.get().0).clone() }
@@ -523,6 +530,10 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
                 <h2>"Slice map"</h2>
                 <SlicePanel parsed source overlay=Signal::derive(move || overlay.get()) />
             </div>
+            <div class="panel wide" data-testid="panel-lattice">
+                <h2>"Ray lattice"</h2>
+                <LatticePanel parsed overlay=Signal::derive(move || overlay.get()) />
+            </div>
         </section>
     }
     .into_any()
@@ -554,7 +565,7 @@ mod tests {
     fn a_planned_path_is_followed_pose_by_pose() {
         let s = robocrane();
         let poses: Vec<Pose> = (0..5).map(|k| s.trajectories[0].pose_at(k as f64 / 4.0)).collect();
-        let p = Planned { query: "q1-q2".into(), start: poses[0], goal: poses[4], poses: poses.clone() };
+        let p = Planned { query: "q1-q2".into(), start: poses[0], goal: poses[4], poses: poses.clone(), polyline: vec![] };
         let path = PathRef::Planned(&p);
         assert_eq!(path.pose_at(0.0), Some(poses[0]));
         assert_eq!(path.pose_at(0.5), Some(poses[2]));
@@ -575,7 +586,7 @@ mod tests {
         let name = |follow, planned: Option<&Shared<Planned>>| on_path(&parsed, planned, follow, 9, |_, p| Some(p.name()));
         assert_eq!(name(Follow::Planned, None).as_deref(), Some("trajectory “slerp q1-q2”"), "no plan: the (clamped) trajectory");
         let pose = s.trajectories[0].pose_at(0.0);
-        let plan = Shared::new(Planned { query: "q1-q2".into(), start: pose, goal: pose, poses: vec![pose] });
+        let plan = Shared::new(Planned { query: "q1-q2".into(), start: pose, goal: pose, poses: vec![pose], polyline: vec![] });
         assert_eq!(name(Follow::Planned, Some(&plan)).as_deref(), Some("planned path q1-q2"));
         assert_eq!(name(Follow::Trajectory, Some(&plan)).as_deref(), Some("trajectory “slerp q1-q2”"));
         let broken: Parsed = Shared::new(Err("bad".into()));

@@ -222,7 +222,7 @@ mod tests {
     fn key_order_survives_edits() {
         let mut d = doc();
         set(&mut d, &Path::of(&["poses"]).i(0).k("position").i(0), number(3.0));
-        assert_eq!(pose_names(&d), ["start", "end", "fig310"]);
+        assert_eq!(pose_names(&d), ["start", "end", "fig310", "box-left", "box-right"]);
         let text = serde_json::to_string(&d).unwrap();
         assert!(text.starts_with("{\"format\""), "{text}");
     }

@@ -168,9 +168,9 @@ mod tests {
     fn poses_add_and_rename_everywhere() {
         let mut d = doc();
         assert_eq!(add_pose(&mut d), "pose 1");
-        assert_eq!(pose_names(&d), ["start", "end", "fig310", "pose 1"]);
+        assert_eq!(pose_names(&d), ["start", "end", "fig310", "box-left", "box-right", "pose 1"]);
         rename_pose(&mut d, 0, "begin").unwrap();
-        assert_eq!(pose_names(&d), ["begin", "end", "fig310", "pose 1"]);
+        assert_eq!(pose_names(&d), ["begin", "end", "fig310", "box-left", "box-right", "pose 1"]);
         assert_eq!(d["trajectories"][1]["orientation"]["slerp"], json!(["begin", "end"]));
         assert!(rename_pose(&mut d, 1, "begin").is_err());
         assert!(rename_pose(&mut d, 1, " ").is_err());

@@ -5,6 +5,7 @@
 pub mod distance;
 pub mod export;
 pub mod geom;
+pub mod lattice;
 pub mod slice;
 pub mod strip;
 pub mod tension;

@@ -36,9 +36,10 @@ pub enum Job {
 pub enum Reply {
     /// How far the job is: a fraction in [0, 1] (never going back) and a line for people.
     Progress { fraction: f64, detail: String },
-    /// A planning run ended: its status (`found`, `no_path`, `budget`), a summary, and the path
-    /// (when found) as poses (see [`pose_to_wire`]), exactly the planner's.
-    Planned { status: String, summary: String, path: Vec<[u64; 7]> },
+    /// A planning run ended: its status (`found`, `no_path`, `budget`, `unrepaired`), a summary,
+    /// the path (when there is one) as poses (see [`pose_to_wire`]) and the lattice planner's A*
+    /// polyline (empty for the atlas).
+    Planned { status: String, summary: String, path: Vec<[u64; 7]>, polyline: Vec<[u64; 7]> },
     /// A slice map's rows `rows[0]..rows[1]`: their cells' classes, row-major.
     Sliced { rows: [usize; 2], classes: Vec<Class> },
     /// The job could not run; why.

@@ -1,0 +1,273 @@
+//! The command line's grammar (clap derive): one subcommand per core command, each with its own
+//! `--help`, turned into a [`Request`] for the core.
+
+use cablenav::command::Request;
+use cablenav::model::Coord;
+use cablenav::plan::choice::PlannerKind;
+use cablenav::plan::lattice::LatticeParams;
+use cablenav::plan::PlanParams;
+use clap::{Parser, Subcommand};
+use clap_complete::Shell;
+
+/// The exit codes, as `cablenav --help` documents them.
+pub const EXIT_CODES: &str = "\
+Exit codes:
+  0   success (also --help, --version, completions)
+  2   bad command line (unknown option, missing or malformed value: clap's message and usage on
+      stderr) or bad input (unreadable or invalid scenario, unknown pose/trajectory/query, a value
+      the core rejects: one line on stderr naming the option or the scenario field)
+  70  internal error: a bug (please report the command and the scenario)
+  74  the report could not be written to stdout";
+
+const SCENARIO_HELP: &str = "A cablenav-scenario/1 or /2 JSON file (docs/scenario-format.md)";
+
+/// Exact feasibility of cable-driven parallel robot motions.
+///
+/// Every command reads a cablenav-scenario/1 JSON file (docs/scenario-format.md) and prints a
+/// readable report, or with --json the report as JSON (the same JSON the page, the Python and
+/// the npm packages return).
+#[derive(Debug, Parser)]
+#[command(name = "cablenav", version, after_help = EXIT_CODES, arg_required_else_help = true)]
+pub struct Cli {
+    /// The command to run.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The commands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Feasible/infeasible t-sections of a trajectory (exact; --pointwise DT samples instead)
+    #[command(after_help = EXIT_CODES)]
+    Verify {
+        #[arg(value_name = "SCENARIO", help = SCENARIO_HELP)]
+        scenario: String,
+        /// The trajectory to verify [default: the scenario's first]
+        #[arg(long, value_name = "NAME", conflicts_with = "all")]
+        trajectory: Option<String>,
+        /// Verify every trajectory of the scenario (in parallel; one report each, in file order)
+        #[arg(long)]
+        all: bool,
+        /// Sample every DT in t instead of verifying exactly (1e-7 ≤ DT ≤ 1)
+        #[arg(long, value_name = "DT", value_parser = finite, allow_negative_numbers = true)]
+        pointwise: Option<f64>,
+        /// Print the report as JSON
+        #[arg(long)]
+        json: bool,
+    },
+    /// Feasible intervals of one pose coordinate, the others fixed at the pose's values
+    #[command(after_help = EXIT_CODES)]
+    Ray {
+        #[arg(value_name = "SCENARIO", help = SCENARIO_HELP)]
+        scenario: String,
+        /// The pose the other coordinates come from
+        #[arg(long, value_name = "NAME")]
+        pose: String,
+        /// The coordinate to vary
+        #[arg(long, value_name = "COORD", value_parser = COORDS)]
+        vary: String,
+        /// The interval of the varied coordinate (angles in radians)
+        #[arg(long, num_args = 2, value_names = ["LO", "HI"], required = true, value_parser = finite, allow_negative_numbers = true)]
+        range: Vec<f64>,
+        /// Print the report as JSON
+        #[arg(long)]
+        json: bool,
+    },
+    /// Lengths, distances, violated conditions and the wrench set's tension ranges at one pose
+    #[command(after_help = EXIT_CODES)]
+    Check {
+        #[arg(value_name = "SCENARIO", help = SCENARIO_HELP)]
+        scenario: String,
+        /// The pose to check
+        #[arg(long, value_name = "NAME")]
+        pose: String,
+        /// Print the report as JSON
+        #[arg(long)]
+        json: bool,
+    },
+    /// Each cable's least and greatest tension over the wrench set along a trajectory
+    #[command(after_help = EXIT_CODES)]
+    Envelope {
+        #[arg(value_name = "SCENARIO", help = SCENARIO_HELP)]
+        scenario: String,
+        /// The trajectory [default: the scenario's first]
+        #[arg(long, value_name = "NAME")]
+        trajectory: Option<String>,
+        /// Samples along the trajectory [default: 100]
+        #[arg(long, value_name = "N")]
+        samples: Option<usize>,
+        /// Print the report as JSON
+        #[arg(long)]
+        json: bool,
+    },
+    /// Classify a res×res grid over two coordinates (the others from the pose) and find the
+    /// connected components of its feasible cells
+    #[command(after_help = EXIT_CODES)]
+    Slice {
+        #[arg(value_name = "SCENARIO", help = SCENARIO_HELP)]
+        scenario: String,
+        /// The pose the other coordinates come from
+        #[arg(long, value_name = "NAME")]
+        pose: String,
+        /// Two coordinates, columns first (x, y, z, phi, theta, sigma)
+        #[arg(long, value_name = "A,B", value_parser = axes)]
+        axes: [Coord; 2],
+        /// Grid side (cells per axis)
+        #[arg(long, value_name = "N")]
+        res: usize,
+        /// The two axes' ranges [default for angles: -pi pi; required for position axes]
+        #[arg(long, num_args = 4, value_names = ["LO1", "HI1", "LO2", "HI2"], value_parser = finite, allow_negative_numbers = true)]
+        range: Option<Vec<f64>>,
+        /// Also write the map as a PNG image, one pixel per cell
+        #[arg(long, value_name = "FILE")]
+        png: Option<String>,
+        /// Print the report as JSON
+        #[arg(long)]
+        json: bool,
+    },
+    /// The thesis' ray lattice over the chosen coordinates (the others from the pose): every
+    /// ray's exact feasible intervals, the graph of feasible pieces and its components
+    /// (docs/lattice.md)
+    #[command(after_help = EXIT_CODES)]
+    Lattice {
+        #[arg(value_name = "SCENARIO", help = SCENARIO_HELP)]
+        scenario: String,
+        /// The pose the other coordinates come from
+        #[arg(long, value_name = "NAME")]
+        pose: String,
+        /// The coordinates, comma-separated (x, y, z, phi, theta, sigma)
+        #[arg(long, value_name = "A,B[,C…]")]
+        axes: String,
+        /// One LO HI pair per axis, in the order of --axes
+        #[arg(long, num_args = 2.., value_names = ["LO", "HI"], value_parser = finite, allow_negative_numbers = true)]
+        range: Vec<f64>,
+        /// Grid values per axis (both ends of the range count): one number, or one per axis (7,9)
+        #[arg(long, value_name = "N[,N…]")]
+        steps: String,
+        /// Print the report as JSON
+        #[arg(long)]
+        json: bool,
+    },
+    /// A feasible path for a query of the scenario. --planner atlas (default; 6 cables with a
+    /// wrench set): Henderson atlas + A*, docs/planner.md, found / no_path / budget, the path
+    /// re-verified edge by edge. --planner lattice (any robot): ray lattice + A* + Bézier
+    /// smoothing, verified exactly and repaired, docs/lattice.md
+    #[command(after_help = EXIT_CODES)]
+    Plan {
+        #[arg(value_name = "SCENARIO", help = SCENARIO_HELP)]
+        scenario: String,
+        /// The query (start and goal poses) to plan
+        #[arg(long, value_name = "NAME")]
+        query: String,
+        /// The planner: atlas or lattice
+        #[arg(long, value_name = "NAME", default_value = "atlas")]
+        planner: String,
+        /// Lattice planner: grid values per free coordinate [default: 7]
+        #[arg(long, value_name = "N")]
+        steps: Option<usize>,
+        /// Write the scenario with the planned trajectory added (as QUERY-lattice or QUERY-atlas)
+        /// to FILE, so that `cablenav verify FILE --trajectory NAME` checks it
+        #[arg(long, value_name = "FILE")]
+        out: Option<String>,
+        /// Chart budget: the planner stops with `budget` after this many charts
+        #[arg(long, value_name = "N", default_value_t = PlanParams::default().max_charts)]
+        max_charts: usize,
+        /// Chart radius r
+        #[arg(long, value_name = "R", value_parser = finite, allow_negative_numbers = true, default_value_t = PlanParams::default().radius)]
+        radius: f64,
+        /// Chart validity threshold ε (distance to the parent's tangent space)
+        #[arg(long, value_name = "E", value_parser = finite, allow_negative_numbers = true, default_value_t = PlanParams::default().epsilon)]
+        epsilon: f64,
+        /// Print the report as JSON
+        #[arg(long)]
+        json: bool,
+    },
+    /// Print a shell completion script (e.g. `cablenav completions bash > /etc/bash_completion.d/cablenav`)
+    Completions {
+        /// The shell
+        #[arg(value_enum)]
+        shell: Shell,
+    },
+}
+
+/// A parsed command: which scenario file, what to ask the core, how to print it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Invocation {
+    /// The scenario file's path.
+    pub scenario: String,
+    /// The core's request.
+    pub request: Request,
+    /// Print JSON instead of text.
+    pub json: bool,
+    /// Where to write the slice map's PNG.
+    pub png: Option<String>,
+    /// Where to write the scenario with the planned trajectory added.
+    pub out: Option<String>,
+}
+
+const COORDS: [&str; 6] = ["x", "y", "z", "phi", "theta", "sigma"];
+
+impl Command {
+    /// The core request of a command that reads a scenario (not of `completions`).
+    pub fn invocation(self) -> cablenav::Result<Invocation> {
+        let plain = |scenario, request, json| Ok(Invocation { scenario, request, json, png: None, out: None });
+        match self {
+            Command::Verify { scenario, all: true, pointwise, json, .. } => plain(scenario, Request::VerifyAll { pointwise }, json),
+            Command::Verify { scenario, trajectory, pointwise, json, .. } => plain(scenario, Request::Verify { trajectory, pointwise }, json),
+            Command::Ray { scenario, pose, vary, range, json } => {
+                let vary = Coord::parse(&vary).ok_or_else(|| cablenav::Error::new("--vary", format!("{vary:?} is not one of x, y, z, phi, theta, sigma")))?;
+                plain(scenario, Request::Ray { pose, vary, range: [range[0], range[1]] }, json)
+            }
+            Command::Check { scenario, pose, json } => plain(scenario, Request::Check { pose }, json),
+            Command::Envelope { scenario, trajectory, samples, json } => plain(scenario, Request::Envelope { trajectory, samples }, json),
+            Command::Slice { scenario, pose, axes, res, range, png, json } => {
+                let range = range.map(|r| [[r[0], r[1]], [r[2], r[3]]]);
+                Ok(Invocation { scenario, request: Request::Slice { pose, axes, res, range }, json, png, out: None })
+            }
+            Command::Lattice { scenario, pose, axes, range, steps, json } => {
+                let axes = axes
+                    .split(',')
+                    .map(|a| Coord::parse(a.trim()).ok_or_else(|| cablenav::Error::new("--axes", format!("{:?} is not one of x, y, z, phi, theta, sigma", a.trim()))))
+                    .collect::<cablenav::Result<Vec<Coord>>>()?;
+                if range.len() % 2 != 0 {
+                    return Err(cablenav::Error::new("--range", format!("needs LO HI pairs, got {} numbers", range.len())));
+                }
+                let ranges = range.chunks(2).map(|p| [p[0], p[1]]).collect();
+                let steps = steps
+                    .split(',')
+                    .map(|n| n.trim().parse::<usize>().map_err(|_| cablenav::Error::new("--steps", format!("not a whole number: {n:?}"))))
+                    .collect::<cablenav::Result<Vec<usize>>>()?;
+                plain(scenario, Request::Lattice { pose, axes, ranges, steps }, json)
+            }
+            Command::Plan { scenario, query, planner, steps, out, max_charts, radius, epsilon, json } => {
+                let planner = PlannerKind::parse(&planner)?;
+                if steps.is_some() && planner != PlannerKind::Lattice {
+                    return Err(cablenav::Error::new("--steps", "is an option of --planner lattice"));
+                }
+                let params = PlanParams { max_charts, radius, epsilon, ..PlanParams::default() };
+                let lattice = LatticeParams { steps: steps.unwrap_or(LatticeParams::default().steps), ..LatticeParams::default() };
+                Ok(Invocation { scenario, request: Request::Plan { query, params, planner, lattice }, json, png: None, out })
+            }
+            Command::Completions { .. } => Err(cablenav::Error::new("completions", "reads no scenario")),
+        }
+    }
+}
+
+/// A finite number.
+fn finite(text: &str) -> Result<f64, String> {
+    let x: f64 = text.parse().map_err(|_| format!("not a number: {text:?}"))?;
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(format!("must be a finite number, got {x}"))
+    }
+}
+
+/// Two different coordinates separated by a comma.
+fn axes(text: &str) -> Result<[Coord; 2], String> {
+    let axes: Option<Vec<Coord>> = text.split(',').map(|a| Coord::parse(a.trim())).collect();
+    match axes.as_deref() {
+        Some(&[a, b]) => Ok([a, b]),
+        _ => Err(format!("{text:?} is not two of x, y, z, phi, theta, sigma separated by a comma")),
+    }
+}

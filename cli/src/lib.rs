@@ -1,0 +1,110 @@
+//! The `cablenav` command line: clap parses the arguments into a [`cablenav::command::Request`],
+//! the core runs it, and the report is printed as text or JSON. [`run`] is pure — it takes the
+//! arguments, a file reader and writer and a progress hook and returns what to print — so it is
+//! testable without processes; the binary (`src/main.rs`) adds the file system, progress bars
+//! and exit codes.
+
+mod args;
+
+pub use args::{Cli, Command, EXIT_CODES};
+
+use cablenav::command::{self, Output, Progress};
+use cablenav::Scenario;
+use clap::error::{ContextKind, ContextValue, ErrorKind};
+use clap::{CommandFactory, Parser};
+use std::fmt;
+
+/// Reads a scenario file by path.
+pub type Read<'a> = &'a dyn Fn(&str) -> cablenav::Result<String>;
+/// Writes an output file (`--png`, `--out`) by path.
+pub type Write<'a> = &'a dyn Fn(&str, &[u8]) -> cablenav::Result<()>;
+
+/// Why a command failed.
+#[derive(Debug)]
+pub enum CliError {
+    /// The command line itself is wrong (unknown option, missing or malformed value): clap's
+    /// message, with the usage and a pointer to `--help`.
+    Usage(clap::Error),
+    /// The command line parsed, but its input is wrong: an unreadable or invalid scenario (the
+    /// field's JSON path), an unknown pose or trajectory, an option value the core rejects.
+    Input(cablenav::Error),
+}
+
+impl CliError {
+    /// The option, argument or scenario field the error is about (`--range`, `SCENARIO`,
+    /// `robot.cables[2].base`, …); empty when there is none (a missing or unknown command).
+    pub fn field(&self) -> String {
+        match self {
+            CliError::Input(e) => e.field.clone(),
+            CliError::Usage(e) => {
+                let name = |v: &ContextValue| match v {
+                    ContextValue::String(s) => Some(s.clone()),
+                    ContextValue::Strings(v) => v.first().cloned(),
+                    _ => None,
+                };
+                let arg = e.get(ContextKind::InvalidArg).and_then(name).unwrap_or_default();
+                // "--range <LO> <HI>" → "--range", "<SCENARIO>" → "SCENARIO".
+                arg.split_whitespace().next().unwrap_or("").trim_matches(['<', '>']).to_string()
+            }
+        }
+    }
+
+    /// The process exit code (documented in [`EXIT_CODES`]).
+    pub fn exit_code(&self) -> u8 {
+        2
+    }
+}
+
+impl fmt::Display for CliError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            CliError::Usage(e) => write!(f, "{}", e.render().to_string().trim_end()),
+            CliError::Input(e) => write!(f, "cablenav: {}", e.to_string().lines().next().unwrap_or("error")),
+        }
+    }
+}
+
+impl From<cablenav::Error> for CliError {
+    fn from(e: cablenav::Error) -> Self {
+        CliError::Input(e)
+    }
+}
+
+/// Runs one command line (without the program name) and returns what to print on stdout:
+/// the report, `--help`, `--version` or a completion script. Long commands report to `progress`.
+pub fn run<I, S>(args: I, read: Read, write: Write, progress: &mut dyn FnMut(Progress)) -> Result<String, CliError>
+where
+    I: IntoIterator<Item = S>,
+    S: Into<std::ffi::OsString> + Clone,
+{
+    let args = std::iter::once(std::ffi::OsString::from("cablenav")).chain(args.into_iter().map(Into::into));
+    let cli = match Cli::try_parse_from(args) {
+        Ok(cli) => cli,
+        Err(e) if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) => return Ok(e.render().to_string()),
+        Err(e) => return Err(CliError::Usage(e)),
+    };
+    let invocation = match cli.command {
+        Command::Completions { shell } => {
+            let mut out = Vec::new();
+            clap_complete::generate(shell, &mut Cli::command(), "cablenav", &mut out);
+            return Ok(String::from_utf8_lossy(&out).into_owned());
+        }
+        command => command.invocation()?,
+    };
+    let path = &invocation.scenario;
+    let scenario = Scenario::from_json(&read(path)?).map_err(|e| cablenav::Error::new(format!("{path}: {}", e.field), e.reason))?;
+    let output = command::run(&scenario, &invocation.request, progress)?;
+    if let (Output::Slice(map), Some(png)) = (&output, &invocation.png) {
+        write(png, &map.png())?;
+    }
+    let mut printed = if invocation.json { output.json() } else { output.text() };
+    if let Some(file) = &invocation.out {
+        let traj = output.trajectory().ok_or_else(|| cablenav::Error::new("--out", "no trajectory was planned: nothing to write"))?;
+        let (text, name) = cablenav::scenario::with_trajectory(&read(path)?, traj)?;
+        write(file, text.as_bytes())?;
+        if !invocation.json {
+            printed += &format!("\n  wrote {file} with the trajectory \"{name}\" (check it: cablenav verify {file} --trajectory {name})\n");
+        }
+    }
+    Ok(printed)
+}

@@ -1,0 +1,120 @@
+// The npm package as a user gets it: `npm pack`'s tarball (target/npm/cablenav-*.tgz, made by
+// `npm/build.sh --pack`) unpacked into a scratch node_modules/, imported by its package name.
+// Its reports must equal what the CLI prints with --json (CABLENAV, else target/debug/cablenav),
+// its errors must name the field, and its types must declare every function's report.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const root = resolve(fileURLToPath(new URL('../..', import.meta.url)));
+const tarballs = readdirSync(join(root, 'target', 'npm')).filter((f) => /^cablenav-.*\.tgz$/.test(f));
+assert.equal(tarballs.length, 1, `one tarball in target/npm (run npm/build.sh --pack): ${tarballs}`);
+const scratch = mkdtempSync(join(tmpdir(), 'cablenav-npm-'));
+const installed = join(scratch, 'node_modules', 'cablenav');
+mkdirSync(installed, { recursive: true });
+execFileSync('tar', ['-xzf', join(root, 'target', 'npm', tarballs[0]), '-C', installed, '--strip-components=1']);
+// A module inside the scratch project, so that `cablenav/web` resolves through its node_modules.
+writeFileSync(join(scratch, 'load.mjs'), "export * from 'cablenav/web'; export { default } from 'cablenav/web';\n");
+const cablenav = await import(join(scratch, 'load.mjs'));
+cablenav.initSync({ module: readFileSync(join(installed, 'web', 'cablenav_bg.wasm')) });
+
+const cliPath = process.env.CABLENAV ?? join(root, 'target', 'debug', 'cablenav');
+const cli = (...args) => JSON.parse(execFileSync(cliPath, [...args.map(String), '--json'], { encoding: 'utf8' }));
+const presets = readdirSync(join(root, 'static', 'scenarios')).filter((f) => f.endsWith('.json'));
+const preset = (name) => readFileSync(join(root, 'static', 'scenarios', name), 'utf8');
+
+test('verify equals `cablenav verify --json` on every preset and trajectory', () => {
+  assert.ok(presets.length >= 5);
+  for (const file of presets) {
+    const text = preset(file);
+    for (const { name } of JSON.parse(text).trajectories) {
+      const expected = cli('verify', join(root, 'static', 'scenarios', file), '--trajectory', name);
+      assert.deepEqual(cablenav.verify(text, name), expected, `${file} ${name}`);
+      assert.deepEqual(cablenav.verify(JSON.parse(text), name), expected, `${file} ${name} (object)`);
+    }
+  }
+});
+
+/**
+ * Deep equality with numbers allowed 1e-12 relative apart: the core's maths functions (sin,
+ * atan2, …) come from Rust's libm on wasm32 and from glibc natively, and those may differ in the
+ * last bit (a slice's fixed θ prints as 0.9 natively, 0.9000000000000001 in wasm). Everything
+ * else — strings, classes, counts, keys, array lengths — must be identical.
+ */
+function close(actual, expected, path = '') {
+  if (typeof expected === 'number' && typeof actual === 'number') {
+    assert.ok(Math.abs(actual - expected) <= 1e-12 * Math.max(1, Math.abs(expected)), `${path}: ${actual} vs ${expected}`);
+  } else if (expected !== null && typeof expected === 'object') {
+    assert.equal(typeof actual, 'object', path);
+    assert.deepEqual(Object.keys(actual ?? {}), Object.keys(expected), path);
+    for (const key of Object.keys(expected)) close(actual[key], expected[key], `${path}.${key}`);
+  } else {
+    assert.equal(actual, expected, path);
+  }
+}
+
+test('check, ray, envelope, slice and plan equal the CLI (to the last bits of libm)', () => {
+  const box = join(root, 'static', 'scenarios', 'cdpr7-box.json');
+  const robocrane = join(root, 'static', 'scenarios', 'robocrane.json');
+  close(cablenav.check(preset('cdpr7-box.json'), 'fig310'), cli('check', box, '--pose', 'fig310'));
+  close(cablenav.check(preset('robocrane.json'), 'q1'), cli('check', robocrane, '--pose', 'q1'));
+  close(cablenav.ray(preset('cdpr7-box.json'), 'fig310', 'x', 0.2, 3.8), cli('ray', box, '--pose', 'fig310', '--vary', 'x', '--range', 0.2, 3.8));
+  close(cablenav.envelope(preset('robocrane.json'), undefined, 20), cli('envelope', robocrane, '--samples', 20));
+  close(cablenav.slice(preset('robocrane.json'), 'q1', 'phi', 'theta', 30), cli('slice', robocrane, '--pose', 'q1', '--axes', 'phi,theta', '--res', 30));
+  close(
+    cablenav.slice(preset('cdpr7-box.json'), 'start', 'x', 'y', 20, [0, 4, 0, 4]),
+    cli('slice', box, '--pose', 'start', '--axes', 'x,y', '--res', 20, '--range', 0, 4, 0, 4),
+  );
+  const ours = cablenav.plan(preset('robocrane.json'), 'q1-q2', undefined, 0.3, 0.3);
+  const theirs = cli('plan', robocrane, '--query', 'q1-q2', '--radius', 0.3, '--epsilon', 0.3);
+  assert.equal(ours.seconds, null); // no clock in the core on wasm32
+  delete ours.seconds;
+  delete theirs.seconds;
+  close(ours, theirs);
+  assert.equal(ours.status, 'found');
+});
+
+test('errors are ScenarioErrors naming the field', () => {
+  const scenario = JSON.parse(preset('cdpr7.json'));
+  const throws = (f, field) => {
+    assert.throws(f, (e) => {
+      assert.equal(e.name, 'ScenarioError');
+      assert.equal(e.field, field, e.message);
+      assert.ok(e.message.startsWith(`${field}: `) && e.reason.length > 0, e.message);
+      return true;
+    });
+  };
+  scenario.robot.cables[3].base = [0, 4];
+  throws(() => cablenav.verify(scenario), 'robot.cables[3].base');
+  throws(() => cablenav.verify('{"format": "cablenav-scenario/1", "robot": '), 'robot');
+  const good = preset('cdpr7.json');
+  throws(() => cablenav.verify(good, 'nope'), 'trajectory');
+  throws(() => cablenav.verify(good, undefined, 0), 'pointwise');
+  throws(() => cablenav.ray(good, 'start', 'w', 0, 1), 'vary');
+  throws(() => cablenav.ray(good, 'start', 'x', 1, 0), 'range');
+  throws(() => cablenav.check(good, 'nobody'), 'pose');
+  throws(() => cablenav.slice(good, 'start', 'x', 'y', 10), 'range');
+  throws(() => cablenav.slice(good, 'start', 'x', 'y', 10, [0, 1, 2]), 'range');
+  throws(() => cablenav.plan(preset('robocrane.json'), 'q1-q2', 0), 'maxCharts');
+});
+
+test('the bundler entry loads (ES module import of the .wasm) and agrees with the web entry', () => {
+  const script = "import('cablenav').then((c) => console.log(JSON.stringify(c.verify(process.argv[1], 'quadratic'))))";
+  const out = execFileSync(process.execPath, ['--experimental-wasm-modules', '--no-warnings', '--input-type=module', '-e', script, preset('cdpr7-tree.json')], { cwd: scratch, encoding: 'utf8' });
+  assert.deepEqual(JSON.parse(out), cablenav.verify(preset('cdpr7-tree.json'), 'quadratic'));
+});
+
+test('the TypeScript declarations type every function with its report', () => {
+  for (const target of ['web', 'bundler']) {
+    const dts = readFileSync(join(installed, target, 'cablenav.d.ts'), 'utf8');
+    for (const [fn, report] of [['verify', 'VerifyReport'], ['check', 'PoseReport'], ['ray', 'RayReport'], ['envelope', 'TensionEnvelope'], ['slice', 'SliceMap'], ['plan', 'PlanReport']]) {
+      assert.match(dts, new RegExp(`export function ${fn}\\(scenario: ScenarioInput[^)]*\\): ${report};`), `${target}: ${fn}`);
+      assert.match(dts, new RegExp(`export interface ${report} \\{`), `${target}: ${report}`);
+    }
+  }
+  assert.equal(cablenav.version(), JSON.parse(readFileSync(join(installed, 'package.json'), 'utf8')).version);
+});

@@ -1,0 +1,53 @@
+"""Type stubs of the native module (python/src/lib.rs); see the docstrings there."""
+
+import os
+from typing import Any, Dict, Optional, Tuple, Union
+
+Scenario = Union[Dict[str, Any], str, "os.PathLike[str]"]
+"""A scenario: a dict, a JSON string (starting with ``{``) or a path to a JSON file."""
+
+Report = Dict[str, Any]
+"""A report: exactly the JSON that ``cablenav COMMAND … --json`` prints, parsed."""
+
+__version__: str
+
+class ScenarioError(ValueError):
+    """A scenario or an argument the core rejects."""
+
+    field: str
+    """Where: a JSON path into the scenario (``robot.cables[3].base``) or an argument (``range``)."""
+    reason: str
+    """Why."""
+    path: Optional[str]
+    """The scenario file, when the scenario was given as a path."""
+
+def verify(scenario: Scenario, trajectory: Optional[str] = None, *, pointwise: Optional[float] = None) -> Report:
+    """Feasible/infeasible t-sections of a trajectory, exact (``pointwise``: sampled every Δt)."""
+
+def check(scenario: Scenario, pose: str) -> Report:
+    """Lengths, clearances, violated conditions and wrench tension ranges at one pose."""
+
+def ray(scenario: Scenario, pose: str, vary: str, range: Tuple[float, float]) -> Report:
+    """Exact feasible intervals of one coordinate (x, y, z, phi, theta, sigma) over ``range``."""
+
+def envelope(scenario: Scenario, trajectory: Optional[str] = None, *, samples: Optional[int] = None) -> Report:
+    """Each cable's least and greatest tension over the wrench set along a trajectory."""
+
+def slice(
+    scenario: Scenario,
+    pose: str,
+    axes: Tuple[str, str],
+    res: int,
+    range: Optional[Tuple[Tuple[float, float], Tuple[float, float]]] = None,
+) -> Report:
+    """A res × res classified grid over two coordinates and its feasible components."""
+
+def plan(
+    scenario: Scenario,
+    query: str,
+    *,
+    max_charts: Optional[int] = None,
+    radius: Optional[float] = None,
+    epsilon: Optional[float] = None,
+) -> Report:
+    """A wrench-feasible, interference-free path for a query, re-verified edge by edge."""

@@ -1,0 +1,267 @@
+//! `cablenav._cablenav`: the Python bindings of the cablenav core (PyO3, abi3).
+//!
+//! Each function takes a scenario (a dict, a JSON string or a path), builds the core's
+//! [`Request`] from its keyword arguments, runs it with the GIL released and returns the report
+//! as plain dicts and lists: `json.loads` of exactly the text `cablenav … --json` prints
+//! ([`Output::json`], the one serialisation). Every error of the core is raised as
+//! `cablenav.ScenarioError` with the field it names (a JSON path into the scenario, or the
+//! parameter) in `.field`.
+
+use cablenav::command::{self, Request};
+use cablenav::model::Coord;
+use cablenav::plan::PlanParams;
+use cablenav::{Error, Scenario};
+use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyString};
+
+pyo3::create_exception!(
+    cablenav,
+    ScenarioError,
+    PyValueError,
+    "A scenario or an argument the core rejects. `.field` names where (a JSON path into the \
+     scenario such as `robot.cables[3].base`, or the argument such as `range`), `.reason` says \
+     why, `.path` is the scenario file's path when it was given as one (else None)."
+);
+
+/// Where a scenario comes from.
+enum Source {
+    /// JSON text (a dict is dumped to this).
+    Json(String),
+    /// A file path.
+    Path(String),
+}
+
+impl Source {
+    /// A dict, a JSON string (its first non-blank character is `{`), a path string or an
+    /// `os.PathLike`.
+    fn of(scenario: &Bound<'_, PyAny>) -> PyResult<Source> {
+        let py = scenario.py();
+        if scenario.is_instance_of::<PyString>() {
+            let text: String = scenario.extract()?;
+            return Ok(if text.trim_start().starts_with('{') { Source::Json(text) } else { Source::Path(text) });
+        }
+        if scenario.is_instance_of::<PyDict>() {
+            let mut text = String::new();
+            return match write_json(scenario, &mut String::new(), &mut text)? {
+                Ok(()) => Ok(Source::Json(text)),
+                Err(e) => Err(scenario_error(py, e, None)),
+            };
+        }
+        match py.import("os")?.call_method1("fspath", (scenario,)) {
+            Ok(path) => Ok(Source::Path(path.extract()?)),
+            Err(_) => Err(PyTypeError::new_err(format!(
+                "scenario must be a dict, a JSON string or a path, not {}",
+                scenario.get_type().name()?
+            ))),
+        }
+    }
+
+    /// The file's path, if the scenario is one.
+    fn path(&self) -> Option<&str> {
+        match self {
+            Source::Path(p) => Some(p),
+            Source::Json(_) => None,
+        }
+    }
+
+    /// Reads and parses the scenario (without the GIL).
+    fn load(&self) -> cablenav::Result<Scenario> {
+        let text = match self {
+            Source::Json(text) => std::borrow::Cow::Borrowed(text.as_str()),
+            Source::Path(path) => std::borrow::Cow::Owned(std::fs::read_to_string(path).map_err(|e| Error::new("", format!("cannot read: {e}")))?),
+        };
+        Scenario::from_json(&text)
+    }
+}
+
+/// Writes a scenario given as Python data (dicts with string keys, lists, tuples, strings,
+/// numbers, booleans, None) as JSON text, keeping the dicts' key order (pose order matters). A
+/// value JSON cannot hold (NaN, ±inf, another type) is an error at its path (`poses.a.position[1]`),
+/// as the core names fields; `path` is the current one.
+fn write_json(value: &Bound<'_, PyAny>, path: &mut String, out: &mut String) -> PyResult<Result<(), Error>> {
+    use pyo3::types::{PyBool, PyFloat, PyInt, PyList, PyTuple};
+    let quoted = |text: &str| serde_json::to_string(text).unwrap_or_default();
+    if value.is_none() {
+        out.push_str("null");
+    } else if let Ok(b) = value.cast::<PyBool>() {
+        out.push_str(if b.is_true() { "true" } else { "false" });
+    } else if value.is_instance_of::<PyInt>() {
+        match value.extract::<i64>() {
+            Ok(i) => out.push_str(&i.to_string()),
+            Err(_) => return Ok(Err(Error::new(path.clone(), "integer too large"))),
+        }
+    } else if let Ok(x) = value.cast::<PyFloat>() {
+        let x = x.value();
+        if !x.is_finite() {
+            return Ok(Err(Error::new(path.clone(), format!("must be a finite number, got {x}"))));
+        }
+        out.push_str(&serde_json::to_string(&x).unwrap_or_default());
+    } else if value.is_instance_of::<PyString>() {
+        out.push_str(&quoted(&value.extract::<String>()?));
+    } else if let Ok(dict) = value.cast::<PyDict>() {
+        out.push('{');
+        for (i, (key, item)) in dict.iter().enumerate() {
+            let Ok(key) = key.extract::<String>() else {
+                return Ok(Err(Error::new(path.clone(), format!("keys must be strings, got {}", key.get_type().name()?))));
+            };
+            if i > 0 {
+                out.push(',');
+            }
+            out.push_str(&quoted(&key));
+            out.push(':');
+            let len = path.len();
+            if !path.is_empty() {
+                path.push('.');
+            }
+            path.push_str(&key);
+            if let Err(e) = write_json(&item, path, out)? {
+                return Ok(Err(e));
+            }
+            path.truncate(len);
+        }
+        out.push('}');
+    } else if value.is_instance_of::<PyList>() || value.is_instance_of::<PyTuple>() {
+        out.push('[');
+        for (i, item) in value.try_iter()?.enumerate() {
+            if i > 0 {
+                out.push(',');
+            }
+            let len = path.len();
+            path.push_str(&format!("[{i}]"));
+            if let Err(e) = write_json(&item?, path, out)? {
+                return Ok(Err(e));
+            }
+            path.truncate(len);
+        }
+        out.push(']');
+    } else {
+        return Ok(Err(Error::new(path.clone(), format!("a {} is not JSON data", value.get_type().name()?))));
+    }
+    Ok(Ok(()))
+}
+
+/// The core's error as a `ScenarioError`; the command-line option names the core uses
+/// (`--range`, `--max-charts`) become the Python parameter names (`range`, `max_charts`).
+fn scenario_error(py: Python<'_>, e: Error, path: Option<&str>) -> PyErr {
+    let field = match e.field.strip_prefix("--") {
+        Some(option) => option.replace('-', "_"),
+        None => e.field,
+    };
+    let message = if field.is_empty() { e.reason.clone() } else { format!("{field}: {}", e.reason) };
+    let message = match path {
+        Some(p) => format!("{p}: {message}"),
+        None => message,
+    };
+    let err = ScenarioError::new_err(message);
+    let value = err.value(py);
+    let set = value.setattr("field", field).and(value.setattr("reason", e.reason)).and(value.setattr("path", path));
+    set.err().unwrap_or(err)
+}
+
+/// Runs `request` on the scenario with the GIL released and returns the report as Python data.
+fn call(py: Python<'_>, scenario: &Bound<'_, PyAny>, request: Result<Request, Error>) -> PyResult<Py<PyAny>> {
+    let source = Source::of(scenario)?;
+    let request = request.map_err(|e| scenario_error(py, e, None))?;
+    let json = py
+        .detach(|| -> cablenav::Result<String> {
+            let scenario = source.load()?;
+            Ok(command::run(&scenario, &request, &mut |_| {})?.json())
+        })
+        .map_err(|e| scenario_error(py, e, source.path()))?;
+    Ok(py.import("json")?.call_method1("loads", (json,))?.unbind())
+}
+
+/// A pose coordinate by name.
+fn coord(field: &str, name: &str) -> Result<Coord, Error> {
+    Coord::parse(name).ok_or_else(|| Error::new(field, format!("{name:?} is not one of x, y, z, phi, theta, sigma")))
+}
+
+/// Feasible and infeasible sections of a trajectory, exactly (or sampled every `pointwise` in t).
+///
+/// Returns the dict `cablenav verify SCENARIO --json` prints: `trajectory`, `method`,
+/// `feasible`/`infeasible`/`uncertain` t-intervals, `feasible_tau`, `boundaries` (t, τ, the
+/// constraint, the side entered), `warnings`. `trajectory` defaults to the
+/// scenario's first.
+#[pyfunction]
+#[pyo3(signature = (scenario, trajectory=None, *, pointwise=None))]
+fn verify(py: Python<'_>, scenario: &Bound<'_, PyAny>, trajectory: Option<String>, pointwise: Option<f64>) -> PyResult<Py<PyAny>> {
+    call(py, scenario, Ok(Request::Verify { trajectory, pointwise }))
+}
+
+/// Lengths, clearances, violated conditions and the wrench set's tension ranges at one pose.
+///
+/// Returns the dict `cablenav check SCENARIO --pose POSE --json` prints.
+#[pyfunction]
+#[pyo3(signature = (scenario, pose))]
+fn check(py: Python<'_>, scenario: &Bound<'_, PyAny>, pose: String) -> PyResult<Py<PyAny>> {
+    call(py, scenario, Ok(Request::Check { pose }))
+}
+
+/// Exact feasible intervals of one pose coordinate over `range`, the others held at `pose`'s.
+///
+/// `vary` is one of "x", "y", "z", "phi", "theta", "sigma"; `range` is (lo, hi), angles in
+/// radians. Returns the dict `cablenav ray SCENARIO --pose POSE --vary V --range LO HI --json`
+/// prints.
+#[pyfunction]
+#[pyo3(signature = (scenario, pose, vary, range))]
+fn ray(py: Python<'_>, scenario: &Bound<'_, PyAny>, pose: String, vary: &str, range: (f64, f64)) -> PyResult<Py<PyAny>> {
+    let request = coord("vary", vary).map(|vary| Request::Ray { pose, vary, range: [range.0, range.1] });
+    call(py, scenario, request)
+}
+
+/// Each cable's least and greatest tension over the wrench set at `samples` points of a trajectory.
+///
+/// Returns the dict `cablenav envelope SCENARIO --json` prints (`samples` defaults to 100,
+/// `trajectory` to the scenario's first).
+#[pyfunction]
+#[pyo3(signature = (scenario, trajectory=None, *, samples=None))]
+fn envelope(py: Python<'_>, scenario: &Bound<'_, PyAny>, trajectory: Option<String>, samples: Option<usize>) -> PyResult<Py<PyAny>> {
+    call(py, scenario, Ok(Request::Envelope { trajectory, samples }))
+}
+
+/// A res × res grid over two coordinates (the others from `pose`), each cell classified, and the
+/// connected components of the feasible cells.
+///
+/// `axes` is two coordinate names, e.g. ("phi", "theta"); `range` is ((lo, hi), (lo, hi)),
+/// optional for angle axes ([-π, π]). Returns the dict `cablenav slice … --json` prints
+/// (`classes` row-major, `component`, `pose_components`, `fraction_feasible`, …).
+#[pyfunction]
+#[pyo3(signature = (scenario, pose, axes, res, range=None))]
+fn slice(py: Python<'_>, scenario: &Bound<'_, PyAny>, pose: String, axes: (String, String), res: usize, range: Option<((f64, f64), (f64, f64))>) -> PyResult<Py<PyAny>> {
+    let request = coord("axes", &axes.0).and_then(|a| Ok([a, coord("axes", &axes.1)?])).map(|axes| Request::Slice {
+        pose,
+        axes,
+        res,
+        range: range.map(|(a, b)| [[a.0, a.1], [b.0, b.1]]),
+    });
+    call(py, scenario, request)
+}
+
+/// A wrench-feasible, interference-free path for one of the scenario's queries (Henderson atlas +
+/// A*), re-verified edge by edge.
+///
+/// Returns the dict `cablenav plan SCENARIO --query QUERY --json` prints: `status` ("found",
+/// "no_path" or "budget"), `path`, `verification`, `atlas`, `charts`, `seconds`. Unset
+/// parameters take the CLI's defaults.
+#[pyfunction]
+#[pyo3(signature = (scenario, query, *, max_charts=None, radius=None, epsilon=None))]
+fn plan(py: Python<'_>, scenario: &Bound<'_, PyAny>, query: String, max_charts: Option<usize>, radius: Option<f64>, epsilon: Option<f64>) -> PyResult<Py<PyAny>> {
+    let d = PlanParams::default();
+    let params = PlanParams { max_charts: max_charts.unwrap_or(d.max_charts), radius: radius.unwrap_or(d.radius), epsilon: epsilon.unwrap_or(d.epsilon), ..d };
+    call(py, scenario, Ok(Request::Plan { query, params }))
+}
+
+/// The native module; `cablenav/__init__.py` re-exports it.
+#[pymodule]
+fn _cablenav(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("ScenarioError", m.py().get_type::<ScenarioError>())?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add_function(wrap_pyfunction!(verify, m)?)?;
+    m.add_function(wrap_pyfunction!(check, m)?)?;
+    m.add_function(wrap_pyfunction!(ray, m)?)?;
+    m.add_function(wrap_pyfunction!(envelope, m)?)?;
+    m.add_function(wrap_pyfunction!(slice, m)?)?;
+    m.add_function(wrap_pyfunction!(plan, m)?)?;
+    Ok(())
+}

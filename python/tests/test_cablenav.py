@@ -1,0 +1,120 @@
+"""The Python package against the CLI's JSON, its errors, the GIL, stubs and docstrings."""
+
+import ast
+import json
+import threading
+from pathlib import Path
+
+import pytest
+
+import cablenav
+from conftest import PRESETS, ROOT
+
+
+def load(path):
+    with open(path) as f:
+        return json.load(f)
+
+
+@pytest.mark.parametrize("path", PRESETS, ids=lambda p: p.name)
+def test_verify_equals_the_cli_on_every_preset(cli, path):
+    scenario = load(path)
+    for trajectory in [t["name"] for t in scenario["trajectories"]]:
+        expected = cli("verify", path, "--trajectory", trajectory)
+        # The same dict from a path, a pathlib.Path, a dict and a JSON string.
+        assert cablenav.verify(str(path), trajectory) == expected
+        assert cablenav.verify(path, trajectory) == expected
+        assert cablenav.verify(scenario, trajectory) == expected
+        assert cablenav.verify(path.read_text(), trajectory) == expected
+    assert cablenav.verify(path) == cli("verify", path)
+    assert cablenav.verify(path, pointwise=0.01) == cli("verify", path, "--pointwise", "0.01")
+
+
+@pytest.mark.parametrize("path", PRESETS, ids=lambda p: p.name)
+def test_check_and_ray_equal_the_cli_on_every_preset(cli, path):
+    for pose, value in load(path)["poses"].items():
+        assert cablenav.check(path, pose) == cli("check", path, "--pose", pose)
+        x = value["position"][0]
+        assert cablenav.ray(path, pose, "x", (x - 1, x + 1)) == cli("ray", path, "--pose", pose, "--vary", "x", "--range", x - 1, x + 1)
+        assert cablenav.ray(path, pose, "theta", (-1.0, 1.0)) == cli("ray", path, "--pose", pose, "--vary", "theta", "--range", -1, 1)
+
+
+def test_envelope_slice_and_plan_equal_the_cli(cli):
+    robocrane = ROOT / "static" / "scenarios" / "robocrane.json"
+    assert cablenav.envelope(robocrane, samples=20) == cli("envelope", robocrane, "--samples", 20)
+    assert cablenav.slice(robocrane, "q1", ("phi", "theta"), 30) == cli("slice", robocrane, "--pose", "q1", "--axes", "phi,theta", "--res", 30)
+    box = ROOT / "static" / "scenarios" / "cdpr7-box.json"
+    assert cablenav.slice(box, "start", ("x", "y"), 20, ((0, 4), (0, 4))) == cli(
+        "slice", box, "--pose", "start", "--axes", "x,y", "--res", 20, "--range", 0, 4, 0, 4
+    )
+    ours = cablenav.plan(robocrane, "q1-q2", radius=0.3, epsilon=0.3)
+    theirs = cli("plan", robocrane, "--query", "q1-q2", "--radius", 0.3, "--epsilon", 0.3)
+    assert ours.pop("seconds") >= 0 and theirs.pop("seconds") >= 0  # wall-clock time differs
+    assert ours == theirs and ours["status"] == "found"
+
+
+def test_errors_carry_the_field():
+    scenario = load(ROOT / "static" / "scenarios" / "cdpr7.json")
+    bad = json.loads(json.dumps(scenario))
+    bad["robot"]["cables"][3]["base"] = [0, float("nan"), 4]
+    with pytest.raises(cablenav.ScenarioError) as e:
+        cablenav.verify(bad)
+    assert e.value.field == "robot.cables[3].base[1]" and "finite" in e.value.reason
+    bad["robot"]["cables"][3]["base"] = [0, 4]
+    with pytest.raises(cablenav.ScenarioError) as e:
+        cablenav.verify(json.dumps(bad))
+    assert e.value.field == "robot.cables[3].base"
+    assert isinstance(e.value, ValueError) and str(e.value).startswith("robot.cables[3].base: ")
+    cases = [
+        (lambda: cablenav.verify(scenario, "nope"), "trajectory"),
+        (lambda: cablenav.verify(scenario, pointwise=0.0), "pointwise"),
+        (lambda: cablenav.ray(scenario, "start", "w", (0, 1)), "vary"),
+        (lambda: cablenav.ray(scenario, "start", "x", (1, 0)), "range"),
+        (lambda: cablenav.check(scenario, "nobody"), "pose"),
+        (lambda: cablenav.envelope(scenario, samples=0), "samples"),
+        (lambda: cablenav.slice(scenario, "start", ("x", "y"), 10), "range"),
+        (lambda: cablenav.slice(scenario, "start", ("phi", "phi"), 10), "axes"),
+        (lambda: cablenav.plan(ROOT / "static" / "scenarios" / "robocrane.json", "q1-q2", radius=-1.0), "radius"),
+        (lambda: cablenav.plan(ROOT / "static" / "scenarios" / "robocrane.json", "q1-q2", max_charts=0), "max_charts"),
+        (lambda: cablenav.plan(scenario, "q1-q2"), "query"),
+    ]
+    for call, field in cases:
+        with pytest.raises(cablenav.ScenarioError) as e:
+            call()
+        assert e.value.field == field, (field, e.value.field, str(e.value))
+    with pytest.raises(cablenav.ScenarioError) as e:
+        cablenav.verify(ROOT / "no" / "such.json")
+    assert e.value.path == str(ROOT / "no" / "such.json") and "cannot read" in e.value.reason
+    with pytest.raises(TypeError):
+        cablenav.verify(42)
+
+
+def test_long_calls_release_the_gil():
+    """Another Python thread runs while a slice is being computed in the core."""
+    robocrane = load(ROOT / "static" / "scenarios" / "robocrane.json")
+    started, done, ticks = threading.Event(), threading.Event(), [0]
+
+    def work():
+        started.set()
+        cablenav.slice(robocrane, "q1", ("phi", "theta"), 400)
+        done.set()
+
+    worker = threading.Thread(target=work)
+    worker.start()
+    started.wait()
+    while not done.is_set():
+        ticks[0] += 1
+    worker.join()
+    # Holding the GIL, the core would let this loop run only between Python bytecodes of `work`.
+    assert ticks[0] > 1000, ticks[0]
+
+
+def test_every_function_has_a_docstring_and_a_stub():
+    stub = ast.parse((Path(cablenav.__file__).parent / "_cablenav.pyi").read_text())
+    stubbed = {n.name for n in stub.body if isinstance(n, (ast.FunctionDef, ast.ClassDef))}
+    for name in cablenav.__all__:
+        if name == "__version__":
+            continue
+        assert name in stubbed, name
+        assert len(getattr(cablenav, name).__doc__ or "") > 40, name
+    assert (Path(cablenav.__file__).parent / "py.typed").exists()

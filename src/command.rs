@@ -1,0 +1,462 @@
+//! The commands every front end offers — the `cablenav` CLI, the Python package, the npm package:
+//! a typed [`Request`], [`run`] against a scenario, and the [`Output`] as JSON (the one
+//! serialisation all of them print or return) or as readable text. Parsing of command lines
+//! lives in the `cablenav-cli` crate (`cli/`), so the core stays free of argument parsers.
+//!
+//! Errors name the command-line option they come from (`--range`, `--radius`, …): the bindings
+//! map those to their parameter names.
+
+use crate::error::{Error, Result};
+use crate::model::Coord;
+use crate::lattice::{Lattice, LatticeReport, LatticeSpec};
+use crate::model::Trajectory;
+use crate::plan::choice::{self, Details, PlannerKind, PlannerOptions};
+use crate::plan::lattice::{LatticeParams, LatticePlanReport};
+use crate::plan::{PlanParams, PlanReport, PlanStatus};
+use crate::report::{PoseReport, RayReport, Side, TensionEnvelope, VerifyReport};
+use crate::verify::slice::{default_range, Class, SliceMap};
+use crate::verify::{check_pose, ray, slice, tension_envelope, verify_all, verify_pointwise, verify_trajectory};
+use crate::Scenario;
+use serde::Serialize;
+
+/// One command with its parameters, already parsed and typed.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Request {
+    /// Feasible/infeasible t-sections of a trajectory (exact, or sampled every `pointwise` in t).
+    Verify {
+        /// Trajectory name (`None`: the scenario's first).
+        trajectory: Option<String>,
+        /// Sample step Δt instead of the exact verifier.
+        pointwise: Option<f64>,
+    },
+    /// [`Request::Verify`] for every trajectory of the scenario, in parallel on native targets.
+    VerifyAll {
+        /// Sample step Δt instead of the exact verifier.
+        pointwise: Option<f64>,
+    },
+    /// Feasible intervals of one pose coordinate over `range`, the others fixed at the pose's.
+    Ray {
+        /// Pose name.
+        pose: String,
+        /// The coordinate varied.
+        vary: Coord,
+        /// [LO, HI].
+        range: [f64; 2],
+    },
+    /// Lengths, distances, violated conditions and the wrench set's tension ranges at one pose.
+    Check {
+        /// Pose name.
+        pose: String,
+    },
+    /// Each cable's least and greatest tension over the wrench set along a trajectory.
+    Envelope {
+        /// Trajectory name (`None`: the scenario's first).
+        trajectory: Option<String>,
+        /// Sample count (`None`: 100).
+        samples: Option<usize>,
+    },
+    /// A res × res classified grid over two coordinates and its feasible components.
+    Slice {
+        /// Pose the other coordinates come from.
+        pose: String,
+        /// The two coordinates (columns, rows).
+        axes: [Coord; 2],
+        /// Grid side.
+        res: usize,
+        /// Ranges of the two axes (`None`: [-π, π] for angles; position axes need one).
+        range: Option<[[f64; 2]; 2]>,
+    },
+    /// The thesis' ray lattice over `axes` (the others from the pose): every ray's exact feasible
+    /// intervals, the graph of feasible pieces and its components (docs/lattice.md).
+    Lattice {
+        /// Pose the other coordinates come from.
+        pose: String,
+        /// The chosen coordinates.
+        axes: Vec<Coord>,
+        /// [LO, HI] per axis.
+        ranges: Vec<[f64; 2]>,
+        /// Grid values: one number for every axis, or one per axis.
+        steps: Vec<usize>,
+    },
+    /// A feasible path for one of the scenario's queries, by the atlas or the lattice planner.
+    Plan {
+        /// Query name.
+        query: String,
+        /// Atlas planner parameters (defaults: [`PlanParams::default`]).
+        params: PlanParams,
+        /// Which planner.
+        planner: PlannerKind,
+        /// Lattice planner parameters (defaults: [`LatticeParams::default`]).
+        lattice: LatticeParams,
+    },
+}
+
+/// The result of a [`Request`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum Output {
+    /// Of [`Request::Verify`].
+    Verify(VerifyReport),
+    /// Of [`Request::VerifyAll`]: one report per trajectory, in file order.
+    VerifyAll(Vec<VerifyReport>),
+    /// Of [`Request::Ray`].
+    Ray(RayReport),
+    /// Of [`Request::Check`].
+    Check(PoseReport),
+    /// Of [`Request::Envelope`].
+    Envelope(TensionEnvelope),
+    /// Of [`Request::Slice`].
+    Slice(SliceMap),
+    /// Of [`Request::Plan`] with the atlas planner, and the path as a trajectory.
+    Plan(PlanReport, Option<Trajectory>),
+    /// Of [`Request::Lattice`].
+    Lattice(LatticeReport),
+    /// Of [`Request::Plan`] with the lattice planner, and its smoothed trajectory.
+    LatticePlan(LatticePlanReport, Option<Trajectory>),
+}
+
+/// How far a long command has come, for progress bars: `done` of `total` units of `stage`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Progress {
+    /// What is being counted (`"charts"`, `"path edges verified"`).
+    pub stage: &'static str,
+    /// Units done.
+    pub done: usize,
+    /// Units in all (for the planner's search: the chart budget, an upper bound).
+    pub total: usize,
+}
+
+/// Runs `request` on `scenario`, reporting progress of long commands (the planner) to `progress`.
+pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Progress)) -> Result<Output> {
+    Ok(match request {
+        Request::Verify { trajectory, pointwise } => {
+            let traj = scenario.trajectory(trajectory.as_deref())?;
+            Output::Verify(match pointwise {
+                Some(dt) => verify_pointwise(scenario, traj, *dt)?,
+                None => verify_trajectory(scenario, traj)?,
+            })
+        }
+        Request::VerifyAll { pointwise } => Output::VerifyAll(verify_all(scenario, *pointwise)?),
+        Request::Ray { pose, vary, range } => Output::Ray(ray(scenario, pose, *vary, range[0], range[1])?),
+        Request::Check { pose } => Output::Check(check_pose(scenario, pose, scenario.pose(pose)?)),
+        Request::Envelope { trajectory, samples } => {
+            let traj = scenario.trajectory(trajectory.as_deref())?;
+            Output::Envelope(tension_envelope(scenario, traj, samples.unwrap_or(100))?)
+        }
+        Request::Slice { pose, axes, res, range } => {
+            let range = match range {
+                Some(r) => *r,
+                None => {
+                    let pick = |c: Coord| default_range(c).ok_or_else(|| Error::new("--range", format!("is required for the position axis {}", c.name())));
+                    [pick(axes[0])?, pick(axes[1])?]
+                }
+            };
+            Output::Slice(slice(scenario, pose, *axes, *res, range)?)
+        }
+        Request::Lattice { pose, axes, ranges, steps } => {
+            let spec = LatticeSpec::new(axes.clone(), ranges.clone(), steps.clone(), scenario.pose(pose)?.coords())?;
+            let mut lattice = Lattice::new(scenario, spec);
+            loop {
+                let p = lattice.step(16);
+                if p.done {
+                    break;
+                }
+                progress(Progress { stage: "rays", done: p.rays_done, total: p.rays_total });
+            }
+            Output::Lattice(lattice.report().ok_or_else(|| Error::new("lattice", "the lattice stopped before its end"))?)
+        }
+        Request::Plan { query, params, planner, lattice } => {
+            let option = |e: Error| match e.field.as_str() {
+                "radius" | "epsilon" | "max_charts" => Error::new(format!("--{}", e.field.replace('_', "-")), e.reason),
+                _ => e,
+            };
+            let options = PlannerOptions { kind: *planner, atlas: *params, lattice: *lattice };
+            // the planner is picked by name and stepped through the common interface
+            let (result, seconds) = timed(|| -> Result<_> {
+                let mut p = choice::planner(scenario, query, &options).map_err(option)?;
+                loop {
+                    let step = p.step(1000);
+                    if step.done.is_some() {
+                        break;
+                    }
+                    progress(Progress { stage: "planning (‰)", done: (step.fraction * 1000.0) as usize, total: 1000 });
+                }
+                p.result(0.0).ok_or_else(|| Error::new("plan", "the planner stopped without a result"))
+            });
+            let result = result?;
+            match result.details {
+                Details::Atlas(mut r) => {
+                    r.seconds = seconds;
+                    Output::Plan(r, result.trajectory)
+                }
+                Details::Lattice(mut r) => {
+                    r.seconds = seconds;
+                    Output::LatticePlan(r, result.trajectory)
+                }
+            }
+        }
+    })
+}
+
+impl Output {
+    /// The report as pretty-printed JSON: what `cablenav … --json` prints.
+    pub fn json(&self) -> String {
+        let text = match self {
+            Output::Verify(r) => to_json(r),
+            Output::VerifyAll(r) => to_json(r),
+            Output::Ray(r) => to_json(r),
+            Output::Check(r) => to_json(r),
+            Output::Envelope(r) => to_json(r),
+            Output::Slice(r) => to_json(r),
+            Output::Plan(r, _) => to_json(r),
+            Output::Lattice(r) => to_json(r),
+            Output::LatticePlan(r, _) => to_json(r),
+        };
+        // Serialising these plain structs cannot fail; non-finite floats become null.
+        text.unwrap_or_else(|e| format!("{{\"error\": {:?}}}", e.to_string()))
+    }
+
+    /// The report as readable text: what `cablenav …` prints without `--json`.
+    pub fn text(&self) -> String {
+        match self {
+            Output::Verify(r) => verify_text(r),
+            Output::VerifyAll(r) => r.iter().map(verify_text).collect::<Vec<_>>().join("\n"),
+            Output::Ray(r) => ray_text(r),
+            Output::Check(r) => check_text(r),
+            Output::Envelope(r) => envelope_text(r),
+            Output::Slice(r) => slice_text(r),
+            Output::Plan(r, _) => plan_text(r),
+            Output::Lattice(r) => lattice_text(r),
+            Output::LatticePlan(r, _) => lattice_plan_text(r),
+        }
+    }
+
+    /// The planned motion of a plan (the atlas' path as line + slerp pieces, the lattice
+    /// planner's smoothed trajectory), for `--out`; `None` for other commands or without a path.
+    pub fn trajectory(&self) -> Option<&Trajectory> {
+        match self {
+            Output::Plan(_, t) | Output::LatticePlan(_, t) => t.as_ref(),
+            _ => None,
+        }
+    }
+}
+
+fn to_json<T: Serialize>(v: &T) -> serde_json::Result<String> {
+    serde_json::to_string_pretty(v)
+}
+
+fn side(s: Side) -> &'static str {
+    match s {
+        Side::Feasible => "feasible",
+        Side::Infeasible => "infeasible",
+    }
+}
+
+fn intervals(v: &[[f64; 2]]) -> String {
+    if v.is_empty() {
+        return "none".to_string();
+    }
+    v.iter().map(|iv| format!("[{:.9}, {:.9}]", iv[0], iv[1])).collect::<Vec<_>>().join(" ∪ ")
+}
+
+/// The closing lines of a report: its warnings.
+fn notes(warnings: &[String]) -> String {
+    let mut out = String::new();
+    for w in warnings {
+        out += &format!("  warning: {w}\n");
+    }
+    out
+}
+
+fn verify_text(r: &VerifyReport) -> String {
+    let mut out = format!("trajectory {} ({}", r.trajectory, r.method);
+    if let Some(dt) = r.step {
+        out += &format!(", Δt = {dt}");
+    }
+    out += ")\n";
+    out += &format!("  feasible   t ∈ {}\n", intervals(&r.feasible));
+    out += &format!("  infeasible t ∈ {}\n", intervals(&r.infeasible));
+    out += &format!("  feasible   τ ∈ {}\n", intervals(&r.feasible_tau));
+    for b in &r.boundaries {
+        out += &format!("  boundary t = {:.9} (τ = {:.9}): {} → {}\n", b.t, b.tau, b.constraint, side(b.enters));
+    }
+    out += &format!("  uncertain  t ∈ {}\n", intervals(&r.uncertain));
+    out + &notes(&r.warnings)
+}
+
+fn ray_text(r: &RayReport) -> String {
+    let mut out = format!("ray {} over [{}, {}] from pose {}\n", r.vary, r.range[0], r.range[1], r.pose);
+    out += &format!("  feasible   {} ∈ {}\n", r.vary, intervals(&r.feasible));
+    out += &format!("  infeasible {} ∈ {}\n", r.vary, intervals(&r.infeasible));
+    for b in &r.boundaries {
+        out += &format!("  boundary {} = {:.9}: {} → {}\n", r.vary, b.value, b.constraint, side(b.enters));
+    }
+    out += &format!("  uncertain  {} ∈ {}\n", r.vary, intervals(&r.uncertain));
+    out + &notes(&r.warnings)
+}
+
+fn check_text(r: &PoseReport) -> String {
+    let mut out = format!("pose {}: {}\n", r.pose, if r.feasible { "feasible" } else { "infeasible" });
+    let lengths: Vec<String> = r.lengths.iter().map(|l| format!("{l:.6}")).collect();
+    out += &format!("  cable lengths: {}\n", lengths.join(" "));
+    for c in &r.checks {
+        let d = c.distance.map_or("-".to_string(), |d| format!("{d:.6}"));
+        let mark = if c.violated { "VIOLATED" } else { "ok" };
+        out += &format!("  {:<28} {:>12}  {}\n", c.constraint, d, mark);
+    }
+    if let Some(w) = &r.wrench {
+        let verdict = if w.feasible { "feasible" } else { "infeasible" };
+        match w.margin {
+            Some(m) => out += &format!("  wrench: {verdict}, margin {m:.6}, active: {}\n", w.active),
+            None => out += &format!("  wrench: {verdict} ({})\n", w.active),
+        }
+        for (i, (lo, hi)) in w.tension_min.iter().zip(&w.tension_max).enumerate() {
+            out += &format!("    cable {} tension ∈ [{lo:.6}, {hi:.6}]\n", i + 1);
+        }
+    }
+    out
+}
+
+fn slice_text(m: &SliceMap) -> String {
+    let mut out = format!(
+        "slice over ({}, {}) ∈ [{}, {}] × [{}, {}], {}×{} cells\n  feasible: {:.2}% in {} component(s)\n",
+        m.axes[0], m.axes[1], m.range[0][0], m.range[0][1], m.range[1][0], m.range[1][1], m.res, m.res,
+        100.0 * m.fraction_feasible, m.components
+    );
+    for (name, c) in &m.pose_components {
+        out += &format!("  pose {name}: {}\n", c.map_or("infeasible".to_string(), |c| format!("component {c}")));
+    }
+    if m.res <= 100 {
+        out += &format!("  map ({} to the right, {} upwards; . feasible, T tension, L length, S singular, X interference):\n", m.axes[0], m.axes[1]);
+        for j in (0..m.res).rev() {
+            let row: String = (0..m.res)
+                .map(|i| match m.classes[j * m.res + i] {
+                    Class::Feasible => '.',
+                    Class::Tension => 'T',
+                    Class::Length => 'L',
+                    Class::Singular => 'S',
+                    Class::Interference => 'X',
+                })
+                .collect();
+            out += &format!("  {row}\n");
+        }
+    }
+    out
+}
+
+fn envelope_text(e: &TensionEnvelope) -> String {
+    let mut out = format!("tension envelope along {} ({} samples): t, then [min, max] per cable\n", e.trajectory, e.t.len());
+    for (k, t) in e.t.iter().enumerate() {
+        let row = match (&e.tension_min[k], &e.tension_max[k]) {
+            (Some(lo), Some(hi)) => lo.iter().zip(hi).map(|(a, b)| format!("[{a:.4}, {b:.4}]")).collect::<Vec<_>>().join(" "),
+            _ => "singular".to_string(),
+        };
+        out += &format!("  {t:.4}  {row}\n");
+    }
+    out
+}
+
+/// Runs `f` and measures its wall-clock seconds (NaN on wasm32, which has no `Instant`).
+fn timed<T>(f: impl FnOnce() -> T) -> (T, f64) {
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        let start = std::time::Instant::now();
+        let out = f();
+        (out, start.elapsed().as_secs_f64())
+    }
+    #[cfg(target_arch = "wasm32")]
+    {
+        (f(), f64::NAN)
+    }
+}
+
+fn status_name(s: PlanStatus) -> &'static str {
+    match s {
+        PlanStatus::Found => "found",
+        PlanStatus::NoPath => "no_path",
+        PlanStatus::Budget => "budget",
+        PlanStatus::Unrepaired => "unrepaired",
+    }
+}
+
+fn lattice_text(r: &LatticeReport) -> String {
+    let axes: Vec<String> = r.axes.iter().zip(&r.ranges).zip(&r.steps).map(|((a, g), n)| format!("{a} ∈ [{}, {}] ({n} values)", g[0], g[1])).collect();
+    let mut out = format!("lattice over {}: {} rays, {} feasible pieces, {} component(s)\n", axes.join(", "), r.rays.len(), r.pieces, r.components);
+    out += &format!("  grid points: {} of {} feasible on every ray through them", r.feasible_points, r.grid_points);
+    if r.disagreements > 0 {
+        out += &format!(" ({} where the rays through them disagree)", r.disagreements);
+    }
+    out += "\n";
+    if r.uncertain_rays > 0 {
+        out += &format!("  warning: {} ray(s) have uncertain sections (counted as infeasible)\n", r.uncertain_rays);
+    }
+    const SHOWN: usize = 200;
+    for (ray, comps) in r.rays.iter().zip(&r.piece_components).take(SHOWN) {
+        let at: Vec<String> = ray.fixed.iter().filter(|(k, _)| r.axes.contains(k)).map(|(k, v)| format!("{k} = {v:.6}")).collect();
+        let pieces: Vec<String> = ray.feasible.iter().zip(comps).map(|(iv, c)| format!("[{:.6}, {:.6}] (component {c})", iv[0], iv[1])).collect();
+        out += &format!("  {} at {}: {}\n", ray.vary, at.join(", "), if pieces.is_empty() { "none".to_string() } else { pieces.join(" ∪ ") });
+    }
+    if r.rays.len() > SHOWN {
+        out += &format!("  … {} more rays (--json prints all)\n", r.rays.len() - SHOWN);
+    }
+    out + &notes(&r.warnings)
+}
+
+fn lattice_plan_text(r: &LatticePlanReport) -> String {
+    let mut out = format!("plan {} (lattice): {} ({:.3} s)\n  {}\n", r.query, status_name(r.status), r.seconds, r.message);
+    out += &format!(
+        "  lattice: {} rays, {} component(s); {} of {} segments to cell corners verified; A* expanded {} points\n",
+        r.rays, r.components, r.segments[0], r.segments[1], r.expanded
+    );
+    if !r.polyline.is_empty() {
+        out += &format!("  A* polyline: {} points, length {:.6}; {} waypoints\n", r.polyline.len(), r.polyline_length, r.waypoints.len());
+        out += &format!("  smoothed: {} piece(s) ({} single polyline edges) after {} repair(s)\n", r.pieces, r.polyline_pieces, r.repairs);
+        for (i, c) in r.waypoints.iter().enumerate() {
+            out += &format!("  {i:5}  p = [{:.6}, {:.6}, {:.6}]  (φ, θ, σ) = ({:.6}, {:.6}, {:.6})\n", c[0], c[1], c[2], c[3], c[4], c[5]);
+        }
+    }
+    if let Some(v) = &r.verification {
+        out += &format!("  verified: feasible t ∈ {}; infeasible t ∈ {}; uncertain t ∈ {}\n", intervals(&v.feasible), intervals(&v.infeasible), intervals(&v.uncertain));
+    }
+    out
+}
+
+fn plan_text(r: &PlanReport) -> String {
+    let status = status_name(r.status);
+    let (a, p) = (&r.atlas, &r.atlas.params);
+    let mut out = format!(
+        "plan {}: {status} ({} charts, {}-D, {:.3} s; r = {}, ε = {}, δ = {}, κ = {}, margins ≥ {}, ≤ {} charts)\n",
+        r.query, r.charts, a.dimension, r.seconds, p.radius, p.epsilon, p.delta, p.barrier, p.min_margin, p.max_charts
+    );
+    match r.status {
+        PlanStatus::Found => {
+            let v = &r.verification;
+            out += &format!("  path: {} poses; re-verified: {} edges, {} infeasible and {} uncertain sections; {} of {} poses wrench-infeasible",
+                r.path.len(), v.edges, v.infeasible_sections, v.uncertain_sections, v.wrench_infeasible_poses, v.wrench_poses);
+            if let Some(m) = v.least_wrench_margin {
+                out += &format!(", least tension margin {m:.4}");
+            }
+            out += "\n";
+            for (i, pose) in r.path.iter().enumerate() {
+                let [x, y, z] = pose.position;
+                let [a, b, c] = pose.tilt_torsion;
+                out += &format!("  {i:5}  p = [{x:.6}, {y:.6}, {z:.6}]  (φ, θ, σ) = ({a:.6}, {b:.6}, {c:.6})\n");
+            }
+        }
+        PlanStatus::NoPath => out += "  the atlas of the start's connected component is exhausted without reaching the goal: no path at this resolution\n",
+        PlanStatus::Budget => out += "  the chart budget ran out: nothing is claimed (raise --max-charts)\n",
+        PlanStatus::Unrepaired => {}
+    }
+    if a.expansion_failures > 0 {
+        out += &format!("  warning: {} expansion direction(s) failed; a no_path here is not certified\n", a.expansion_failures);
+    }
+    if a.blocked_charts > 0 {
+        out += &format!("  note: {} chart(s) blocked by a clearance violation at their centre\n", a.blocked_charts);
+    }
+    if a.broken_edges > 0 {
+        out += &format!("  warning: {} chart pair(s) or walk(s) to the goal dropped because their dense path could not be followed; a no_path here is not certified\n", a.broken_edges);
+    }
+    if a.rejected_edges > 0 {
+        out += &format!("  note: {} chart pair(s) dropped because the exact verifier rejected their edge (interference)\n", a.rejected_edges);
+    }
+    out
+}

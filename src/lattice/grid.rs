@@ -1,0 +1,61 @@
+//! The point-wise grid at a lattice's resolution (thesis Fig. 3.10(b), 3.12(d)): every grid point
+//! checked with the conditions at that pose, and the components of feasible points joined to
+//! their feasible grid neighbours along each axis — connectivity assumed between samples, which
+//! the ray lattice certifies instead.
+
+use super::{LatticeSpec, UnionFind};
+use crate::conditions::{cables_at, for_scenario};
+use crate::model::Pose;
+use crate::scenario::Scenario;
+use serde::Serialize;
+
+/// The classified grid.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PointGrid {
+    /// Per grid point (flat index, first axis fastest): every condition holds there.
+    pub feasible: Vec<bool>,
+    /// Per grid point, its component among the feasible points (`None` where infeasible).
+    pub component: Vec<Option<usize>>,
+    /// Number of components.
+    pub components: usize,
+}
+
+/// Checks every grid point of `spec` (already bounded by [`super::MAX_POINTS`]) and labels the
+/// components of the feasible ones, neighbours being one grid step apart along one axis.
+pub fn point_grid(s: &Scenario, spec: &LatticeSpec) -> PointGrid {
+    let conditions = for_scenario(s);
+    let points = spec.point_count() as usize;
+    let feasible: Vec<bool> = (0..points)
+        .map(|flat| {
+            let cables = cables_at(&s.robot, &Pose::from_coords(spec.coords(&spec.point_indices(flat))));
+            conditions.iter().all(|c| !c.check(&cables).violated)
+        })
+        .collect();
+    let mut uf = UnionFind::new(points);
+    let mut stride = 1;
+    for &n in &spec.steps {
+        for flat in 0..points {
+            if (flat / stride) % n + 1 < n && feasible[flat] && feasible[flat + stride] {
+                uf.union(flat, flat + stride);
+            }
+        }
+        stride *= n;
+    }
+    let (labels, _) = uf.labels();
+    // renumber over the feasible points only
+    let mut map = vec![usize::MAX; points];
+    let mut next = 0;
+    let component = (0..points)
+        .map(|flat| {
+            feasible[flat].then(|| {
+                let l = labels[flat];
+                if map[l] == usize::MAX {
+                    map[l] = next;
+                    next += 1;
+                }
+                map[l]
+            })
+        })
+        .collect();
+    PointGrid { feasible, component, components: next }
+}

@@ -1,0 +1,190 @@
+//! One small resumable interface over the planners (OMPL's `Planner`): the CLI and the page pick
+//! the atlas planner ([`super::Planner`], Bohigas et al.) or the lattice planner
+//! ([`super::lattice::LatticePlanner`], Zhang's thesis) by name, step it, and take its result —
+//! a status, the planned trajectory in the scenario format, and the planner's own report —
+//! without knowing what either does inside, and neither planner knows what a condition is.
+
+use super::lattice::{LatticeParams, LatticePlanReport, LatticePlanner};
+use super::{edge_trajectory, PlanParams, PlanReport, PlanStatus, Planner};
+use crate::error::{Error, Result};
+use crate::model::{Segment, Trajectory};
+use crate::scenario::Scenario;
+use serde::Serialize;
+
+/// The planners on offer.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PlannerKind {
+    /// Henderson atlas + A* on the wrench-feasible C-space (6-cable robots with a wrench set).
+    Atlas,
+    /// Ray lattice + A* + Bézier smoothing, verified exactly (any robot).
+    Lattice,
+}
+
+impl PlannerKind {
+    /// Parses `atlas` or `lattice`; the error names `--planner`.
+    pub fn parse(name: &str) -> Result<PlannerKind> {
+        match name {
+            "atlas" => Ok(PlannerKind::Atlas),
+            "lattice" => Ok(PlannerKind::Lattice),
+            other => Err(Error::new("--planner", format!("{other:?} is not a planner; expected atlas or lattice"))),
+        }
+    }
+
+    /// Its name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            PlannerKind::Atlas => "atlas",
+            PlannerKind::Lattice => "lattice",
+        }
+    }
+}
+
+/// Which planner, with the parameters of each.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PlannerOptions {
+    /// The planner to run.
+    pub kind: PlannerKind,
+    /// The atlas planner's parameters.
+    pub atlas: PlanParams,
+    /// The lattice planner's parameters.
+    pub lattice: LatticeParams,
+}
+
+impl PlannerOptions {
+    /// Default parameters for `kind`.
+    pub fn new(kind: PlannerKind) -> PlannerOptions {
+        PlannerOptions { kind, atlas: PlanParams::default(), lattice: LatticeParams::default() }
+    }
+}
+
+/// Progress of any planner.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Progress {
+    /// What it is doing, in a few words (`3 charts, 12 open`, `lattice: 40 of 147 rays`).
+    pub stage: String,
+    /// A fraction of the work done, for a progress bar (an estimate; 1 when done).
+    pub fraction: f64,
+    /// The status once finished.
+    pub done: Option<PlanStatus>,
+}
+
+/// A planner's own report.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum Details {
+    /// The atlas planner's.
+    Atlas(PlanReport),
+    /// The lattice planner's.
+    Lattice(LatticePlanReport),
+}
+
+/// What a planner returns.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlanResult {
+    /// How it ended.
+    pub status: PlanStatus,
+    /// The planned motion as a scenario trajectory (the atlas' path as line + slerp pieces, the
+    /// lattice's smoothed pieces), when there is one.
+    pub trajectory: Option<Trajectory>,
+    /// The planner's report.
+    pub details: Details,
+}
+
+/// A resumable planner for one query.
+pub trait PathPlanner {
+    /// Advances by at most `budget` units of work (each bounded; see the planner's docs).
+    fn step(&mut self, budget: usize) -> Progress;
+    /// The result once `step` reported `done`; `seconds` is the wall-clock time the caller
+    /// measured, for the report.
+    fn result(&self, seconds: f64) -> Option<PlanResult>;
+}
+
+/// The atlas planner behind the common interface.
+struct AtlasPlanner {
+    planner: Planner,
+    query: String,
+    /// The least heuristic before any work (the start's distance to the goal), for the fraction.
+    first_h: f64,
+}
+
+impl PathPlanner for AtlasPlanner {
+    fn step(&mut self, budget: usize) -> Progress {
+        let p = self.planner.step(budget);
+        let first = self.first_h;
+        let fraction = if p.done.is_some() {
+            1.0
+        } else if first.is_finite() && first > 0.0 && p.best_heuristic.is_finite() {
+            (1.0 - p.best_heuristic / first).clamp(0.0, 0.99)
+        } else {
+            0.0
+        };
+        let stage = match p.verifying {
+            Some((done, all)) => format!("re-verifying the path: {done} of {all} edges"),
+            None => format!("{} charts, {} open", p.charts, p.open),
+        };
+        Progress { stage, fraction, done: p.done }
+    }
+
+    fn result(&self, seconds: f64) -> Option<PlanResult> {
+        let o = self.planner.outcome()?;
+        let pieces: Vec<Segment> = o
+            .path
+            .windows(2)
+            .enumerate()
+            .map(|(i, w)| {
+                let t = edge_trajectory(i, &w[0], &w[1]);
+                Segment { translation: t.translation, orientation: t.orientation }
+            })
+            .collect();
+        let trajectory = (o.status == PlanStatus::Found).then(|| Trajectory::piecewise(format!("{}-atlas", self.query), pieces)).flatten();
+        Some(PlanResult { status: o.status, trajectory, details: Details::Atlas(o.report(&self.query, seconds)) })
+    }
+}
+
+impl PathPlanner for LatticePlanner {
+    fn step(&mut self, budget: usize) -> Progress {
+        let p = LatticePlanner::step(self, budget);
+        // the lattice's rays are most of the work; the rest is shared out evenly
+        let (lo, width) = match p.stage {
+            "lattice" => (0.0, 0.7),
+            "join" => (0.7, 0.1),
+            "search" => (0.8, 0.0),
+            "smooth" => (0.8, 0.15),
+            _ => (0.95, 0.05),
+        };
+        let part = p.total_units.filter(|&t| t > 0).map_or(0.0, |t| p.done_units as f64 / t as f64);
+        let fraction = if p.done.is_some() { 1.0 } else { lo + width * part.min(1.0) };
+        let stage = match p.total_units {
+            Some(t) => format!("{}: {} of {t}", p.stage, p.done_units),
+            None => format!("{}: {} points expanded", p.stage, p.done_units),
+        };
+        Progress { stage, fraction, done: p.done }
+    }
+
+    fn result(&self, seconds: f64) -> Option<PlanResult> {
+        let report = self.report(seconds)?;
+        let trajectory = if report.status == PlanStatus::NoPath { None } else { self.trajectory().cloned() };
+        Some(PlanResult { status: report.status, trajectory, details: Details::Lattice(report) })
+    }
+}
+
+/// The planner `options.kind` for query `query` of `scenario`, ready to step.
+pub fn planner(scenario: &Scenario, query: &str, options: &PlannerOptions) -> Result<Box<dyn PathPlanner>> {
+    Ok(match options.kind {
+        PlannerKind::Atlas => {
+            let mut planner = Planner::new(scenario, query, options.atlas)?;
+            let first_h = planner.step(0).best_heuristic;
+            Box::new(AtlasPlanner { planner, query: query.to_string(), first_h })
+        }
+        PlannerKind::Lattice => Box::new(LatticePlanner::new(scenario, query, options.lattice)?),
+    })
+}
+
+/// Runs a planner to the end (CLI, tests); `clock` gives seconds (for the report).
+pub fn run(scenario: &Scenario, query: &str, options: &PlannerOptions, clock: &dyn Fn() -> f64) -> Result<PlanResult> {
+    let started = clock();
+    let mut p = planner(scenario, query, options)?;
+    while p.step(1000).done.is_none() {}
+    p.result(clock() - started).ok_or_else(|| Error::new("plan", "the planner stopped without a result"))
+}
