@@ -325,6 +325,9 @@ cargo run -q --release --example bench -- lattice > "$TMP/lattice.txt"
 grep ' lattice/' "$TMP/wasm.txt" >> "$TMP/lattice.txt" || true
 { echo; lattice_section "$TMP/lattice.txt" "$L_BEFORE" "$(cut -d' ' -f1-3 /proc/loadavg)"; } >> "$TMP/benchmarks.md"
 
+say "page drag updates: tests/browser/bench-drag.mjs (headless Chromium)"
+node tests/browser/bench-drag.mjs "$TMP/page" >> "$TMP/benchmarks.md"
+
 if [ "$WRITE" = 1 ]; then
   cp "$TMP/benchmarks.md" "$OUT"
   say "wrote $OUT"

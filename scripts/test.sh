@@ -12,10 +12,13 @@
 #                                      against the CLI that step 1 built)
 #   7. tests/browser/e2e-view.mjs      the page's 3-D view, plots, exports and planning end to end
 #                                      (compares with the CLI: builds the release binary if missing)
-#   8. python/ (maturin, pytest)       the wheel built and installed into target/venv; pytest
+#   8. tests/browser/e2e-workbench.mjs the layout at 1366×768 and 390×844, dragging a via point in
+#                                      3-D (against the CLI), undo/redo, planning in a Web Worker
+#                                      while typing and orbiting
+#   9. python/ (maturin, pytest)       the wheel built and installed into target/venv; pytest
 #                                      compares it with the CLI that step 1 built, runs the sweep
 #                                      example serially, on threads and on a Dask LocalCluster
-#   9. npm/ (wasm-pack, node --test)   the npm package built for --target web and bundler, packed,
+#  10. npm/ (wasm-pack, node --test)   the npm package built for --target web and bundler, packed,
 #                                      unpacked as a user installs it and tested in node against
 #                                      the CLI; docs/course-page.html (the package without Leptos)
 #                                      in headless Chromium
@@ -54,6 +57,9 @@ node tests/browser/e2e-edit.mjs target/page
 
 step "browser end-to-end test of the analysis area"
 node tests/browser/e2e-view.mjs target/page
+
+step "browser end-to-end test of the workbench (layout, drag, undo, workers)"
+node tests/browser/e2e-workbench.mjs target/page
 
 step "Python package: build the wheel, install it into target/venv, pytest"
 # The dev profile (opt-level 2) reuses step 1's build of the core; --force-reinstall replaces

@@ -79,3 +79,18 @@ fn bad_slice_requests() {
     assert_eq!(slice(&s, "q1", [Coord::Phi, Coord::Theta], 10, [[1.0, 0.0], [0.0, 1.0]]).unwrap_err().field, "--range");
     assert_eq!(slice(&s, "nobody", [Coord::Phi, Coord::Theta], 10, r).unwrap_err().field, "pose");
 }
+
+#[test]
+fn a_map_classified_in_row_blocks_is_the_whole_map() {
+    use cablenav::verify::slice::{slice_from_classes, slice_rows};
+    let s = Scenario::from_json(ROBOCRANE).unwrap();
+    let (axes, res, range) = ([Coord::Phi, Coord::Theta], 24, [[-PI, PI], [-PI, PI]]);
+    let whole = slice(&s, "q1", axes, res, range).unwrap();
+    let mut classes = vec![];
+    for rows in [0..5, 5..5, 5..17, 17..24] {
+        classes.extend(slice_rows(&s, "q1", axes, res, range, rows).unwrap());
+    }
+    assert_eq!(slice_from_classes(&s, "q1", axes, res, range, classes).unwrap(), whole);
+    assert_eq!(slice_rows(&s, "q1", axes, res, range, 20..25).unwrap_err().field, "rows");
+    assert_eq!(slice_from_classes(&s, "q1", axes, res, range, vec![Class::Feasible; 3]).unwrap_err().field, "classes");
+}

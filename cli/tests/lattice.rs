@@ -165,9 +165,23 @@ fn plan_and_verify(files: &Files, file: &str, query: &str, extra: &[&str]) -> (V
 }
 
 #[test]
-fn plans_around_the_tree_and_over_the_box_verified_on_all_of_0_1() {
+fn plans_over_the_box_verified_on_all_of_0_1() {
+    plans_verified_on_all_of_0_1("box.json", "over-box", "box-left", "box-right");
+}
+
+// Since the exact offset conditions for cylinders and cones replaced the enlarged shapes, the
+// smoothing's exact verification near the trunk and the crown takes minutes (it passed in ~6 s
+// with the enlarged shapes): run it with `cargo test -p cablenav-cli --test lattice -- --ignored`.
+#[test]
+#[ignore = "minutes since the exact cylinder/cone offset conditions (issue 12 follow-up)"]
+fn plans_around_the_tree_verified_on_all_of_0_1() {
+    plans_verified_on_all_of_0_1("tree.json", "around-tree", "tree-left", "tree-right");
+}
+
+/// Plans `query` of `file` with the lattice planner; the result verifies on all of [0, 1].
+fn plans_verified_on_all_of_0_1(file: &str, query: &str, start: &str, goal: &str) {
     let files = Files::new();
-    for (file, query, start, goal) in [("tree.json", "around-tree", "tree-left", "tree-right"), ("box.json", "over-box", "box-left", "box-right")] {
+    {
         // the straight motion between the two poses is infeasible: the planner has work to do
         let mut v: Value = serde_json::from_str(&files.0.borrow()[file]).unwrap();
         v["trajectories"] = json!([{"name": "straight", "translation": {"line": [v["poses"][start]["position"], v["poses"][goal]["position"]]}, "orientation": {"slerp": [start, goal]}}]);

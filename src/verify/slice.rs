@@ -7,14 +7,14 @@ use crate::conditions::{cables_at, for_scenario, Condition, Kind};
 use crate::error::{Error, Result};
 use crate::model::{Coord, Pose};
 use crate::scenario::Scenario;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
 /// Largest grid side accepted.
 pub const MAX_RES: usize = 2000;
 
 /// What holds at a cell centre.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Class {
     /// Every condition holds.
@@ -128,6 +128,12 @@ pub fn slice(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range:
 /// [`slice`], adding 1 to `rows_done` after each of the `res` rows is classified (from any
 /// worker thread), so that a caller on another thread can show progress.
 pub fn slice_counted(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range: [[f64; 2]; 2], rows_done: &AtomicUsize) -> Result<SliceMap> {
+    let classes = classify_rows(s, pose_name, axes, res, range, 0..res, rows_done)?;
+    slice_from_classes(s, pose_name, axes, res, range, classes)
+}
+
+/// The map's frame before any cell is classified, after checking the arguments.
+fn empty_map(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range: [[f64; 2]; 2]) -> Result<SliceMap> {
     if axes[0] == axes[1] {
         return Err(Error::new("--axes", "the two axes must differ"));
     }
@@ -139,32 +145,57 @@ pub fn slice_counted(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize
             return Err(Error::new("--range", format!("needs finite LO < HI, got {} {}", r[0], r[1])));
         }
     }
-    let fixed = s.pose(pose_name)?.coords();
-    let mut map = SliceMap {
+    Ok(SliceMap {
         axes: [axes[0].name().to_string(), axes[1].name().to_string()],
         range,
         res,
-        fixed,
+        fixed: s.pose(pose_name)?.coords(),
         fraction_feasible: 0.0,
         components: 0,
-        classes: Vec::with_capacity(res * res),
+        classes: Vec::new(),
         component: vec![None; res * res],
         pose_components: vec![],
-    };
+    })
+}
+
+/// The classes of rows `rows` (j, along the second axis) of the slice [`slice`] computes, row
+/// by row: so that parts of one map can be classified apart (the page's workers) and joined by
+/// [`slice_from_classes`].
+pub fn slice_rows(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range: [[f64; 2]; 2], rows: std::ops::Range<usize>) -> Result<Vec<Class>> {
+    classify_rows(s, pose_name, axes, res, range, rows, &AtomicUsize::new(0))
+}
+
+/// [`slice_rows`], adding 1 to `rows_done` after each row.
+fn classify_rows(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range: [[f64; 2]; 2], rows: std::ops::Range<usize>, rows_done: &AtomicUsize) -> Result<Vec<Class>> {
+    let map = empty_map(s, pose_name, axes, res, range)?;
+    if rows.start > rows.end || rows.end > res {
+        return Err(Error::new("rows", format!("must lie within 0..{res}, got {}..{}", rows.start, rows.end)));
+    }
     // rows in parallel natively (each worker with its own conditions), in order on wasm
-    let rows = crate::parallel::map_with(res, || for_scenario(s), |conditions, j| {
+    let first = rows.start;
+    let classes = crate::parallel::map_with(rows.len(), || for_scenario(s), |conditions, k| {
         let row = (0..res)
             .map(|i| {
-                let mut c = fixed;
+                let mut c = map.fixed;
                 c[axes[0].index()] = map.center(0, i);
-                c[axes[1].index()] = map.center(1, j);
+                c[axes[1].index()] = map.center(1, first + k);
                 classify(s, conditions, &Pose::from_coords(c))
             })
             .collect::<Vec<_>>();
         rows_done.fetch_add(1, Ordering::Relaxed);
         row
     });
-    map.classes = rows.concat();
+    Ok(classes.concat())
+}
+
+/// The slice map from all its cells' classes (row-major, as [`slice_rows`] gives them): its
+/// feasible components, their share and the poses on it.
+pub fn slice_from_classes(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range: [[f64; 2]; 2], classes: Vec<Class>) -> Result<SliceMap> {
+    let mut map = empty_map(s, pose_name, axes, res, range)?;
+    if classes.len() != res * res {
+        return Err(Error::new("classes", format!("expected {} cells, got {}", res * res, classes.len())));
+    }
+    map.classes = classes;
     label_components(&mut map);
     map.fraction_feasible = map.classes.iter().filter(|&&c| c == Class::Feasible).count() as f64 / (res * res) as f64;
     map.pose_components = poses_on_slice(s, &map, axes);

@@ -5,12 +5,11 @@
 // (`cablenav verify FILE --json`, the release binary, built if missing). Screenshots go to
 // tests/browser/artifacts/. Ends with "N passed, M failed"; exits 1 on failure.
 
-import { execFileSync } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { launchChromium, requirePage, runner, serve } from './harness.mjs';
+import { cliSections, cliVerify as cliVerifyAt, launchChromium, requirePage, runner, serve } from './harness.mjs';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const root = resolve(here, '..', '..');
@@ -22,21 +21,8 @@ const PLAN_TIMEOUT = 300_000;
 const FRAME_LIMIT_MS = 50;
 
 // ---------- the CLI ----------
-const cliPath = join(root, 'target', 'release', 'cablenav');
-function cli(args) {
-  if (!existsSync(cliPath)) execFileSync('cargo', ['build', '--release', '-q', '--bin', 'cablenav'], { cwd: root, stdio: 'inherit' });
-  return execFileSync(cliPath, args, { cwd: root, encoding: 'utf8' });
-}
 /** What `cablenav verify FILE --trajectory NAME --json` prints, parsed. */
-function cliVerify(file, trajectory) {
-  return JSON.parse(cli(['verify', file, '--trajectory', trajectory, '--json']));
-}
-/** The CLI report's sections as sorted `kind t0 t1` triples. */
-function cliSections(report) {
-  const out = [];
-  for (const kind of ['feasible', 'infeasible', 'uncertain']) for (const [t0, t1] of report[kind]) out.push({ kind, t0, t1 });
-  return out.sort((a, b) => a.t0 - b.t0 || a.t1 - b.t1);
-}
+const cliVerify = (file, trajectory) => cliVerifyAt(root, file, trajectory);
 
 // ---------- page helpers ----------
 /** The strip's sections, sorted. */
@@ -190,7 +176,7 @@ await test('the WebGL canvas draws the scene, the sections in green and red, and
   if (zoomed.drawn <= orbited.drawn) throw new Error(`zooming in did not enlarge the scene: ${orbited.drawn} → ${zoomed.drawn}`);
   // resize with the page
   k = await draws(page);
-  await page.setViewportSize({ width: 800, height: 900 });
+  await page.setViewportSize({ width: 1000, height: 900 }); // narrower, still the wide layout (side panel beside the view)
   await waitDraws(page, k + 1);
   const resized = await pixels(page);
   if (resized.width >= before.width) throw new Error(`canvas did not shrink with the page: ${before.width} → ${resized.width}`);

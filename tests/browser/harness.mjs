@@ -2,6 +2,8 @@
 // headless Chromium launch, a console/page-error watcher and a minimal test runner that ends
 // with "N passed, M failed".
 
+import { execFileSync } from 'node:child_process';
+import { existsSync } from 'node:fs';
 import { createServer } from 'node:http';
 import { readFileSync, statSync } from 'node:fs';
 import { extname, join, normalize, sep } from 'node:path';
@@ -139,4 +141,19 @@ export async function readSections(scope) {
       title: r.querySelector('title')?.textContent ?? '',
     })),
   );
+}
+
+/** What `cablenav verify FILE --trajectory NAME --json` prints, parsed (the release binary under
+ * `root`, built if missing). */
+export function cliVerify(root, file, trajectory) {
+  const cliPath = join(root, 'target', 'release', 'cablenav');
+  if (!existsSync(cliPath)) execFileSync('cargo', ['build', '--release', '-q', '--bin', 'cablenav'], { cwd: root, stdio: 'inherit' });
+  return JSON.parse(execFileSync(cliPath, ['verify', file, '--trajectory', trajectory, '--json'], { cwd: root, encoding: 'utf8' }));
+}
+
+/** A CLI report's sections as sorted `{kind, t0, t1}`. */
+export function cliSections(report) {
+  const out = [];
+  for (const kind of ['feasible', 'infeasible', 'uncertain']) for (const [t0, t1] of report[kind]) out.push({ kind, t0, t1 });
+  return out.sort((a, b) => a.t0 - b.t0 || a.t1 - b.t1);
 }

@@ -1,44 +1,16 @@
-//! The page's components. State lives in signals; every computation is a call into
-//! [`crate::logic`] (and through it, the core).
+//! The page and its top bar. State lives in signals (types in [`crate::state`]); every
+//! computation is a call into [`crate::logic`] (and through it, the core).
 
-use std::sync::Arc;
-
-use cablenav::report::VerifyReport;
-use cablenav::Scenario;
 use leptos::prelude::*;
 
-use crate::logic::{self, fmt_num, Section, StripModel};
-use crate::plots::strip::Strip;
+use crate::logic;
 use crate::presets::PRESETS;
+use crate::state::{PageState, Parsed, Shared, Undo, Verified};
 use crate::workbench::Workbench;
 
-/// A value shared by reference inside a memo; two are equal only if they are the same
-/// computation, so the core's types need not implement `PartialEq`.
-#[derive(Debug)]
-pub(crate) struct Shared<T>(pub(crate) Arc<T>);
-
-impl<T> Clone for Shared<T> {
-    fn clone(&self) -> Self {
-        Shared(Arc::clone(&self.0))
-    }
-}
-
-impl<T> PartialEq for Shared<T> {
-    fn eq(&self, other: &Self) -> bool {
-        Arc::ptr_eq(&self.0, &other.0)
-    }
-}
-
-impl<T> Shared<T> {
-    pub(crate) fn new(value: T) -> Self {
-        Shared(Arc::new(value))
-    }
-}
-
-pub(crate) type Parsed = Shared<Result<Scenario, String>>;
-pub(crate) type Verified = Shared<Option<Result<VerifyReport, String>>>;
-
-/// The whole page.
+/// The whole page: a top bar (what the page shows, the scenario and trajectory pickers, undo,
+/// redo and reset), then the workbench: the 3-D view and the strip first, the editor in a side
+/// panel, the results in panels under the view. Embed mode keeps the view and the strip.
 #[component]
 pub fn App() -> impl IntoView {
     // Where the page starts: a shared link, the autosave, or the first preset (crate::persist).
@@ -53,6 +25,7 @@ pub fn App() -> impl IntoView {
     crate::persist::keep(source, origin, preset, embed);
     // The path the planner found for the current scenario, if any.
     let planned = RwSignal::new(None);
+    let history = Undo::new(source, origin, preset);
 
     let parsed: Memo<Parsed> = Memo::new(move |_| Shared::new(logic::parse_scenario(&source.get())));
     let verified: Memo<Verified> = Memo::new(move |_| {
@@ -76,33 +49,95 @@ pub fn App() -> impl IntoView {
         source.set(text);
         origin.set("edited");
     };
+    if !embed {
+        undo_keys(history);
+    }
 
     let note = boot.note.map(|n| view! { <p class="error" role="alert">{n}</p> });
+    let page = PageState { parsed, verified, trajectory, planned, source, origin, history };
     view! {
-        <header class:embed=embed>
-            <h1>"cablenav"</h1>
-            <p class="tagline">"Exact feasible intervals along cable-robot trajectories"</p>
+        <header class="topbar" class:embed=embed>
+            <div class="title">
+                <h1>"cablenav"</h1>
+                <p class="explain" data-testid="explain">
+                    "The cable robot in 3-D and, under it, its trajectory's exact verdict along t from 0 to 1: "
+                    <span class="key feasible">"green"</span>" where every cable condition is certified to hold, "
+                    <span class="key infeasible">"red"</span>" where one fails, "
+                    <span class="key uncertain">"grey"</span>" where it cannot be certified; ticks mark the boundaries."
+                </p>
+            </div>
         </header>
-        <main class:embed=embed data-embed=embed.to_string()>
-            {note}
-            <section class="controls">
+        <main class="layout" class:embed=embed data-embed=embed.to_string()>
+            <nav class="controls" aria-label="scenario">
                 {(!embed).then(|| view! { <PresetPicker preset on_pick=pick_preset /> })}
                 <TrajectoryPicker parsed trajectory />
-            </section>
-            <Outcome parsed verified trajectory origin />
-            <Workbench parsed verified trajectory planned />
+                {(!embed).then(|| view! { <HistoryButtons history preset on_pick=pick_preset /> })}
+                {note}
+            </nav>
+            <Workbench page embed />
             {if embed {
                 view! { <crate::editor::share::OpenFull source origin /> }.into_any()
             } else {
                 view! {
-                    <crate::editor::ScenarioEditor source origin />
-                    <Editor source on_apply=apply_edit />
-                    <crate::editor::share::SharePanel source origin />
-                    <crate::help::Help />
+                    <aside class="side" data-testid="side-panel" aria-label="scenario editor, sharing and help">
+                        <crate::editor::ScenarioEditor source origin />
+                        <Editor source on_apply=apply_edit />
+                        <crate::editor::share::SharePanel source origin />
+                        <crate::help::Help />
+                    </aside>
                 }
                 .into_any()
             }}
         </main>
+    }
+}
+
+/// Ctrl+Z / Ctrl+Shift+Z (and Ctrl+Y, ⌘ on macOS) anywhere on the page undo and redo, except in
+/// a text field, where the browser's own undo of the typing applies (and edits the scenario).
+fn undo_keys(history: Undo) {
+    let handle = window_event_listener(leptos::ev::keydown, move |ev: web_sys::KeyboardEvent| {
+        if !(ev.ctrl_key() || ev.meta_key()) || ev.alt_key() {
+            return;
+        }
+        let key = ev.key().to_lowercase();
+        let typing = ev
+            .target()
+            .and_then(|t| wasm_bindgen::JsCast::dyn_into::<web_sys::Element>(t).ok())
+            .is_some_and(|e| {
+                let tag = e.tag_name().to_lowercase();
+                tag == "textarea" || (tag == "input" && e.get_attribute("type").is_none_or(|t| t == "text" || t == "number"))
+            });
+        if typing || !(key == "z" || key == "y") {
+            return;
+        }
+        ev.prevent_default();
+        if key == "y" || ev.shift_key() {
+            history.redo()
+        } else {
+            history.undo()
+        }
+    });
+    on_cleanup(move || handle.remove());
+}
+
+/// Undo, Redo and "Reset to preset".
+#[component]
+fn HistoryButtons(history: Undo, preset: RwSignal<usize>, on_pick: impl Fn(usize) + Copy + 'static) -> impl IntoView {
+    let reset_label = move || format!("Reset to preset “{}”", crate::presets::label(PRESETS[preset.get()].id));
+    view! {
+        <span class="history">
+            <button data-testid="undo" title="Undo (Ctrl+Z)" disabled=move || history.depth.get().0 == 0 on:click=move |_| history.undo()>"↶ Undo"</button>
+            <button data-testid="redo" title="Redo (Ctrl+Shift+Z)" disabled=move || history.depth.get().1 == 0 on:click=move |_| history.redo()>"↷ Redo"</button>
+            <button
+                data-testid="reset-preset"
+                title=reset_label
+                aria-label=reset_label
+                disabled=move || history.source.with(|s| s == PRESETS[preset.get()].json)
+                on:click=move |_| on_pick(preset.get_untracked())
+            >
+                "Reset"
+            </button>
+        </span>
     }
 }
 
@@ -167,164 +202,6 @@ fn TrajectoryPicker(parsed: Memo<Parsed>, trajectory: RwSignal<usize>) -> impl I
             </select>
         </label>
     }
-}
-
-/// The verification result: errors, the strip, the tables and the notes.
-#[component]
-fn Outcome(
-    parsed: Memo<Parsed>,
-    verified: Memo<Verified>,
-    trajectory: RwSignal<usize>,
-    origin: RwSignal<&'static str>,
-) -> impl IntoView {
-    move || {
-        let parsed = parsed.get();
-        let scenario = match parsed.0.as_ref() {
-            Err(e) => return view! { <ErrorText prefix="Scenario" message=e.clone() /> }.into_any(),
-            Ok(s) => s,
-        };
-        let verified = verified.get();
-        let notes_view = |report: Option<&VerifyReport>| {
-            view! { <Notes notes=logic::notes(&scenario.warnings, report) /> }
-        };
-        match verified.0.as_ref() {
-            None => view! {
-                <p class="empty">{format!("Scenario “{}” has no trajectory.", scenario.name)}</p>
-                {notes_view(None)}
-            }
-            .into_any(),
-            Some(Err(e)) => view! {
-                <ErrorText prefix="Verification" message=e.clone() />
-                {notes_view(None)}
-            }
-            .into_any(),
-            Some(Ok(report)) => {
-                let model = logic::strip(report);
-                let index = trajectory.get().min(scenario.trajectories.len().saturating_sub(1));
-                view! {
-                    <section
-                        class="result"
-                        data-testid="result"
-                        data-origin=origin.get()
-                        data-trajectory-index=index
-                        data-method=report.method.clone()
-                    >
-                        <h2>{format!("{} — {}", scenario.name, report.trajectory)}</h2>
-                        <Strip model=model.clone() />
-                        <Legend />
-                        <Tables model />
-                        {notes_view(Some(report))}
-                    </section>
-                }
-                .into_any()
-            }
-        }
-    }
-}
-
-/// An error as text.
-#[component]
-fn ErrorText(prefix: &'static str, message: String) -> impl IntoView {
-    view! {
-        <p class="error" data-testid="error" role="alert">
-            <strong>{format!("{prefix} error: ")}</strong>
-            {message}
-        </p>
-    }
-}
-
-/// The colour key.
-#[component]
-fn Legend() -> impl IntoView {
-    view! {
-        <p class="legend">
-            <span class="swatch feasible"></span>
-            "feasible "
-            <span class="swatch infeasible"></span>
-            "infeasible "
-            <span class="swatch uncertain"></span>
-            "uncertain "
-            <span class="tick-key"></span>
-            "boundary (hover for the constraint)"
-        </p>
-    }
-}
-
-/// The tables of intervals and boundaries.
-#[component]
-fn Tables(model: StripModel) -> impl IntoView {
-    let tau = |s: &Section| match s.tau {
-        Some([a, b]) => (fmt_num(a), fmt_num(b)),
-        None => ("—".to_string(), "—".to_string()),
-    };
-    view! {
-        <div class="tables">
-            <table data-testid="intervals">
-                <caption>"Intervals"</caption>
-                <thead>
-                    <tr><th>"kind"</th><th>"t from"</th><th>"t to"</th><th>"τ from"</th><th>"τ to"</th></tr>
-                </thead>
-                <tbody>
-                    {model
-                        .sections
-                        .iter()
-                        .map(|s| {
-                            let (a, b) = tau(s);
-                            view! {
-                                <tr class=s.kind.as_str()>
-                                    <td>{s.kind.as_str()}</td>
-                                    <td>{fmt_num(s.t0)}</td>
-                                    <td>{fmt_num(s.t1)}</td>
-                                    <td>{a}</td>
-                                    <td>{b}</td>
-                                </tr>
-                            }
-                        })
-                        .collect_view()}
-                </tbody>
-            </table>
-            <table data-testid="boundaries">
-                <caption>"Boundaries"</caption>
-                <thead>
-                    <tr><th>"t"</th><th>"τ"</th><th>"constraint"</th><th>"enters"</th></tr>
-                </thead>
-                <tbody>
-                    {if model.ticks.is_empty() {
-                        view! { <tr><td colspan="4">"none"</td></tr> }.into_any()
-                    } else {
-                        model
-                            .ticks
-                            .iter()
-                            .map(|t| {
-                                view! {
-                                    <tr>
-                                        <td>{fmt_num(t.t)}</td>
-                                        <td>{fmt_num(t.tau)}</td>
-                                        <td>{t.constraint.clone()}</td>
-                                        <td>{t.enters}</td>
-                                    </tr>
-                                }
-                            })
-                            .collect_view()
-                            .into_any()
-                    }}
-                </tbody>
-            </table>
-        </div>
-    }
-}
-
-/// The scenario's and the report's warnings.
-#[component]
-fn Notes(notes: Vec<String>) -> impl IntoView {
-    (!notes.is_empty()).then(|| {
-        view! {
-            <section class="notes" data-testid="warnings">
-                <h3>"Warnings"</h3>
-                <ul>{notes.into_iter().map(|n| view! { <li>{n}</li> }).collect_view()}</ul>
-            </section>
-        }
-    })
 }
 
 /// The scenario JSON, editable; "Verify" analyses the edit.

@@ -1,8 +1,10 @@
-//! The cablenav web page (Leptos, client-side rendering). `app` holds the page and its result
-//! components, `editor` the scenario editor, `persist` sharing and autosave, `help` the help
-//! panel, `workbench` the analysis area (`view3d` the WebGL view, `plots` the SVG plots,
-//! `planning` the planner driven between frames); `logic` and `edit_logic` hold what they show as plain, natively tested functions. All
-//! maths is in the `cablenav` core crate.
+//! The cablenav web page (Leptos, client-side rendering). `state` holds the page's state types,
+//! `app` the page and its top bar, `editor` the scenario editor, `persist` sharing and
+//! autosave, `help` the help panel, `workbench` the analysis area (`view3d` the WebGL view,
+//! `plots` the SVG plots, `planning` the planning controls), `results` the verdict's strip and
+//! tables, `worker` the Web Workers that run planning and slice maps; `logic` and
+//! `edit_logic` hold what they show as plain, natively tested functions. All maths is in the
+//! `cablenav` core crate.
 
 pub mod app;
 pub mod edit_logic;
@@ -13,8 +15,11 @@ pub mod persist;
 mod planning;
 mod plots;
 pub mod presets;
+mod results;
+pub mod state;
 mod view3d;
 mod workbench;
+pub mod worker;
 
 /// Mounts the page on `<body>`.
 pub fn start() {

@@ -1,5 +1,10 @@
-//! The cablenav web page's entry point; the page itself is the `cablenav_web` library.
+//! The cablenav web page's entry point; the page itself is the `cablenav_web` library. The same
+//! module started in a Web Worker serves jobs instead (`cablenav_web::worker`).
 
 fn main() {
-    cablenav_web::start();
+    if cablenav_web::worker::in_worker() {
+        cablenav_web::worker::serve();
+    } else {
+        cablenav_web::start();
+    }
 }

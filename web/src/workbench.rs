@@ -1,8 +1,11 @@
-//! The page's analysis area under the verification result: the 3-D view with the platform
-//! animated along a path, planning, the plots and the exports. It reads the scenario and the
-//! verification the page already computed (`app`), and computes everything else through the core.
+//! The workbench: the stage (the 3-D view with the platform animated along a path, and the
+//! strip) and the results panels (tables, planning, exports, plots, slice map). It reads the
+//! scenario and the verification the page already computed ([`PageState`]), and computes
+//! everything else through the core.
 
-use crate::app::{Parsed, Shared, Verified};
+use crate::results::{ResultTables, StripResult};
+use crate::logic::Tick;
+use crate::state::{Focus, Follow, PageState, Parsed, Planned, Shared};
 use crate::logic::{self, fmt_num, StripModel};
 use crate::planning::Planning;
 use crate::plots::distance::DistancePlot;
@@ -11,7 +14,10 @@ use crate::plots::lattice::LatticePanel;
 use crate::plots::slice::{Overlay, SlicePanel};
 use crate::plots::tension::TensionPlot;
 use crate::view3d::scene::{self, Polyline, SceneInput, PATH};
-use crate::view3d::{SceneView, View3d};
+use crate::edit_logic::{self as el, handles, Grip, Handle};
+use crate::view3d::drag::Constraint;
+use crate::view3d::{HandleEvent, Handles, SceneView, View3d};
+use glam::DVec3;
 use cablenav::model::{Pose, Trajectory};
 use cablenav::verify::profile;
 use cablenav::Scenario;
@@ -20,28 +26,9 @@ use leptos::prelude::*;
 /// Samples per path for the clearance and tension plots.
 const PLOT_SAMPLES: usize = 200;
 
-/// A path found by the planner, as the page keeps it.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Planned {
-    /// The query's name.
-    pub query: String,
-    /// Its start pose.
-    pub start: Pose,
-    /// Its goal pose.
-    pub goal: Pose,
-    /// The path's poses, start to goal (the lattice planner's smoothed trajectory, sampled).
-    pub poses: Vec<Pose>,
-    /// The lattice planner's A* polyline, drawn beside the smoothed path (empty for the atlas).
-    pub polyline: Vec<Pose>,
-}
-
-/// Which path the animation, the plots and the exports follow.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Follow {
-    /// The selected trajectory.
-    Trajectory,
-    /// The planned path.
-    Planned,
+/// Milliseconds since the page started (for timing updates).
+fn now_ms() -> f64 {
+    web_sys::window().and_then(|w| w.performance()).map_or(0.0, |p| p.now())
 }
 
 /// The path being followed, resolved.
@@ -116,19 +103,42 @@ fn followed<T>(
     on_path(&parsed.get(), planned.get().as_ref(), follow.get(), trajectory.get(), f)
 }
 
-/// The analysis area.
+/// The workbench: the stage (3-D view, scrubber, strip) on the first screen and, outside embed
+/// mode, the results panels (tables, planning, exports, plots, slice map).
 #[component]
-pub fn Workbench(parsed: Memo<Parsed>, verified: Memo<Verified>, trajectory: RwSignal<usize>, planned: RwSignal<Option<Shared<Planned>>>) -> impl IntoView {
+pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
+    let PageState { parsed, verified, trajectory, planned, origin, source, history } = page;
     let scrub = RwSignal::new(0.0f64);
     let follow = RwSignal::new(Follow::Trajectory);
     let playing = RwSignal::new(false);
+    // the drag in progress: what it moves, and the scenario tree it edits
+    let dragging: StoredValue<Option<(Grip, serde_json::Value)>> = StoredValue::new(None);
 
-    // a new scenario drops the planned path and rewinds
+    // a new scenario drops the planned path and rewinds (not while dragging: the platform stays)
     Effect::new(move |_| {
         parsed.track();
         planned.set(None);
         follow.set(Follow::Trajectory);
-        scrub.set(0.0);
+        if dragging.with_value(Option::is_none) {
+            scrub.set(0.0);
+        }
+    });
+
+    // the draggable handles of the scenario and the selected trajectory (edit_logic::handles)
+    let handle_list: Memo<Vec<Handle>> = Memo::new(move |_| {
+        source.with(|s| serde_json::from_str::<serde_json::Value>(s).ok()).map_or_else(Vec::new, |doc| handles(&doc, trajectory.get()))
+    });
+    let selected = RwSignal::new(None::<usize>);
+    let constraint = RwSignal::new(Constraint::View);
+    let update_ms = RwSignal::new(None::<f64>);
+    let drag_active = RwSignal::new(false);
+    let nudge_step = RwSignal::new(0.05f64);
+    // a new scenario or trajectory with fewer handles drops a selection past the end
+    Effect::new(move |_| {
+        let n = handle_list.with(Vec::len);
+        if selected.get_untracked().is_some_and(|i| i >= n) {
+            selected.set(None);
+        }
     });
     // a new plan is followed at once
     Effect::new(move |_| {
@@ -154,8 +164,12 @@ pub fn Workbench(parsed: Memo<Parsed>, verified: Memo<Verified>, trajectory: RwS
     let path_piece: Memo<Option<Shared<Polyline>>> =
         Memo::new(move |_| planned.get().map(|p| Shared::new(Polyline { colour: PATH, poses: p.0.poses.clone() })));
 
+    // a boundary pointed at in the strip: the platform goes there, with its clearance tubes
+    let focus = RwSignal::new(None::<Tick>);
+    provide_context(Focus(focus));
+    let focused = move || focus.get().filter(|_| follow.get() == Follow::Trajectory);
     let shown_pose: Memo<Option<Pose>> = Memo::new(move |_| {
-        let u = scrub.get();
+        let u = focused().map_or_else(|| scrub.get(), |t| t.t);
         followed(parsed, planned, follow, trajectory, |_, path| path.pose_at(u))
     });
 
@@ -164,9 +178,25 @@ pub fn Workbench(parsed: Memo<Parsed>, verified: Memo<Verified>, trajectory: RwS
         let s = scenario_of(&parsed)?;
         let pose = shown_pose.get();
         let cables = pose.map(|p| profile::cable_states(s, &p)).unwrap_or_default();
+        let tubes = focused().map(|t| scene::clearance_tubes(s, &t.constraint)).unwrap_or_default();
         let pieces = trajectory_pieces.get();
         let path = path_piece.get();
-        let geometry = scene::build(&SceneInput { scenario: s, pose, cables: &cables, trajectory: &pieces.0, path: path.as_ref().map(|p| &*p.0) });
+        let points: Vec<DVec3> = handle_list.with(|h| h.iter().map(|h| DVec3::from_array(h.at)).collect());
+        let axis = match constraint.get() {
+            Constraint::Axis(k) => Some(k),
+            _ => None,
+        };
+        let geometry = scene::build(&SceneInput {
+            scenario: s,
+            pose,
+            cables: &cables,
+            trajectory: &pieces.0,
+            path: path.as_ref().map(|p| &*p.0),
+            handles: &points,
+            selected: selected.get(),
+            axis,
+            tubes: &tubes,
+        });
         let sections = strip
             .get()
             .map(|m| m.sections.iter().map(|x| format!("{}:{}:{}", x.kind.as_str(), logic::fmt_exact(x.t0), logic::fmt_exact(x.t1))).collect::<Vec<_>>().join(" "))
@@ -177,16 +207,24 @@ pub fn Workbench(parsed: Memo<Parsed>, verified: Memo<Verified>, trajectory: RwS
             sections,
             cables: cables.iter().map(|c| scene::cable_look(c).0).collect::<Vec<_>>().join(" "),
             path_poses: path.map_or(0, |p| p.0.poses.len()),
+            tubes: tubes.iter().map(|(i, r)| format!("{}:{}", i + 1, logic::fmt_exact(*r))).collect::<Vec<_>>().join(" "),
         }))
     });
 
-    let profile_data = Memo::new(move |_| {
+    // the plots follow a drag at its end (the strip and the view follow every move)
+    let profile_data = Memo::new(move |prev: Option<&Option<_>>| {
+        if let (true, Some(p)) = (drag_active.get(), prev) {
+            return p.clone();
+        }
         followed(parsed, planned, follow, trajectory, |s, path| {
             let r = profile::clearances_at(s, &path.samples(PLOT_SAMPLES)).map_err(|e| e.to_string());
             Some(Shared::new((r, format!("{}; x: {}", path.name(), path.param()))))
         })
     });
-    let envelope = Memo::new(move |_| {
+    let envelope = Memo::new(move |prev: Option<&Option<_>>| {
+        if let (true, Some(p)) = (drag_active.get(), prev) {
+            return p.clone();
+        }
         followed(parsed, planned, follow, trajectory, |s, path| {
             let r = profile::tension_at(s, &path.name(), &path.samples(PLOT_SAMPLES)).map_err(|e| e.to_string());
             Some(Shared::new((r, path.param())))
@@ -241,6 +279,56 @@ pub fn Workbench(parsed: Memo<Parsed>, verified: Memo<Verified>, trajectory: RwS
             playing.set(true);
             step_play(0.0);
         }
+    };
+
+    // a drag: one undo step; every move rewrites the scenario, which re-verifies exactly (the
+    // `verified` memo) and repaints the strip, the view and the editor's fields
+    let on_handle = Callback::new(move |ev: HandleEvent| match ev {
+        HandleEvent::Begin(i) => {
+            let grip = handle_list.with_untracked(|h| h.get(i).map(|h| h.grip));
+            let doc = source.with_untracked(|s| serde_json::from_str::<serde_json::Value>(s).ok());
+            if let (Some(grip), Some(doc)) = (grip, doc) {
+                history.begin_batch();
+                dragging.set_value(Some((grip, doc)));
+                drag_active.set(true);
+            }
+        }
+        HandleEvent::Move(_, to) => {
+            let started = now_ms();
+            let text = dragging
+                .try_update_value(|d| {
+                    let (grip, doc) = d.as_mut()?;
+                    el::move_grip(doc, *grip, to).ok()?;
+                    serde_json::to_string_pretty(doc).ok()
+                })
+                .flatten();
+            if let Some(text) = text {
+                source.set(text);
+                origin.set("edited");
+                // verify and rebuild the scene now, to time one whole update
+                verified.with_untracked(|_| ());
+                scene_view.with_untracked(|_| ());
+                update_ms.set(Some(now_ms() - started));
+            }
+        }
+        HandleEvent::End => {
+            dragging.set_value(None);
+            drag_active.set(false);
+            history.end_batch();
+        }
+    });
+    let handles_prop = Handles {
+        points: Signal::derive(move || handle_list.with(|h| h.iter().map(|h| DVec3::from_array(h.at)).collect())),
+        selected,
+        constraint,
+        on_event: on_handle,
+    };
+    let nudge = move |axis: usize, sign: f64| {
+        let Some(i) = selected.get_untracked() else { return };
+        let Some(at) = handle_list.with_untracked(|h| h.get(i).map(|h| h.at)) else { return };
+        on_handle.run(HandleEvent::Begin(i));
+        on_handle.run(HandleEvent::Move(i, crate::view3d::drag::nudge(at, axis, sign * nudge_step.get_untracked())));
+        on_handle.run(HandleEvent::End);
     };
 
     let readout = move || {
@@ -300,10 +388,56 @@ pub fn Workbench(parsed: Memo<Parsed>, verified: Memo<Verified>, trajectory: RwS
         Follow::Planned => "planned path",
     };
 
-    view! {
-        <section class="workbench" data-testid="workbench">
-            <h2>"3-D view"</h2>
-            <View3d scene=scene_view />
+    let stage = view! {
+        <section class="stage" data-testid="stage" aria-label="3-D view and verdict">
+            <View3d scene=scene_view handles=handles_prop />
+            <div class="drag-bar" data-testid="drag-bar">
+                <label>
+                    "Move "
+                    <select data-testid="handle" on:change=move |ev| selected.set(event_target_value(&ev).parse::<usize>().ok())>
+                        <option value="" selected=move || selected.get().is_none()>"(drag a yellow handle, or pick one)"</option>
+                        {move || handle_list.get().into_iter().enumerate().map(|(i, h)| view! {
+                            <option value=i.to_string() selected=move || selected.get() == Some(i)>{h.label}</option>
+                        }).collect_view()}
+                    </select>
+                </label>
+                <label>
+                    " "
+                    <select data-testid="drag-constraint" aria-label="drag constraint" on:change=move |ev| {
+                        if let Some(c) = Constraint::from_id(&event_target_value(&ev)) {
+                            constraint.set(c)
+                        }
+                    }>
+                        {Constraint::CHOICES.map(|(c, id, label)| view! { <option value=id selected=move || constraint.get() == c>{label}</option> })}
+                    </select>
+                </label>
+                <span class="nudge" role="group" aria-label="nudge the selected handle">
+                    {[(0usize, "x"), (1, "y"), (2, "z")].map(|(axis, name)| view! {
+                        <button class="small" data-testid=format!("nudge-{name}-minus") disabled=move || selected.get().is_none() on:click=move |_| nudge(axis, -1.0)
+                            aria-label=format!("move the selected handle by −step along {name}")>{format!("−{name}")}</button>
+                        <button class="small" data-testid=format!("nudge-{name}-plus") disabled=move || selected.get().is_none() on:click=move |_| nudge(axis, 1.0)
+                            aria-label=format!("move the selected handle by +step along {name}")>{format!("+{name}")}</button>
+                    })}
+                </span>
+                <label>
+                    " step "
+                    <input class="num" type="number" min="0.001" step="0.01" data-testid="nudge-step" prop:value=move || nudge_step.get().to_string()
+                        on:change=move |ev| {
+                            if let Some(v) = event_target_value(&ev).trim().parse::<f64>().ok().filter(|v| v.is_finite() && *v > 0.0) {
+                                nudge_step.set(v)
+                            }
+                        } />
+                    " m"
+                </label>
+                <span class="readout" data-testid="handle-readout" data-update-ms=move || update_ms.get().map(|t| format!("{t:.3}")).unwrap_or_default()>
+                    {move || {
+                        let at = selected.get().and_then(|i| handle_list.with(|h| h.get(i).map(|h| h.at)));
+                        let pos = at.map(|p| format!("at x {} y {} z {} m", fmt_num(p[0]), fmt_num(p[1]), fmt_num(p[2]))).unwrap_or_default();
+                        let t = update_ms.get().map(|t| format!(" · last update {t:.1} ms (edit, exact re-verification, scene)")).unwrap_or_default();
+                        format!("{pos}{t}")
+                    }}
+                </span>
+            </div>
             <div class="scrubber">
                 <label>
                     "Follow "
@@ -335,41 +469,74 @@ pub fn Workbench(parsed: Memo<Parsed>, verified: Memo<Verified>, trajectory: RwS
                 />
                 <span class="readout" data-testid="pose-readout">{move || format!("{} = {} · {}", if follow.get() == Follow::Trajectory { "t" } else { "fraction" }, fmt_num(scrub.get()), readout().unwrap_or_default())}</span>
             </div>
-            <p class="legend">
-                "Path: " <span class="swatch feasible"></span> "feasible " <span class="swatch infeasible"></span> "infeasible "
-                <span class="swatch" style="background: rgb(107,59,212)"></span> "planned (thick: platform origin; thin: a point on its z axis). "
-                "Cables: " <span class="swatch" style="background: rgb(59,112,217)"></span> "tension margin ≥ ¼ of the bounds' span, "
-                <span class="swatch" style="background: rgb(230,145,31)"></span> "margin near 0, "
-                <span class="swatch" style="background: rgb(143,59,212)"></span> "tension out of bounds, "
-                <span class="swatch infeasible"></span> "interfering or length out of bounds, "
-                <span class="swatch" style="background: rgb(51,64,77)"></span> "no wrench set."
-            </p>
-            <Planning parsed planned />
-            <h2>"Exports"</h2>
-            <p class="exports">
-                <button data-testid="export-intervals-csv" on:click=export_intervals>"Intervals (CSV)"</button>
-                <button data-testid="copy-intervals" on:click=copy_intervals>"Copy intervals"</button>
-                <button data-testid="export-report-json" on:click=export_report>"Report (JSON, as the CLI prints)"</button>
-                <button data-testid="export-path-csv" on:click=move |_| export_path(false)>"Path poses (CSV)"</button>
-                <button data-testid="export-path-json" on:click=move |_| export_path(true)>"Path poses (JSON)"</button>
-                <button data-testid="export-view-png" on:click=export_view>"3-D view (PNG)"</button>
-            </p>
-            <h2>"Clearances along the path"</h2>
-            <DistancePlot
-                profile=Signal::derive(move || profile_data.get().map(|p| p.0.0.clone()))
-                label=Signal::derive(move || profile_data.get().map(|p| p.0.1.clone()).unwrap_or_default())
-            />
-            <h2>"Tension envelope"</h2>
-            <TensionPlot
-                envelope=Signal::derive(move || envelope.get().map(|e| e.0.0.clone()))
-                param=Signal::derive(move || envelope.get().map_or("t", |e| e.0.1))
-            />
-            <h2>"Slice map"</h2>
-            <SlicePanel parsed overlay=Signal::derive(move || overlay.get()) />
-            <h2>"Ray lattice"</h2>
-            <LatticePanel parsed overlay=Signal::derive(move || overlay.get()) />
+            <StripResult parsed verified trajectory origin />
+        </section>
+    };
+    if embed {
+        return stage.into_any();
+    }
+    view! {
+        {stage}
+        <section class="results" data-testid="results" aria-label="results">
+            <div class="panel" data-testid="panel-intervals">
+                <ResultTables parsed verified />
+            </div>
+            <details class="panel" data-testid="panel-view-key">
+                <summary>"3-D view: colours and controls"</summary>
+                <p class="legend">
+                    "Path: " <span class="swatch feasible"></span> "feasible " <span class="swatch infeasible"></span> "infeasible "
+                    <span class="swatch" style="background: rgb(107,59,212)"></span> "planned (thick: platform origin; thin: a point on its z axis). "
+                    "Cables: " <span class="swatch" style="background: rgb(59,112,217)"></span> "tension margin ≥ ¼ of the bounds' span, "
+                    <span class="swatch" style="background: rgb(230,145,31)"></span> "margin near 0, "
+                    <span class="swatch" style="background: rgb(143,59,212)"></span> "tension out of bounds, "
+                    <span class="swatch infeasible"></span> "interfering or length out of bounds, "
+                    <span class="swatch" style="background: rgb(51,64,77)"></span> "no wrench set."
+                </p>
+                <p class="legend">"Drag to orbit, right-drag or shift-drag to pan, wheel or pinch to zoom; with the view focused, arrow keys orbit and + / − zoom."</p>
+            </details>
+            <div class="panel" data-testid="panel-planning">
+                <Planning parsed source planned />
+            </div>
+            <div class="panel" data-testid="panel-exports">
+                <h2>"Exports"</h2>
+                <p class="exports">
+                    <button data-testid="export-intervals-csv" on:click=export_intervals>"Intervals (CSV)"</button>
+                    <button data-testid="copy-intervals" on:click=copy_intervals>"Copy intervals"</button>
+                    <button data-testid="export-report-json" on:click=export_report>"Report (JSON, as the CLI prints)"</button>
+                    <button data-testid="export-path-csv" on:click=move |_| export_path(false)>"Path poses (CSV)"</button>
+                    <button data-testid="export-path-json" on:click=move |_| export_path(true)>"Path poses (JSON)"</button>
+                    <button data-testid="export-view-png" on:click=export_view>"3-D view (PNG)"</button>
+                </p>
+            </div>
+            <div class="panel wide" data-testid="panel-clearances">
+                <h2>"Clearances along the path"</h2>
+                <DistancePlot
+                    profile=Signal::derive(move || profile_data.get().map(|p| p.0.0.clone()))
+                    label=Signal::derive(move || profile_data.get().map(|p| p.0.1.clone()).unwrap_or_default())
+                    certified=Signal::derive(move || match (follow.get(), strip.get()) {
+                        (Follow::Trajectory, Some(m)) => m.ticks.iter().map(|t| (t.t, t.label.clone())).collect(),
+                        _ => vec![],
+                    })
+                />
+            </div>
+            <div class="panel wide" data-testid="panel-tension">
+                <h2>"Tension envelope"</h2>
+                <TensionPlot
+                    envelope=Signal::derive(move || envelope.get().map(|e| e.0.0.clone()))
+                    param=Signal::derive(move || envelope.get().map_or("t", |e| e.0.1))
+                />
+            </div>
+            <div class="panel wide" data-testid="panel-slice">
+                <h2>"Slice map"</h2>
+                <SlicePanel parsed source overlay=Signal::derive(move || overlay.get()) />
+            </div>
+            <div class="panel wide" data-testid="panel-lattice">
+                <h2>"Ray lattice"</h2>
+                <LatticePanel parsed overlay=Signal::derive(move || overlay.get()) />
+            </div>
         </section>
     }
+    .into_any()
 }
 
 #[cfg(test)]

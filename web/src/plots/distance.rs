@@ -1,5 +1,7 @@
 //! Least cable–cable and cable–obstacle distance along a path (sampled point-wise by the core),
-//! with the required clearances dashed and the samples where some condition fails marked.
+//! with the required clearances dashed and the samples where some condition fails marked. The
+//! plot says which is which: the line is sampled (a rug of ticks at the samples, not a
+//! certificate); the verifier's certified boundaries (exact roots) are drawn as full-height lines.
 
 use super::geom::{extent, polyline, ticks, Scale};
 use super::Chart;
@@ -40,13 +42,16 @@ pub struct DistanceModel {
     pub violated_x: Vec<f64>,
     /// Conditions known by membership only (no distance drawn).
     pub membership_only: Vec<String>,
+    /// The certified boundaries on the plot: x and tooltip.
+    pub certified: Vec<(f64, String)>,
     /// Whether any sample has a cable–obstacle distance (else that line, its clearance and its
     /// legend are left out).
     pub obstacles: bool,
 }
 
-/// Builds the plot of a profile; `param` names the x axis ("t" or "path fraction").
-pub fn model(p: &ClearanceProfile) -> DistanceModel {
+/// Builds the plot of a profile, with the verifier's certified boundaries `certified` (the
+/// parameter and a tooltip each) on the same axis.
+pub fn model(p: &ClearanceProfile, certified: &[(f64, String)]) -> DistanceModel {
     let ts: Vec<f64> = p.samples.iter().map(|s| s.t).collect();
     let x = Scale::new(ts.first().copied().unwrap_or(0.0), ts.last().copied().unwrap_or(1.0), LEFT, W - RIGHT);
     let obstacles = p.samples.iter().any(|s| s.cable_obstacle.is_some());
@@ -90,21 +95,26 @@ pub fn model(p: &ClearanceProfile) -> DistanceModel {
             .collect(),
         violated_x: p.samples.iter().filter(|s| !s.violated.is_empty()).map(|s| x.at(s.t)).collect(),
         membership_only: p.membership_only.clone(),
+        certified: certified.iter().filter(|(t, _)| *t >= x.d0 && *t <= x.d1).map(|(t, tip)| (x.at(*t), tip.clone())).collect(),
         obstacles,
     }
 }
 
 /// The distance plot, or why there is none.
 #[component]
-pub fn DistancePlot(profile: Signal<Option<Result<ClearanceProfile, String>>>, label: Signal<String>) -> impl IntoView {
+pub fn DistancePlot(profile: Signal<Option<Result<ClearanceProfile, String>>>, label: Signal<String>, certified: Signal<Vec<(f64, String)>>) -> impl IntoView {
     move || match profile.get() {
         None => view! { <p class="empty">"No path to plot."</p> }.into_any(),
         Some(Err(e)) => view! { <p class="error">{format!("Clearances: {e}")}</p> }.into_any(),
         Some(Ok(p)) => {
-            let m = model(&p);
+            let m = model(&p, &certified.get());
             let n = p.samples.len();
             let step = if n > 1 { (W - LEFT - RIGHT) / (n - 1) as f64 } else { 8.0 };
-            let title = format!("Least distances along {} ({} samples; clearances dashed; red marks: a condition fails)", label.get(), n);
+            let title = format!(
+                "Least distances (m) along {}: sampled at {} points (grey rug; a sampled line is not a certificate); clearances dashed; red marks: a condition fails at a sample; dark lines: the verifier's certified boundaries (exact roots)",
+                label.get(),
+                n
+            );
             view! {
                 <Chart id="distance" title width=W height=H>
                     <rect x=LEFT y=TOP width=W - LEFT - RIGHT height=H - TOP - BOTTOM fill="none" stroke="#d8dde2" />
@@ -119,6 +129,15 @@ pub fn DistancePlot(profile: Signal<Option<Result<ClearanceProfile, String>>>, l
                     {m.obstacles.then(|| view! { <line x1=LEFT x2=W - RIGHT y1=m.clearance_y[1] y2=m.clearance_y[1] stroke=CO stroke-dasharray="5 4" /> })}
                     <path d=m.cable_cable.clone() fill="none" stroke=CC stroke-width="1.8" stroke-linecap="round" data-testid="distance-cc" />
                     <path d=m.cable_obstacle.clone() fill="none" stroke=CO stroke-width="1.8" stroke-linecap="round" data-testid="distance-co" />
+                    {m.samples.iter().map(|(x, _)| view! {
+                        <line x1=*x x2=*x y1=TOP y2=TOP + 4.0 stroke="#9aa3ab" stroke-width="1" data-testid="distance-sample" />
+                    }).collect_view()}
+                    {m.certified.iter().map(|(x, tip)| view! {
+                        <g data-testid="distance-certified">
+                            <line x1=*x x2=*x y1=TOP y2=H - BOTTOM stroke="#1d2329" stroke-width="1.5" />
+                            <rect x=x - 4.0 y=TOP width="8" height=H - TOP - BOTTOM fill="transparent"><title>{format!("certified boundary: {tip}")}</title></rect>
+                        </g>
+                    }).collect_view()}
                     {m.violated_x.iter().map(|x| view! {
                         <line x1=*x x2=*x y1=H - BOTTOM - 6.0 y2=H - BOTTOM stroke="#d43b3b" stroke-width="2" />
                     }).collect_view()}
@@ -126,6 +145,7 @@ pub fn DistancePlot(profile: Signal<Option<Result<ClearanceProfile, String>>>, l
                         <rect x=x - step / 2.0 y=TOP width=step height=H - TOP - BOTTOM fill="transparent"><title>{tip.clone()}</title></rect>
                     }).collect_view()}
                     <text x=LEFT y=H - 6.0 font-size="11" fill=CC>"— cable–cable"</text>
+                    <text x=LEFT + 380.0 y=H - 6.0 font-size="11" fill="#1d2329">"| certified boundary   "<tspan fill="#9aa3ab">"ˈ sample"</tspan></text>
                     {m.obstacles.then(|| view! { <text x=LEFT + 120.0 y=H - 6.0 font-size="11" fill=CO>"— cable–obstacle (to the surface)"</text> })}
                     <text x=W - RIGHT y=H - 6.0 font-size="11" text-anchor="end" fill="#5b6670">{label.get()}</text>
                 </Chart>
@@ -160,7 +180,8 @@ mod tests {
             clearance_cable_obstacle: 0.2,
             membership_only: vec!["cable 1 - cone".into()],
         };
-        let m = model(&p);
+        let m = model(&p, &[(0.5, "t = 0.5: cable 3 - crown".into()), (2.0, "off the axis".into())]);
+        assert_eq!(m.certified, [((LEFT + W - RIGHT) / 2.0, "t = 0.5: cable 3 - crown".to_string())], "inside the axis only");
         assert_eq!(m.cable_cable.matches('M').count(), 1);
         assert_eq!(m.cable_obstacle.matches('M').count(), 2, "a gap where no obstacle distance is known");
         assert_eq!(m.violated_x, [LEFT]);
@@ -172,6 +193,6 @@ mod tests {
         assert!(m.y_ticks.iter().all(|(y, _)| *y >= TOP - 1e-9 && *y <= H - BOTTOM + 1e-9));
         assert!(m.obstacles);
         let bare = ClearanceProfile { samples: vec![sample(0.0, Some(0.5), None, &[])], membership_only: vec![], ..p };
-        assert!(!model(&bare).obstacles);
+        assert!(!model(&bare, &[]).obstacles);
     }
 }

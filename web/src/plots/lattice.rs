@@ -8,7 +8,7 @@ use super::geom::{polyline, ticks, Scale};
 use super::slice::{default_axes, default_pose, default_range, path_points, slice_copies, Overlay};
 use super::strip::css;
 use super::Chart;
-use crate::app::Shared;
+use crate::state::Shared;
 use crate::logic::fmt_num;
 use cablenav::lattice::{Lattice, LatticeReport, LatticeSpec};
 use cablenav::model::Coord;
@@ -75,7 +75,7 @@ struct Build {
 
 /// The cross-section's controls and plot.
 #[component]
-pub fn LatticePanel(parsed: Memo<crate::app::Parsed>, overlay: Signal<Overlay>) -> impl IntoView {
+pub fn LatticePanel(parsed: Memo<crate::state::Parsed>, overlay: Signal<Overlay>) -> impl IntoView {
     let scenario = move || parsed.get().0.as_ref().as_ref().ok().cloned();
     let pose = RwSignal::new(String::new());
     let axes = RwSignal::new([Coord::X, Coord::Y]);

@@ -1,14 +1,17 @@
 //! The slice map: the core's classified grid over two chosen coordinates (the others fixed from
-//! a chosen pose) as an image, with the start, the goal and the path drawn over it.
+//! a chosen pose) as an image, with the start, the goal and the path drawn over it. The grid is
+//! classified by several Web Workers at once, each a block of rows ([`row_blocks`]).
 
 use super::geom::{polyline, ticks, Scale};
 use super::strip::css;
 use super::Chart;
-use crate::app::Shared;
+use crate::state::Shared;
 use crate::logic::fmt_num;
 use crate::view3d::scene::{self, Polyline};
 use cablenav::model::{Coord, Pose};
-use cablenav::verify::slice::SliceMap;
+use crate::worker::host::{self, Running};
+use crate::worker::protocol::{Job, Reply};
+use cablenav::verify::slice::{Class, SliceMap};
 use cablenav::Scenario;
 use leptos::prelude::*;
 use std::f64::consts::{PI, TAU};
@@ -125,6 +128,13 @@ pub fn base64(bytes: &[u8]) -> String {
     out
 }
 
+/// `res` rows split into at most `workers` consecutive blocks of nearly equal size, as
+/// `[from, to)` pairs covering `0..res`.
+pub fn row_blocks(res: usize, workers: usize) -> Vec<[usize; 2]> {
+    let k = workers.clamp(1, res.max(1));
+    (0..k).map(|b| [b * res / k, (b + 1) * res / k]).filter(|r| r[0] < r[1]).collect()
+}
+
 /// The map's scales: first axis across, second axis up.
 fn scales(range: [[f64; 2]; 2]) -> (Scale, Scale) {
     (Scale::new(range[0][0], range[0][1], LEFT, W - RIGHT), Scale::new(range[1][0], range[1][1], H - BOTTOM, TOP))
@@ -132,7 +142,7 @@ fn scales(range: [[f64; 2]; 2]) -> (Scale, Scale) {
 
 /// The slice controls and map.
 #[component]
-pub fn SlicePanel(parsed: Memo<crate::app::Parsed>, overlay: Signal<Overlay>) -> impl IntoView {
+pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, overlay: Signal<Overlay>) -> impl IntoView {
     let scenario = move || parsed.get().0.as_ref().as_ref().ok().cloned();
     let pose = RwSignal::new(String::new());
     let axes = RwSignal::new([Coord::X, Coord::Y]);
@@ -149,10 +159,70 @@ pub fn SlicePanel(parsed: Memo<crate::app::Parsed>, overlay: Signal<Overlay>) ->
             map.set(None);
         }
     });
+    // the map is classified in row blocks by several workers at once (crate::worker), then
+    // joined here; a new request or Cancel terminates the running ones
+    let running: StoredValue<Vec<Running>, LocalStorage> = StoredValue::new_local(Vec::new());
+    let progress = RwSignal::new(None::<(usize, usize)>);
+    let generation = StoredValue::new(0u32);
+    let stop = move || {
+        generation.update_value(|g| *g += 1);
+        running.update_value(|r| r.iter().for_each(Running::cancel));
+        running.set_value(Vec::new());
+        progress.set(None);
+    };
     let compute = move |_| {
         let Some(s) = scenario() else { return };
-        let r = cablenav::verify::slice(&s, &pose.get_untracked(), axes.get_untracked(), res.get_untracked(), range.get_untracked());
-        map.set(Some(Shared::new(r.map_err(|e| e.to_string()))));
+        stop();
+        let this = generation.get_value();
+        let (pose_name, a, n, r) = (pose.get_untracked(), axes.get_untracked(), res.get_untracked(), range.get_untracked());
+        // the whole map's checks first (same errors as the core's), before any worker starts
+        if let Err(e) = cablenav::verify::slice::slice_rows(&s, &pose_name, a, n, r, 0..0) {
+            map.set(Some(Shared::new(Err(e.to_string()))));
+            return;
+        }
+        let Some(json) = source.try_get_untracked() else { return };
+        let blocks = row_blocks(n, host::parallelism());
+        let parts: StoredValue<Vec<Option<Vec<Class>>>> = StoredValue::new(vec![None; blocks.len()]);
+        progress.set(Some((0, blocks.len())));
+        let mut started = Vec::new();
+        for (b, rows) in blocks.iter().enumerate() {
+            let job = Job::Slice { scenario: json.clone(), pose: pose_name.clone(), axes: [a[0].name().to_string(), a[1].name().to_string()], res: n, range: r, rows: *rows };
+            let (s, pose_name) = (s.clone(), pose_name.clone());
+            let on_reply = move |reply: Reply| {
+                if generation.get_value() != this {
+                    return;
+                }
+                let result = match reply {
+                    Reply::Sliced { classes, .. } => {
+                        parts.update_value(|p| p[b] = Some(classes));
+                        let done = parts.with_value(|p| p.iter().filter(|x| x.is_some()).count());
+                        progress.set(Some((done, parts.with_value(Vec::len))));
+                        if parts.with_value(|p| p.iter().any(Option::is_none)) {
+                            return;
+                        }
+                        let classes: Vec<Class> = parts.with_value(|p| p.iter().flatten().flatten().copied().collect());
+                        cablenav::verify::slice::slice_from_classes(&s, &pose_name, a, n, r, classes).map_err(|e| e.to_string())
+                    }
+                    Reply::Failed { error } => Err(error),
+                    Reply::Progress { .. } => return,
+                    Reply::Planned { .. } => Err("the worker answered a slice job with a plan".into()),
+                };
+                map.set(Some(Shared::new(result)));
+                generation.update_value(|g| *g += 1);
+                progress.set(None);
+                running.update_value(|r| std::mem::take(r).into_iter().for_each(host::retire));
+            };
+            match host::start(&job, on_reply) {
+                Ok(w) => started.push(w),
+                Err(e) => {
+                    started.iter().for_each(Running::cancel);
+                    progress.set(None);
+                    map.set(Some(Shared::new(Err(e))));
+                    return;
+                }
+            }
+        }
+        running.set_value(started);
     };
     let set_axis = move |k: usize, name: String| {
         if let (Some(c), Some(s)) = (Coord::parse(&name), scenario()) {
@@ -200,6 +270,10 @@ pub fn SlicePanel(parsed: Memo<crate::app::Parsed>, overlay: Signal<Overlay>) ->
                 </select>
             </label>
             <button data-testid="slice-compute" on:click=compute>"Compute slice"</button>
+            <button data-testid="slice-cancel" disabled=move || progress.get().is_none() on:click=move |_| stop()>"Cancel"</button>
+            <span class="readout" data-testid="slice-progress" aria-live="polite">
+                {move || progress.get().map(|(done, all)| format!("{done} of {all} row blocks done ({all} workers)"))}
+            </span>
         </div>
         {move || map.get().map(|m| match m.0.as_ref() {
             Err(e) => view! { <p class="error">{format!("Slice: {e}")}</p> }.into_any(),
@@ -276,6 +350,17 @@ mod tests {
     use super::*;
     use crate::presets::{find, PRESETS};
     use nalgebra::Vector3;
+
+    #[test]
+    fn row_blocks_cover_the_rows_once() {
+        assert_eq!(row_blocks(10, 3), [[0, 3], [3, 6], [6, 10]]);
+        assert_eq!(row_blocks(2, 8), [[0, 1], [1, 2]], "no empty block");
+        assert_eq!(row_blocks(64, 1), [[0, 64]]);
+        for (res, k) in [(256, 7), (33, 4), (1, 2)] {
+            let b = row_blocks(res, k);
+            assert!(b[0][0] == 0 && b.last().unwrap()[1] == res && b.windows(2).all(|w| w[0][1] == w[1][0]), "{b:?}");
+        }
+    }
 
     fn robocrane() -> Scenario {
         crate::logic::parse_scenario(PRESETS[find("robocrane").unwrap()].json).unwrap()

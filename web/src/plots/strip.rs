@@ -95,19 +95,34 @@ fn SectionRect(section: Section) -> impl IntoView {
 fn TickMark(tick: Tick, picked: RwSignal<Option<String>>) -> impl IntoView {
     let x = tick.t * STRIP_W;
     let (label, key_label) = (tick.label.clone(), tick.label.clone());
+    // the 3-D view shows this boundary's clearance tubes while it is pointed at (state::Focus)
+    let focus = use_context::<crate::state::Focus>();
+    let (t1, t2, t3) = (tick.clone(), tick.clone(), tick.clone());
+    let set = move |t: Option<Tick>| {
+        if let Some(f) = focus {
+            f.0.set(t)
+        }
+    };
     view! {
         <g
             data-testid="boundary"
             data-t=fmt_exact(tick.t)
             class=format!("tick enters-{}", tick.enters)
             tabindex="0"
-            on:click=move |_| picked.set(Some(label.clone()))
+            on:click=move |_| {
+                picked.set(Some(label.clone()));
+                set(Some(t1.clone()))
+            }
             on:keydown=move |ev: web_sys::KeyboardEvent| {
                 if ev.key() == "Enter" || ev.key() == " " {
                     ev.prevent_default();
                     picked.set(Some(key_label.clone()))
                 }
             }
+            on:mouseenter=move |_| set(Some(t2.clone()))
+            on:focus=move |_| set(Some(t3.clone()))
+            on:mouseleave=move |_| set(None)
+            on:blur=move |_| set(None)
         >
             <line x1=x x2=x y1=STRIP_Y - 4.0 y2=STRIP_Y + STRIP_H + 4.0 stroke="#1d2329" stroke-width="2" />
             // A wider invisible target carries the tooltip, so it is easy to hover. (The <title>

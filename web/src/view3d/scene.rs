@@ -35,6 +35,11 @@ const CABLE_TIGHT: Rgba = [0.9, 0.57, 0.12, 1.0];
 const CABLE_OUT: Rgba = [0.56, 0.23, 0.83, 1.0];
 const PLATFORM: Rgba = [0.35, 0.4, 0.47, 0.6];
 const ANCHOR: Rgba = [0.12, 0.14, 0.16, 1.0];
+/// Clearance tubes at a boundary.
+const TUBE: Rgba = [0.83, 0.23, 0.23, 0.3];
+/// Draggable handles, and the selected one.
+const HANDLE: Rgba = [0.95, 0.78, 0.1, 1.0];
+const HANDLE_SELECTED: Rgba = [1.0, 0.45, 0.0, 1.0];
 const GRID: Rgba = [0.8, 0.83, 0.86, 1.0];
 const AXES: [Rgba; 3] = [[0.85, 0.2, 0.2, 1.0], [0.2, 0.65, 0.25, 1.0], [0.2, 0.35, 0.9, 1.0]];
 /// Obstacle colours, by obstacle index, translucent.
@@ -170,6 +175,34 @@ pub struct SceneInput<'a> {
     pub trajectory: &'a [Polyline],
     /// The planned path, if any.
     pub path: Option<&'a Polyline>,
+    /// The draggable handles (m, world frame), the selected one's index and, for it, the axis
+    /// (0, 1, 2) a drag is constrained to, if any.
+    pub handles: &'a [DVec3],
+    /// The selected handle.
+    pub selected: Option<usize>,
+    /// The selected handle's drag axis, drawn as a guide line.
+    pub axis: Option<usize>,
+    /// Clearance tubes to draw around cables at `pose`: (cable index, radius), see
+    /// [`clearance_tubes`].
+    pub tubes: &'a [(usize, f64)],
+}
+
+/// The clearance tubes that show a boundary's constraint (its name as the core gives it): for
+/// `cables i-j`, a tube of half the cable–cable clearance around each (they touch exactly when the
+/// centrelines are the clearance apart); for `cable i - <obstacle>`, a tube of the cable–obstacle
+/// clearance around the cable (it touches the obstacle's surface at the boundary). Clearances are
+/// between centrelines (the cable diameter is informational in the format). Other constraints
+/// (lengths, tensions) have no tube. Cable indices are 0-based.
+pub fn clearance_tubes(s: &Scenario, constraint: &str) -> Vec<(usize, f64)> {
+    let cable = |n: &str| n.trim().parse::<usize>().ok().filter(|&k| k >= 1 && k <= s.robot.cables.len()).map(|k| k - 1);
+    if let Some((a, b)) = constraint.strip_prefix("cables ").and_then(|r| r.split_once('-')) {
+        let r = s.clearance.cable_cable / 2.0;
+        return [cable(a), cable(b)].into_iter().flatten().map(|i| (i, r)).collect();
+    }
+    match constraint.strip_prefix("cable ").and_then(|r| r.split_once(" - ")) {
+        Some((i, _obstacle)) => cable(i).map(|i| vec![(i, s.clearance.cable_obstacle)]).unwrap_or_default(),
+        None => vec![],
+    }
 }
 
 /// Builds the vertex data of a scene.
@@ -213,6 +246,13 @@ pub fn build(input: &SceneInput) -> Geometry {
             push_tris(&mut g.solid, &t, colour);
         }
         platform(&mut g, s, &pose, extent);
+        let mut tubes = Tris::default();
+        for &(i, r) in input.tubes {
+            if let Some(c) = s.robot.cables.get(i) {
+                tessellate::tube(&mut tubes, dv(&c.base), dv(&pose.transform(&c.platform)), r, 18);
+            }
+        }
+        push_tris(&mut g.translucent, &tubes, TUBE);
     }
 
     let tool = tool_point(s, extent);
@@ -232,6 +272,20 @@ pub fn build(input: &SceneInput) -> Geometry {
     for (k, o) in s.obstacles.iter().enumerate() {
         push_tris(&mut g.translucent, &tessellate::shape(&o.shape), OBSTACLES[k % OBSTACLES.len()]);
     }
+
+    // handles: small cubes, the selected one larger and orange, with its drag axis as a line
+    let (mut idle, mut picked) = (Tris::default(), Tris::default());
+    for (i, h) in input.handles.iter().enumerate() {
+        let sel = input.selected == Some(i);
+        let r = extent * if sel { 0.014 } else { 0.01 };
+        tessellate::cuboid(if sel { &mut picked } else { &mut idle }, std::array::from_fn(|c| *h + DVec3::new(bit(c, 0), bit(c, 1), bit(c, 2)) * r));
+        if let (true, Some(k)) = (sel, input.axis) {
+            let dir = DVec3::from_array(std::array::from_fn(|j| if j == k { extent } else { 0.0 }));
+            line(&mut g.lines, *h - dir, *h + dir, AXES[k]);
+        }
+    }
+    push_tris(&mut g.solid, &idle, HANDLE);
+    push_tris(&mut g.solid, &picked, HANDLE_SELECTED);
     g
 }
 
@@ -274,6 +328,15 @@ fn pick(i: usize, axis: usize, lo: &Vector3<f64>, hi: &Vector3<f64>) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn clearance_tubes_name_the_constraints_cables() {
+        let s = crate::logic::parse_scenario(crate::presets::PRESETS[crate::presets::find("cdpr7-tree").unwrap()].json).unwrap();
+        assert_eq!(clearance_tubes(&s, "cable 3 - crown"), [(2, s.clearance.cable_obstacle)]);
+        assert_eq!(clearance_tubes(&s, "cables 1-7"), [(0, s.clearance.cable_cable / 2.0), (6, s.clearance.cable_cable / 2.0)]);
+        assert!(clearance_tubes(&s, "cable 2 length").is_empty());
+        assert!(clearance_tubes(&s, "cable 9 - crown").is_empty(), "no such cable");
+    }
     use crate::logic;
     use crate::presets::PRESETS;
     use cablenav::verify::profile::cable_states;
@@ -324,7 +387,7 @@ mod tests {
         let pieces = trajectory_polylines(traj, &logic::strip(&report));
         let pose = traj.pose_at(0.3);
         let states = cable_states(&s, &pose);
-        let g = build(&SceneInput { scenario: &s, pose: Some(pose), cables: &states, trajectory: &pieces, path: None });
+        let g = build(&SceneInput { scenario: &s, pose: Some(pose), cables: &states, trajectory: &pieces, path: None, handles: &[], selected: None, axis: None, tubes: &[] });
         assert_eq!(g.solid.len() % STRIDE, 0);
         assert_eq!(g.lines.len() % (2 * STRIDE), 0);
         // the platform box and the three obstacles, translucent
@@ -337,7 +400,7 @@ mod tests {
         assert!(solid.contains(&GREEN), "the feasible section");
         assert!(!solid.contains(&PATH), "no path given");
         // without a pose: no cables, no platform
-        let bare = build(&SceneInput { scenario: &s, pose: None, cables: &[], trajectory: &[], path: None });
+        let bare = build(&SceneInput { scenario: &s, pose: None, cables: &[], trajectory: &[], path: None, handles: &[], selected: None, axis: None, tubes: &[] });
         assert!(bare.solid.len() < g.solid.len());
         assert!(!colours(&bare.solid).contains(&RED));
     }

@@ -1,0 +1,294 @@
+// End-to-end test of the page as a workbench, in Debian's headless Chromium driven by
+// playwright-core, against the built page (scripts/build-page.sh):
+//   node tests/browser/e2e-workbench.mjs [PAGE_DIR]      (default: target/page)
+// - layout at 1366×768 and 390×844: the 3-D canvas and the strip inside the first viewport, the
+//   one-sentence explanation shown, no element wider than the viewport (screenshots saved);
+//   embed mode keeps the view and the strip only;
+// - dragging a via point of cdpr7-tree "quadratic" in the 3-D view by synthetic pointer events:
+//   the strip's sections at the end equal `cablenav verify` on the exported scenario, the editor's
+//   via-point fields follow, the frame and per-update times are recorded;
+// - undo restores the previous scenario exactly (as JSON), redo and "Reset" too;
+// - a long planning run in a Web Worker while typing into an editor field and orbiting the view:
+//   the worst frame stays under 50 ms and the typed text is kept.
+// Ends with "N passed, M failed"; exits 1 on failure.
+
+import { mkdirSync, mkdtempSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { dirname, join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { cliSections, cliVerify as cliVerifyAt, launchChromium, readSections, requirePage, runner, serve, watchProblems } from './harness.mjs';
+
+const here = dirname(fileURLToPath(import.meta.url));
+const root = resolve(here, '..', '..');
+const pageDir = resolve(root, process.argv[2] ?? process.env.PAGE_DIR ?? 'target/page');
+const artifacts = join(here, 'artifacts');
+const scratch = mkdtempSync(join(tmpdir(), 'cablenav-wb-'));
+const TIMEOUT = 60_000;
+const FRAME_LIMIT_MS = 50;
+
+const cliVerify = (file, trajectory) => cliVerifyAt(root, file, trajectory);
+async function stripSections(page) {
+  return (await readSections(page)).map(({ kind, t0, t1 }) => ({ kind, t0, t1 })).sort((a, b) => a.t0 - b.t0 || a.t1 - b.t1);
+}
+const source = (page) => page.$eval('textarea[data-testid="source"]', (t) => t.value);
+async function pickPreset(page, id) {
+  await page.selectOption('select[data-testid="preset"]', id);
+  await page.waitForSelector(`section[data-testid="result"][data-origin="${id}"] svg[data-testid="strip"]`, { timeout: TIMEOUT });
+}
+/** Starts recording animation-frame lengths (ms) in window.__frames. */
+async function recordFrames(page) {
+  await page.evaluate(() => {
+    window.__frames = [];
+    window.__recording = true;
+    let last = performance.now();
+    const tick = (now) => {
+      window.__frames.push(now - last);
+      last = now;
+      if (window.__recording) requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(tick);
+  });
+}
+async function stopFrames(page) {
+  return page.evaluate(() => { window.__recording = false; return window.__frames.slice(1); });
+}
+const stats = (xs) => {
+  const s = [...xs].sort((a, b) => a - b);
+  return { n: s.length, median: s[Math.floor(s.length / 2)] ?? NaN, worst: s[s.length - 1] ?? NaN };
+};
+
+/** Throws unless the canvas and the strip are inside the first viewport and nothing is wider than it. */
+async function checkLayout(page, what) {
+  const r = await page.evaluate(() => {
+    const box = (sel) => { const e = document.querySelector(sel); if (!e) return null; const b = e.getBoundingClientRect(); return { top: b.top, bottom: b.bottom, left: b.left, right: b.right }; };
+    const W = document.documentElement.clientWidth;
+    const scrolls = (e) => { for (let p = e.parentElement; p && p !== document.body; p = p.parentElement) { const o = getComputedStyle(p).overflowX; if (o === 'auto' || o === 'scroll' || o === 'hidden') return p; } return null; };
+    const wide = [];
+    for (const e of document.body.querySelectorAll('*')) {
+      const b = e.getBoundingClientRect();
+      if (b.width === 0 && b.height === 0) continue;
+      const clip = scrolls(e);
+      // an element inside a scrolling box may extend past it, but never be wider than the viewport
+      const bad = clip ? b.width > W + 0.5 : (b.left < -0.5 || b.right > W + 0.5);
+      if (bad) wide.push(`${e.tagName.toLowerCase()}${e.dataset.testid ? `[${e.dataset.testid}]` : ''}.${e.className?.baseVal ?? e.className} ${b.left.toFixed(0)}..${b.right.toFixed(0)}`);
+    }
+    return { W, H: window.innerHeight, scrollWidth: document.documentElement.scrollWidth, canvas: box('canvas[data-testid="view3d"]'), strip: box('svg[data-testid="strip"]'), explain: box('[data-testid="explain"]'), wide };
+  });
+  for (const [name, b] of [['canvas', r.canvas], ['strip', r.strip], ['explanation', r.explain]]) {
+    if (!b) throw new Error(`${what}: no ${name}`);
+    if (b.top < 0 || b.bottom > r.H + 0.5) throw new Error(`${what}: the ${name} is not inside the first viewport (${b.top.toFixed(0)}..${b.bottom.toFixed(0)} of ${r.H})`);
+  }
+  if (r.scrollWidth > r.W) throw new Error(`${what}: the page scrolls sideways (${r.scrollWidth} > ${r.W})`);
+  if (r.wide.length) throw new Error(`${what}: ${r.wide.length} element(s) wider than the ${r.W}px viewport: ${r.wide.slice(0, 6).join('; ')}`);
+  return `canvas ${r.canvas.top.toFixed(0)}..${r.canvas.bottom.toFixed(0)}, strip ${r.strip.top.toFixed(0)}..${r.strip.bottom.toFixed(0)} of ${r.H}`;
+}
+
+// ---------- run ----------
+mkdirSync(artifacts, { recursive: true });
+requirePage(pageDir);
+const { test, finish } = runner(15);
+const server = await serve(pageDir);
+const base = `http://127.0.0.1:${server.address().port}`;
+const browser = await launchChromium();
+
+for (const [w, h] of [[1366, 768], [390, 844]]) {
+  await test(`layout at ${w}×${h}: canvas and strip in the first viewport, nothing wider than it`, async () => {
+    const context = await browser.newContext({ viewport: { width: w, height: h } });
+    const problems = watchProblems(context);
+    const page = await context.newPage();
+    await page.goto(`${base}/#preset=cdpr7-tree`, { waitUntil: 'load' });
+    await page.waitForSelector('section[data-testid="result"] svg[data-testid="strip"]', { timeout: TIMEOUT });
+    await page.waitForFunction(() => Number(document.querySelector('canvas[data-testid="view3d"]')?.dataset.draws ?? 0) > 0, null, { timeout: TIMEOUT });
+    const detail = await checkLayout(page, `${w}×${h}`);
+    await page.screenshot({ path: join(artifacts, `layout-${w}x${h}.png`) });
+    // the editor's sections open: still nothing wider than the viewport
+    for (const d of await page.$$('[data-testid="scenario-editor"] details:not([open]) > summary')) await d.click();
+    await page.evaluate(() => window.scrollTo(0, 0));
+    await checkLayout(page, `${w}×${h}, editor open`).catch(async (e) => { await page.screenshot({ path: join(artifacts, `layout-${w}x${h}-open.png`), fullPage: true }); throw e; });
+    await page.screenshot({ path: join(artifacts, `layout-${w}x${h}-full.png`), fullPage: true });
+    // embed mode: the view and the strip only
+    await page.goto(`${base}/?embed=1#preset=cdpr7-tree`, { waitUntil: 'load' });
+    await page.waitForSelector('section[data-testid="result"] svg[data-testid="strip"]', { timeout: TIMEOUT });
+    await checkLayout(page, `${w}×${h} embedded`);
+    for (const gone of ['[data-testid="results"]', '[data-testid="side-panel"]', '[data-testid="planning"]', 'table[data-testid="intervals"]'])
+      if (await page.$(gone)) throw new Error(`embed mode shows ${gone}`);
+    await page.screenshot({ path: join(artifacts, `layout-${w}x${h}-embed.png`) });
+    problems.assertNone();
+    await context.close();
+    return detail;
+  });
+}
+
+const context = await browser.newContext({ viewport: { width: 1366, height: 768 } });
+const problems = watchProblems(context);
+const page = await context.newPage();
+await page.goto(`${base}/`, { waitUntil: 'load' });
+
+await test('honest visuals: a hovered boundary shows its clearance tubes in 3-D; the clearance plot marks samples and certified boundaries', async () => {
+  await pickPreset(page, 'cdpr7-tree');
+  const scenario = JSON.parse(await source(page));
+  const canvas = page.locator('canvas[data-testid="view3d"]');
+  const tick = page.locator('svg[data-testid="strip"] [data-testid="boundary"]').first();
+  const label = await tick.locator('title').textContent();
+  const cable = /cable (\d+) - /.exec(label)?.[1];
+  if (!cable) throw new Error(`expected a cable–obstacle boundary: ${label}`);
+  await tick.hover();
+  const want = `${cable}:${scenario.clearance.cable_obstacle}`;
+  await page.waitForFunction((w) => document.querySelector('canvas[data-testid="view3d"]').dataset.tubes === w, want, { timeout: TIMEOUT });
+  await page.screenshot({ path: join(artifacts, 'boundary-tubes.png') });
+  await page.mouse.move(5, 5);
+  await page.waitForFunction(() => document.querySelector('canvas[data-testid="view3d"]').dataset.tubes === '', null, { timeout: TIMEOUT });
+  const ticks = await page.locator('svg[data-testid="strip"] [data-testid="boundary"]').count();
+  const certified = await page.locator('[data-testid="distance-certified"]').count();
+  const samples = await page.locator('[data-testid="distance-sample"]').count();
+  if (certified !== ticks) throw new Error(`${certified} certified boundaries on the clearance plot for ${ticks} in the strip`);
+  if (samples < 100) throw new Error(`only ${samples} sample marks on the clearance plot`);
+  problems.assertNone();
+  return `tubes ${want} while hovering "${label}"; clearance plot: ${certified} certified boundary, ${samples} samples marked`;
+});
+
+await test('dragging a via point of cdpr7-tree "quadratic" re-verifies as the CLI does, and the editor follows', async () => {
+  await pickPreset(page, 'cdpr7-tree');
+  await page.selectOption('select[data-testid="trajectory"]', '1');
+  await page.waitForSelector('section[data-testid="result"][data-trajectory-index="1"]', { timeout: TIMEOUT });
+  const before = await source(page);
+  const canvas = page.locator('canvas[data-testid="view3d"]');
+  const box = await canvas.boundingBox();
+  // the handles' labels: the quadratic's via points come first
+  const labels = await page.$$eval('select[data-testid="handle"] option', (os) => os.map((o) => o.textContent.trim()));
+  const k = labels.findIndex((l) => l.startsWith('via point 2 of “quadratic”')) - 1; // option 0 is "none"
+  if (k < 0) throw new Error(`no middle via point among the handles: ${labels.join(' | ')}`);
+  await page.waitForFunction((k) => (document.querySelector('canvas[data-testid="view3d"]').dataset.handlePx ?? '').split(' ').length > k, k, { timeout: TIMEOUT });
+  const [hx, hy] = (await canvas.getAttribute('data-handle-px')).split(' ')[k].split(',').map(Number);
+  const [x0, y0] = [box.x + hx, box.y + hy];
+  const sectionsBefore = await stripSections(page);
+  await recordFrames(page);
+  const updates = [];
+  await page.mouse.move(x0, y0);
+  await page.mouse.down();
+  for (let i = 1; i <= 24; i++) {
+    await page.mouse.move(x0 + 4 * i, y0 + 3 * i);
+    updates.push(Number(await page.getAttribute('[data-testid="handle-readout"]', 'data-update-ms')));
+  }
+  await page.mouse.up();
+  const frames = await stopFrames(page);
+  const after = await source(page);
+  if (after === before) throw new Error('the drag did not change the scenario');
+  const selected = await page.$eval('select[data-testid="handle"]', (s) => s.value);
+  if (selected !== String(k)) throw new Error(`the dragged handle is not selected (${selected})`);
+  await page.waitForSelector('section[data-testid="result"][data-origin="edited"][data-trajectory-index="1"]', { timeout: TIMEOUT });
+  const file = join(scratch, 'dragged.json');
+  writeFileSync(file, after);
+  const want = cliSections(cliVerify(file, 'quadratic'));
+  const got = await stripSections(page);
+  if (JSON.stringify(got) !== JSON.stringify(want)) throw new Error(`strip after the drag ${JSON.stringify(got)}\n  CLI ${JSON.stringify(want)}`);
+  // the 3-D view's green/red sections too
+  const view = (await canvas.getAttribute('data-sections')).split(' ').filter(Boolean).map((x) => { const [kind, t0, t1] = x.split(':'); return { kind, t0: Number(t0), t1: Number(t1) }; });
+  if (JSON.stringify(view) !== JSON.stringify(want)) throw new Error(`3-D view sections ${JSON.stringify(view)} vs CLI ${JSON.stringify(want)}`);
+  // the editor's via-point fields show the dragged polynomial's via point (τ = 1/2)
+  const traj = JSON.parse(after).trajectories[1];
+  const via = traj.translation.polynomial.map((row) => row.reduce((s, c, i) => s + c * 0.5 ** i, 0));
+  const details = page.locator('[data-testid="scenario-editor"] details').filter({ has: page.locator('summary', { hasText: 'Trajectories' }) }).first();
+  if (!(await details.evaluate((d) => d.open))) await details.locator('summary').first().click();
+  for (let a = 0; a < 3; a++) {
+    const sel = `[data-field="trajectories[1].translation.polynomial.via[1][${a}]"] input, input[data-field="trajectories[1].translation.polynomial.via[1][${a}]"]`;
+    const v = Number(await page.locator(sel).first().inputValue());
+    if (!(Math.abs(v - via[a]) < 1e-9)) throw new Error(`editor field via[1][${a}] = ${v}, the scenario's via point ${via[a]}`);
+  }
+  const u = stats(updates.filter(Number.isFinite));
+  const f = stats(frames);
+  writeFileSync(join(artifacts, 'drag-times.json'), JSON.stringify({ updates_ms: updates, frames_ms: frames }, null, 1));
+  await page.screenshot({ path: join(artifacts, 'drag-cdpr7-tree.png') });
+  problems.assertNone();
+  return `${JSON.stringify(sectionsBefore.map((s) => s.kind[0]).join(''))} → ${want.map((s) => `${s.kind[0]}[${s.t0.toFixed(3)},${s.t1.toFixed(3)}]`).join(' ')}; `
+    + `per update (edit + exact re-verification + scene, wasm): median ${u.median.toFixed(2)} ms, worst ${u.worst.toFixed(2)} ms over ${u.n}; frames while dragging: median ${f.median.toFixed(1)} ms, worst ${f.worst.toFixed(1)} ms over ${f.n}`;
+});
+
+await test('undo restores the previous scenario exactly; redo and Reset too', async () => {
+  // the drag above is one step: undo brings back the preset exactly
+  const dragged = await source(page);
+  await page.locator('body').click({ position: { x: 2, y: 2 } });
+  await page.keyboard.press('Control+z');
+  await page.waitForSelector('section[data-testid="result"][data-origin="cdpr7-tree"]', { timeout: TIMEOUT });
+  const preset = JSON.stringify(JSON.parse(await (await fetch(`${base}/scenarios/cdpr7-tree.json`)).text()));
+  if (JSON.stringify(JSON.parse(await source(page))) !== preset) throw new Error('undoing the drag did not restore the preset');
+  await page.keyboard.press('Control+Shift+z');
+  await page.waitForSelector('section[data-testid="result"][data-origin="edited"]', { timeout: TIMEOUT });
+  if ((await source(page)) !== dragged) throw new Error('redo did not restore the dragged scenario exactly');
+  // an edit in the form, then undo (from outside the text field)
+  const field = page.locator('[data-field="name"] input, input[data-field="name"]').first();
+  await field.fill('renamed for undo');
+  await page.waitForFunction(() => document.querySelector('textarea[data-testid="source"]').value.includes('renamed for undo'));
+  await page.locator('body').click({ position: { x: 2, y: 2 } });
+  await page.keyboard.press('Control+z');
+  await page.waitForFunction((d) => document.querySelector('textarea[data-testid="source"]').value === d, dragged, { timeout: TIMEOUT });
+  if (JSON.stringify(JSON.parse(await source(page))) !== JSON.stringify(JSON.parse(dragged))) throw new Error('undo of the rename');
+  if ((await field.inputValue()) === 'renamed for undo') throw new Error('the form did not follow the undo');
+  // Reset to the preset, undoable too
+  await page.click('[data-testid="reset-preset"]');
+  await page.waitForSelector('section[data-testid="result"][data-origin="cdpr7-tree"]', { timeout: TIMEOUT });
+  if (JSON.stringify(JSON.parse(await source(page))) !== preset) throw new Error('Reset did not restore the preset');
+  await page.click('[data-testid="undo"]');
+  await page.waitForFunction((d) => document.querySelector('textarea[data-testid="source"]').value === d, dragged, { timeout: TIMEOUT });
+  // the shared link follows
+  const hash = await page.evaluate(() => location.hash);
+  if (!hash.startsWith('#s=')) throw new Error(`the URL does not share the edited scenario: ${hash.slice(0, 20)}`);
+  problems.assertNone();
+  return 'drag undone and redone, rename undone, Reset undone';
+});
+
+await test('a long planning run in a worker: typing and orbiting meanwhile, worst frame under 50 ms, typed text kept', async () => {
+  // Robocrane's q1 → q2 with no coordinate fixed: the 6-D search runs for minutes
+  await pickPreset(page, 'robocrane');
+  const scenario = JSON.parse(await source(page));
+  scenario.queries.push({ name: 'q1-q2 6-D', start: 'q1', goal: 'q2', fixed: [] });
+  const details = page.locator('details.editor');
+  if (!(await details.evaluate((d) => d.open))) await details.locator('summary').click();
+  const box = page.locator('textarea[data-testid="source"]');
+  await box.fill(JSON.stringify(scenario, null, 1));
+  await page.click('button[data-testid="apply"]');
+  await page.waitForSelector('section[data-testid="result"][data-origin="edited"]', { timeout: TIMEOUT });
+  await page.selectOption('select[data-testid="plan-query"]', 'q1-q2 6-D');
+  await page.waitForFunction(() => !document.querySelector('[data-testid="plan-run"]').disabled, null, { timeout: TIMEOUT });
+  // the editor's JSON box is the field typed into: typing there does not change the scenario
+  // until it is applied, so the run goes on
+  await page.click('[data-testid="plan-run"]');
+  await page.waitForSelector('[data-testid="plan-status"][data-state="running"]', { state: 'attached', timeout: TIMEOUT });
+  // wait until the worker reports progress: the run is under way off the main thread
+  await page.waitForFunction(() => /charts/.test(document.querySelector('[data-testid="plan-status"]').textContent), null, { timeout: TIMEOUT });
+  await recordFrames(page);
+  const states = [];
+  await box.click();
+  await page.keyboard.press('Control+End');
+  const typed = ' typed while planning';
+  await page.keyboard.type(typed, { delay: 20 });
+  states.push(await page.getAttribute('[data-testid="plan-status"]', 'data-state'));
+  const canvas = page.locator('canvas[data-testid="view3d"]');
+  await canvas.scrollIntoViewIfNeeded();
+  const c = await canvas.boundingBox();
+  const drawsBefore = Number(await canvas.getAttribute('data-draws'));
+  // orbit with the left button from an empty corner of the view (no handle there)
+  await page.mouse.move(c.x + 8, c.y + c.height - 8);
+  await page.mouse.down();
+  for (let i = 1; i <= 20; i++) await page.mouse.move(c.x + 8 + 10 * i, c.y + c.height - 8 - 2 * i);
+  await page.mouse.up();
+  states.push(await page.getAttribute('[data-testid="plan-status"]', 'data-state'));
+  const frames = await stopFrames(page);
+  const drawsAfter = Number(await canvas.getAttribute('data-draws'));
+  const text = await box.inputValue();
+  const status = await page.textContent('[data-testid="plan-status"]');
+  if (states.some((s) => s !== 'running')) throw new Error(`the run was not going all along: ${states}; ${status}`);
+  await page.click('[data-testid="plan-cancel"]');
+  await page.waitForSelector('[data-testid="plan-status"][data-state="cancelled"]', { state: 'attached', timeout: TIMEOUT });
+  if (!text.endsWith(typed)) throw new Error(`typed text lost: …${JSON.stringify(text.slice(-40))}`);
+  if (drawsAfter <= drawsBefore) throw new Error('orbiting did not redraw the view');
+  const f = stats(frames);
+  writeFileSync(join(artifacts, 'planning-frames.json'), JSON.stringify(frames));
+  if (f.worst >= FRAME_LIMIT_MS) throw new Error(`worst frame ${f.worst.toFixed(1)} ms while planning (median ${f.median.toFixed(1)} over ${f.n}): ${frames.map((x) => x.toFixed(0)).join(' ')}`);
+  problems.assertNone();
+  return `${status.trim()}; ${f.n} frames while typing and orbiting during the run: median ${f.median.toFixed(1)} ms, worst ${f.worst.toFixed(1)} ms; ${drawsAfter - drawsBefore} redraws`;
+});
+
+await browser.close();
+server.close();
+finish(`screenshots in ${artifacts}`);

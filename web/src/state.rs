@@ -1,0 +1,291 @@
+//! The page's state types, shared by the page (`app`), the analysis area (`workbench`), the
+//! planner driver (`planning`), the view and the plots: values kept in memos and signals. No
+//! components here, so every module can use them without importing another's components.
+
+use std::sync::Arc;
+
+use cablenav::model::Pose;
+use cablenav::report::VerifyReport;
+use cablenav::Scenario;
+use leptos::prelude::*;
+
+/// A value shared by reference inside a memo; two are equal only if they are the same
+/// computation, so the core's types need not implement `PartialEq`.
+#[derive(Debug)]
+pub struct Shared<T>(pub Arc<T>);
+
+impl<T> Clone for Shared<T> {
+    fn clone(&self) -> Self {
+        Shared(Arc::clone(&self.0))
+    }
+}
+
+impl<T> PartialEq for Shared<T> {
+    fn eq(&self, other: &Self) -> bool {
+        Arc::ptr_eq(&self.0, &other.0)
+    }
+}
+
+impl<T> Shared<T> {
+    /// Shares `value`.
+    pub fn new(value: T) -> Self {
+        Shared(Arc::new(value))
+    }
+}
+
+/// The core's reading of the scenario (or why it cannot be read).
+pub type Parsed = Shared<Result<Scenario, String>>;
+/// The selected trajectory's verification (`None`: no trajectory).
+pub type Verified = Shared<Option<Result<VerifyReport, String>>>;
+
+/// A path found by the planner, as the page keeps it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Planned {
+    /// The query's name.
+    pub query: String,
+    /// Its start pose.
+    pub start: Pose,
+    /// Its goal pose.
+    pub goal: Pose,
+    /// The path's poses, start to goal (the lattice planner's smoothed trajectory, sampled).
+    pub poses: Vec<Pose>,
+    /// The lattice planner's A* polyline, drawn beside the smoothed path (empty for the atlas).
+    pub polyline: Vec<Pose>,
+}
+
+/// Which path the animation, the plots and the exports follow.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Follow {
+    /// The selected trajectory.
+    Trajectory,
+    /// The planned path.
+    Planned,
+}
+
+
+/// The scenario as the page holds it at one moment: its JSON text and where it came from (a
+/// preset's id, or `"edited"`). What undo and redo restore.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Snapshot {
+    /// The scenario JSON, exactly as the page analyses it.
+    pub source: String,
+    /// A preset id, or `"edited"`.
+    pub origin: &'static str,
+}
+
+/// Undo and redo over whole scenarios: every change of the page's scenario is one step, except
+/// inside a batch (a drag in the 3-D view), which is one step however many changes it makes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct History {
+    past: Vec<Snapshot>,
+    current: Snapshot,
+    future: Vec<Snapshot>,
+    /// Inside a batch: whether its first change has been recorded.
+    batch: Option<bool>,
+}
+
+impl History {
+    /// Steps kept to undo (the oldest are dropped first).
+    pub const LIMIT: usize = 200;
+
+    /// A history whose present is `current`, with nothing to undo or redo.
+    pub fn new(current: Snapshot) -> History {
+        History { past: Vec::new(), current, future: Vec::new(), batch: None }
+    }
+
+    /// The page's scenario became `next`: the present becomes a step to undo (once per batch)
+    /// and nothing is left to redo. No step when `next` is the present (an undo being applied).
+    pub fn record(&mut self, next: Snapshot) {
+        if next == self.current {
+            return;
+        }
+        let old = std::mem::replace(&mut self.current, next);
+        match self.batch {
+            Some(true) => {}
+            batch => {
+                self.past.push(old);
+                if self.past.len() > Self::LIMIT {
+                    self.past.remove(0);
+                }
+                if batch.is_some() {
+                    self.batch = Some(true);
+                }
+            }
+        }
+        self.future.clear();
+    }
+
+    /// Starts a batch: the changes until [`History::end_batch`] undo as one step.
+    pub fn begin_batch(&mut self) {
+        self.batch = Some(false);
+    }
+
+    /// Ends the batch.
+    pub fn end_batch(&mut self) {
+        self.batch = None;
+    }
+
+    /// The scenario before the present, which becomes the present; `None` if there is none.
+    pub fn undo(&mut self) -> Option<Snapshot> {
+        let prev = self.past.pop()?;
+        self.future.push(std::mem::replace(&mut self.current, prev));
+        Some(self.current.clone())
+    }
+
+    /// The scenario undone last, which becomes the present again; `None` if there is none.
+    pub fn redo(&mut self) -> Option<Snapshot> {
+        let next = self.future.pop()?;
+        self.past.push(std::mem::replace(&mut self.current, next));
+        Some(self.current.clone())
+    }
+
+    /// Steps there are to undo.
+    pub fn undo_depth(&self) -> usize {
+        self.past.len()
+    }
+
+    /// Steps there are to redo.
+    pub fn redo_depth(&self) -> usize {
+        self.future.len()
+    }
+}
+
+/// Undo and redo of the page's scenario: a [`History`] kept in step with `source` and `origin`.
+#[derive(Clone, Copy)]
+pub struct Undo {
+    history: StoredValue<History>,
+    /// Steps to undo and to redo, for the buttons.
+    pub depth: RwSignal<(usize, usize)>,
+    /// The page's scenario JSON.
+    pub source: RwSignal<String>,
+    origin: RwSignal<&'static str>,
+    preset: RwSignal<usize>,
+}
+
+impl Undo {
+    /// Starts recording every change of `source`/`origin` as a step.
+    pub fn new(source: RwSignal<String>, origin: RwSignal<&'static str>, preset: RwSignal<usize>) -> Undo {
+        let first = Snapshot { source: source.get_untracked(), origin: origin.get_untracked() };
+        let u = Undo { history: StoredValue::new(History::new(first)), depth: RwSignal::new((0, 0)), source, origin, preset };
+        Effect::new(move |_| {
+            let now = Snapshot { source: source.get(), origin: origin.get() };
+            u.history.update_value(|h| h.record(now));
+            u.sync();
+        });
+        u
+    }
+
+    fn sync(&self) {
+        let d = self.history.with_value(|h| (h.undo_depth(), h.redo_depth()));
+        if self.depth.get_untracked() != d {
+            self.depth.set(d);
+        }
+    }
+
+    fn restore(&self, s: Option<Snapshot>) {
+        let Some(s) = s else { return };
+        if let Some(i) = crate::presets::find(s.origin) {
+            self.preset.set(i);
+        }
+        self.origin.set(s.origin);
+        self.source.set(s.source);
+        self.sync();
+    }
+
+    /// Goes back one step.
+    pub fn undo(&self) {
+        self.restore(self.history.try_update_value(|h| h.undo()).flatten());
+    }
+
+    /// Goes forward one step.
+    pub fn redo(&self) {
+        self.restore(self.history.try_update_value(|h| h.redo()).flatten());
+    }
+
+    /// Until [`Undo::end_batch`], changes are one step (a drag).
+    pub fn begin_batch(&self) {
+        self.history.update_value(History::begin_batch);
+    }
+
+    /// Ends a batch.
+    pub fn end_batch(&self) {
+        self.history.update_value(History::end_batch);
+    }
+}
+
+/// The page's shared state, passed to the workbench and its parts (a copyable bundle of
+/// signals and memos).
+#[derive(Clone, Copy)]
+pub struct PageState {
+    /// The core's reading of the scenario.
+    pub parsed: Memo<Parsed>,
+    /// The selected trajectory's verification.
+    pub verified: Memo<Verified>,
+    /// The selected trajectory's index.
+    pub trajectory: RwSignal<usize>,
+    /// The path the planner found for the current scenario, if any.
+    pub planned: RwSignal<Option<Shared<Planned>>>,
+    /// The scenario JSON being analysed.
+    pub source: RwSignal<String>,
+    /// Where `source` came from: a preset's id, or `"edited"`.
+    pub origin: RwSignal<&'static str>,
+    /// Undo and redo of `source`.
+    pub history: Undo,
+}
+
+/// The strip's boundary the user points at (hover, focus or tap), if any: the 3-D view shows the
+/// platform there with the clearance tubes of the boundary's constraint. Provided as context by
+/// the workbench, read by the strip's ticks.
+#[derive(Clone, Copy)]
+pub struct Focus(pub RwSignal<Option<crate::logic::Tick>>);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn snap(s: &str) -> Snapshot {
+        Snapshot { source: s.to_string(), origin: "edited" }
+    }
+
+    #[test]
+    fn undo_and_redo_walk_the_steps_exactly() {
+        let mut h = History::new(Snapshot { source: "a".into(), origin: "cdpr7" });
+        h.record(snap("b"));
+        h.record(snap("c"));
+        assert_eq!(h.undo(), Some(snap("b")));
+        assert_eq!(h.undo(), Some(Snapshot { source: "a".into(), origin: "cdpr7" }), "the origin comes back too");
+        assert_eq!(h.undo(), None);
+        assert_eq!(h.redo(), Some(snap("b")));
+        h.record(snap("b")); // the page applying the redo: no new step
+        assert_eq!((h.undo_depth(), h.redo_depth()), (1, 1));
+        h.record(snap("d"));
+        assert_eq!(h.redo(), None, "a new change drops what was undone");
+        assert_eq!(h.undo(), Some(snap("b")));
+    }
+
+    #[test]
+    fn a_batch_is_one_step() {
+        let mut h = History::new(snap("a"));
+        h.begin_batch();
+        for s in ["b", "c", "d"] {
+            h.record(snap(s));
+        }
+        h.end_batch();
+        h.record(snap("e"));
+        assert_eq!(h.undo(), Some(snap("d")));
+        assert_eq!(h.undo(), Some(snap("a")), "the drag undoes at once");
+        let mut empty = History::new(snap("a"));
+        empty.begin_batch();
+        empty.end_batch();
+        assert_eq!(empty.undo(), None, "a batch without changes is no step");
+    }
+
+    #[test]
+    fn the_oldest_steps_are_dropped() {
+        let mut h = History::new(snap("0"));
+        for k in 1..=History::LIMIT + 5 {
+            h.record(snap(&k.to_string()));
+        }
+        assert_eq!(h.undo_depth(), History::LIMIT);
+    }
+}

@@ -1,0 +1,98 @@
+//! The page's side: starting a worker for a job and receiving its replies. Each job gets its own
+//! worker (the browser keeps the compiled module cached), so cancelling is terminating it: the
+//! page never waits for a planner to notice a flag.
+
+use super::protocol::{decode_reply, encode_job, Job, Reply};
+use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
+
+/// A job running in its worker; dropping it (or [`Running::cancel`]) terminates the worker.
+pub struct Running {
+    worker: web_sys::Worker,
+    script_url: String,
+    _onmessage: Closure<dyn FnMut(web_sys::MessageEvent)>,
+    _onerror: Closure<dyn FnMut(web_sys::Event)>,
+}
+
+impl Running {
+    /// Stops the job now.
+    pub fn cancel(&self) {
+        self.worker.terminate();
+    }
+}
+
+impl Drop for Running {
+    fn drop(&mut self) {
+        self.worker.terminate();
+        let _ = web_sys::Url::revoke_object_url(&self.script_url);
+    }
+}
+
+/// Drops `run` after the current event (a worker's message handler may not drop itself).
+pub fn retire(run: Running) {
+    leptos::prelude::set_timeout(move || drop(run), std::time::Duration::ZERO);
+}
+
+/// How many workers to use for work that splits (slice rows): the machine's logical cores,
+/// at least 1 and at most 8.
+pub fn parallelism() -> usize {
+    web_sys::window().map_or(1.0, |w| w.navigator().hardware_concurrency()).clamp(1.0, 8.0) as usize
+}
+
+/// The absolute URL of the page's JS module, from the preload link that both builds write into
+/// the page (`<link rel="modulepreload">`).
+fn module_url() -> Result<String, String> {
+    let doc = web_sys::window().and_then(|w| w.document()).ok_or("no document")?;
+    let base = doc.base_uri().ok().flatten().ok_or("no base URI")?;
+    let rel = doc
+        .query_selector("link[rel=modulepreload][href$='.js']")
+        .ok()
+        .flatten()
+        .and_then(|e| e.get_attribute("href"))
+        .ok_or("the page has no modulepreload link to start a worker from")?;
+    web_sys::Url::new_with_base(&rel, &base).map(|u| u.href()).map_err(|_| format!("bad URL {rel}"))
+}
+
+/// Starts `job` in a new worker; `on_reply` gets its replies (the last one final: not
+/// [`Reply::Progress`]). A worker that fails to start or crashes gives a [`Reply::Failed`].
+pub fn start(job: &Job, mut on_reply: impl FnMut(Reply) + 'static) -> Result<Running, String> {
+    let js = module_url()?;
+    // the page's module, started again from the page's compiled wasm module (posted first, so the
+    // worker neither fetches nor compiles it again): `main` finds no window and serves jobs
+    let source = format!("import init from {js:?};\nself.onmessage = (e) => {{ self.onmessage = null; init({{ module_or_path: e.data }}); }};\n");
+    let parts = js_sys::Array::of1(&JsValue::from_str(&source));
+    let kind = web_sys::BlobPropertyBag::new();
+    kind.set_type("text/javascript");
+    let blob = web_sys::Blob::new_with_str_sequence_and_options(&parts, &kind).map_err(|e| format!("{e:?}"))?;
+    let script_url = web_sys::Url::create_object_url_with_blob(&blob).map_err(|e| format!("{e:?}"))?;
+    let options = web_sys::WorkerOptions::new();
+    options.set_type(web_sys::WorkerType::Module);
+    let worker = web_sys::Worker::new_with_options(&script_url, &options).map_err(|e| format!("cannot start a worker: {e:?}"))?;
+
+    let message = JsValue::from_str(&encode_job(1, job));
+    let (w, failed) = (worker.clone(), std::rc::Rc::new(std::cell::Cell::new(false)));
+    let on_error_failed = failed.clone();
+    let reply = std::rc::Rc::new(std::cell::RefCell::new(move |r: Reply| on_reply(r)));
+    let reply2 = reply.clone();
+    let onmessage = Closure::<dyn FnMut(web_sys::MessageEvent)>::new(move |ev: web_sys::MessageEvent| {
+        let text = ev.data().as_string().unwrap_or_default();
+        match decode_reply(&text) {
+            None => {
+                let _ = w.post_message(&message);
+            }
+            Some(Ok(envelope)) => (reply.borrow_mut())(envelope.body),
+            Some(Err(e)) => (reply.borrow_mut())(Reply::Failed { error: format!("bad reply from the worker: {e}") }),
+        }
+    });
+    let onerror = Closure::<dyn FnMut(web_sys::Event)>::new(move |ev: web_sys::Event| {
+        if on_error_failed.replace(true) {
+            return;
+        }
+        let why = ev.dyn_ref::<web_sys::ErrorEvent>().map_or_else(|| "the worker failed".to_string(), |e| e.message());
+        (reply2.borrow_mut())(Reply::Failed { error: format!("worker: {why}") });
+    });
+    worker.set_onmessage(Some(onmessage.as_ref().unchecked_ref()));
+    worker.set_onerror(Some(onerror.as_ref().unchecked_ref()));
+    worker.post_message(&wasm_bindgen::module()).map_err(|e| format!("cannot send the module to the worker: {e:?}"))?;
+    Ok(Running { worker, script_url, _onmessage: onmessage, _onerror: onerror })
+}

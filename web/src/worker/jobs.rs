@@ -1,0 +1,235 @@
+//! Running a [`Job`] to its end, reporting [`Reply`]s as it goes: plain Rust over the core,
+//! tested natively (the worker calls [`run`]; so do the tests).
+
+use super::protocol::{pose_to_wire, Job, Reply};
+use crate::logic::fmt_num;
+use cablenav::model::{Coord, Pose};
+use cablenav::plan::choice::{self, Details, PathPlanner, PlanResult, PlannerKind, PlannerOptions, Progress};
+use cablenav::plan::{PathPose, PlanStatus};
+use nalgebra::{Quaternion, UnitQuaternion};
+use cablenav::Scenario;
+
+/// Milliseconds of work between two progress replies.
+pub const PROGRESS_MS: f64 = 50.0;
+
+/// Poses sampled along a planned trajectory for the page's view and plots (the lattice planner's
+/// smoothed pieces; the atlas' path is sent as its own poses).
+const PATH_SAMPLES: usize = 200;
+
+/// How a planning run ended, as the page shows it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Finished {
+    /// `found`, `no_path`, `budget` or `unrepaired`.
+    pub status: &'static str,
+    /// One line for people.
+    pub summary: String,
+    /// The path, start to goal (empty when there is none).
+    pub path: Vec<Pose>,
+    /// The lattice planner's A* polyline (empty for the atlas).
+    pub polyline: Vec<Pose>,
+}
+
+/// The core's planner kind for a page planner id (of [`crate::planning::PLANNERS`]).
+pub fn kind_of(id: &str) -> Option<PlannerKind> {
+    match id {
+        "continuation" => Some(PlannerKind::Atlas),
+        "ray-lattice" => Some(PlannerKind::Lattice),
+        _ => None,
+    }
+}
+
+/// The planner `id` set up for query `query`, behind the core's common interface.
+pub fn planner(id: &str, s: &Scenario, query: &str, max_charts: usize) -> Result<Box<dyn PathPlanner>, String> {
+    let kind = kind_of(id).ok_or_else(|| format!("the planner “{id}” is not available"))?;
+    let mut options = PlannerOptions::new(kind);
+    options.atlas.max_charts = max_charts;
+    choice::planner(s, query, &options).map_err(|e| e.to_string())
+}
+
+/// The status's name, as the CLI's JSON spells it.
+fn status_name(s: PlanStatus) -> &'static str {
+    match s {
+        PlanStatus::Found => "found",
+        PlanStatus::NoPath => "no_path",
+        PlanStatus::Budget => "budget",
+        PlanStatus::Unrepaired => "unrepaired",
+    }
+}
+
+/// One line describing a result.
+pub fn summary(r: &PlanResult) -> String {
+    match &r.details {
+        Details::Atlas(o) => {
+            let v = &o.verification;
+            match o.status {
+                PlanStatus::Found => format!(
+                    "Path found: {} poses, {} charts. Re-verified: {} edge(s), {} infeasible and {} uncertain section(s); {} of {} poses wrench-infeasible{}.",
+                    o.path.len(),
+                    o.charts,
+                    v.edges,
+                    v.infeasible_sections,
+                    v.uncertain_sections,
+                    v.wrench_infeasible_poses,
+                    v.wrench_poses,
+                    v.least_wrench_margin.map_or(String::new(), |m| format!(", least wrench margin {}", fmt_num(m)))
+                ),
+                PlanStatus::NoPath => format!("No path at this resolution: the start's component was exhausted after {} charts.", o.charts),
+                PlanStatus::Budget => format!("Chart budget exhausted after {} charts: nothing is claimed.", o.charts),
+                PlanStatus::Unrepaired => "The path could not be verified feasible everywhere.".to_string(),
+            }
+        }
+        Details::Lattice(l) => match l.status {
+            PlanStatus::Found | PlanStatus::Unrepaired => format!(
+                "{}. A* polyline: {} points; smoothed into {} piece(s) after {} repair(s); {} rays, {} component(s).",
+                capitalised(&l.message),
+                l.polyline.len(),
+                l.pieces,
+                l.repairs,
+                l.rays,
+                l.components
+            ),
+            _ => format!("{}.", capitalised(&l.message)),
+        },
+    }
+}
+
+fn capitalised(s: &str) -> String {
+    let mut c = s.chars();
+    c.next().map_or(String::new(), |f| f.to_uppercase().chain(c).collect())
+}
+
+/// What the page shows of a result: the atlas' path poses, or the lattice planner's smoothed
+/// trajectory at [`PATH_SAMPLES`] + 1 poses with its A* polyline.
+pub fn finished(r: &PlanResult) -> Finished {
+    let (path, polyline) = match (&r.details, &r.trajectory) {
+        (_, None) => (vec![], vec![]),
+        (Details::Atlas(o), Some(_)) => (o.path.iter().map(path_pose).collect(), vec![]),
+        (Details::Lattice(l), Some(traj)) => (
+            (0..=PATH_SAMPLES).map(|k| traj.pose_at(k as f64 / PATH_SAMPLES as f64)).collect(),
+            l.polyline.iter().map(|&c| Pose::from_coords(c)).collect(),
+        ),
+    };
+    Finished { status: status_name(r.status), summary: summary(r), path, polyline }
+}
+
+/// The pose a report's path pose states, bit for bit (its quaternion is a unit quaternion's
+/// coordinates, taken as they are rather than normalised again).
+fn path_pose(p: &PathPose) -> Pose {
+    let [w, i, j, k] = p.quaternion;
+    Pose { position: p.position.into(), rotation: UnitQuaternion::new_unchecked(Quaternion::new(w, i, j, k)) }
+}
+
+/// Progress as a fraction for the bar, never going back, below 1 until the end.
+pub fn fraction(p: &Progress, shown: f64) -> f64 {
+    if p.done.is_some() {
+        return 1.0;
+    }
+    p.fraction.clamp(0.0, 0.99).max(shown)
+}
+
+/// Runs `job` to its end: progress replies at most every [`PROGRESS_MS`] of work (by `now`, in
+/// ms), then the final reply.
+pub fn run(job: Job, report: &mut dyn FnMut(Reply), now: fn() -> f64) {
+    let last = match job {
+        Job::Plan { scenario, query, planner: id, max_charts } => plan(&scenario, &query, &id, max_charts, report, now),
+        Job::Slice { scenario, pose, axes, res, range, rows } => slice_rows(&scenario, &pose, &axes, res, range, rows),
+    };
+    report(last.unwrap_or_else(|error| Reply::Failed { error }));
+}
+
+fn scenario(json: &str) -> Result<Scenario, String> {
+    Scenario::from_json(json).map_err(|e| e.to_string())
+}
+
+fn plan(json: &str, query: &str, id: &str, max_charts: usize, report: &mut dyn FnMut(Reply), now: fn() -> f64) -> Result<Reply, String> {
+    let s = scenario(json)?;
+    let mut p = planner(id, &s, query, max_charts)?;
+    let started = now();
+    let mut shown = 0.0;
+    let mut since = started;
+    loop {
+        let step = p.step(1);
+        shown = fraction(&step, shown);
+        if step.done.is_some() {
+            report(Reply::Progress { fraction: shown, detail: step.stage });
+            break;
+        }
+        if now() - since >= PROGRESS_MS {
+            report(Reply::Progress { fraction: shown, detail: step.stage });
+            since = now();
+        }
+    }
+    let r = p.result((now() - started) / 1000.0).ok_or("the planner ended without a result")?;
+    let f = finished(&r);
+    Ok(Reply::Planned { status: f.status.to_string(), summary: f.summary, path: f.path.iter().map(pose_to_wire).collect(), polyline: f.polyline.iter().map(pose_to_wire).collect() })
+}
+
+fn slice_rows(json: &str, pose: &str, axes: &[String; 2], res: usize, range: [[f64; 2]; 2], rows: [usize; 2]) -> Result<Reply, String> {
+    let s = scenario(json)?;
+    let coord = |n: &str| Coord::parse(n).ok_or_else(|| format!("unknown coordinate “{n}”"));
+    let axes = [coord(&axes[0])?, coord(&axes[1])?];
+    let classes = cablenav::verify::slice::slice_rows(&s, pose, axes, res, range, rows[0]..rows[1]).map_err(|e| e.to_string())?;
+    Ok(Reply::Sliced { rows, classes })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::presets::{find, PRESETS};
+
+    fn clock() -> f64 {
+        0.0
+    }
+
+    #[test]
+    fn the_bar_only_moves_forward() {
+        let step = |fraction: f64, done: bool| Progress { stage: String::new(), fraction, done: done.then_some(PlanStatus::Found) };
+        assert_eq!(fraction(&step(0.0, false), 0.0), 0.0);
+        assert_eq!(fraction(&step(0.5, false), 0.0), 0.5);
+        assert_eq!(fraction(&step(0.25, false), 0.5), 0.5, "a worse front does not move it back");
+        assert_eq!(fraction(&step(1.0, false), 0.5), 0.99, "full only when done");
+        assert_eq!(fraction(&step(0.3, true), 0.5), 1.0);
+    }
+
+    #[test]
+    fn a_plan_job_finds_robocrane_q1_q2_and_ends_at_the_query() {
+        let json = PRESETS[find("robocrane").unwrap()].json;
+        let mut replies = vec![];
+        run(Job::Plan { scenario: json.into(), query: "q1-q2".into(), planner: "continuation".into(), max_charts: 20_000 }, &mut |r| replies.push(r), clock);
+        let Some(Reply::Planned { status, summary, path, polyline }) = replies.last() else { panic!("{replies:?}") };
+        assert!(polyline.is_empty(), "the atlas has no A* polyline");
+        assert_eq!(status, "found");
+        assert!(summary.starts_with("Path found:"), "{summary}");
+        let s = Scenario::from_json(json).unwrap();
+        assert_eq!(super::super::protocol::pose_from_wire(&path[0]), *s.pose("q1").unwrap());
+        assert_eq!(super::super::protocol::pose_from_wire(path.last().unwrap()), *s.pose("q2").unwrap());
+        let bar: Vec<f64> = replies.iter().filter_map(|r| if let Reply::Progress { fraction, .. } = r { Some(*fraction) } else { None }).collect();
+        assert!(bar.windows(2).all(|w| w[0] <= w[1]) && bar.last() == Some(&1.0), "{bar:?}");
+    }
+
+    #[test]
+    fn a_lattice_plan_job_sends_the_smoothed_path_and_the_polyline() {
+        let json = PRESETS[find("cdpr7-box").unwrap()].json;
+        let mut replies = vec![];
+        run(Job::Plan { scenario: json.into(), query: "over-box".into(), planner: "ray-lattice".into(), max_charts: 1 }, &mut |r| replies.push(r), clock);
+        let Some(Reply::Planned { status, summary, path, polyline }) = replies.last() else { panic!("{replies:?}") };
+        assert_eq!(status, "found", "{summary}");
+        assert_eq!(path.len(), PATH_SAMPLES + 1);
+        assert!(polyline.len() >= 3, "the A* path turns over the box");
+        let s = Scenario::from_json(json).unwrap();
+        let end = |w: &[u64; 7], name: &str| (super::super::protocol::pose_from_wire(w).position - s.pose(name).unwrap().position).norm();
+        assert!(end(&path[0], "box-left") < 1e-12 && end(path.last().unwrap(), "box-right") < 1e-12);
+    }
+
+    #[test]
+    fn bad_jobs_fail_with_a_reason() {
+        let mut replies = vec![];
+        let json = PRESETS[find("robocrane").unwrap()].json.to_string();
+        run(Job::Plan { scenario: json.clone(), query: "q1-q2".into(), planner: "nope".into(), max_charts: 1 }, &mut |r| replies.push(r), clock);
+        run(Job::Plan { scenario: "{".into(), query: "q".into(), planner: "continuation".into(), max_charts: 1 }, &mut |r| replies.push(r), clock);
+        run(Job::Slice { scenario: json, pose: "q1".into(), axes: ["x".into(), "w".into()], res: 4, range: [[0.0, 1.0]; 2], rows: [0, 4] }, &mut |r| replies.push(r), clock);
+        let errors: Vec<&str> = replies.iter().filter_map(|r| if let Reply::Failed { error } = r { Some(error.as_str()) } else { None }).collect();
+        assert_eq!(errors.len(), 3, "{replies:?}");
+        assert!(errors[0].contains("not available") && errors[2].contains("“w”"), "{errors:?}");
+    }
+}

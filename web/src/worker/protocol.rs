@@ -1,0 +1,133 @@
+//! The messages between the page and its workers: a [`Job`] goes in (with an id), [`Reply`]s
+//! come out (with the same id): any number of [`Reply::Progress`], then one final reply. All are
+//! JSON text, so that a job is a plain value and the protocol is tested natively.
+
+use cablenav::model::Pose;
+use cablenav::verify::slice::Class;
+use nalgebra::{Quaternion, UnitQuaternion, Vector3};
+use serde::{Deserialize, Serialize};
+
+/// The message a worker sends once it listens.
+pub const READY: &str = r#"{"ready":true}"#;
+
+/// Work for a worker.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Job {
+    /// Plan query `query` of the scenario JSON `scenario` with planner `planner` (an id of
+    /// [`crate::planning::PLANNERS`]), at most `max_charts` charts (or the planner's own budget).
+    Plan { scenario: String, query: String, planner: String, max_charts: usize },
+    /// The slice map over `axes` (coordinate names) of `range`, `res` cells a side, the other
+    /// coordinates from pose `pose`; rows `rows[0]..rows[1]` of it (all: `[0, res]`).
+    Slice {
+        scenario: String,
+        pose: String,
+        axes: [String; 2],
+        res: usize,
+        #[serde(with = "bits")]
+        range: [[f64; 2]; 2],
+        rows: [usize; 2],
+    },
+}
+
+/// What a worker answers.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Reply {
+    /// How far the job is: a fraction in [0, 1] (never going back) and a line for people.
+    Progress { fraction: f64, detail: String },
+    /// A planning run ended: its status (`found`, `no_path`, `budget`, `unrepaired`), a summary,
+    /// the path (when there is one) as poses (see [`pose_to_wire`]) and the lattice planner's A*
+    /// polyline (empty for the atlas).
+    Planned { status: String, summary: String, path: Vec<[u64; 7]>, polyline: Vec<[u64; 7]> },
+    /// A slice map's rows `rows[0]..rows[1]`: their cells' classes, row-major.
+    Sliced { rows: [usize; 2], classes: Vec<Class> },
+    /// The job could not run; why.
+    Failed { error: String },
+}
+
+/// A message: a job or a reply, and the id that pairs them.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Envelope<T> {
+    /// Chosen by the host, echoed by the worker.
+    pub id: u32,
+    /// The job or reply.
+    pub body: T,
+}
+
+/// A job message.
+pub fn encode_job(id: u32, job: &Job) -> String {
+    serde_json::to_string(&Envelope { id, body: job }).unwrap_or_default()
+}
+
+/// Reads a job message.
+pub fn decode_job(text: &str) -> Result<Envelope<Job>, String> {
+    serde_json::from_str(text).map_err(|e| e.to_string())
+}
+
+/// A reply message.
+pub fn encode_reply(id: u32, reply: &Reply) -> String {
+    serde_json::to_string(&Envelope { id, body: reply }).unwrap_or_default()
+}
+
+/// Reads a worker's message: `None` for the ready message, else the reply or why it is not one.
+pub fn decode_reply(text: &str) -> Option<Result<Envelope<Reply>, String>> {
+    (text != READY).then(|| serde_json::from_str(text).map_err(|e| e.to_string()))
+}
+
+/// A pose as the bits of `[x, y, z, qw, qx, qy, qz]` (JSON integers cross exactly; JSON
+/// decimals may not come back to the same last bit).
+pub fn pose_to_wire(p: &Pose) -> [u64; 7] {
+    let q = p.quaternion();
+    [p.position.x, p.position.y, p.position.z, q[0], q[1], q[2], q[3]].map(f64::to_bits)
+}
+
+/// The pose sent by [`pose_to_wire`], bit for bit (the quaternion is not renormalised).
+pub fn pose_from_wire(w: &[u64; 7]) -> Pose {
+    let w = w.map(f64::from_bits);
+    Pose {
+        position: Vector3::new(w[0], w[1], w[2]),
+        rotation: UnitQuaternion::new_unchecked(Quaternion::new(w[3], w[4], w[5], w[6])),
+    }
+}
+
+/// Numbers that must cross exactly, sent as their bits.
+mod bits {
+    use serde::{Deserialize, Deserializer, Serializer};
+
+    pub fn serialize<S: Serializer>(v: &[[f64; 2]; 2], s: S) -> Result<S::Ok, S::Error> {
+        s.collect_seq(v.iter().map(|r| r.map(f64::to_bits)))
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<[[f64; 2]; 2], D::Error> {
+        Ok(<[[u64; 2]; 2]>::deserialize(d)?.map(|r| r.map(f64::from_bits)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn jobs_and_replies_round_trip_as_json() {
+        let job = Job::Plan { scenario: "{}".into(), query: "q1-q2".into(), planner: "continuation".into(), max_charts: 7 };
+        let text = encode_job(3, &job);
+        assert!(text.contains(r#""kind":"plan""#), "{text}");
+        assert_eq!(decode_job(&text), Ok(Envelope { id: 3, body: job }));
+        let reply = Reply::Sliced { rows: [0, 2], classes: vec![Class::Feasible, Class::Singular] };
+        assert_eq!(decode_reply(&encode_reply(9, &reply)), Some(Ok(Envelope { id: 9, body: reply })));
+        assert_eq!(decode_reply(READY), None);
+        let slice = Job::Slice { scenario: "{}".into(), pose: "q1".into(), axes: ["x".into(), "y".into()], res: 4, range: [[0.1, 2.0 / 3.0], [-1e-300, 7.0]], rows: [0, 4] };
+        assert_eq!(decode_job(&encode_job(1, &slice)).unwrap().body, slice, "the range crosses bit for bit");
+        assert!(decode_job(r#"{"id":1,"body":{"kind":"dance"}}"#).is_err());
+    }
+
+    #[test]
+    fn poses_cross_bit_for_bit() {
+        let p = Pose::from_tilt_torsion(Vector3::new(0.1, -2.0 / 3.0, 1e-17), [0.3, 1.1, -2.9]);
+        let wire = pose_to_wire(&p);
+        let text = serde_json::to_string(&wire).unwrap();
+        let back = pose_from_wire(&serde_json::from_str(&text).unwrap());
+        assert_eq!(back, p);
+    }
+}
