@@ -395,15 +395,6 @@ fn timed<T>(f: impl FnOnce() -> T) -> (T, f64) {
     }
 }
 
-fn status_name(s: PlanStatus) -> &'static str {
-    match s {
-        PlanStatus::Found => "found",
-        PlanStatus::NoPath => "no_path",
-        PlanStatus::Budget => "budget",
-        PlanStatus::Unrepaired => "unrepaired",
-    }
-}
-
 fn lattice_text(r: &LatticeReport) -> String {
     let axes: Vec<String> = r.axes.iter().zip(&r.ranges).zip(&r.steps).map(|((a, g), n)| format!("{a} ∈ [{}, {}] ({n} values)", g[0], g[1])).collect();
     let mut out = format!("lattice over {}: {} rays, {} feasible pieces, {} component(s)\n", axes.join(", "), r.rays.len(), r.pieces, r.components);
@@ -428,7 +419,7 @@ fn lattice_text(r: &LatticeReport) -> String {
 }
 
 fn lattice_plan_text(r: &LatticePlanReport) -> String {
-    let mut out = format!("plan {} (lattice): {} ({:.3} s)\n  {}\n", r.query, status_name(r.status), r.seconds, r.message);
+    let mut out = format!("plan {} (lattice): {} ({:.3} s)\n  {}\n", r.query, r.status.name(), r.seconds, r.message);
     out += &format!(
         "  lattice: {} rays, {} component(s); {} of {} segments to cell corners verified; A* expanded {} points\n",
         r.rays, r.components, r.segments[0], r.segments[1], r.expanded
@@ -447,7 +438,7 @@ fn lattice_plan_text(r: &LatticePlanReport) -> String {
 }
 
 fn plan_text(r: &PlanReport) -> String {
-    let status = status_name(r.status);
+    let status = r.status.name();
     let (a, p) = (&r.atlas, &r.atlas.params);
     let mut out = format!(
         "plan {}: {status} ({} charts, {}-D, {:.3} s; r = {}, ε = {}, δ = {}, κ = {}, margins ≥ {}, ≤ {} charts)\n",

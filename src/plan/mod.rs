@@ -111,6 +111,18 @@ pub enum PlanStatus {
     Unrepaired,
 }
 
+impl PlanStatus {
+    /// The name reports use (as it serialises): `found`, `no_path`, `budget`, `unrepaired`.
+    pub fn name(self) -> &'static str {
+        match self {
+            PlanStatus::Found => "found",
+            PlanStatus::NoPath => "no_path",
+            PlanStatus::Budget => "budget",
+            PlanStatus::Unrepaired => "unrepaired",
+        }
+    }
+}
+
 /// Progress of a running planner.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct PlanProgress {

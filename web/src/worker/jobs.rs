@@ -46,16 +46,6 @@ pub fn planner(id: &str, s: &Scenario, query: &str, max_charts: usize) -> Result
     choice::planner(s, query, &options).map_err(|e| e.to_string())
 }
 
-/// The status's name, as the CLI's JSON spells it.
-fn status_name(s: PlanStatus) -> &'static str {
-    match s {
-        PlanStatus::Found => "found",
-        PlanStatus::NoPath => "no_path",
-        PlanStatus::Budget => "budget",
-        PlanStatus::Unrepaired => "unrepaired",
-    }
-}
-
 /// One line describing a result.
 pub fn summary(r: &PlanResult) -> String {
     match &r.details {
@@ -109,7 +99,7 @@ pub fn finished(r: &PlanResult) -> Finished {
             l.polyline.iter().map(|&c| Pose::from_coords(c)).collect(),
         ),
     };
-    Finished { status: status_name(r.status), summary: summary(r), path, polyline }
+    Finished { status: r.status.name(), summary: summary(r), path, polyline }
 }
 
 /// The pose a report's path pose states, bit for bit (its quaternion is a unit quaternion's
