@@ -96,6 +96,14 @@ impl Condition for CableShape {
         format!("cable {} - {}", self.cable + 1, self.name)
     }
 
+    fn costly(&self) -> bool {
+        match self.geom {
+            Geom::Cylinder { .. } => true,
+            Geom::Cone { .. } | Geom::Ellipsoid { .. } => self.clearance > 0.0,
+            Geom::Mesh { .. } | Geom::Sphere { .. } => false,
+        }
+    }
+
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let cable = &sweep.cables[self.cable];
         let undecided = cable.tube.undecided_in(&self.bound);

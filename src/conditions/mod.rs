@@ -63,6 +63,11 @@ pub struct Sweep {
     pub tension: Option<Rc<TensionPolys>>,
     /// The facet polynomials of robots with more than six cables, built likewise.
     pub facets: Option<Rc<FacetPolys>>,
+    /// Ordered, disjoint λ-intervals where other conditions are already certainly violated (set
+    /// by the caller, kept clear of their ends by a margin): a condition may leave itself
+    /// undecided (`Unknown`) there instead of doing exact work whose answer cannot change the
+    /// union, nor the constraints active at its boundaries.
+    pub settled: Vec<(f64, f64)>,
 }
 
 impl Sweep {
@@ -86,30 +91,36 @@ impl Sweep {
                 SweptCable { base: cable.base, s, tube }
             })
             .collect();
-        Sweep { alg: Alg::new(w), cables, tol, motion: motion.clone(), tension: None, facets: None }
+        Sweep { alg: Alg::new(w), cables, tol, motion: motion.clone(), tension: None, facets: None, settled: Vec::new() }
     }
 }
 
 /// The violation set of a condition that the tube pruning decided outside `undecided` (ordered,
-/// disjoint λ-intervals): `False` there, and on each undecided interval what `exact` finds on the
-/// motion restricted to it — the powers of the restricted w, that w, the restricted cable vectors
-/// s of `cables` (in that order), and the tolerance in the local parameter — mapped back. Exact
-/// work is thus done only where the pruning could not decide.
+/// disjoint λ-intervals): `False` there, `Unknown` where the sweep's `settled` intervals spare the
+/// work, and on each remaining interval what `exact` finds on the motion restricted to it — the
+/// powers of the restricted w, that w, the restricted cable vectors s of `cables` (in that order),
+/// and the tolerance in the local parameter — mapped back. Exact work is thus done only where the
+/// pruning could not decide and the answer matters.
 pub fn on_undecided(
     sweep: &mut Sweep,
     undecided: &[(f64, f64)],
     cables: &[usize],
     mut exact: impl FnMut(&mut Alg, &Bern, &[&HVec], f64) -> Partition,
 ) -> Partition {
-    if let [(a, b)] = undecided {
-        if *a <= 0.0 && *b >= 1.0 {
+    let (work, spared) = subtract(undecided, &sweep.settled);
+    if let [(a, b)] = work[..] {
+        if a <= 0.0 && b >= 1.0 {
             let Sweep { alg, cables: swept, tol, motion, .. } = sweep;
             let s: Vec<&HVec> = cables.iter().map(|&i| &swept[i].s).collect();
             return exact(alg, &motion.weight, &s, *tol);
         }
     }
     let mut out = Partition::constant(Truth::False);
-    for &(a, b) in undecided {
+    let unknown = Partition::constant(Truth::Unknown);
+    for (a, b) in spared {
+        out = out.splice((a, b), &unknown, (a, b));
+    }
+    for (a, b) in work {
         let w = sweep.motion.weight.restrict(a, b);
         let mut alg = Alg::new(&w);
         let s: Vec<HVec> = cables.iter().map(|&i| sweep.cables[i].s.clone().map(|h| algebra::H { p: h.p.restrict(a, b), k: h.k })).collect();
@@ -118,6 +129,27 @@ pub fn on_undecided(
         out = out.splice((a, b), &inner, (a, b));
     }
     out
+}
+
+/// The parts of the ordered, disjoint intervals `from` outside the ordered, disjoint intervals
+/// `minus`, and the parts inside.
+fn subtract(from: &[(f64, f64)], minus: &[(f64, f64)]) -> (Vec<(f64, f64)>, Vec<(f64, f64)>) {
+    let (mut outside, mut inside) = (Vec::new(), Vec::new());
+    for &(a, b) in from {
+        let mut at = a;
+        for &(c, d) in minus.iter().filter(|(c, d)| *d > a && *c < b) {
+            let (c, d) = (c.max(a), d.min(b));
+            if c > at {
+                outside.push((at, c));
+            }
+            inside.push((c, d));
+            at = d;
+        }
+        if at < b {
+            outside.push((at, b));
+        }
+    }
+    (outside, inside)
 }
 
 /// The outcome of a condition at one pose.
@@ -187,6 +219,13 @@ pub trait Condition {
 
     /// The set of λ ∈ [0, 1] where the condition is violated along the sweep's motion.
     fn violation(&self, sweep: &mut Sweep) -> Partition;
+
+    /// Whether [`Condition::violation`] is costly (a search in two variables): the verifier
+    /// evaluates such conditions after the others, so that these may leave the parts of the
+    /// motion the others already settled.
+    fn costly(&self) -> bool {
+        false
+    }
 
     /// The condition at one pose, given the cables there.
     fn check(&self, cables: &PoseCables) -> PoseCheck;

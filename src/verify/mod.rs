@@ -33,14 +33,33 @@ fn violation_pieces(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[
         let tol = tol_user / motion.param.max_slope().max(1e-300);
         let mut sweep = Sweep::new(&s.robot, motion, tol);
         let mut union = Partition::constant(Truth::False);
-        for (c, out) in conditions.iter().zip(per.iter_mut()) {
+        // the cheap conditions first: where they already violate, the costly ones may stay undecided
+        let order = conditions.iter().enumerate().filter(|(_, c)| !c.costly()).chain(conditions.iter().enumerate().filter(|(_, c)| c.costly()));
+        let mut found: Vec<Option<Partition>> = vec![None; conditions.len()];
+        for (k, c) in order {
+            if c.costly() {
+                sweep.settled = settled(&union, SETTLED_MARGIN * tol);
+            }
             let v = c.violation(&mut sweep);
             union = union.or(&v);
-            append_mapped(&mut out.pieces, &v, &motion.param);
+            found[k] = Some(v);
+        }
+        for (v, out) in found.iter().zip(per.iter_mut()) {
+            append_mapped(&mut out.pieces, v.as_ref().expect("every condition evaluated"), &motion.param);
         }
         append_mapped(&mut overall, &union, &motion.param);
     }
     (overall, per)
+}
+
+/// How far (in tolerances) the settled intervals keep from the ends of the union's violated
+/// intervals, so that a condition whose own boundary coincides with one of the union's is still
+/// decided there and named as active.
+const SETTLED_MARGIN: f64 = 8.0;
+
+/// The intervals where `union` is certainly violated, each shrunk by `margin` at both ends.
+fn settled(union: &Partition, margin: f64) -> Vec<(f64, f64)> {
+    union.intervals().into_iter().filter(|p| p.2 == Truth::True && p.1 - p.0 > 2.0 * margin).map(|(a, b, _)| (a + margin, b - margin)).collect()
 }
 
 fn append_mapped(out: &mut Vec<Piece>, p: &Partition, param: &Param) {
