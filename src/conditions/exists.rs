@@ -116,45 +116,27 @@ impl VPoly {
     }
 }
 
-/// One strict sign condition on a polynomial in (v, λ): `p > 0` (`positive`) or `p < 0`, with p held
-/// by its tensor Bernstein coefficients on the current box (row i in v, column j in λ, stored row
-/// by row) and one bound on the error of every coefficient.
+/// One strict sign condition: `p > 0` (`positive`) or `p < 0`.
 #[derive(Debug, Clone)]
 pub struct Atom {
-    /// Coefficients in v (rows).
-    nv: usize,
-    /// Coefficients in λ (columns).
-    nl: usize,
-    c: Vec<f64>,
-    err: f64,
+    rows: Vec<Bern>,
     positive: bool,
-}
-
-fn max_abs(c: &[f64]) -> f64 {
-    c.iter().fold(0.0f64, |m, x| m.max(x.abs()))
 }
 
 impl Atom {
     /// `p > 0` when `positive`, else `p < 0`.
     pub fn new(p: &VPoly, positive: bool) -> Atom {
-        let rows = p.rows();
-        let n = rows.iter().map(Bern::degree).max().unwrap_or(0);
-        let mut c = Vec::with_capacity(rows.len() * (n + 1));
-        let mut err = 0.0f64;
-        for r in &rows {
-            let r = r.elevate(n);
-            err = err.max(r.err);
-            c.extend_from_slice(&r.c);
-        }
-        Atom { nv: rows.len(), nl: n + 1, c, err, positive }
+        Atom { rows: p.rows(), positive }
     }
 
-    /// Certified truth on the whole box the coefficients describe.
+    /// Certified truth on the whole box the rows describe.
     fn truth(&self) -> Truth {
         let (mut pos, mut neg) = (true, true);
-        for &x in &self.c {
-            pos &= x > self.err;
-            neg &= x < -self.err;
+        for r in &self.rows {
+            for &c in r.c.iter() {
+                pos &= c > r.err;
+                neg &= c < -r.err;
+            }
             if !pos && !neg {
                 return Truth::Unknown;
             }
@@ -165,112 +147,41 @@ impl Atom {
         }
     }
 
-    /// Whether every coefficient is within twice the error bound of zero.
+    /// Whether every coefficient is within twice its error bound of zero.
     fn blurred(&self) -> bool {
-        max_abs(&self.c) <= 2.0 * self.err
+        self.rows.iter().all(|r| r.max_abs() <= 2.0 * r.err)
     }
 
-    /// The added error bound of one de Casteljau halving along an axis of `n + 1` coefficients
-    /// (as [`Bern::split`] bounds it).
-    fn halving_err(&self, n: usize) -> f64 {
-        (2 * n + 2) as f64 * U * max_abs(&self.c)
-    }
-
-    /// The two halves in v: de Casteljau at 1/2 over the rows, column by column.
+    /// The two halves in v (de Casteljau on the rows).
     fn split_v(&self) -> (Atom, Atom) {
-        let (nv, nl) = (self.nv, self.nl);
-        let err = self.err + self.halving_err(nv - 1);
-        let mut right = self.c.clone();
-        let mut left = vec![0.0; right.len()];
-        left[..nl].copy_from_slice(&right[..nl]);
-        for level in 1..nv {
-            for k in 0..(nv - level) {
-                for j in 0..nl {
-                    right[k * nl + j] = 0.5 * (right[k * nl + j] + right[(k + 1) * nl + j]);
-                }
+        let n = self.rows.len() - 1;
+        let mut b = self.rows.clone();
+        let mut left = Vec::with_capacity(n + 1);
+        let mut right = vec![Bern::constant(0.0); n + 1];
+        left.push(b[0].clone());
+        right[n] = b[n].clone();
+        for level in 1..=n {
+            for k in 0..=(n - level) {
+                b[k] = b[k].add(&b[k + 1]).scale(0.5);
             }
-            left[level * nl..(level + 1) * nl].copy_from_slice(&right[..nl]);
+            left.push(b[0].clone());
+            right[n - level] = b[n - level].clone();
         }
-        (self.with(left, err), self.with(right, err))
+        (Atom { rows: left, positive: self.positive }, Atom { rows: right, positive: self.positive })
     }
 
-    /// The two halves in λ: de Casteljau at 1/2 within every row.
+    /// The two halves in λ.
     fn split_lambda(&self) -> (Atom, Atom) {
-        let nl = self.nl;
-        let err = self.err + self.halving_err(nl - 1);
-        let mut right = self.c.clone();
-        let mut left = vec![0.0; right.len()];
-        for (l, r) in left.chunks_exact_mut(nl).zip(right.chunks_exact_mut(nl)) {
-            l[0] = r[0];
-            for level in 1..nl {
-                for k in 0..(nl - level) {
-                    r[k] = 0.5 * (r[k] + r[k + 1]);
-                }
-                l[level] = r[0];
-            }
-        }
-        (self.with(left, err), self.with(right, err))
-    }
-
-    /// An atom of this one's shape and sign with coefficients `c` and error bound `err`.
-    fn with(&self, c: Vec<f64>, err: f64) -> Atom {
-        Atom { nv: self.nv, nl: self.nl, c, err, positive: self.positive }
+        let (l, r): (Vec<Bern>, Vec<Bern>) = self.rows.iter().map(|p| p.split(0.5)).unzip();
+        (Atom { rows: l, positive: self.positive }, Atom { rows: r, positive: self.positive })
     }
 }
 
 /// A conjunction of atoms.
 pub type Clause = Vec<Atom>;
 
-/// A dyadic v-interval: [index, index + 1] / 2^depth.
-#[derive(Debug, Clone, Copy)]
-struct VBox {
-    index: u64,
-    depth: usize,
-}
-
-impl VBox {
-    /// Whether `other` lies in this box.
-    fn holds(self, other: VBox) -> bool {
-        other.depth >= self.depth && other.index >> (other.depth - self.depth) == self.index
-    }
-
-    fn halves(self) -> (VBox, VBox) {
-        let d = self.depth + 1;
-        (VBox { index: 2 * self.index, depth: d }, VBox { index: 2 * self.index + 1, depth: d })
-    }
-}
-
-/// A v-box of the current strip with the clauses that may still hold on it (atoms already
-/// certainly true there dropped, clauses with a certainly false atom dropped).
-#[derive(Debug, Clone)]
-struct Cell {
-    at: VBox,
-    clauses: Vec<Clause>,
-}
-
-/// The clauses (on the v-box `at`) restricted to each of `boxes` (sorted, inside `at`), appended
-/// to `out` as cells: the shared halvings are done once, walking down the dyadic tree.
-fn onto_cells(clauses: Vec<Clause>, at: VBox, boxes: &[VBox], out: &mut Vec<Cell>) {
-    match boxes {
-        [] => {}
-        [only] if only.depth == at.depth => out.push(Cell { at, clauses }),
-        _ => {
-            let (a, b) = at.halves();
-            let split = boxes.partition_point(|x| a.holds(*x));
-            let (mut left, mut right) = (Vec::with_capacity(clauses.len()), Vec::with_capacity(clauses.len()));
-            for c in &clauses {
-                let (l, r): (Clause, Clause) = c.iter().map(Atom::split_v).unzip();
-                left.push(l);
-                right.push(r);
-            }
-            onto_cells(left, a, &boxes[..split], out);
-            onto_cells(right, b, &boxes[split..], out);
-        }
-    }
-}
-
-/// Splits made in v per strip (its halves go on from where it stopped, see [`roots`]).
-const BUDGET: usize = 4;
+/// Boxes a strip may examine at λ-depth d: `BASE_BUDGET + 2·d`.
+const BASE_BUDGET: usize = 12;
 /// Deepest v-subdivision.
 const MAX_V_DEPTH: usize = 48;
 /// A strip at most this many tolerances wide is not bisected further when what is left undecided
@@ -286,15 +197,16 @@ const REBUILD_EVERY: usize = 4;
 /// `build(lo, hi)` gives the clauses for λ ∈ [lo, hi], re-parametrised to [0, 1].
 pub fn exists(build: &dyn Fn(f64, f64) -> Vec<Clause>, tol: f64) -> Partition {
     let mut out = Vec::new();
-    let root = Cell { at: VBox { index: 0, depth: 0 }, clauses: build(0.0, 1.0) };
-    strips(build, vec![root], 0.0, 1.0, 0, tol, &mut out);
+    strips(build, build(0.0, 1.0), 0.0, 1.0, 0, tol, &mut out);
     Partition::from_pieces(out)
 }
 
-/// Decides the strip λ ∈ [lo, hi] from the v-cells not yet refuted on it (those of its parent
-/// strip: a cell refuted on a strip is refuted on its halves), bisecting it while undecided.
-fn strips(build: &dyn Fn(f64, f64) -> Vec<Clause>, cells: Vec<Cell>, lo: f64, hi: f64, depth: usize, tol: f64, out: &mut Vec<(f64, Truth)>) {
-    let (t, blurred, cells) = search_v(cells, BUDGET);
+fn strips(build: &dyn Fn(f64, f64) -> Vec<Clause>, clauses: Vec<Clause>, lo: f64, hi: f64, depth: usize, tol: f64, out: &mut Vec<(f64, Truth)>) {
+    let clauses: Vec<Clause> = clauses.into_iter().filter(|c| !c.is_empty()).collect();
+    if clauses.is_empty() {
+        return out.push((hi, Truth::False));
+    }
+    let (t, blurred) = search_v(&clauses, BASE_BUDGET + 2 * depth);
     if t != Truth::Unknown {
         return out.push((hi, t));
     }
@@ -303,48 +215,46 @@ fn strips(build: &dyn Fn(f64, f64) -> Vec<Clause>, cells: Vec<Cell>, lo: f64, hi
     }
     let mid = 0.5 * (lo + hi);
     let (left, right) = if (depth + 1) % REBUILD_EVERY == 0 {
-        let fresh = |a: f64, b: f64| {
-            let mut out = Vec::with_capacity(cells.len());
-            onto_cells(build(a, b), VBox { index: 0, depth: 0 }, &cells.iter().map(|c| c.at).collect::<Vec<_>>(), &mut out);
-            out
-        };
-        (fresh(lo, mid), fresh(mid, hi))
+        (build(lo, mid), build(mid, hi))
     } else {
-        let (mut left, mut right) = (Vec::with_capacity(cells.len()), Vec::with_capacity(cells.len()));
-        for cell in &cells {
-            let (mut l, mut r) = (Vec::with_capacity(cell.clauses.len()), Vec::with_capacity(cell.clauses.len()));
-            for c in &cell.clauses {
-                let (a, b): (Clause, Clause) = c.iter().map(Atom::split_lambda).unzip();
-                l.push(a);
-                r.push(b);
-            }
-            left.push(Cell { at: cell.at, clauses: l });
-            right.push(Cell { at: cell.at, clauses: r });
+        let (mut left, mut right) = (Vec::with_capacity(clauses.len()), Vec::with_capacity(clauses.len()));
+        for c in &clauses {
+            let (l, r): (Clause, Clause) = c.iter().map(Atom::split_lambda).unzip();
+            left.push(l);
+            right.push(r);
         }
         (left, right)
     };
-    drop(cells);
     strips(build, left, lo, mid, depth + 1, tol, out);
     strips(build, right, mid, hi, depth + 1, tol, out);
 }
 
-/// Whether some v-cell of the strip certainly satisfies a clause (True), none can (False), or
-/// neither was shown within `budget` splits (Unknown, with whether every cell left undecided had,
+/// Whether some v-box of the strip certainly satisfies a clause (True), none can (False), or
+/// neither was shown within `budget` splits (Unknown, with whether every box left undecided had,
 /// in each open clause, an atom whose coefficients are all within twice its error bound of zero, so
-/// that only better precision could decide it, and at most [`ROOTS`] cells covering every cell
-/// left undecided, for the halves of the strip to start from). Cells are examined breadth first,
-/// so a wide witness is found before the budget goes into the corners of a boundary. Atoms
-/// certainly true on a cell are dropped for its sub-cells, clauses with a certainly false atom
-/// are dropped, cells with no clause left are refuted.
-fn search_v(cells: Vec<Cell>, mut budget: usize) -> (Truth, bool, Vec<Cell>) {
-    let mut queue: std::collections::VecDeque<Cell> = cells.into();
-    // every cell split or left undecided, with its open clauses; the undecided ones are marked
-    let mut seen: Vec<(Cell, bool)> = Vec::new();
+/// that only better precision could decide it). Boxes are examined breadth first, so a wide
+/// witness is found before the budget goes into the corners of a boundary. Atoms certainly true on
+/// a box are dropped for its sub-boxes, clauses with a certainly false atom are dropped.
+fn search_v(clauses: &[Clause], mut budget: usize) -> (Truth, bool) {
+    let mut queue: std::collections::VecDeque<(Vec<Clause>, usize)> = std::collections::VecDeque::new();
+    let mut undecided = false;
     let mut blurred = true;
-    while let Some(cell) = queue.pop_front() {
-        let mut alive: Vec<Clause> = Vec::with_capacity(cell.clauses.len());
-        for clause in cell.clauses {
-            let mut open: Clause = Vec::with_capacity(clause.len());
+    let mut first = Some(clauses);
+    loop {
+        let owned;
+        let (boxed, depth): (&[Clause], usize) = match first.take() {
+            Some(c) => (c, 0),
+            None => match queue.pop_front() {
+                Some((c, d)) => {
+                    owned = c;
+                    (&owned, d)
+                }
+                None => return if undecided { (Truth::Unknown, blurred) } else { (Truth::False, false) },
+            },
+        };
+        let mut alive: Vec<Vec<&Atom>> = Vec::with_capacity(boxed.len());
+        for clause in boxed {
+            let mut open: Vec<&Atom> = Vec::with_capacity(clause.len());
             let mut dead = false;
             for atom in clause {
                 match atom.truth() {
@@ -360,74 +270,28 @@ fn search_v(cells: Vec<Cell>, mut budget: usize) -> (Truth, bool, Vec<Cell>) {
                 continue;
             }
             if open.is_empty() {
-                return (Truth::True, false, Vec::new());
+                return (Truth::True, false);
             }
             alive.push(open);
         }
         if alive.is_empty() {
             continue;
         }
-        if cell.at.depth >= MAX_V_DEPTH || budget == 0 {
-            blurred &= alive.iter().all(|c| c.iter().any(Atom::blurred));
-            seen.push((Cell { at: cell.at, clauses: alive }, true));
+        if depth >= MAX_V_DEPTH || budget == 0 {
+            undecided = true;
+            blurred &= alive.iter().all(|c| c.iter().any(|a| a.blurred()));
             continue;
         }
         budget -= 1;
         let (mut left, mut right) = (Vec::with_capacity(alive.len()), Vec::with_capacity(alive.len()));
         for c in &alive {
-            let (l, r): (Clause, Clause) = c.iter().map(Atom::split_v).unzip();
+            let (l, r): (Clause, Clause) = c.iter().map(|a| a.split_v()).unzip();
             left.push(l);
             right.push(r);
         }
-        let (a, b) = cell.at.halves();
-        queue.push_back(Cell { at: a, clauses: left });
-        queue.push_back(Cell { at: b, clauses: right });
-        seen.push((Cell { at: cell.at, clauses: alive }, false));
+        queue.push_back((left, depth + 1));
+        queue.push_back((right, depth + 1));
     }
-    if seen.iter().any(|(_, undecided)| *undecided) {
-        (Truth::Unknown, blurred, roots(seen))
-    } else {
-        (Truth::False, false, Vec::new())
-    }
-}
-
-/// At most this many cells are handed from a strip to its halves.
-const ROOTS: usize = 4;
-
-/// The cells the halves of a strip start from: the deepest cover of the undecided cells of `seen`
-/// by at most [`ROOTS`] of the cells in `seen` (an undecided cell's ancestors in `seen` are those
-/// the search split on its way to it), sorted along v.
-fn roots(seen: Vec<(Cell, bool)>) -> Vec<Cell> {
-    let mut at: Vec<((usize, u64), usize)> = seen.iter().enumerate().map(|(k, (c, _))| ((c.at.depth, c.at.index), k)).collect();
-    at.sort_unstable();
-    let undecided: Vec<VBox> = seen.iter().filter(|(_, u)| *u).map(|(c, _)| c.at).collect();
-    // the cell of `seen` holding box b at the depth nearest to d (not deeper than b)
-    let cover = |b: VBox, d: usize| -> usize {
-        let mut depth = d.min(b.depth);
-        loop {
-            if let Ok(k) = at.binary_search_by_key(&(depth, b.index >> (b.depth - depth)), |e| e.0) {
-                return at[k].1;
-            }
-            depth += 1;
-        }
-    };
-    let deepest = undecided.iter().map(|b| b.depth).max().unwrap_or(0);
-    let mut chosen: Vec<usize> = undecided.iter().map(|&b| cover(b, 0)).collect();
-    for d in 1..=deepest {
-        let mut next: Vec<usize> = undecided.iter().map(|&b| cover(b, d)).collect();
-        next.sort_unstable();
-        next.dedup();
-        if next.len() > ROOTS {
-            break;
-        }
-        chosen = next;
-    }
-    chosen.sort_unstable();
-    chosen.dedup();
-    let mut seen: Vec<Option<Cell>> = seen.into_iter().map(|(c, _)| Some(c)).collect();
-    let mut out: Vec<Cell> = chosen.into_iter().filter_map(|k| seen[k].take()).collect();
-    out.sort_by_key(|c| c.at.index << (MAX_V_DEPTH - c.at.depth));
-    out
 }
 
 #[cfg(test)]
