@@ -3,6 +3,7 @@
 //! classified by several Web Workers at once, each a block of rows ([`row_blocks`]).
 
 use super::geom::{polyline, ticks, Scale};
+use super::section::{CrossSection, SectionControls};
 use super::strip::css;
 use super::Chart;
 use crate::state::Shared;
@@ -143,19 +144,15 @@ fn scales(range: [[f64; 2]; 2]) -> (Scale, Scale) {
 /// The slice controls and map.
 #[component]
 pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, overlay: Signal<Overlay>) -> impl IntoView {
-    let scenario = move || parsed.get().0.as_ref().as_ref().ok().cloned();
-    let pose = RwSignal::new(String::new());
-    let axes = RwSignal::new([Coord::X, Coord::Y]);
+    let scenario = Signal::derive(move || parsed.get().0.as_ref().as_ref().ok().cloned());
+    let section = CrossSection::new();
+    let CrossSection { pose, axes, range } = section;
     let res = RwSignal::new(64usize);
-    let range = RwSignal::new([[0.0, 1.0]; 2]);
     let map = RwSignal::new(None::<Shared<Result<SliceMap, String>>>);
     // a new scenario resets the choices to its defaults and clears the map
     Effect::new(move |_| {
-        if let Some(s) = scenario() {
-            let a = default_axes(&s);
-            pose.set(default_pose(&s).unwrap_or_default());
-            axes.set(a);
-            range.set([default_range(&s, a[0]), default_range(&s, a[1])]);
+        if let Some(s) = scenario.get() {
+            section.reset(&s);
             map.set(None);
         }
     });
@@ -171,7 +168,7 @@ pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, 
         progress.set(None);
     };
     let compute = move |_| {
-        let Some(s) = scenario() else { return };
+        let Some(s) = scenario.get_untracked() else { return };
         stop();
         let this = generation.get_value();
         let (pose_name, a, n, r) = (pose.get_untracked(), axes.get_untracked(), res.get_untracked(), range.get_untracked());
@@ -205,7 +202,7 @@ pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, 
                     }
                     Reply::Failed { error } => Err(error),
                     Reply::Progress { .. } => return,
-                    Reply::Planned { .. } => Err("the worker answered a slice job with a plan".into()),
+                    Reply::Planned { .. } | Reply::Lattice { .. } => Err("the worker answered a slice job with another job's reply".into()),
                 };
                 map.set(Some(Shared::new(result)));
                 generation.update_value(|g| *g += 1);
@@ -224,41 +221,8 @@ pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, 
         }
         running.set_value(started);
     };
-    let set_axis = move |k: usize, name: String| {
-        if let (Some(c), Some(s)) = (Coord::parse(&name), scenario()) {
-            axes.update(|a| a[k] = c);
-            range.update(|r| r[k] = default_range(&s, c));
-        }
-    };
-    let set_range = move |k: usize, end: usize, text: String| {
-        if let Ok(v) = text.trim().parse::<f64>() {
-            range.update(|r| r[k][end] = v);
-        }
-    };
-    let axis_select = move |k: usize| {
-        view! {
-            <select data-testid=format!("slice-axis-{k}") on:change=move |ev| set_axis(k, event_target_value(&ev))>
-                {Coord::ALL.map(|c| view! { <option value=c.name() selected=move || axes.get()[k] == c>{c.name()}</option> })}
-            </select>
-            " from "
-            <input class="num" type="number" step="any" prop:value=move || fmt_num(range.get()[k][0]) on:change=move |ev| set_range(k, 0, event_target_value(&ev)) />
-            " to "
-            <input class="num" type="number" step="any" prop:value=move || fmt_num(range.get()[k][1]) on:change=move |ev| set_range(k, 1, event_target_value(&ev)) />
-        }
-    };
     view! {
-        <div class="slice-controls">
-            <label>
-                "Other coordinates from pose "
-                <select data-testid="slice-pose" on:change=move |ev| pose.set(event_target_value(&ev))>
-                    {move || scenario().map(|s| s.poses.iter().map(|(n, _)| {
-                        let (value, key, text) = (n.clone(), n.clone(), n.clone());
-                        view! { <option value=value selected=move || pose.get() == key>{text}</option> }
-                    }).collect_view())}
-                </select>
-            </label>
-            <label>"across " {axis_select(0)}</label>
-            <label>"up " {axis_select(1)}</label>
+        <SectionControls section scenario prefix="slice">
             <label>
                 "cells per side "
                 <select on:change=move |ev| {
@@ -274,7 +238,7 @@ pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, 
             <span class="readout" data-testid="slice-progress" aria-live="polite">
                 {move || progress.get().map(|(done, all)| format!("{done} of {all} row blocks done ({all} workers)"))}
             </span>
-        </div>
+        </SectionControls>
         {move || map.get().map(|m| match m.0.as_ref() {
             Err(e) => view! { <p class="error">{format!("Slice: {e}")}</p> }.into_any(),
             Ok(m) => view! { <SliceMapView map=m.clone() overlay /> }.into_any(),

@@ -1,7 +1,8 @@
 //! Running a [`Job`] to its end, reporting [`Reply`]s as it goes: plain Rust over the core,
 //! tested natively (the worker calls [`run`]; so do the tests).
 
-use super::protocol::{pose_to_wire, Job, Reply};
+use super::protocol::{pose_to_wire, Job, LatticeResult, PlannedTrajectory, Reply, WireReport};
+use cablenav::lattice::{Lattice, LatticeSpec};
 use crate::logic::fmt_num;
 use cablenav::model::{Coord, Pose};
 use cablenav::plan::choice::{self, Details, PathPlanner, PlanResult, PlannerKind, PlannerOptions, Progress};
@@ -123,6 +124,7 @@ pub fn run(job: Job, report: &mut dyn FnMut(Reply), now: fn() -> f64) {
     let last = match job {
         Job::Plan { scenario, query, planner: id, max_charts } => plan(&scenario, &query, &id, max_charts, report, now),
         Job::Slice { scenario, pose, axes, res, range, rows } => slice_rows(&scenario, &pose, &axes, res, range, rows),
+        Job::Lattice { scenario, pose, axes, ranges, steps } => lattice(&scenario, &pose, &axes, ranges, steps, report, now),
     };
     report(last.unwrap_or_else(|error| Reply::Failed { error }));
 }
@@ -151,7 +153,50 @@ fn plan(json: &str, query: &str, id: &str, max_charts: usize, report: &mut dyn F
     }
     let r = p.result((now() - started) / 1000.0).ok_or("the planner ended without a result")?;
     let f = finished(&r);
-    Ok(Reply::Planned { status: f.status.to_string(), summary: f.summary, path: f.path.iter().map(pose_to_wire).collect(), polyline: f.polyline.iter().map(pose_to_wire).collect() })
+    let trajectory = match &r.trajectory {
+        Some(t) => Some(planned_trajectory(json, t)?),
+        None => None,
+    };
+    Ok(Reply::Planned {
+        status: f.status.to_string(),
+        summary: f.summary,
+        path: f.path.iter().map(pose_to_wire).collect(),
+        polyline: f.polyline.iter().map(pose_to_wire).collect(),
+        trajectory,
+    })
+}
+
+/// The scenario `json` with the planned trajectory `t` added (as `cablenav plan --out` writes
+/// it) and the exact verification of that trajectory there, read back from the written text as
+/// `cablenav verify` reads it.
+pub fn planned_trajectory(json: &str, t: &cablenav::model::Trajectory) -> Result<PlannedTrajectory, String> {
+    let (text, name) = cablenav::scenario::with_trajectory(json, t).map_err(|e| e.to_string())?;
+    let s = scenario(&text)?;
+    let index = s.trajectories.iter().position(|x| x.name == name).ok_or("the planned trajectory is missing from the written scenario")?;
+    let report = crate::logic::verify(&s, index).map(|r| WireReport::from(&r));
+    Ok(PlannedTrajectory { scenario: text, name, report })
+}
+
+fn lattice(json: &str, pose: &str, axes: &[String], ranges: Vec<[f64; 2]>, steps: usize, report: &mut dyn FnMut(Reply), now: fn() -> f64) -> Result<Reply, String> {
+    let s = scenario(json)?;
+    let coords = axes.iter().map(|n| Coord::parse(n).ok_or_else(|| format!("unknown coordinate “{n}”"))).collect::<Result<Vec<_>, _>>()?;
+    let at = s.pose(pose).map_err(|e| e.to_string())?.coords();
+    let spec = LatticeSpec::new(coords, ranges, vec![steps], at).map_err(|e| e.to_string())?;
+    let mut l = Lattice::new(&s, spec);
+    let mut since = now();
+    loop {
+        let p = l.step(1);
+        if p.done {
+            break;
+        }
+        if now() - since >= PROGRESS_MS {
+            let fraction = p.rays_done as f64 / p.rays_total.max(1) as f64;
+            report(Reply::Progress { fraction: fraction.min(0.99), detail: format!("{} of {} rays", p.rays_done, p.rays_total) });
+            since = now();
+        }
+    }
+    let r = l.report().ok_or("the lattice ended without a report")?;
+    Ok(Reply::Lattice { lattice: LatticeResult::from(&r) })
 }
 
 fn slice_rows(json: &str, pose: &str, axes: &[String; 2], res: usize, range: [[f64; 2]; 2], rows: [usize; 2]) -> Result<Reply, String> {
@@ -186,8 +231,9 @@ mod tests {
         let json = PRESETS[find("robocrane").unwrap()].json;
         let mut replies = vec![];
         run(Job::Plan { scenario: json.into(), query: "q1-q2".into(), planner: "continuation".into(), max_charts: 20_000 }, &mut |r| replies.push(r), clock);
-        let Some(Reply::Planned { status, summary, path, polyline }) = replies.last() else { panic!("{replies:?}") };
+        let Some(Reply::Planned { status, summary, path, polyline, trajectory }) = replies.last() else { panic!("{replies:?}") };
         assert!(polyline.is_empty(), "the atlas has no A* polyline");
+        assert!(trajectory.as_ref().is_some_and(|t| t.report.is_ok()), "the atlas' path as a trajectory, verified");
         assert_eq!(status, "found");
         assert!(summary.starts_with("Path found:"), "{summary}");
         let s = Scenario::from_json(json).unwrap();
@@ -202,8 +248,16 @@ mod tests {
         let json = PRESETS[find("cdpr7-box").unwrap()].json;
         let mut replies = vec![];
         run(Job::Plan { scenario: json.into(), query: "over-box".into(), planner: "ray-lattice".into(), max_charts: 1 }, &mut |r| replies.push(r), clock);
-        let Some(Reply::Planned { status, summary, path, polyline }) = replies.last() else { panic!("{replies:?}") };
+        let Some(Reply::Planned { status, summary, path, polyline, trajectory }) = replies.last() else { panic!("{replies:?}") };
         assert_eq!(status, "found", "{summary}");
+        // the planned trajectory, written into the scenario, verifies feasible on all of [0, 1]
+        // exactly as the core verifies it there
+        let planned = trajectory.as_ref().expect("a trajectory");
+        let written = Scenario::from_json(&planned.scenario).unwrap();
+        let k = written.trajectories.iter().position(|t| t.name == planned.name).unwrap();
+        let direct = crate::logic::verify(&written, k).unwrap();
+        assert_eq!(planned.report.as_ref().unwrap().report(), direct);
+        assert_eq!(direct.feasible, [[0.0, 1.0]], "{direct:?}");
         assert_eq!(path.len(), PATH_SAMPLES + 1);
         assert!(polyline.len() >= 3, "the A* path turns over the box");
         let s = Scenario::from_json(json).unwrap();
@@ -212,14 +266,37 @@ mod tests {
     }
 
     #[test]
+    fn a_lattice_job_gives_the_cores_lattice() {
+        let json = PRESETS[find("cdpr7-box").unwrap()].json;
+        let mut replies = vec![];
+        let job = Job::Lattice { scenario: json.into(), pose: "fig310".into(), axes: vec!["x".into(), "z".into()], ranges: vec![[0.2, 3.8], [0.3, 3.7]], steps: 7 };
+        run(job, &mut |r| replies.push(r), clock);
+        let Some(Reply::Lattice { lattice }) = replies.last() else { panic!("{replies:?}") };
+        let s = Scenario::from_json(json).unwrap();
+        let spec = LatticeSpec::new(vec![Coord::X, Coord::Z], vec![[0.2, 3.8], [0.3, 3.7]], vec![7], s.pose("fig310").unwrap().coords()).unwrap();
+        let core = Lattice::build(&s, spec).report().unwrap();
+        assert_eq!(*lattice, LatticeResult::from(&core));
+        assert_eq!((lattice.rays.len(), lattice.components), (14, core.components));
+        // the x-ray at z = 0.8667 starts at x ≈ 2.002 (thesis Fig. 3.10)
+        let ray = lattice.rays.iter().find(|r| r.vary == "x" && (r.at[2] - (0.3 + 3.4 / 6.0)).abs() < 1e-12).unwrap();
+        assert!((ray.feasible[0][0] - 2.002).abs() < 1e-3 && ray.at[0] == 0.2 && ray.at[1] == 2.0, "{ray:?}");
+        // it survives the trip through JSON
+        let text = super::super::protocol::encode_reply(1, replies.last().unwrap());
+        assert!(matches!(super::super::protocol::decode_reply(&text), Some(Ok(_))));
+    }
+
+    #[test]
     fn bad_jobs_fail_with_a_reason() {
         let mut replies = vec![];
         let json = PRESETS[find("robocrane").unwrap()].json.to_string();
         run(Job::Plan { scenario: json.clone(), query: "q1-q2".into(), planner: "nope".into(), max_charts: 1 }, &mut |r| replies.push(r), clock);
         run(Job::Plan { scenario: "{".into(), query: "q".into(), planner: "continuation".into(), max_charts: 1 }, &mut |r| replies.push(r), clock);
-        run(Job::Slice { scenario: json, pose: "q1".into(), axes: ["x".into(), "w".into()], res: 4, range: [[0.0, 1.0]; 2], rows: [0, 4] }, &mut |r| replies.push(r), clock);
+        run(Job::Slice { scenario: json.clone(), pose: "q1".into(), axes: ["x".into(), "w".into()], res: 4, range: [[0.0, 1.0]; 2], rows: [0, 4] }, &mut |r| replies.push(r), clock);
+        run(Job::Lattice { scenario: json.clone(), pose: "q1".into(), axes: vec!["x".into(), "y".into()], ranges: vec![[0.0, 1.0]; 2], steps: 0 }, &mut |r| replies.push(r), clock);
+        run(Job::Lattice { scenario: json, pose: "nowhere".into(), axes: vec!["x".into()], ranges: vec![[0.0, 1.0]], steps: 3 }, &mut |r| replies.push(r), clock);
         let errors: Vec<&str> = replies.iter().filter_map(|r| if let Reply::Failed { error } = r { Some(error.as_str()) } else { None }).collect();
-        assert_eq!(errors.len(), 3, "{replies:?}");
+        assert_eq!(errors.len(), 5, "{replies:?}");
+        assert!(errors[3].contains("steps") && errors[4].contains("nowhere"), "{errors:?}");
         assert!(errors[0].contains("not available") && errors[2].contains("“w”"), "{errors:?}");
     }
 }

@@ -2,7 +2,9 @@
 //! come out (with the same id): any number of [`Reply::Progress`], then one final reply. All are
 //! JSON text, so that a job is a plain value and the protocol is tested natively.
 
+use cablenav::lattice::LatticeReport;
 use cablenav::model::Pose;
+use cablenav::report::{Boundary, Side, VerifyReport};
 use cablenav::verify::slice::Class;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 use serde::{Deserialize, Serialize};
@@ -28,6 +30,9 @@ pub enum Job {
         range: [[f64; 2]; 2],
         rows: [usize; 2],
     },
+    /// The ray lattice over `axes` (coordinate names) with `ranges` and `steps` values per axis,
+    /// the other coordinates from pose `pose`.
+    Lattice { scenario: String, pose: String, axes: Vec<String>, ranges: Vec<[f64; 2]>, steps: usize },
 }
 
 /// What a worker answers.
@@ -37,13 +42,170 @@ pub enum Reply {
     /// How far the job is: a fraction in [0, 1] (never going back) and a line for people.
     Progress { fraction: f64, detail: String },
     /// A planning run ended: its status (`found`, `no_path`, `budget`, `unrepaired`), a summary,
-    /// the path (when there is one) as poses (see [`pose_to_wire`]) and the lattice planner's A*
-    /// polyline (empty for the atlas).
-    Planned { status: String, summary: String, path: Vec<[u64; 7]>, polyline: Vec<[u64; 7]> },
+    /// the path (when there is one) as poses (see [`pose_to_wire`]), the lattice planner's A*
+    /// polyline (empty for the atlas) and the planned trajectory with its exact verification.
+    Planned { status: String, summary: String, path: Vec<[u64; 7]>, polyline: Vec<[u64; 7]>, trajectory: Option<PlannedTrajectory> },
+    /// A ray lattice, complete.
+    Lattice { lattice: LatticeResult },
     /// A slice map's rows `rows[0]..rows[1]`: their cells' classes, row-major.
     Sliced { rows: [usize; 2], classes: Vec<Class> },
     /// The job could not run; why.
     Failed { error: String },
+}
+
+/// A planned trajectory as the page keeps it: the scenario with the trajectory added under a new
+/// name (as `cablenav plan --out` writes it, so `cablenav verify` checks the same thing) and the
+/// trajectory's exact verification there.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PlannedTrajectory {
+    /// The scenario JSON with the planned trajectory appended.
+    pub scenario: String,
+    /// The planned trajectory's name in it.
+    pub name: String,
+    /// Its verification, or why it failed.
+    pub report: Result<WireReport, String>,
+}
+
+/// A [`VerifyReport`] that crosses bit for bit (numbers as their bits).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct WireReport {
+    trajectory: String,
+    method: String,
+    step: Option<u64>,
+    feasible: Vec<[u64; 2]>,
+    infeasible: Vec<[u64; 2]>,
+    feasible_tau: Vec<[u64; 2]>,
+    infeasible_tau: Vec<[u64; 2]>,
+    /// (t, τ, constraint, whether it enters the feasible set)
+    boundaries: Vec<(u64, u64, String, bool)>,
+    uncertain: Vec<[u64; 2]>,
+    warnings: Vec<String>,
+}
+
+fn to_bits(v: &[[f64; 2]]) -> Vec<[u64; 2]> {
+    v.iter().map(|p| p.map(f64::to_bits)).collect()
+}
+
+fn from_bits(v: &[[u64; 2]]) -> Vec<[f64; 2]> {
+    v.iter().map(|p| p.map(f64::from_bits)).collect()
+}
+
+impl From<&VerifyReport> for WireReport {
+    fn from(r: &VerifyReport) -> WireReport {
+        WireReport {
+            trajectory: r.trajectory.clone(),
+            method: r.method.clone(),
+            step: r.step.map(f64::to_bits),
+            feasible: to_bits(&r.feasible),
+            infeasible: to_bits(&r.infeasible),
+            feasible_tau: to_bits(&r.feasible_tau),
+            infeasible_tau: to_bits(&r.infeasible_tau),
+            boundaries: r.boundaries.iter().map(|b| (b.t.to_bits(), b.tau.to_bits(), b.constraint.clone(), b.enters == Side::Feasible)).collect(),
+            uncertain: to_bits(&r.uncertain),
+            warnings: r.warnings.clone(),
+        }
+    }
+}
+
+impl WireReport {
+    /// The report sent, bit for bit.
+    pub fn report(&self) -> VerifyReport {
+        VerifyReport {
+            trajectory: self.trajectory.clone(),
+            method: self.method.clone(),
+            step: self.step.map(f64::from_bits),
+            feasible: from_bits(&self.feasible),
+            infeasible: from_bits(&self.infeasible),
+            feasible_tau: from_bits(&self.feasible_tau),
+            infeasible_tau: from_bits(&self.infeasible_tau),
+            boundaries: self
+                .boundaries
+                .iter()
+                .map(|(t, tau, c, feasible)| Boundary {
+                    t: f64::from_bits(*t),
+                    tau: f64::from_bits(*tau),
+                    constraint: c.clone(),
+                    enters: if *feasible { Side::Feasible } else { Side::Infeasible },
+                })
+                .collect(),
+            uncertain: from_bits(&self.uncertain),
+            warnings: self.warnings.clone(),
+        }
+    }
+}
+
+/// A ray lattice as the page draws it (the core's [`LatticeReport`], owned and serialisable both
+/// ways; ray ends as JSON decimals, so within an ulp of the core's).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LatticeResult {
+    /// The chosen coordinates' names.
+    pub axes: Vec<String>,
+    /// Their ranges.
+    pub ranges: Vec<[f64; 2]>,
+    /// Their numbers of grid values.
+    pub steps: Vec<usize>,
+    /// The six coordinates the others are held at (x, y, z, φ, θ, σ).
+    pub fixed: [f64; 6],
+    /// Every ray.
+    pub rays: Vec<LatticeRay>,
+    /// Feasible ray pieces (the graph's nodes).
+    pub pieces: usize,
+    /// Connected components of the graph.
+    pub components: usize,
+    /// Grid points.
+    pub grid_points: usize,
+    /// Grid points feasible on every ray through them.
+    pub feasible_points: usize,
+    /// Rays with an uncertain section.
+    pub uncertain_rays: usize,
+}
+
+/// One ray of a [`LatticeResult`].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LatticeRay {
+    /// The varied coordinate's name.
+    pub vary: String,
+    /// All six coordinates of the ray's start (the varied one at its range's start).
+    pub at: [f64; 6],
+    /// Feasible intervals of the varied coordinate.
+    pub feasible: Vec<[f64; 2]>,
+    /// The component of each feasible interval.
+    pub components: Vec<usize>,
+}
+
+impl From<&LatticeReport> for LatticeResult {
+    fn from(r: &LatticeReport) -> LatticeResult {
+        let rays = r
+            .rays
+            .iter()
+            .zip(&r.piece_components)
+            .map(|(ray, comps)| {
+                let mut at = r.fixed;
+                for (name, v) in &ray.fixed {
+                    if let Some(c) = cablenav::model::Coord::parse(name) {
+                        at[c.index()] = *v;
+                    }
+                }
+                let a = r.axes.iter().position(|n| *n == ray.vary).unwrap_or(0);
+                if let Some(c) = cablenav::model::Coord::parse(ray.vary) {
+                    at[c.index()] = r.ranges[a][0];
+                }
+                LatticeRay { vary: ray.vary.to_string(), at, feasible: ray.feasible.clone(), components: comps.clone() }
+            })
+            .collect();
+        LatticeResult {
+            axes: r.axes.iter().map(|a| a.to_string()).collect(),
+            ranges: r.ranges.clone(),
+            steps: r.steps.clone(),
+            fixed: r.fixed,
+            rays,
+            pieces: r.pieces,
+            components: r.components,
+            grid_points: r.grid_points,
+            feasible_points: r.feasible_points,
+            uncertain_rays: r.uncertain_rays,
+        }
+    }
 }
 
 /// A message: a job or a reply, and the id that pairs them.
@@ -120,6 +282,15 @@ mod tests {
         let slice = Job::Slice { scenario: "{}".into(), pose: "q1".into(), axes: ["x".into(), "y".into()], res: 4, range: [[0.1, 2.0 / 3.0], [-1e-300, 7.0]], rows: [0, 4] };
         assert_eq!(decode_job(&encode_job(1, &slice)).unwrap().body, slice, "the range crosses bit for bit");
         assert!(decode_job(r#"{"id":1,"body":{"kind":"dance"}}"#).is_err());
+    }
+
+    #[test]
+    fn reports_cross_bit_for_bit() {
+        let s = crate::logic::parse_scenario(crate::presets::PRESETS[crate::presets::find("cdpr7-tree").unwrap()].json).unwrap();
+        let report = crate::logic::verify(&s, 0).unwrap();
+        assert!(!report.boundaries.is_empty());
+        let text = serde_json::to_string(&WireReport::from(&report)).unwrap();
+        assert_eq!(serde_json::from_str::<WireReport>(&text).unwrap().report(), report);
     }
 
     #[test]
