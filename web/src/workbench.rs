@@ -17,6 +17,9 @@ use crate::view3d::scene::{self, Polyline, SceneInput, PATH};
 use crate::edit_logic::{self as el, handles, Grip, Handle};
 use crate::view3d::drag::Constraint;
 use crate::view3d::{HandleEvent, Handles, SceneView, View3d};
+use crate::worker::host::{self, Running};
+use crate::worker::protocol::{pose_to_wire, Job, Reply};
+use cablenav::report::TensionEnvelope;
 use glam::DVec3;
 use cablenav::model::{Pose, Trajectory};
 use cablenav::verify::profile;
@@ -239,6 +242,8 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
             sections,
             cables: cables.iter().map(|c| scene::cable_look(c).0).collect::<Vec<_>>().join(" "),
             path_poses: planned.get().map_or(0, |p| p.0.poses.len()),
+            polyline_poses: planned.get().map_or(0, |p| p.0.polyline.len()),
+            lattice_pieces: lattice.0.len(),
             tubes: tubes.iter().map(|(i, r)| format!("{}:{}", i + 1, logic::fmt_exact(*r))).collect::<Vec<_>>().join(" "),
         }))
     });
@@ -253,14 +258,50 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
             Some(Shared::new((r, format!("{}; x: {}", path.name(), path.param()))))
         })
     });
-    let envelope = Memo::new(move |prev: Option<&Option<_>>| {
-        if let (true, Some(p)) = (drag_active.get(), prev) {
-            return p.clone();
+    // the tension envelope is computed in a Web Worker (one wrench-set solve per sample): a new
+    // path starts a job and drops the previous one; a drag's result comes at its end
+    let envelope = RwSignal::new(None::<Shared<(Result<TensionEnvelope, String>, &'static str)>>);
+    let tension_run: StoredValue<Option<Running>, LocalStorage> = StoredValue::new_local(None);
+    let tension_generation = StoredValue::new(0u32);
+    Effect::new(move |_| {
+        if drag_active.get() {
+            return;
         }
-        followed(parsed, planned, follow, trajectory, |s, path| {
-            let r = profile::tension_at(s, &path.name(), &path.samples(PLOT_SAMPLES)).map_err(|e| e.to_string());
-            Some(Shared::new((r, path.param())))
-        })
+        let request = followed(parsed, planned, follow, trajectory, |s, path| {
+            let samples = path.samples(PLOT_SAMPLES).iter().map(|(t, p)| (*t, pose_to_wire(p))).collect();
+            // no samples: only the core's checks (no wrench section), at once
+            let refused = profile::tension_at(s, &path.name(), &[]).err().map(|e| e.to_string());
+            Some((refused, path.name(), path.param(), samples))
+        });
+        tension_generation.update_value(|g| *g += 1);
+        tension_run.update_value(|r| r.take().into_iter().for_each(|r| r.cancel()));
+        let Some((refused, name, param, samples)) = request else {
+            envelope.set(None);
+            return;
+        };
+        if let Some(e) = refused {
+            envelope.set(Some(Shared::new((Err(e), param))));
+            return;
+        }
+        let Some(json) = source.try_get_untracked() else { return };
+        let this = tension_generation.get_value();
+        let on_reply = move |reply: Reply| {
+            if tension_generation.get_value() != this {
+                return;
+            }
+            let result = match reply {
+                Reply::Progress { .. } => return,
+                Reply::Tension { envelope } => Ok(envelope.into()),
+                Reply::Failed { error } => Err(error),
+                _ => Err("the worker answered a tension job with another job's reply".into()),
+            };
+            envelope.set(Some(Shared::new((result, param))));
+            tension_run.update_value(|r| r.take().into_iter().for_each(host::retire));
+        };
+        match host::start(&Job::Tension { scenario: json, name, samples }, on_reply) {
+            Ok(w) => tension_run.set_value(Some(w)),
+            Err(e) => envelope.set(Some(Shared::new((Err(e), param)))),
+        }
     });
     let overlay = Memo::new(move |_| {
         let parsed = parsed.get();

@@ -161,7 +161,7 @@ pub fn LatticePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>
                 }
                 Reply::Lattice { lattice } => Ok(lattice),
                 Reply::Failed { error } => Err(error),
-                Reply::Planned { .. } | Reply::Sliced { .. } => Err("the worker answered a lattice job with another job's reply".into()),
+                Reply::Planned { .. } | Reply::Sliced { .. } | Reply::Tension { .. } => Err("the worker answered a lattice job with another job's reply".into()),
             };
             lattice.set(Some(Shared::new(result)));
             generation.update_value(|g| *g += 1);

@@ -125,6 +125,7 @@ pub fn run(job: Job, report: &mut dyn FnMut(Reply), now: fn() -> f64) {
         Job::Plan { scenario, query, planner: id, max_charts } => plan(&scenario, &query, &id, max_charts, report, now),
         Job::Slice { scenario, pose, axes, res, range, rows } => slice_rows(&scenario, &pose, &axes, res, range, rows),
         Job::Lattice { scenario, pose, axes, ranges, steps } => lattice(&scenario, &pose, &axes, ranges, steps, report, now),
+        Job::Tension { scenario, name, samples } => tension(&scenario, &name, &samples),
     };
     report(last.unwrap_or_else(|error| Reply::Failed { error }));
 }
@@ -175,6 +176,13 @@ pub fn planned_trajectory(json: &str, t: &cablenav::model::Trajectory) -> Result
     let index = s.trajectories.iter().position(|x| x.name == name).ok_or("the planned trajectory is missing from the written scenario")?;
     let report = crate::logic::verify(&s, index).map(|r| WireReport::from(&r));
     Ok(PlannedTrajectory { scenario: text, name, report })
+}
+
+fn tension(json: &str, name: &str, samples: &[(f64, [u64; 7])]) -> Result<Reply, String> {
+    let s = scenario(json)?;
+    let samples: Vec<(f64, Pose)> = samples.iter().map(|(t, p)| (*t, super::protocol::pose_from_wire(p))).collect();
+    let envelope = cablenav::verify::profile::tension_at(&s, name, &samples).map_err(|e| e.to_string())?;
+    Ok(Reply::Tension { envelope: envelope.into() })
 }
 
 fn lattice(json: &str, pose: &str, axes: &[String], ranges: Vec<[f64; 2]>, steps: usize, report: &mut dyn FnMut(Reply), now: fn() -> f64) -> Result<Reply, String> {
@@ -283,6 +291,25 @@ mod tests {
         // it survives the trip through JSON
         let text = super::super::protocol::encode_reply(1, replies.last().unwrap());
         assert!(matches!(super::super::protocol::decode_reply(&text), Some(Ok(_))));
+    }
+
+    #[test]
+    fn a_tension_job_gives_the_cores_envelope() {
+        let json = PRESETS[find("robocrane").unwrap()].json;
+        let s = Scenario::from_json(json).unwrap();
+        let t = &s.trajectories[0];
+        let samples: Vec<(f64, Pose)> = (0..=8).map(|k| k as f64 / 8.0).map(|u| (u, t.pose_at(u))).collect();
+        let mut replies = vec![];
+        let wire = samples.iter().map(|(u, p)| (*u, pose_to_wire(p))).collect();
+        run(Job::Tension { scenario: json.into(), name: t.name.clone(), samples: wire }, &mut |r| replies.push(r), clock);
+        let Some(Reply::Tension { envelope }) = replies.last() else { panic!("{replies:?}") };
+        let core = cablenav::verify::profile::tension_at(&s, &t.name, &samples).unwrap();
+        assert_eq!(cablenav::report::TensionEnvelope::from(envelope.clone()), core);
+        // no wrench set: the core's reason
+        let mut replies = vec![];
+        let plain = PRESETS[find("cdpr7-tree").unwrap()].json;
+        run(Job::Tension { scenario: plain.into(), name: "x".into(), samples: vec![] }, &mut |r| replies.push(r), clock);
+        assert!(matches!(replies.last(), Some(Reply::Failed { error }) if error.contains("wrench")), "{replies:?}");
     }
 
     #[test]

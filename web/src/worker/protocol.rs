@@ -4,7 +4,7 @@
 
 use cablenav::lattice::LatticeReport;
 use cablenav::model::Pose;
-use cablenav::report::{Boundary, Side, VerifyReport};
+use cablenav::report::{Boundary, Side, TensionEnvelope, VerifyReport};
 use cablenav::verify::slice::Class;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 use serde::{Deserialize, Serialize};
@@ -33,6 +33,8 @@ pub enum Job {
     /// The ray lattice over `axes` (coordinate names) with `ranges` and `steps` values per axis,
     /// the other coordinates from pose `pose`.
     Lattice { scenario: String, pose: String, axes: Vec<String>, ranges: Vec<[f64; 2]>, steps: usize },
+    /// The tension envelope of the path `name` at the samples `(t, pose)` (see [`pose_to_wire`]).
+    Tension { scenario: String, name: String, samples: Vec<(f64, [u64; 7])> },
 }
 
 /// What a worker answers.
@@ -47,6 +49,8 @@ pub enum Reply {
     Planned { status: String, summary: String, path: Vec<[u64; 7]>, polyline: Vec<[u64; 7]>, trajectory: Option<PlannedTrajectory> },
     /// A ray lattice, complete.
     Lattice { lattice: LatticeResult },
+    /// A tension envelope.
+    Tension { envelope: WireEnvelope },
     /// A slice map's rows `rows[0]..rows[1]`: their cells' classes, row-major.
     Sliced { rows: [usize; 2], classes: Vec<Class> },
     /// The job could not run; why.
@@ -131,6 +135,28 @@ impl WireReport {
             uncertain: from_bits(&self.uncertain),
             warnings: self.warnings.clone(),
         }
+    }
+}
+
+/// A [`TensionEnvelope`] for the plot (numbers as JSON decimals: within an ulp).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct WireEnvelope {
+    trajectory: String,
+    t: Vec<f64>,
+    tension_min: Vec<Option<Vec<f64>>>,
+    tension_max: Vec<Option<Vec<f64>>>,
+    bounds: Vec<[f64; 2]>,
+}
+
+impl From<TensionEnvelope> for WireEnvelope {
+    fn from(e: TensionEnvelope) -> WireEnvelope {
+        WireEnvelope { trajectory: e.trajectory, t: e.t, tension_min: e.tension_min, tension_max: e.tension_max, bounds: e.bounds }
+    }
+}
+
+impl From<WireEnvelope> for TensionEnvelope {
+    fn from(e: WireEnvelope) -> TensionEnvelope {
+        TensionEnvelope { trajectory: e.trajectory, t: e.t, tension_min: e.tension_min, tension_max: e.tension_max, bounds: e.bounds }
     }
 }
 
