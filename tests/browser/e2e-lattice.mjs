@@ -2,7 +2,8 @@
 // Chromium driven by playwright-core, against the built page (scripts/build-page.sh):
 //   node tests/browser/e2e-lattice.mjs [PAGE_DIR]      (default: target/page)
 // - the box preset's x–z lattice at y = 2 (pose fig310), 7 values per axis over x ∈ [0.2, 3.8],
-//   z ∈ [0.3, 3.7] (thesis Fig. 3.10), built in a Web Worker: every ray's feasible pieces and
+//   z ∈ [0.3, 3.7] (thesis Fig. 3.10), its rays computed by Web Workers (as many as the machine
+//   has cores, at most 8) and joined on the page: every ray's feasible pieces and
 //   their components in the cross-section equal `cablenav lattice … --json` for the same request,
 //   the component count too, and the 3-D view draws the lattice; Cancel stops a larger build;
 // - lattice planning of cdpr7-box "over-box" in a worker: the page keeps drawing frames while it
@@ -39,7 +40,7 @@ async function request(pose, axes, ranges, steps) {
   await page.dispatchEvent('input[data-testid="lattice-steps"]', 'change');
 }
 
-await test('the box preset\'s x–z lattice at y = 2 (7 steps), built in a worker, equals `cablenav lattice`', async () => {
+await test('the box preset\'s x–z lattice at y = 2 (7 steps), built in workers, equals `cablenav lattice`', async () => {
   const ranges = [[0.2, 3.8], [0.3, 3.7]];
   await request('fig310', ['x', 'z'], ranges, 7);
   await page.click('[data-testid="lattice-build"]');
@@ -91,20 +92,21 @@ await test('the box preset\'s x–z lattice at y = 2 (7 steps), built in a worke
   return `${cli.rays.length} rays, ${lines.length} stretches (${feasibleCount} feasible), ${cli.components} component(s) as the CLI; x-ray at z = 0.8667 from x = ${cli.rays[fig].feasible[0][0].toFixed(4)}; 3-D view drew ${await drawn()} pieces`;
 });
 
-await test('Cancel stops a lattice build in its worker', async () => {
+await test('Cancel stops a lattice build in its workers', async () => {
   // 2 × 400 rays: seconds of work in wasm
   await request('fig310', ['x', 'z'], [[0.2, 3.8], [0.3, 3.7]], 400);
   await page.click('[data-testid="lattice-build"]');
   await page.waitForSelector('[data-testid="lattice-state"][data-state="running"]', { state: 'attached', timeout: TIMEOUT });
   await page.waitForFunction(() => document.querySelector('[data-testid="lattice-progress"]').value > 0, null, { timeout: TIMEOUT, polling: 50 });
   const at = await page.$eval('[data-testid="lattice-progress"]', (p) => p.value);
+  const readout = (await page.textContent('[data-testid="lattice-state"]')).trim();
   await page.click('[data-testid="lattice-cancel"]');
   await page.waitForSelector('[data-testid="lattice-state"][data-state="idle"]', { state: 'attached', timeout: TIMEOUT });
   await page.waitForTimeout(500);
   if (await page.$('[data-testid="chart-lattice"]')) throw new Error('a lattice is shown after Cancel');
   if (await page.$eval('button[data-testid="lattice-build"]', (b) => b.disabled)) throw new Error('Build is still disabled after Cancel');
   problems.assertNone();
-  return `stopped at ${(at * 100).toFixed(0)} % of 800 rays`;
+  return `stopped at ${(at * 100).toFixed(0)} % of 800 rays (“${readout}”)`;
 });
 
 await test('lattice planning of cdpr7-box "over-box" in a worker: the page keeps drawing; the strip equals `cablenav verify` on the exported plan', async () => {

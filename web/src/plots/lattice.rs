@@ -6,14 +6,15 @@
 
 use super::geom::{polyline, ticks, Scale};
 use super::section::{CrossSection, SectionControls};
-use super::slice::{path_points, slice_copies, Overlay};
+use super::slice::{path_points, row_blocks, slice_copies, Overlay};
 use super::strip::css;
 use super::Chart;
 use crate::logic::{fmt_exact, fmt_num};
 use crate::state::Shared;
 use crate::view3d::scene::Rgba;
 use crate::worker::host::{self, Running};
-use crate::worker::protocol::{Job, LatticeResult, Reply};
+use crate::worker::jobs::{join_lattice, lattice_spec};
+use crate::worker::protocol::{Job, LatticeResult, RaySections, Reply};
 use cablenav::model::Coord;
 use leptos::prelude::*;
 
@@ -114,20 +115,22 @@ pub fn stretches(r: &LatticeResult) -> Vec<Stretch> {
         .collect()
 }
 
-/// The cross-section's controls and plot. The lattice is built in a Web Worker (progress and
-/// Cancel; Cancel terminates it) and kept in `lattice`, which the 3-D view draws too.
+/// The cross-section's controls and plot. The lattice's rays are computed by several Web
+/// Workers at once (a block of rays each, [`row_blocks`]), then joined here into the core's graph
+/// and components ([`join_lattice`], as the slice map joins its rows), with progress and Cancel
+/// (which terminates the workers); the result is kept in `lattice`, which the 3-D view draws too.
 #[component]
 pub fn LatticePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, lattice: RwSignal<LatticeState>, overlay: Signal<Overlay>) -> impl IntoView {
     let scenario = Signal::derive(move || parsed.get().0.as_ref().as_ref().ok().cloned());
     let section = CrossSection::new();
     let steps = RwSignal::new(7usize);
     let progress = RwSignal::new(None::<(f64, String)>);
-    let running: StoredValue<Option<Running>, LocalStorage> = StoredValue::new_local(None);
+    let running: StoredValue<Vec<Running>, LocalStorage> = StoredValue::new_local(Vec::new());
     let generation = StoredValue::new(0u32);
     let stop = move || {
         generation.update_value(|g| *g += 1);
         running.update_value(|r| r.iter().for_each(Running::cancel));
-        running.set_value(None);
+        running.set_value(Vec::new());
         progress.set(None);
     };
     // a new scenario resets the choices, stops a build and drops the lattice
@@ -139,43 +142,66 @@ pub fn LatticePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>
         }
     });
     let start = move |_| {
-        let Some(json) = source.try_get_untracked() else { return };
+        let (Some(s), Some(json)) = (scenario.get_untracked(), source.try_get_untracked()) else { return };
         stop();
         let this = generation.get_value();
-        let (a, r) = (section.axes.get_untracked(), section.range.get_untracked());
-        let job = Job::Lattice {
-            scenario: json,
-            pose: section.pose.get_untracked(),
-            axes: a.iter().map(|c| c.name().to_string()).collect(),
-            ranges: r.to_vec(),
-            steps: steps.get_untracked(),
+        let (pose, a, r, n) = (section.pose.get_untracked(), section.axes.get_untracked(), section.range.get_untracked(), steps.get_untracked());
+        let axes: Vec<String> = a.iter().map(|c| c.name().to_string()).collect();
+        // the request's checks first (the core's errors), before any worker starts
+        let spec = match lattice_spec(&s, &pose, &axes, r.to_vec(), n) {
+            Ok(spec) => spec,
+            Err(e) => return lattice.set(Some(Shared::new(Err(e)))),
         };
-        let on_reply = move |reply: Reply| {
-            if generation.get_value() != this {
-                return;
-            }
-            let result = match reply {
-                Reply::Progress { fraction, detail } => {
-                    progress.set(Some((fraction, detail)));
+        let blocks = row_blocks(spec.ray_count() as usize, host::parallelism());
+        let parts: StoredValue<Vec<Option<Vec<RaySections>>>> = StoredValue::new(vec![None; blocks.len()]);
+        let fractions: StoredValue<Vec<f64>> = StoredValue::new(vec![0.0; blocks.len()]);
+        let workers = blocks.len();
+        let mut started = Vec::new();
+        for (b, rays) in blocks.iter().enumerate() {
+            let job = Job::LatticeRays { scenario: json.clone(), pose: pose.clone(), axes: axes.clone(), ranges: r.to_vec(), steps: n, rays: *rays };
+            let (s, spec) = (s.clone(), spec.clone());
+            let on_reply = move |reply: Reply| {
+                if generation.get_value() != this {
                     return;
                 }
-                Reply::Lattice { lattice } => Ok(lattice),
-                Reply::Failed { error } => Err(error),
-                Reply::Planned { .. } | Reply::Sliced { .. } | Reply::Tension { .. } => Err("the worker answered a lattice job with another job's reply".into()),
+                let result = match reply {
+                    Reply::Progress { fraction, .. } => {
+                        fractions.update_value(|f| f[b] = fraction);
+                        let all = fractions.with_value(|f| f.iter().sum::<f64>() / f.len() as f64);
+                        progress.set(Some((all.min(0.99), format!("{:.0} % of the rays ({workers} workers)", all * 100.0))));
+                        return;
+                    }
+                    Reply::LatticeRays { sections, .. } => {
+                        parts.update_value(|p| p[b] = Some(sections));
+                        fractions.update_value(|f| f[b] = 1.0);
+                        if parts.with_value(|p| p.iter().any(Option::is_none)) {
+                            let done = parts.with_value(|p| p.iter().filter(|x| x.is_some()).count());
+                            progress.set(Some((fractions.with_value(|f| f.iter().sum::<f64>() / f.len() as f64).min(0.99), format!("{done} of {workers} ray blocks done")))); 
+                            return;
+                        }
+                        let all: Vec<RaySections> = parts.with_value(|p| p.iter().flatten().flatten().cloned().collect());
+                        join_lattice(&s, spec.clone(), &all)
+                    }
+                    Reply::Failed { error } => Err(error),
+                    Reply::Planned { .. } | Reply::Sliced { .. } | Reply::Tension { .. } => Err("the worker answered a lattice job with another job's reply".into()),
+                };
+                lattice.set(Some(Shared::new(result)));
+                generation.update_value(|g| *g += 1);
+                progress.set(None);
+                running.update_value(|r| std::mem::take(r).into_iter().for_each(host::retire));
             };
-            lattice.set(Some(Shared::new(result)));
-            generation.update_value(|g| *g += 1);
-            progress.set(None);
-            running.update_value(|r| r.take().into_iter().for_each(host::retire));
-        };
-        match host::start(&job, on_reply) {
-            Ok(w) => {
-                running.set_value(Some(w));
-                lattice.set(None);
-                progress.set(Some((0.0, "starting a worker…".into())));
+            match host::start(&job, on_reply) {
+                Ok(w) => started.push(w),
+                Err(e) => {
+                    started.iter().for_each(Running::cancel);
+                    progress.set(None);
+                    return lattice.set(Some(Shared::new(Err(e))));
+                }
             }
-            Err(e) => lattice.set(Some(Shared::new(Err(e)))),
         }
+        running.set_value(started);
+        lattice.set(None);
+        progress.set(Some((0.0, format!("starting {workers} worker(s)…"))));
     };
     let busy = move || progress.get().is_some();
     view! {
@@ -193,7 +219,7 @@ pub fn LatticePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>
             <button data-testid="lattice-cancel" on:click=move |_| stop() disabled=move || !busy()>"Cancel"</button>
             <progress data-testid="lattice-progress" max="1" prop:value=move || progress.get().map_or(0.0, |p| p.0) aria-label="lattice progress"></progress>
             <span class="readout" data-testid="lattice-state" data-state=move || if busy() { "running" } else { "idle" } aria-live="polite">
-                {move || progress.get().map(|p| format!("{} (in a worker)", p.1))}
+                {move || progress.get().map(|p| p.1)}
             </span>
         </SectionControls>
         {move || lattice.get().map(|r| match r.0.as_ref() {

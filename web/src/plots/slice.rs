@@ -202,7 +202,7 @@ pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, 
                     }
                     Reply::Failed { error } => Err(error),
                     Reply::Progress { .. } => return,
-                    Reply::Planned { .. } | Reply::Lattice { .. } | Reply::Tension { .. } => Err("the worker answered a slice job with another job's reply".into()),
+                    Reply::Planned { .. } | Reply::LatticeRays { .. } | Reply::Tension { .. } => Err("the worker answered a slice job with another job's reply".into()),
                 };
                 map.set(Some(Shared::new(result)));
                 generation.update_value(|g| *g += 1);

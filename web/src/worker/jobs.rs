@@ -1,8 +1,8 @@
 //! Running a [`Job`] to its end, reporting [`Reply`]s as it goes: plain Rust over the core,
 //! tested natively (the worker calls [`run`]; so do the tests).
 
-use super::protocol::{pose_to_wire, Job, LatticeResult, PlannedTrajectory, Reply, WireReport};
-use cablenav::lattice::{Lattice, LatticeSpec};
+use super::protocol::{pose_to_wire, Job, LatticeResult, PlannedTrajectory, RaySections, Reply, WireReport};
+use cablenav::lattice::{Lattice, LatticeSpec, Ray};
 use crate::logic::fmt_num;
 use cablenav::model::{Coord, Pose};
 use cablenav::plan::choice::{self, Details, PathPlanner, PlanResult, PlannerKind, PlannerOptions, Progress};
@@ -124,7 +124,9 @@ pub fn run(job: Job, report: &mut dyn FnMut(Reply), now: fn() -> f64) {
     let last = match job {
         Job::Plan { scenario, query, planner: id, max_charts } => plan(&scenario, &query, &id, max_charts, report, now),
         Job::Slice { scenario, pose, axes, res, range, rows } => slice_rows(&scenario, &pose, &axes, res, range, rows),
-        Job::Lattice { scenario, pose, axes, ranges, steps } => lattice(&scenario, &pose, &axes, ranges, steps, report, now),
+        Job::LatticeRays { scenario, pose, axes, ranges, steps, rays } => {
+            lattice_rays(&scenario, &pose, &axes, ranges, steps, rays, report, now)
+        }
         Job::Tension { scenario, name, samples } => tension(&scenario, &name, &samples),
     };
     report(last.unwrap_or_else(|error| Reply::Failed { error }));
@@ -185,26 +187,68 @@ fn tension(json: &str, name: &str, samples: &[(f64, [u64; 7])]) -> Result<Reply,
     Ok(Reply::Tension { envelope: envelope.into() })
 }
 
-fn lattice(json: &str, pose: &str, axes: &[String], ranges: Vec<[f64; 2]>, steps: usize, report: &mut dyn FnMut(Reply), now: fn() -> f64) -> Result<Reply, String> {
-    let s = scenario(json)?;
+/// The checked lattice request of a [`Job::LatticeRays`] (the page checks it before starting
+/// workers; each worker checks it again).
+pub fn lattice_spec(s: &Scenario, pose: &str, axes: &[String], ranges: Vec<[f64; 2]>, steps: usize) -> Result<LatticeSpec, String> {
     let coords = axes.iter().map(|n| Coord::parse(n).ok_or_else(|| format!("unknown coordinate “{n}”"))).collect::<Result<Vec<_>, _>>()?;
     let at = s.pose(pose).map_err(|e| e.to_string())?.coords();
-    let spec = LatticeSpec::new(coords, ranges, vec![steps], at).map_err(|e| e.to_string())?;
-    let mut l = Lattice::new(&s, spec);
+    LatticeSpec::new(coords, ranges, vec![steps], at).map_err(|e| e.to_string())
+}
+
+#[allow(clippy::too_many_arguments)]
+fn lattice_rays(
+    json: &str,
+    pose: &str,
+    axes: &[String],
+    ranges: Vec<[f64; 2]>,
+    steps: usize,
+    rays: [usize; 2],
+    report: &mut dyn FnMut(Reply),
+    now: fn() -> f64,
+) -> Result<Reply, String> {
+    let s = scenario(json)?;
+    let spec = lattice_spec(&s, pose, axes, ranges, steps)?;
+    let total = spec.ray_count() as usize;
+    if rays[0] > rays[1] || rays[1] > total {
+        return Err(format!("rays {}..{} of a lattice of {total}", rays[0], rays[1]));
+    }
+    let l = Lattice::new(&s, spec);
+    let mut sections = Vec::with_capacity(rays[1] - rays[0]);
     let mut since = now();
-    loop {
-        let p = l.step(1);
-        if p.done {
-            break;
-        }
+    for r in rays[0]..rays[1] {
+        let (a, cell) = l.spec.ray_at(r);
+        let sec = l.cast(l.spec.coords(&cell), a);
+        sections.push(RaySections::new(&sec.feasible, &sec.uncertain));
         if now() - since >= PROGRESS_MS {
-            let fraction = p.rays_done as f64 / p.rays_total.max(1) as f64;
-            report(Reply::Progress { fraction: fraction.min(0.99), detail: format!("{} of {} rays", p.rays_done, p.rays_total) });
+            let done = sections.len();
+            report(Reply::Progress { fraction: done as f64 / (rays[1] - rays[0]).max(1) as f64, detail: format!("{done} of {} rays", rays[1] - rays[0]) });
             since = now();
         }
     }
-    let r = l.report().ok_or("the lattice ended without a report")?;
-    Ok(Reply::Lattice { lattice: LatticeResult::from(&r) })
+    Ok(Reply::LatticeRays { rays, sections })
+}
+
+/// The lattice of `spec` from every ray's sections (in ray order, as [`Job::LatticeRays`] blocks
+/// give them): the core's graph and components over them, as the page draws it.
+pub fn join_lattice(s: &Scenario, spec: LatticeSpec, sections: &[RaySections]) -> Result<LatticeResult, String> {
+    let total = spec.ray_count() as usize;
+    if sections.len() != total {
+        return Err(format!("{} ray(s) for a lattice of {total}", sections.len()));
+    }
+    let mut l = Lattice::new(s, spec);
+    l.rays = sections
+        .iter()
+        .enumerate()
+        .map(|(r, sec)| {
+            let (a, cell) = l.spec.ray_at(r);
+            let (coord, c) = (l.spec.axes[a], l.spec.coords(&cell));
+            let fixed = Coord::ALL.into_iter().filter(|&k| k != coord).map(|k| (k.name(), c[k.index()])).collect();
+            Ray { vary: coord.name(), axis: a, cell, fixed, feasible: sec.feasible(), uncertain: sec.uncertain() }
+        })
+        .collect();
+    // every ray is there: this step computes none and builds the graph
+    l.step(1);
+    l.report().map(|r| LatticeResult::from(&r)).ok_or_else(|| "the lattice's graph was not built".to_string())
 }
 
 fn slice_rows(json: &str, pose: &str, axes: &[String; 2], res: usize, range: [[f64; 2]; 2], rows: [usize; 2]) -> Result<Reply, String> {
@@ -274,23 +318,31 @@ mod tests {
     }
 
     #[test]
-    fn a_lattice_job_gives_the_cores_lattice() {
+    fn lattice_rays_in_blocks_join_into_the_cores_lattice() {
         let json = PRESETS[find("cdpr7-box").unwrap()].json;
-        let mut replies = vec![];
-        let job = Job::Lattice { scenario: json.into(), pose: "fig310".into(), axes: vec!["x".into(), "z".into()], ranges: vec![[0.2, 3.8], [0.3, 3.7]], steps: 7 };
-        run(job, &mut |r| replies.push(r), clock);
-        let Some(Reply::Lattice { lattice }) = replies.last() else { panic!("{replies:?}") };
         let s = Scenario::from_json(json).unwrap();
-        let spec = LatticeSpec::new(vec![Coord::X, Coord::Z], vec![[0.2, 3.8], [0.3, 3.7]], vec![7], s.pose("fig310").unwrap().coords()).unwrap();
-        let core = Lattice::build(&s, spec).report().unwrap();
-        assert_eq!(*lattice, LatticeResult::from(&core));
-        assert_eq!((lattice.rays.len(), lattice.components), (14, core.components));
+        let (axes, ranges) = (vec!["x".to_string(), "z".to_string()], vec![[0.2, 3.8], [0.3, 3.7]]);
+        let mut sections = vec![];
+        for rays in [[0, 5], [5, 6], [6, 14]] {
+            let mut replies = vec![];
+            let job = Job::LatticeRays { scenario: json.into(), pose: "fig310".into(), axes: axes.clone(), ranges: ranges.clone(), steps: 7, rays };
+            run(job, &mut |r| replies.push(r), clock);
+            // through JSON, as the page gets it
+            let text = super::super::protocol::encode_reply(1, replies.last().unwrap());
+            let Some(Ok(envelope)) = super::super::protocol::decode_reply(&text) else { panic!("{text}") };
+            let Reply::LatticeRays { rays: got, sections: mut part } = envelope.body else { panic!("{text}") };
+            assert_eq!((got, part.len()), (rays, rays[1] - rays[0]));
+            sections.append(&mut part);
+        }
+        let spec = lattice_spec(&s, "fig310", &axes, ranges.clone(), 7).unwrap();
+        let joined = join_lattice(&s, spec.clone(), &sections).unwrap();
+        let core = Lattice::build(&s, spec.clone()).report().unwrap();
+        assert_eq!(joined, LatticeResult::from(&core), "the same rays, bit for bit, and the same graph");
+        assert_eq!((joined.rays.len(), joined.components), (14, core.components));
         // the x-ray at z = 0.8667 starts at x ≈ 2.002 (thesis Fig. 3.10)
-        let ray = lattice.rays.iter().find(|r| r.vary == "x" && (r.at[2] - (0.3 + 3.4 / 6.0)).abs() < 1e-12).unwrap();
+        let ray = joined.rays.iter().find(|r| r.vary == "x" && (r.at[2] - (0.3 + 3.4 / 6.0)).abs() < 1e-12).unwrap();
         assert!((ray.feasible[0][0] - 2.002).abs() < 1e-3 && ray.at[0] == 0.2 && ray.at[1] == 2.0, "{ray:?}");
-        // it survives the trip through JSON
-        let text = super::super::protocol::encode_reply(1, replies.last().unwrap());
-        assert!(matches!(super::super::protocol::decode_reply(&text), Some(Ok(_))));
+        assert!(join_lattice(&s, spec, &sections[1..]).unwrap_err().contains("13 ray(s)"));
     }
 
     #[test]
@@ -319,11 +371,13 @@ mod tests {
         run(Job::Plan { scenario: json.clone(), query: "q1-q2".into(), planner: "nope".into(), max_charts: 1 }, &mut |r| replies.push(r), clock);
         run(Job::Plan { scenario: "{".into(), query: "q".into(), planner: "continuation".into(), max_charts: 1 }, &mut |r| replies.push(r), clock);
         run(Job::Slice { scenario: json.clone(), pose: "q1".into(), axes: ["x".into(), "w".into()], res: 4, range: [[0.0, 1.0]; 2], rows: [0, 4] }, &mut |r| replies.push(r), clock);
-        run(Job::Lattice { scenario: json.clone(), pose: "q1".into(), axes: vec!["x".into(), "y".into()], ranges: vec![[0.0, 1.0]; 2], steps: 0 }, &mut |r| replies.push(r), clock);
-        run(Job::Lattice { scenario: json, pose: "nowhere".into(), axes: vec!["x".into()], ranges: vec![[0.0, 1.0]], steps: 3 }, &mut |r| replies.push(r), clock);
+        let lattice = |pose: &str, steps, rays| Job::LatticeRays { scenario: json.clone(), pose: pose.into(), axes: vec!["x".into(), "y".into()], ranges: vec![[0.0, 1.0]; 2], steps, rays };
+        run(lattice("q1", 0, [0, 1]), &mut |r| replies.push(r), clock);
+        run(lattice("nowhere", 3, [0, 1]), &mut |r| replies.push(r), clock);
+        run(lattice("q1", 3, [2, 7]), &mut |r| replies.push(r), clock);
         let errors: Vec<&str> = replies.iter().filter_map(|r| if let Reply::Failed { error } = r { Some(error.as_str()) } else { None }).collect();
-        assert_eq!(errors.len(), 5, "{replies:?}");
-        assert!(errors[3].contains("steps") && errors[4].contains("nowhere"), "{errors:?}");
+        assert_eq!(errors.len(), 6, "{replies:?}");
+        assert!(errors[3].contains("steps") && errors[4].contains("nowhere") && errors[5].contains("rays 2..7 of a lattice of 6"), "{errors:?}");
         assert!(errors[0].contains("not available") && errors[2].contains("“w”"), "{errors:?}");
     }
 }

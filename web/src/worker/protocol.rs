@@ -30,9 +30,11 @@ pub enum Job {
         range: [[f64; 2]; 2],
         rows: [usize; 2],
     },
-    /// The ray lattice over `axes` (coordinate names) with `ranges` and `steps` values per axis,
-    /// the other coordinates from pose `pose`.
-    Lattice { scenario: String, pose: String, axes: Vec<String>, ranges: Vec<[f64; 2]>, steps: usize },
+    /// Rays `rays[0]..rays[1]` (in the core's `LatticeSpec::ray_at` order) of the ray lattice
+    /// over `axes` (coordinate names) with `ranges` and `steps` values per axis, the other
+    /// coordinates from pose `pose` (all rays: `[0, total]`; the page splits them over workers
+    /// and joins them with [`super::jobs::join_lattice`]).
+    LatticeRays { scenario: String, pose: String, axes: Vec<String>, ranges: Vec<[f64; 2]>, steps: usize, rays: [usize; 2] },
     /// The tension envelope of the path `name` at the samples `(t, pose)` (see [`pose_to_wire`]).
     Tension { scenario: String, name: String, samples: Vec<(f64, [u64; 7])> },
 }
@@ -47,8 +49,9 @@ pub enum Reply {
     /// the path (when there is one) as poses (see [`pose_to_wire`]), the lattice planner's A*
     /// polyline (empty for the atlas) and the planned trajectory with its exact verification.
     Planned { status: String, summary: String, path: Vec<[u64; 7]>, polyline: Vec<[u64; 7]>, trajectory: Option<PlannedTrajectory> },
-    /// A ray lattice, complete.
-    Lattice { lattice: LatticeResult },
+    /// Rays `rays[0]..rays[1]` of a lattice: each ray's feasible and uncertain intervals, as bits
+    /// (so the join builds the very graph the core builds).
+    LatticeRays { rays: [usize; 2], sections: Vec<RaySections> },
     /// A tension envelope.
     Tension { envelope: WireEnvelope },
     /// A slice map's rows `rows[0]..rows[1]`: their cells' classes, row-major.
@@ -135,6 +138,32 @@ impl WireReport {
             uncertain: from_bits(&self.uncertain),
             warnings: self.warnings.clone(),
         }
+    }
+}
+
+/// One ray's exact sections: feasible and uncertain intervals of the varied coordinate, as bits.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RaySections {
+    /// Feasible intervals.
+    pub feasible: Vec<[u64; 2]>,
+    /// Uncertain intervals.
+    pub uncertain: Vec<[u64; 2]>,
+}
+
+impl RaySections {
+    /// The sections as sent.
+    pub fn new(feasible: &[[f64; 2]], uncertain: &[[f64; 2]]) -> RaySections {
+        RaySections { feasible: to_bits(feasible), uncertain: to_bits(uncertain) }
+    }
+
+    /// The feasible intervals, bit for bit.
+    pub fn feasible(&self) -> Vec<[f64; 2]> {
+        from_bits(&self.feasible)
+    }
+
+    /// The uncertain intervals, bit for bit.
+    pub fn uncertain(&self) -> Vec<[f64; 2]> {
+        from_bits(&self.uncertain)
     }
 }
 
