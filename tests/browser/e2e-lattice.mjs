@@ -93,20 +93,31 @@ await test('the box preset\'s x–z lattice at y = 2 (7 steps), built in workers
 });
 
 await test('Cancel stops a lattice build in its workers', async () => {
-  // 2 × 400 rays: seconds of work in wasm
-  await request('fig310', ['x', 'z'], [[0.2, 3.8], [0.3, 3.7]], 400);
+  // 2 × 1000 rays: many seconds of work in wasm
+  await request('fig310', ['x', 'z'], [[0.2, 3.8], [0.3, 3.7]], 1000);
   await page.click('[data-testid="lattice-build"]');
-  await page.waitForSelector('[data-testid="lattice-state"][data-state="running"]', { state: 'attached', timeout: TIMEOUT });
-  await page.waitForFunction(() => document.querySelector('[data-testid="lattice-progress"]').value > 0, null, { timeout: TIMEOUT, polling: 50 });
-  const at = await page.$eval('[data-testid="lattice-progress"]', (p) => p.value);
-  const readout = (await page.textContent('[data-testid="lattice-state"]')).trim();
-  await page.click('[data-testid="lattice-cancel"]');
+  // as soon as the bar moves, Cancel, in the same task (no round trip for the build to end in)
+  const { at, readout, state } = await page.evaluate(() => new Promise((ok) => {
+    const poll = () => {
+      const bar = document.querySelector('[data-testid="lattice-progress"]');
+      const st = document.querySelector('[data-testid="lattice-state"]');
+      if (st.dataset.state === 'running' && bar.value > 0) {
+        const seen = { at: bar.value, readout: st.textContent.trim(), state: st.dataset.state };
+        document.querySelector('[data-testid="lattice-cancel"]').click();
+        ok(seen);
+      } else if (document.querySelector('[data-testid="chart-lattice"] [data-testid="lattice-ray"]') && st.dataset.state === 'idle') {
+        ok({ at: 1, readout: 'finished before Cancel', state: 'idle' });
+      } else setTimeout(poll, 10);
+    };
+    poll();
+  }));
+  if (state !== 'running') throw new Error(`the build was not running when Cancel was pressed: ${readout}`);
   await page.waitForSelector('[data-testid="lattice-state"][data-state="idle"]', { state: 'attached', timeout: TIMEOUT });
   await page.waitForTimeout(500);
   if (await page.$('[data-testid="chart-lattice"]')) throw new Error('a lattice is shown after Cancel');
   if (await page.$eval('button[data-testid="lattice-build"]', (b) => b.disabled)) throw new Error('Build is still disabled after Cancel');
   problems.assertNone();
-  return `stopped at ${(at * 100).toFixed(0)} % of 800 rays (“${readout}”)`;
+  return `stopped at ${(at * 100).toFixed(0)} % of 2000 rays (“${readout}”)`;
 });
 
 await test('lattice planning of cdpr7-box "over-box" in a worker: the page keeps drawing; the strip equals `cablenav verify` on the exported plan', async () => {
