@@ -16,7 +16,8 @@
 #                                      3-D (against the CLI), undo/redo, planning in a Web Worker
 #                                      while typing and orbiting
 #   8b. tests/browser/e2e-lattice.mjs  the ray lattice panel and 3-D drawing against `cablenav lattice`,
-#                                      Cancel, lattice planning in a worker against `cablenav verify`
+#                                      Cancel, lattice planning in a worker (cdpr7-box over-box,
+#                                      Robocrane q1-q2) against `cablenav verify`
 #   9. python/ (maturin, pytest)       the wheel built and installed into target/venv; pytest
 #                                      compares it with the CLI that step 1 built, runs the sweep
 #                                      example serially, on threads and on a Dask LocalCluster
