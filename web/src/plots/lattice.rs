@@ -153,55 +153,40 @@ pub fn LatticePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>
             Err(e) => return lattice.set(Some(Shared::new(Err(e)))),
         };
         let blocks = row_blocks(spec.ray_count() as usize, host::parallelism());
-        let parts: StoredValue<Vec<Option<Vec<RaySections>>>> = StoredValue::new(vec![None; blocks.len()]);
-        let fractions: StoredValue<Vec<f64>> = StoredValue::new(vec![0.0; blocks.len()]);
         let workers = blocks.len();
-        let mut started = Vec::new();
-        for (b, rays) in blocks.iter().enumerate() {
-            let job = Job::LatticeRays { scenario: json.clone(), pose: pose.clone(), axes: axes.clone(), ranges: r.to_vec(), steps: n, rays: *rays };
-            let (s, spec) = (s.clone(), spec.clone());
-            let on_reply = move |reply: Reply| {
-                if generation.get_value() != this {
-                    return;
-                }
-                let result = match reply {
-                    Reply::Progress { fraction, .. } => {
-                        fractions.update_value(|f| f[b] = fraction);
-                        let all = fractions.with_value(|f| f.iter().sum::<f64>() / f.len() as f64);
-                        progress.set(Some((all.min(0.99), format!("{:.0} % of the rays ({workers} workers)", all * 100.0))));
-                        return;
-                    }
-                    Reply::LatticeRays { sections, .. } => {
-                        parts.update_value(|p| p[b] = Some(sections));
-                        fractions.update_value(|f| f[b] = 1.0);
-                        if parts.with_value(|p| p.iter().any(Option::is_none)) {
-                            let done = parts.with_value(|p| p.iter().filter(|x| x.is_some()).count());
-                            progress.set(Some((fractions.with_value(|f| f.iter().sum::<f64>() / f.len() as f64).min(0.99), format!("{done} of {workers} ray blocks done")))); 
-                            return;
-                        }
-                        let all: Vec<RaySections> = parts.with_value(|p| p.iter().flatten().flatten().cloned().collect());
-                        join_lattice(&s, spec.clone(), &all)
-                    }
-                    Reply::Failed { error } => Err(error),
-                    Reply::Planned { .. } | Reply::Sliced { .. } | Reply::Tension { .. } => Err("the worker answered a lattice job with another job's reply".into()),
-                };
-                lattice.set(Some(Shared::new(result)));
-                generation.update_value(|g| *g += 1);
-                progress.set(None);
-                running.update_value(|r| std::mem::take(r).into_iter().for_each(host::retire));
-            };
-            match host::start(&job, on_reply) {
-                Ok(w) => started.push(w),
-                Err(e) => {
-                    started.iter().for_each(Running::cancel);
-                    progress.set(None);
-                    return lattice.set(Some(Shared::new(Err(e))));
-                }
+        let jobs: Vec<Job> = blocks
+            .iter()
+            .map(|rays| Job::LatticeRays { scenario: json.clone(), pose: pose.clone(), axes: axes.clone(), ranges: r.to_vec(), steps: n, rays: *rays })
+            .collect();
+        let part = |reply: Reply| match reply {
+            Reply::Progress { .. } => None,
+            Reply::LatticeRays { sections, .. } => Some(Ok(sections)),
+            Reply::Failed { error } => Some(Err(error)),
+            _ => Some(Err("the worker answered a lattice job with another job's reply".to_string())),
+        };
+        let on_progress = move |f: f64, parts: usize| {
+            if generation.get_value() == this {
+                progress.set(Some((f.min(0.99), format!("{:.0} % of the rays, {parts} of {workers} blocks done ({workers} workers)", f * 100.0))));
             }
+        };
+        let on_done = move |parts: Result<Vec<Vec<RaySections>>, String>| {
+            if generation.get_value() != this {
+                return;
+            }
+            let result = parts.and_then(|p| join_lattice(&s, spec.clone(), &p.concat()));
+            lattice.set(Some(Shared::new(result)));
+            generation.update_value(|g| *g += 1);
+            progress.set(None);
+            running.update_value(|r| std::mem::take(r).into_iter().for_each(host::retire));
+        };
+        match host::start_all(&jobs, part, on_progress, on_done) {
+            Ok(started) => {
+                running.set_value(started);
+                lattice.set(None);
+                progress.set(Some((0.0, format!("starting {workers} worker(s)…"))));
+            }
+            Err(e) => lattice.set(Some(Shared::new(Err(e)))),
         }
-        running.set_value(started);
-        lattice.set(None);
-        progress.set(Some((0.0, format!("starting {workers} worker(s)…"))));
     };
     let busy = move || progress.get().is_some();
     view! {

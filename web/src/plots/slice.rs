@@ -179,47 +179,39 @@ pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, 
         }
         let Some(json) = source.try_get_untracked() else { return };
         let blocks = row_blocks(n, host::parallelism());
-        let parts: StoredValue<Vec<Option<Vec<Class>>>> = StoredValue::new(vec![None; blocks.len()]);
-        progress.set(Some((0, blocks.len())));
-        let mut started = Vec::new();
-        for (b, rows) in blocks.iter().enumerate() {
-            let job = Job::Slice { scenario: json.clone(), pose: pose_name.clone(), axes: [a[0].name().to_string(), a[1].name().to_string()], res: n, range: r, rows: *rows };
-            let (s, pose_name) = (s.clone(), pose_name.clone());
-            let on_reply = move |reply: Reply| {
-                if generation.get_value() != this {
-                    return;
-                }
-                let result = match reply {
-                    Reply::Sliced { classes, .. } => {
-                        parts.update_value(|p| p[b] = Some(classes));
-                        let done = parts.with_value(|p| p.iter().filter(|x| x.is_some()).count());
-                        progress.set(Some((done, parts.with_value(Vec::len))));
-                        if parts.with_value(|p| p.iter().any(Option::is_none)) {
-                            return;
-                        }
-                        let classes: Vec<Class> = parts.with_value(|p| p.iter().flatten().flatten().copied().collect());
-                        cablenav::verify::slice::slice_from_classes(&s, &pose_name, a, n, r, classes).map_err(|e| e.to_string())
-                    }
-                    Reply::Failed { error } => Err(error),
-                    Reply::Progress { .. } => return,
-                    Reply::Planned { .. } | Reply::LatticeRays { .. } | Reply::Tension { .. } => Err("the worker answered a slice job with another job's reply".into()),
-                };
-                map.set(Some(Shared::new(result)));
-                generation.update_value(|g| *g += 1);
-                progress.set(None);
-                running.update_value(|r| std::mem::take(r).into_iter().for_each(host::retire));
-            };
-            match host::start(&job, on_reply) {
-                Ok(w) => started.push(w),
-                Err(e) => {
-                    started.iter().for_each(Running::cancel);
-                    progress.set(None);
-                    map.set(Some(Shared::new(Err(e))));
-                    return;
-                }
+        let jobs: Vec<Job> = blocks
+            .iter()
+            .map(|rows| Job::Slice { scenario: json.clone(), pose: pose_name.clone(), axes: [a[0].name().to_string(), a[1].name().to_string()], res: n, range: r, rows: *rows })
+            .collect();
+        let part = |reply: Reply| match reply {
+            Reply::Progress { .. } => None,
+            Reply::Sliced { classes, .. } => Some(Ok(classes)),
+            Reply::Failed { error } => Some(Err(error)),
+            _ => Some(Err("the worker answered a slice job with another job's reply".to_string())),
+        };
+        let workers = blocks.len();
+        let on_progress = move |_: f64, parts: usize| {
+            if generation.get_value() == this {
+                progress.set(Some((parts, workers)));
             }
+        };
+        let on_done = move |parts: Result<Vec<Vec<Class>>, String>| {
+            if generation.get_value() != this {
+                return;
+            }
+            let result = parts.and_then(|p| cablenav::verify::slice::slice_from_classes(&s, &pose_name, a, n, r, p.concat()).map_err(|e| e.to_string()));
+            map.set(Some(Shared::new(result)));
+            generation.update_value(|g| *g += 1);
+            progress.set(None);
+            running.update_value(|r| std::mem::take(r).into_iter().for_each(host::retire));
+        };
+        match host::start_all(&jobs, part, on_progress, on_done) {
+            Ok(started) => {
+                running.set_value(started);
+                progress.set(Some((0, workers)));
+            }
+            Err(e) => map.set(Some(Shared::new(Err(e)))),
         }
-        running.set_value(started);
     };
     view! {
         <SectionControls section scenario prefix="slice">
