@@ -71,7 +71,7 @@ fn apply(reply: Reply, query: &str, ui: Ui) -> bool {
                 let poses: Vec<_> = path.iter().map(pose_from_wire).collect();
                 let (start, goal) = (poses[0], poses[poses.len() - 1]);
                 let polyline = polyline.iter().map(pose_from_wire).collect();
-                let motion = trajectory.and_then(motion);
+                let motion = trajectory.and_then(|t| motion(*t));
                 ui.planned.set(Some(Shared::new(Planned { query: query.to_string(), start, goal, poses, polyline, motion })));
             }
             ui.state.set(RunState::Done(status));

@@ -157,7 +157,7 @@ fn plan(json: &str, query: &str, id: &str, max_charts: usize, report: &mut dyn F
     let r = p.result((now() - started) / 1000.0).ok_or("the planner ended without a result")?;
     let f = finished(&r);
     let trajectory = match &r.trajectory {
-        Some(t) => Some(planned_trajectory(json, t)?),
+        Some(t) => Some(Box::new(planned_trajectory(json, t)?)),
         None => None,
     };
     Ok(Reply::Planned {

@@ -48,7 +48,7 @@ pub enum Reply {
     /// A planning run ended: its status (`found`, `no_path`, `budget`, `unrepaired`), a summary,
     /// the path (when there is one) as poses (see [`pose_to_wire`]), the lattice planner's A*
     /// polyline (empty for the atlas) and the planned trajectory with its exact verification.
-    Planned { status: String, summary: String, path: Vec<[u64; 7]>, polyline: Vec<[u64; 7]>, trajectory: Option<PlannedTrajectory> },
+    Planned { status: String, summary: String, path: Vec<[u64; 7]>, polyline: Vec<[u64; 7]>, trajectory: Option<Box<PlannedTrajectory>> },
     /// Rays `rays[0]..rays[1]` of a lattice: each ray's feasible and uncertain intervals, as bits
     /// (so the join builds the very graph the core builds).
     LatticeRays { rays: [usize; 2], sections: Vec<RaySections> },
