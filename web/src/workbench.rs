@@ -20,6 +20,7 @@ use crate::view3d::{HandleEvent, Handles, SceneView, View3d};
 use crate::worker::host::{self, Running};
 use crate::worker::protocol::{pose_to_wire, Job, Reply};
 use cablenav::report::TensionEnvelope;
+use cablenav::verify::profile::ClearanceProfile;
 use glam::DVec3;
 use cablenav::model::{Pose, Trajectory};
 use cablenav::verify::profile;
@@ -248,59 +249,53 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         }))
     });
 
-    // the plots follow a drag at its end (the strip and the view follow every move)
-    let profile_data = Memo::new(move |prev: Option<&Option<_>>| {
-        if let (true, Some(p)) = (drag_active.get(), prev) {
-            return p.clone();
-        }
-        followed(parsed, planned, follow, trajectory, |s, path| {
-            let r = profile::clearances_at(s, &path.samples(PLOT_SAMPLES)).map_err(|e| e.to_string());
-            Some(Shared::new((r, format!("{}; x: {}", path.name(), path.param()))))
-        })
-    });
-    // the tension envelope is computed in a Web Worker (one wrench-set solve per sample): a new
-    // path starts a job and drops the previous one; a drag's result comes at its end
+    // the plots along the path (clearances, tension envelope) are computed in a Web Worker: a new
+    // path starts a job and drops the previous one; they follow a drag at its end (the strip and
+    // the view follow every move)
+    let profile_data = RwSignal::new(None::<Shared<(Result<ClearanceProfile, String>, String)>>);
     let envelope = RwSignal::new(None::<Shared<(Result<TensionEnvelope, String>, &'static str)>>);
-    let tension_run: StoredValue<Option<Running>, LocalStorage> = StoredValue::new_local(None);
-    let tension_generation = StoredValue::new(0u32);
+    let plots_run: StoredValue<Option<Running>, LocalStorage> = StoredValue::new_local(None);
+    let plots_generation = StoredValue::new(0u32);
     Effect::new(move |_| {
         if drag_active.get() {
             return;
         }
-        let request = followed(parsed, planned, follow, trajectory, |s, path| {
+        let request = followed(parsed, planned, follow, trajectory, |_, path| {
             let samples = path.samples(PLOT_SAMPLES).iter().map(|(t, p)| (*t, pose_to_wire(p))).collect();
-            // no samples: only the core's checks (no wrench section), at once
-            let refused = profile::tension_at(s, &path.name(), &[]).err().map(|e| e.to_string());
-            Some((refused, path.name(), path.param(), samples))
+            Some((path.name(), path.param(), samples))
         });
-        tension_generation.update_value(|g| *g += 1);
-        tension_run.update_value(|r| r.take().into_iter().for_each(|r| r.cancel()));
-        let Some((refused, name, param, samples)) = request else {
+        plots_generation.update_value(|g| *g += 1);
+        plots_run.update_value(|r| r.take().into_iter().for_each(|r| r.cancel()));
+        let Some((name, param, samples)) = request else {
+            profile_data.set(None);
             envelope.set(None);
             return;
         };
-        if let Some(e) = refused {
-            envelope.set(Some(Shared::new((Err(e), param))));
-            return;
-        }
         let Some(json) = source.try_get_untracked() else { return };
-        let this = tension_generation.get_value();
+        let (this, label) = (plots_generation.get_value(), format!("{name}; x: {param}"));
         let on_reply = move |reply: Reply| {
-            if tension_generation.get_value() != this {
+            if plots_generation.get_value() != this {
                 return;
             }
-            let result = match reply {
+            let (clearances, tension) = match reply {
                 Reply::Progress { .. } => return,
-                Reply::Tension { envelope } => Ok(envelope.into()),
-                Reply::Failed { error } => Err(error),
-                _ => Err("the worker answered a tension job with another job's reply".into()),
+                Reply::Profiles { clearances, tension } => (clearances.map(Into::into), tension.map(Into::into)),
+                Reply::Failed { error } => (Err(error.clone()), Err(error)),
+                _ => {
+                    let e = "the worker answered a plots job with another job's reply".to_string();
+                    (Err(e.clone()), Err(e))
+                }
             };
-            envelope.set(Some(Shared::new((result, param))));
-            tension_run.update_value(|r| r.take().into_iter().for_each(host::retire));
+            profile_data.set(Some(Shared::new((clearances, label.clone()))));
+            envelope.set(Some(Shared::new((tension, param))));
+            plots_run.update_value(|r| r.take().into_iter().for_each(host::retire));
         };
-        match host::start(&Job::Tension { scenario: json, name, samples }, on_reply) {
-            Ok(w) => tension_run.set_value(Some(w)),
-            Err(e) => envelope.set(Some(Shared::new((Err(e), param)))),
+        match host::start(&Job::Profiles { scenario: json, name: name.clone(), samples }, on_reply) {
+            Ok(w) => plots_run.set_value(Some(w)),
+            Err(e) => {
+                profile_data.set(Some(Shared::new((Err(e.clone()), format!("{name}; x: {param}")))));
+                envelope.set(Some(Shared::new((Err(e), param))));
+            }
         }
     });
     let overlay = Memo::new(move |_| {

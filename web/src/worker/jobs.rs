@@ -127,7 +127,7 @@ pub fn run(job: Job, report: &mut dyn FnMut(Reply), now: fn() -> f64) {
         Job::LatticeRays { scenario, pose, axes, ranges, steps, rays } => {
             lattice_rays(&scenario, &pose, &axes, ranges, steps, rays, report, now)
         }
-        Job::Tension { scenario, name, samples } => tension(&scenario, &name, &samples),
+        Job::Profiles { scenario, name, samples } => profiles(&scenario, &name, &samples),
     };
     report(last.unwrap_or_else(|error| Reply::Failed { error }));
 }
@@ -180,11 +180,13 @@ pub fn planned_trajectory(json: &str, t: &cablenav::model::Trajectory) -> Result
     Ok(PlannedTrajectory { scenario: text, name, report })
 }
 
-fn tension(json: &str, name: &str, samples: &[(f64, [u64; 7])]) -> Result<Reply, String> {
+fn profiles(json: &str, name: &str, samples: &[(f64, [u64; 7])]) -> Result<Reply, String> {
+    use cablenav::verify::profile::{clearances_at, tension_at};
     let s = scenario(json)?;
     let samples: Vec<(f64, Pose)> = samples.iter().map(|(t, p)| (*t, super::protocol::pose_from_wire(p))).collect();
-    let envelope = cablenav::verify::profile::tension_at(&s, name, &samples).map_err(|e| e.to_string())?;
-    Ok(Reply::Tension { envelope: envelope.into() })
+    let clearances = clearances_at(&s, &samples).map(Into::into).map_err(|e| e.to_string());
+    let tension = tension_at(&s, name, &samples).map(Into::into).map_err(|e| e.to_string());
+    Ok(Reply::Profiles { clearances, tension })
 }
 
 /// The checked lattice request of a [`Job::LatticeRays`] (the page checks it before starting
@@ -346,22 +348,36 @@ mod tests {
     }
 
     #[test]
-    fn a_tension_job_gives_the_cores_envelope() {
+    fn a_profiles_job_gives_the_cores_clearances_and_envelope() {
         let json = PRESETS[find("robocrane").unwrap()].json;
         let s = Scenario::from_json(json).unwrap();
         let t = &s.trajectories[0];
         let samples: Vec<(f64, Pose)> = (0..=8).map(|k| k as f64 / 8.0).map(|u| (u, t.pose_at(u))).collect();
         let mut replies = vec![];
         let wire = samples.iter().map(|(u, p)| (*u, pose_to_wire(p))).collect();
-        run(Job::Tension { scenario: json.into(), name: t.name.clone(), samples: wire }, &mut |r| replies.push(r), clock);
-        let Some(Reply::Tension { envelope }) = replies.last() else { panic!("{replies:?}") };
+        run(Job::Profiles { scenario: json.into(), name: t.name.clone(), samples: wire }, &mut |r| replies.push(r), clock);
+        // through JSON, as the page gets it
+        let text = super::super::protocol::encode_reply(1, replies.last().unwrap());
+        let Some(Ok(envelope)) = super::super::protocol::decode_reply(&text) else { panic!("{text}") };
+        let Reply::Profiles { clearances, tension } = envelope.body else { panic!("{text}") };
         let core = cablenav::verify::profile::tension_at(&s, &t.name, &samples).unwrap();
-        assert_eq!(cablenav::report::TensionEnvelope::from(envelope.clone()), core);
+        let got = cablenav::report::TensionEnvelope::from(tension.unwrap());
+        assert_eq!((got.t.len(), got.bounds.clone()), (core.t.len(), core.bounds.clone()));
+        let close = |a: &[Option<Vec<f64>>], b: &[Option<Vec<f64>>]| a.iter().flatten().flatten().zip(b.iter().flatten().flatten()).all(|(x, y)| (x - y).abs() <= 1e-12 * y.abs().max(1.0));
+        assert!(close(&got.tension_min, &core.tension_min) && close(&got.tension_max, &core.tension_max));
+        let core = cablenav::verify::profile::clearances_at(&s, &samples).unwrap();
+        let got = cablenav::verify::profile::ClearanceProfile::from(clearances.unwrap());
+        assert_eq!(got.samples.len(), core.samples.len());
+        for (g, c) in got.samples.iter().zip(&core.samples) {
+            assert_eq!((g.t, &g.violated, g.cable_cable.as_ref().map(|x| &x.between)), (c.t, &c.violated, c.cable_cable.as_ref().map(|x| &x.between)));
+            let d = |x: &Option<cablenav::verify::profile::Closest>| x.as_ref().map_or(0.0, |x| x.distance);
+            assert!((d(&g.cable_cable) - d(&c.cable_cable)).abs() <= 1e-12 && (d(&g.cable_obstacle) - d(&c.cable_obstacle)).abs() <= 1e-12);
+        }
         // no wrench set: the core's reason
         let mut replies = vec![];
         let plain = PRESETS[find("cdpr7-tree").unwrap()].json;
-        run(Job::Tension { scenario: plain.into(), name: "x".into(), samples: vec![] }, &mut |r| replies.push(r), clock);
-        assert!(matches!(replies.last(), Some(Reply::Failed { error }) if error.contains("wrench")), "{replies:?}");
+        run(Job::Profiles { scenario: plain.into(), name: "x".into(), samples: vec![] }, &mut |r| replies.push(r), clock);
+        assert!(matches!(replies.last(), Some(Reply::Profiles { clearances: Ok(_), tension: Err(error) }) if error.contains("wrench")), "{replies:?}");
     }
 
     #[test]

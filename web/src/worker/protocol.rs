@@ -5,6 +5,7 @@
 use cablenav::lattice::LatticeReport;
 use cablenav::model::Pose;
 use cablenav::report::{Boundary, Side, TensionEnvelope, VerifyReport};
+use cablenav::verify::profile::{ClearanceProfile, ClearanceSample, Closest};
 use cablenav::verify::slice::Class;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 use serde::{Deserialize, Serialize};
@@ -35,8 +36,9 @@ pub enum Job {
     /// coordinates from pose `pose` (all rays: `[0, total]`; the page splits them over workers
     /// and joins them with [`super::jobs::join_lattice`]).
     LatticeRays { scenario: String, pose: String, axes: Vec<String>, ranges: Vec<[f64; 2]>, steps: usize, rays: [usize; 2] },
-    /// The tension envelope of the path `name` at the samples `(t, pose)` (see [`pose_to_wire`]).
-    Tension { scenario: String, name: String, samples: Vec<(f64, [u64; 7])> },
+    /// The plots along the path `name` at the samples `(t, pose)` (see [`pose_to_wire`]): its
+    /// clearances and its tension envelope.
+    Profiles { scenario: String, name: String, samples: Vec<(f64, [u64; 7])> },
 }
 
 /// What a worker answers.
@@ -52,8 +54,8 @@ pub enum Reply {
     /// Rays `rays[0]..rays[1]` of a lattice: each ray's feasible and uncertain intervals, as bits
     /// (so the join builds the very graph the core builds).
     LatticeRays { rays: [usize; 2], sections: Vec<RaySections> },
-    /// A tension envelope.
-    Tension { envelope: WireEnvelope },
+    /// The clearances and the tension envelope along a path (each, or why not).
+    Profiles { clearances: Result<WireClearances, String>, tension: Result<WireEnvelope, String> },
     /// A slice map's rows `rows[0]..rows[1]`: their cells' classes, row-major.
     Sliced { rows: [usize; 2], classes: Vec<Class> },
     /// The job could not run; why.
@@ -186,6 +188,39 @@ impl From<TensionEnvelope> for WireEnvelope {
 impl From<WireEnvelope> for TensionEnvelope {
     fn from(e: WireEnvelope) -> TensionEnvelope {
         TensionEnvelope { trajectory: e.trajectory, t: e.t, tension_min: e.tension_min, tension_max: e.tension_max, bounds: e.bounds }
+    }
+}
+
+/// A [`ClearanceProfile`] for the plot (numbers as JSON decimals: within an ulp). Each sample:
+/// t, the least cable–cable and cable–obstacle distances with what they are between, and the
+/// conditions violated.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct WireClearances {
+    samples: Vec<(f64, Option<(f64, String)>, Option<(f64, String)>, Vec<String>)>,
+    clearances: [f64; 2],
+    membership_only: Vec<String>,
+}
+
+impl From<ClearanceProfile> for WireClearances {
+    fn from(p: ClearanceProfile) -> WireClearances {
+        let closest = |c: Option<Closest>| c.map(|c| (c.distance, c.between));
+        WireClearances {
+            samples: p.samples.into_iter().map(|s| (s.t, closest(s.cable_cable), closest(s.cable_obstacle), s.violated)).collect(),
+            clearances: [p.clearance_cable_cable, p.clearance_cable_obstacle],
+            membership_only: p.membership_only,
+        }
+    }
+}
+
+impl From<WireClearances> for ClearanceProfile {
+    fn from(w: WireClearances) -> ClearanceProfile {
+        let closest = |c: Option<(f64, String)>| c.map(|(distance, between)| Closest { distance, between });
+        ClearanceProfile {
+            samples: w.samples.into_iter().map(|(t, cc, co, violated)| ClearanceSample { t, cable_cable: closest(cc), cable_obstacle: closest(co), violated }).collect(),
+            clearance_cable_cable: w.clearances[0],
+            clearance_cable_obstacle: w.clearances[1],
+            membership_only: w.membership_only,
+        }
     }
 }
 
