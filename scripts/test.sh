@@ -15,6 +15,9 @@
 #   8. tests/browser/e2e-workbench.mjs the layout at 1366×768 and 390×844, dragging a via point in
 #                                      3-D (against the CLI), undo/redo, planning in a Web Worker
 #                                      while typing and orbiting
+#   8b. tests/browser/e2e-lattice.mjs  the ray lattice panel and 3-D drawing against `cablenav lattice`,
+#                                      Cancel, lattice planning in a worker (cdpr7-box over-box,
+#                                      Robocrane q1-q2) against `cablenav verify`
 #   9. python/ (maturin, pytest)       the wheel built and installed into target/venv; pytest
 #                                      compares it with the CLI that step 1 built, runs the sweep
 #                                      example serially, on threads and on a Dask LocalCluster
@@ -60,6 +63,9 @@ node tests/browser/e2e-view.mjs target/page
 
 step "browser end-to-end test of the workbench (layout, drag, undo, workers)"
 node tests/browser/e2e-workbench.mjs target/page
+
+step "browser end-to-end test of the ray lattice and lattice planning"
+node tests/browser/e2e-lattice.mjs target/page
 
 step "Python package: build the wheel, install it into target/venv, pytest"
 # The dev profile (opt-level 2) reuses step 1's build of the core; --force-reinstall replaces

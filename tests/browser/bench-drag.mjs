@@ -60,6 +60,6 @@ scenario, re-verifies the trajectory exactly and rebuilds the 3-D scene, timed b
 (the plots follow at the end of the drag). Machine: ${cpus().length} × ${cpus()[0]?.model ?? '?'}, load average
 ${loadavg()[0].toFixed(1)} while measuring (frame times include software WebGL, SwiftShader).
 
-| trajectory | update median | update p90 | update worst | frames median | frames p90 | target ≤ ${TARGET_MS} ms per update (median) |
-|---|---|---|---|---|---|---|
-${rows.map((r) => `| cdpr7-tree "${r.name}" | ${fmt(q(r.updates, 0.5))} ms | ${fmt(q(r.updates, 0.9))} ms | ${fmt(Math.max(...r.updates))} ms | ${fmt(q(r.frames, 0.5))} ms | ${fmt(q(r.frames, 0.9))} ms | ${q(r.updates, 0.5) <= TARGET_MS ? 'met' : '**missed**'} |`).join('\n')}`);
+| trajectory | update median | update p90 | update worst | frames median | frames p90 | frames over 25 ms (dropped at 60 Hz) | target ≤ ${TARGET_MS} ms per update (median) |
+|---|---|---|---|---|---|---|---|
+${rows.map((r) => `| cdpr7-tree "${r.name}" | ${fmt(q(r.updates, 0.5))} ms | ${fmt(q(r.updates, 0.9))} ms | ${fmt(Math.max(...r.updates))} ms | ${fmt(q(r.frames, 0.5))} ms | ${fmt(q(r.frames, 0.9))} ms | ${r.frames.filter((f) => f > 25).length} of ${r.frames.length} | ${q(r.updates, 0.5) <= TARGET_MS ? 'met' : '**missed**'} |`).join('\n')}`);

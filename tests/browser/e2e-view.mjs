@@ -5,17 +5,11 @@
 // (`cablenav verify FILE --json`, the release binary, built if missing). Screenshots go to
 // tests/browser/artifacts/. Ends with "N passed, M failed"; exits 1 on failure.
 
-import { mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { dirname, join, resolve } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { cliSections, cliVerify as cliVerifyAt, launchChromium, requirePage, runner, serve } from './harness.mjs';
+import { readFileSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { begin, cliSections, cliVerify as cliVerifyAt, stripSections, watchProblems } from './harness.mjs';
 
-const here = dirname(fileURLToPath(import.meta.url));
-const root = resolve(here, '..', '..');
-const pageDir = resolve(root, process.argv[2] ?? process.env.PAGE_DIR ?? 'target/page');
-const artifacts = join(here, 'artifacts');
-const scratch = mkdtempSync(join(tmpdir(), 'cablenav-e2e-'));
+const { root, artifacts, scratch, test, finish, base, browser, close } = await begin(import.meta.url, { watchdogMinutes: 15 });
 const TIMEOUT = 60_000;
 const PLAN_TIMEOUT = 300_000;
 const FRAME_LIMIT_MS = 50;
@@ -25,12 +19,6 @@ const FRAME_LIMIT_MS = 50;
 const cliVerify = (file, trajectory) => cliVerifyAt(root, file, trajectory);
 
 // ---------- page helpers ----------
-/** The strip's sections, sorted. */
-async function stripSections(page) {
-  const s = await page.$$eval('svg[data-testid="strip"] rect[data-testid="section"]', (rects) =>
-    rects.map((r) => ({ kind: r.dataset.kind, t0: Number(r.dataset.t0), t1: Number(r.dataset.t1) })));
-  return s.sort((a, b) => a.t0 - b.t0 || a.t1 - b.t1);
-}
 /** The sections the 3-D view drew the trajectory in (its data-sections), sorted. */
 async function viewSections(page) {
   const text = await page.getAttribute('canvas[data-testid="view3d"]', 'data-sections');
@@ -87,20 +75,10 @@ async function download(page, testid) {
 }
 
 // ---------- run ----------
-mkdirSync(artifacts, { recursive: true });
-requirePage(pageDir);
-const { test, finish } = runner(15);
-const server = await serve(pageDir);
-const base = `http://127.0.0.1:${server.address().port}`;
-const browser = await launchChromium();
 const context = await browser.newContext({ viewport: { width: 1200, height: 900 }, acceptDownloads: true });
-const problems = [];
+const problems = watchProblems(context);
 const page = await context.newPage();
-page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
-page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
-function assertNoProblems() {
-  if (problems.length) throw new Error(problems.splice(0).join('\n'));
-}
+const assertNoProblems = () => problems.assertNone();
 await page.goto(`${base}/`, { waitUntil: 'load' });
 await waitDraws(page, 1);
 
@@ -281,6 +259,13 @@ await test('Robocrane q1→q2 from the page: the progress bar moves, no frame ov
   const worst = Math.max(...during);
   const long = during.filter((f) => f > FRAME_LIMIT_MS);
   const timeline = frames.map((f, i) => `${f.toFixed(0)}:${states[i]}`).join(' ');
+  // the plan is followed: the strip shows its exact sections, and the 3-D view draws it in them
+  await page.waitForSelector('section[data-testid="result"][data-follow="planned"] svg[data-testid="strip"]', { timeout: TIMEOUT });
+  assertSameSections(await viewSections(page), await stripSections(page), 'the planned path in 3-D vs the strip');
+  // following the scenario's trajectory again, the planned path is drawn beside it in purple
+  await pick(page, 'follow', 'trajectory');
+  await page.waitForSelector('section[data-testid="result"][data-follow="trajectory"] svg[data-testid="strip"]', { timeout: TIMEOUT });
+  await page.waitForTimeout(300);
   await page.locator('canvas[data-testid="view3d"]').scrollIntoViewIfNeeded();
   const px = await pixels(page);
   const purple = await page.$eval('canvas[data-testid="view3d"]', (c) => {
@@ -328,6 +313,5 @@ await test('Cancel stops a run (Robocrane q5→q6, a 3-D slice)', async () => {
   return `stopped at progress ${v.toFixed(2)}`;
 });
 
-await browser.close();
-server.close();
+await close();
 finish(`screenshots in ${artifacts}`);

@@ -1,12 +1,14 @@
-// Shared pieces of the browser tests (smoke.mjs, e2e-edit.mjs): a tiny static file server, the
-// headless Chromium launch, a console/page-error watcher and a minimal test runner that ends
-// with "N passed, M failed".
+// Shared pieces of the browser tests: a tiny static file server, the headless Chromium launch, a
+// console/page-error watcher, a minimal test runner that ends with "N passed, M failed", the
+// common start of an end-to-end test (`begin`), frame recording, and the CLI as a reference.
 
 import { execFileSync } from 'node:child_process';
-import { existsSync } from 'node:fs';
+import { existsSync, mkdirSync, mkdtempSync } from 'node:fs';
 import { createServer } from 'node:http';
 import { readFileSync, statSync } from 'node:fs';
-import { extname, join, normalize, sep } from 'node:path';
+import { tmpdir } from 'node:os';
+import { dirname, extname, join, normalize, resolve, sep } from 'node:path';
+import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 
 const TYPES = {
@@ -146,9 +148,7 @@ export async function readSections(scope) {
 /** What `cablenav verify FILE --trajectory NAME --json` prints, parsed (the release binary under
  * `root`, built if missing). */
 export function cliVerify(root, file, trajectory) {
-  const cliPath = join(root, 'target', 'release', 'cablenav');
-  if (!existsSync(cliPath)) execFileSync('cargo', ['build', '--release', '-q', '--bin', 'cablenav'], { cwd: root, stdio: 'inherit' });
-  return JSON.parse(execFileSync(cliPath, ['verify', file, '--trajectory', trajectory, '--json'], { cwd: root, encoding: 'utf8' }));
+  return cliJson(root, ['verify', file, '--trajectory', trajectory]);
 }
 
 /** A CLI report's sections as sorted `{kind, t0, t1}`. */
@@ -156,4 +156,75 @@ export function cliSections(report) {
   const out = [];
   for (const kind of ['feasible', 'infeasible', 'uncertain']) for (const [t0, t1] of report[kind]) out.push({ kind, t0, t1 });
   return out.sort((a, b) => a.t0 - b.t0 || a.t1 - b.t1);
+}
+
+/** The common start of an end-to-end test file at `moduleUrl` (its `import.meta.url`): the
+ * repository root, the built page (argv[2], $PAGE_DIR or target/page; exits unless built), the
+ * artifacts directory (created), a scratch directory, the runner, the page served and Chromium.
+ * `close()` ends the browser and the server. */
+export async function begin(moduleUrl, { watchdogMinutes = 10, scratch = 'cablenav-e2e-' } = {}) {
+  const here = dirname(fileURLToPath(moduleUrl));
+  const root = resolve(here, '..', '..');
+  const pageDir = resolve(root, process.argv[2] ?? process.env.PAGE_DIR ?? 'target/page');
+  const artifacts = join(here, 'artifacts');
+  mkdirSync(artifacts, { recursive: true });
+  requirePage(pageDir);
+  const { test, finish } = runner(watchdogMinutes);
+  const server = await serve(pageDir);
+  const browser = await launchChromium();
+  return {
+    root, pageDir, artifacts, test, finish, server, browser,
+    scratch: mkdtempSync(join(tmpdir(), scratch)),
+    base: `http://127.0.0.1:${server.address().port}`,
+    async close() {
+      await browser.close();
+      server.close();
+    },
+  };
+}
+
+/** The strip's sections in `scope` as sorted `{kind, t0, t1}` (comparable with cliSections). */
+export async function stripSections(scope) {
+  return (await readSections(scope)).map(({ kind, t0, t1 }) => ({ kind, t0, t1 })).sort((a, b) => a.t0 - b.t0 || a.t1 - b.t1);
+}
+
+/** Starts recording animation-frame lengths (ms) in window.__frames, and with each the value of
+ * `stateOf()` (evaluated in the page, e.g. a data-state) in window.__states. */
+export async function recordFrames(page, stateOf = '""') {
+  await page.evaluate((stateOf) => {
+    const state = new Function(`return (${stateOf});`);
+    window.__frames = [];
+    window.__states = [];
+    window.__recording = true;
+    let last = performance.now();
+    const tick = (now) => {
+      window.__frames.push(now - last);
+      window.__states.push(state());
+      last = now;
+      if (window.__recording) requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(tick);
+  }, stateOf);
+}
+
+/** Stops recording; the frame lengths after the first (ms) and their states. */
+export async function stopFrames(page) {
+  return page.evaluate(() => {
+    window.__recording = false;
+    return { frames: window.__frames.slice(1), states: window.__states.slice(1) };
+  });
+}
+
+/** Count, median and worst of `xs`, and how many exceed 25 ms (a frame dropped at 60 Hz: more
+ * than one and a half refresh intervals). */
+export function frameStats(xs) {
+  const s = [...xs].sort((a, b) => a - b);
+  return { n: s.length, median: s[Math.floor(s.length / 2)] ?? NaN, worst: s[s.length - 1] ?? NaN, dropped: s.filter((x) => x > 25).length };
+}
+
+/** What `cablenav ARGS…` prints with --json, parsed (the release binary under `root`). */
+export function cliJson(root, args) {
+  const cliPath = join(root, 'target', 'release', 'cablenav');
+  if (!existsSync(cliPath)) execFileSync('cargo', ['build', '--release', '-q', '--bin', 'cablenav'], { cwd: root, stdio: 'inherit' });
+  return JSON.parse(execFileSync(cliPath, [...args, '--json'], { cwd: root, encoding: 'utf8' }));
 }

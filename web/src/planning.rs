@@ -3,7 +3,7 @@
 //! progress and the path, so typing, scrolling and orbiting stay smooth; Cancel terminates the
 //! worker.
 
-use crate::state::{Parsed, Planned, Shared};
+use crate::state::{Motion, Parsed, Planned, Shared};
 use crate::view3d::scene::Rgba;
 use crate::worker::host::{self, Running};
 use crate::worker::protocol::{pose_from_wire, Job, Reply};
@@ -64,14 +64,15 @@ fn apply(reply: Reply, query: &str, ui: Ui) -> bool {
             ui.detail.set(detail);
             false
         }
-        Reply::Planned { status, summary, path, polyline } => {
+        Reply::Planned { status, summary, path, polyline, trajectory } => {
             ui.progress.set(1.0);
             ui.detail.set(summary);
             if !path.is_empty() {
                 let poses: Vec<_> = path.iter().map(pose_from_wire).collect();
                 let (start, goal) = (poses[0], poses[poses.len() - 1]);
                 let polyline = polyline.iter().map(pose_from_wire).collect();
-                ui.planned.set(Some(Shared::new(Planned { query: query.to_string(), start, goal, poses, polyline })));
+                let motion = trajectory.and_then(|t| motion(*t));
+                ui.planned.set(Some(Shared::new(Planned { query: query.to_string(), start, goal, poses, polyline, motion })));
             }
             ui.state.set(RunState::Done(status));
             true
@@ -80,11 +81,19 @@ fn apply(reply: Reply, query: &str, ui: Ui) -> bool {
             ui.state.set(RunState::Failed(error));
             true
         }
-        Reply::Sliced { .. } => {
-            ui.state.set(RunState::Failed("the worker answered a planning job with a slice".into()));
+        Reply::Sliced { .. } | Reply::LatticeRays { .. } | Reply::Profiles { .. } => {
+            ui.state.set(RunState::Failed("the worker answered a planning job with another job's reply".into()));
             true
         }
     }
+}
+
+/// The planned trajectory as the page keeps it: read back from the scenario the worker wrote
+/// (a parse, no verification: the worker verified it).
+fn motion(t: crate::worker::protocol::PlannedTrajectory) -> Option<Motion> {
+    let s = crate::logic::parse_scenario(&t.scenario).ok()?;
+    let trajectory = s.trajectories.into_iter().find(|x| x.name == t.name)?;
+    Some(Motion { scenario: t.scenario, trajectory, report: t.report.map(|r| r.report()) })
 }
 
 /// The planning controls.

@@ -11,13 +11,18 @@ use crate::state::{Parsed, Verified};
 
 /// The verification result on the first screen: the scenario's or the verification's error, or
 /// the strip of sections with its colour key. Test contract: `section[data-testid=result]` with
-/// `data-origin`, `data-trajectory-index` and `data-method`.
+/// `data-origin`, `data-trajectory-index`, `data-follow` (`trajectory` or `planned`) and
+/// `data-method`.
 #[component]
 pub fn StripResult(
     parsed: Memo<Parsed>,
     verified: Memo<Verified>,
     trajectory: RwSignal<usize>,
     origin: RwSignal<&'static str>,
+    /// Whether `verified` is the planned motion's (`data-follow="planned"`), not the selected
+    /// trajectory's.
+    #[prop(optional, into)]
+    planned: Signal<bool>,
 ) -> impl IntoView {
     move || {
         let parsed = parsed.get();
@@ -36,6 +41,7 @@ pub fn StripResult(
                         data-testid="result"
                         data-origin=origin.get()
                         data-trajectory-index=index
+                        data-follow=if planned.get() { "planned" } else { "trajectory" }
                         data-method=report.method.clone()
                     >
                         <h2>{format!("{} — {}", scenario.name, report.trajectory)}</h2>

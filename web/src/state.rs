@@ -51,6 +51,20 @@ pub struct Planned {
     pub poses: Vec<Pose>,
     /// The lattice planner's A* polyline, drawn beside the smoothed path (empty for the atlas).
     pub polyline: Vec<Pose>,
+    /// The planned motion as a trajectory of the scenario format, verified exactly (both planners
+    /// give one when they find a path).
+    pub motion: Option<Motion>,
+}
+
+/// A planned motion as a trajectory: shown in the strip and the 3-D view like any trajectory.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Motion {
+    /// The scenario JSON with the trajectory added (what "Scenario with the plan" exports).
+    pub scenario: String,
+    /// The trajectory (named as in `scenario`).
+    pub trajectory: cablenav::model::Trajectory,
+    /// Its exact verification (done in the planner's worker).
+    pub report: Result<VerifyReport, String>,
 }
 
 /// Which path the animation, the plots and the exports follow.

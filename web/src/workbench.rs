@@ -5,7 +5,7 @@
 
 use crate::results::{ResultTables, StripResult};
 use crate::logic::Tick;
-use crate::state::{Focus, Follow, PageState, Parsed, Planned, Shared};
+use crate::state::{Focus, Follow, PageState, Parsed, Planned, Shared, Verified};
 use crate::logic::{self, fmt_num, StripModel};
 use crate::planning::Planning;
 use crate::plots::distance::DistancePlot;
@@ -17,6 +17,10 @@ use crate::view3d::scene::{self, Polyline, SceneInput, PATH};
 use crate::edit_logic::{self as el, handles, Grip, Handle};
 use crate::view3d::drag::Constraint;
 use crate::view3d::{HandleEvent, Handles, SceneView, View3d};
+use crate::worker::host::{self, Running};
+use crate::worker::protocol::{pose_to_wire, Job, Reply};
+use cablenav::report::TensionEnvelope;
+use cablenav::verify::profile::ClearanceProfile;
 use glam::DVec3;
 use cablenav::model::{Pose, Trajectory};
 use cablenav::verify::profile;
@@ -148,21 +152,51 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         }
     });
 
-    let strip: Memo<Option<StripModel>> = Memo::new(move |_| match verified.get().0.as_ref() {
+    // the verification the strip, the tables and the 3-D sections show: the planned motion's
+    // while the planned path is followed, else the selected trajectory's
+    let motion = move || planned.get().filter(|_| follow.get() == Follow::Planned).filter(|p| p.0.motion.is_some());
+    let shown: Memo<Verified> = Memo::new(move |_| match motion() {
+        Some(p) => Shared::new(p.0.motion.as_ref().map(|m| m.report.clone())),
+        None => verified.get(),
+    });
+    let strip: Memo<Option<StripModel>> = Memo::new(move |_| match shown.get().0.as_ref() {
         Some(Ok(r)) => Some(logic::strip(r)),
         _ => None,
     });
     let traj_index = move |s: &Scenario| trajectory.get().min(s.trajectories.len().saturating_sub(1));
     let trajectory_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |_| {
         let parsed = parsed.get();
-        let pieces = match (scenario_of(&parsed), strip.get()) {
-            (Some(s), Some(model)) if !s.trajectories.is_empty() => scene::trajectory_polylines(&s.trajectories[traj_index(s)], &model),
+        let pieces = match (scenario_of(&parsed), strip.get(), motion()) {
+            (_, Some(model), Some(p)) => p.0.motion.as_ref().map_or_else(Vec::new, |m| scene::trajectory_polylines(&m.trajectory, &model)),
+            (Some(s), Some(model), None) if !s.trajectories.is_empty() => scene::trajectory_polylines(&s.trajectories[traj_index(s)], &model),
             _ => vec![],
         };
         Shared::new(pieces)
     });
-    let path_piece: Memo<Option<Shared<Polyline>>> =
-        Memo::new(move |_| planned.get().map(|p| Shared::new(Polyline { colour: PATH, poses: p.0.poses.clone() })));
+    // beside it: the planned path (unless it is the one drawn in its sections) and the lattice
+    // planner's A* polyline
+    let path_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |_| {
+        let Some(p) = planned.get() else { return Shared::new(vec![]) };
+        let mut pieces = vec![];
+        if motion().is_none() {
+            pieces.push(Polyline { colour: PATH, poses: p.0.poses.clone() });
+        }
+        if !p.0.polyline.is_empty() {
+            pieces.push(Polyline { colour: crate::planning::POLYLINE, poses: p.0.polyline.clone() });
+        }
+        Shared::new(pieces)
+    });
+    // the ray lattice built in its panel, drawn in the 3-D view too
+    let lattice = RwSignal::new(None::<Shared<Result<crate::worker::protocol::LatticeResult, String>>>);
+    let lattice_in_view = RwSignal::new(true);
+    let lattice_infeasible = RwSignal::new(false);
+    let lattice_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |_| {
+        let pieces = match (lattice.get(), lattice_in_view.get()) {
+            (Some(l), true) => l.0.as_ref().as_ref().map_or_else(|_| vec![], |l| scene::lattice_polylines(l, lattice_infeasible.get())),
+            _ => vec![],
+        };
+        Shared::new(pieces)
+    });
 
     // a boundary pointed at in the strip: the platform goes there, with its clearance tubes
     let focus = RwSignal::new(None::<Tick>);
@@ -180,7 +214,8 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         let cables = pose.map(|p| profile::cable_states(s, &p)).unwrap_or_default();
         let tubes = focused().map(|t| scene::clearance_tubes(s, &t.constraint)).unwrap_or_default();
         let pieces = trajectory_pieces.get();
-        let path = path_piece.get();
+        let paths = path_pieces.get();
+        let lattice = lattice_pieces.get();
         let points: Vec<DVec3> = handle_list.with(|h| h.iter().map(|h| DVec3::from_array(h.at)).collect());
         let axis = match constraint.get() {
             Constraint::Axis(k) => Some(k),
@@ -191,7 +226,8 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
             pose,
             cables: &cables,
             trajectory: &pieces.0,
-            path: path.as_ref().map(|p| &*p.0),
+            paths: &paths.0,
+            lattice: &lattice.0,
             handles: &points,
             selected: selected.get(),
             axis,
@@ -206,29 +242,61 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
             bounds: scene::bounds(s),
             sections,
             cables: cables.iter().map(|c| scene::cable_look(c).0).collect::<Vec<_>>().join(" "),
-            path_poses: path.map_or(0, |p| p.0.poses.len()),
+            path_poses: planned.get().map_or(0, |p| p.0.poses.len()),
+            polyline_poses: planned.get().map_or(0, |p| p.0.polyline.len()),
+            lattice_pieces: lattice.0.len(),
             tubes: tubes.iter().map(|(i, r)| format!("{}:{}", i + 1, logic::fmt_exact(*r))).collect::<Vec<_>>().join(" "),
         }))
     });
 
-    // the plots follow a drag at its end (the strip and the view follow every move)
-    let profile_data = Memo::new(move |prev: Option<&Option<_>>| {
-        if let (true, Some(p)) = (drag_active.get(), prev) {
-            return p.clone();
+    // the plots along the path (clearances, tension envelope) are computed in a Web Worker: a new
+    // path starts a job and drops the previous one; they follow a drag at its end (the strip and
+    // the view follow every move)
+    let profile_data = RwSignal::new(None::<Shared<(Result<ClearanceProfile, String>, String)>>);
+    let envelope = RwSignal::new(None::<Shared<(Result<TensionEnvelope, String>, &'static str)>>);
+    let plots_run: StoredValue<Option<Running>, LocalStorage> = StoredValue::new_local(None);
+    let plots_generation = StoredValue::new(0u32);
+    Effect::new(move |_| {
+        if drag_active.get() {
+            return;
         }
-        followed(parsed, planned, follow, trajectory, |s, path| {
-            let r = profile::clearances_at(s, &path.samples(PLOT_SAMPLES)).map_err(|e| e.to_string());
-            Some(Shared::new((r, format!("{}; x: {}", path.name(), path.param()))))
-        })
-    });
-    let envelope = Memo::new(move |prev: Option<&Option<_>>| {
-        if let (true, Some(p)) = (drag_active.get(), prev) {
-            return p.clone();
+        let request = followed(parsed, planned, follow, trajectory, |_, path| {
+            let samples = path.samples(PLOT_SAMPLES).iter().map(|(t, p)| (*t, pose_to_wire(p))).collect();
+            Some((path.name(), path.param(), samples))
+        });
+        plots_generation.update_value(|g| *g += 1);
+        plots_run.update_value(|r| r.take().into_iter().for_each(|r| r.cancel()));
+        let Some((name, param, samples)) = request else {
+            profile_data.set(None);
+            envelope.set(None);
+            return;
+        };
+        let Some(json) = source.try_get_untracked() else { return };
+        let (this, label) = (plots_generation.get_value(), format!("{name}; x: {param}"));
+        let on_reply = move |reply: Reply| {
+            if plots_generation.get_value() != this {
+                return;
+            }
+            let (clearances, tension) = match reply {
+                Reply::Progress { .. } => return,
+                Reply::Profiles { clearances, tension } => (clearances.map(Into::into), tension.map(Into::into)),
+                Reply::Failed { error } => (Err(error.clone()), Err(error)),
+                _ => {
+                    let e = "the worker answered a plots job with another job's reply".to_string();
+                    (Err(e.clone()), Err(e))
+                }
+            };
+            profile_data.set(Some(Shared::new((clearances, label.clone()))));
+            envelope.set(Some(Shared::new((tension, param))));
+            plots_run.update_value(|r| r.take().into_iter().for_each(host::retire));
+        };
+        match host::start(&Job::Profiles { scenario: json, name: name.clone(), samples }, on_reply) {
+            Ok(w) => plots_run.set_value(Some(w)),
+            Err(e) => {
+                profile_data.set(Some(Shared::new((Err(e.clone()), format!("{name}; x: {param}")))));
+                envelope.set(Some(Shared::new((Err(e), param))));
+            }
         }
-        followed(parsed, planned, follow, trajectory, |s, path| {
-            let r = profile::tension_at(s, &path.name(), &path.samples(PLOT_SAMPLES)).map_err(|e| e.to_string());
-            Some(Shared::new((r, path.param())))
-        })
     });
     let overlay = Memo::new(move |_| {
         let parsed = parsed.get();
@@ -373,6 +441,11 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
             export::save(name, mime, text.as_bytes());
         }
     };
+    let export_plan = move |_| {
+        if let Some(m) = planned.get_untracked().and_then(|p| p.0.motion.clone()) {
+            export::save("cablenav-planned.json", "application/json", m.scenario.as_bytes());
+        }
+    };
     let export_view = move |_| {
         let canvas = web_sys::window()
             .and_then(|w| w.document())
@@ -469,7 +542,7 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
                 />
                 <span class="readout" data-testid="pose-readout">{move || format!("{} = {} · {}", if follow.get() == Follow::Trajectory { "t" } else { "fraction" }, fmt_num(scrub.get()), readout().unwrap_or_default())}</span>
             </div>
-            <StripResult parsed verified trajectory origin />
+            <StripResult parsed verified=shown trajectory origin planned=Signal::derive(move || motion().is_some()) />
         </section>
     };
     if embed {
@@ -479,7 +552,7 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         {stage}
         <section class="results" data-testid="results" aria-label="results">
             <div class="panel" data-testid="panel-intervals">
-                <ResultTables parsed verified />
+                <ResultTables parsed verified=shown />
             </div>
             <details class="panel" data-testid="panel-view-key">
                 <summary>"3-D view: colours and controls"</summary>
@@ -505,6 +578,8 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
                     <button data-testid="export-report-json" on:click=export_report>"Report (JSON, as the CLI prints)"</button>
                     <button data-testid="export-path-csv" on:click=move |_| export_path(false)>"Path poses (CSV)"</button>
                     <button data-testid="export-path-json" on:click=move |_| export_path(true)>"Path poses (JSON)"</button>
+                    <button data-testid="export-planned-scenario" on:click=export_plan disabled=move || planned.get().is_none_or(|p| p.0.motion.is_none())
+                        title="the scenario with the planned trajectory added, as cablenav plan --out writes it">"Scenario with the plan (JSON)"</button>
                     <button data-testid="export-view-png" on:click=export_view>"3-D view (PNG)"</button>
                 </p>
             </div>
@@ -532,7 +607,19 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
             </div>
             <div class="panel wide" data-testid="panel-lattice">
                 <h2>"Ray lattice"</h2>
-                <LatticePanel parsed overlay=Signal::derive(move || overlay.get()) />
+                <LatticePanel parsed source lattice overlay=Signal::derive(move || overlay.get()) />
+                <p class="lattice-3d">
+                    <label>
+                        <input type="checkbox" data-testid="lattice-in-view" prop:checked=move || lattice_in_view.get()
+                            on:change=move |ev| lattice_in_view.set(event_target_checked(&ev)) />
+                        " draw the lattice in the 3-D view (feasible pieces in their component's colour)"
+                    </label>
+                    <label>
+                        <input type="checkbox" data-testid="lattice-infeasible-in-view" prop:checked=move || lattice_infeasible.get()
+                            on:change=move |ev| lattice_infeasible.set(event_target_checked(&ev)) />
+                        " with the infeasible pieces in red"
+                    </label>
+                </p>
             </div>
         </section>
     }
@@ -565,7 +652,7 @@ mod tests {
     fn a_planned_path_is_followed_pose_by_pose() {
         let s = robocrane();
         let poses: Vec<Pose> = (0..5).map(|k| s.trajectories[0].pose_at(k as f64 / 4.0)).collect();
-        let p = Planned { query: "q1-q2".into(), start: poses[0], goal: poses[4], poses: poses.clone(), polyline: vec![] };
+        let p = Planned { query: "q1-q2".into(), start: poses[0], goal: poses[4], poses: poses.clone(), polyline: vec![], motion: None };
         let path = PathRef::Planned(&p);
         assert_eq!(path.pose_at(0.0), Some(poses[0]));
         assert_eq!(path.pose_at(0.5), Some(poses[2]));
@@ -586,7 +673,7 @@ mod tests {
         let name = |follow, planned: Option<&Shared<Planned>>| on_path(&parsed, planned, follow, 9, |_, p| Some(p.name()));
         assert_eq!(name(Follow::Planned, None).as_deref(), Some("trajectory “slerp q1-q2”"), "no plan: the (clamped) trajectory");
         let pose = s.trajectories[0].pose_at(0.0);
-        let plan = Shared::new(Planned { query: "q1-q2".into(), start: pose, goal: pose, poses: vec![pose], polyline: vec![] });
+        let plan = Shared::new(Planned { query: "q1-q2".into(), start: pose, goal: pose, poses: vec![pose], polyline: vec![], motion: None });
         assert_eq!(name(Follow::Planned, Some(&plan)).as_deref(), Some("planned path q1-q2"));
         assert_eq!(name(Follow::Trajectory, Some(&plan)).as_deref(), Some("trajectory “slerp q1-q2”"));
         let broken: Parsed = Shared::new(Err("bad".into()));

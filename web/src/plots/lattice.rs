@@ -5,16 +5,21 @@
 //! lattice planner's A* polyline over it.
 
 use super::geom::{polyline, ticks, Scale};
-use super::slice::{default_axes, default_pose, default_range, path_points, slice_copies, Overlay};
+use super::section::{CrossSection, SectionControls};
+use super::slice::{path_points, row_blocks, slice_copies, Overlay};
 use super::strip::css;
 use super::Chart;
+use crate::logic::{fmt_exact, fmt_num};
 use crate::state::Shared;
-use crate::logic::fmt_num;
-use cablenav::lattice::{Lattice, LatticeReport, LatticeSpec};
+use crate::view3d::scene::Rgba;
+use crate::worker::host::{self, Running};
+use crate::worker::jobs::{join_lattice, lattice_spec};
+use crate::worker::protocol::{Job, LatticeResult, RaySections, Reply};
 use cablenav::model::Coord;
 use leptos::prelude::*;
-use std::cell::RefCell;
-use std::rc::Rc;
+
+/// A lattice as the page holds it: the worker's result, or why there is none.
+pub type LatticeState = Option<Shared<Result<LatticeResult, String>>>;
 
 const W: f64 = 520.0;
 const H: f64 = 500.0;
@@ -22,12 +27,62 @@ const LEFT: f64 = 56.0;
 const RIGHT: f64 = 14.0;
 const TOP: f64 = 14.0;
 const BOTTOM: f64 = 46.0;
-/// Milliseconds of lattice work per animation frame.
-const SLICE_MS: f64 = 8.0;
 /// Colour of infeasible ray parts.
 pub const INFEASIBLE: &str = "#d03b3b";
 /// Component colours, in turn (the first is the thesis' green).
 pub const COMPONENTS: [&str; 8] = ["#2ea043", "#3b6fd8", "#8e44ad", "#e0a800", "#16a2b8", "#c2185b", "#6d8b00", "#795548"];
+
+/// The colour of a ray piece: its component's, or [`INFEASIBLE`]; as CSS.
+pub fn colour(component: Option<usize>) -> &'static str {
+    component.map_or(INFEASIBLE, |c| COMPONENTS[c % COMPONENTS.len()])
+}
+
+/// The same colour for the 3-D view.
+pub fn rgba(component: Option<usize>) -> Rgba {
+    let hex = colour(component);
+    let byte = |k: usize| u8::from_str_radix(&hex[1 + 2 * k..3 + 2 * k], 16).unwrap_or(0) as f32 / 255.0;
+    [byte(0), byte(1), byte(2), 1.0]
+}
+
+/// One stretch of one ray in all six coordinates: the ray's coordinates `at`, its varied
+/// coordinate running from `from` to `to`, feasible in `component` or not (`None`: infeasible or
+/// uncertain).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RayPiece {
+    /// The varied coordinate.
+    pub vary: Coord,
+    /// The other coordinates (the varied one's entry is unused).
+    pub at: [f64; 6],
+    /// Where the stretch starts, in the varied coordinate.
+    pub from: f64,
+    /// Where it ends.
+    pub to: f64,
+    /// The component of a feasible stretch.
+    pub component: Option<usize>,
+}
+
+/// Every ray of a lattice cut into its feasible pieces and the gaps between them, end to end
+/// over the ray's range.
+pub fn ray_pieces(r: &LatticeResult) -> Vec<RayPiece> {
+    let mut out = vec![];
+    for ray in &r.rays {
+        let (Some(vary), Some(a)) = (Coord::parse(&ray.vary), r.axes.iter().position(|n| *n == ray.vary)) else { continue };
+        let [lo, hi] = r.ranges[a];
+        let piece = |from: f64, to: f64, component: Option<usize>| RayPiece { vary, at: ray.at, from, to, component };
+        let mut cursor = lo;
+        for (iv, &c) in ray.feasible.iter().zip(&ray.components) {
+            if iv[0] > cursor {
+                out.push(piece(cursor, iv[0], None));
+            }
+            out.push(piece(iv[0], iv[1], Some(c)));
+            cursor = iv[1];
+        }
+        if cursor < hi {
+            out.push(piece(cursor, hi, None));
+        }
+    }
+    out
+}
 
 /// One drawn stretch of a ray, in data coordinates: (a0, b0) → (a1, b1) and its colour.
 #[derive(Debug, Clone, PartialEq)]
@@ -42,122 +97,100 @@ pub struct Stretch {
     pub component: Option<usize>,
 }
 
-/// Every ray of a 2-D lattice report as stretches: the feasible pieces in their component's colour
-/// and the gaps between them (infeasible or uncertain) in red.
-pub fn stretches(r: &LatticeReport) -> Vec<Stretch> {
-    let mut out = vec![];
-    for (ray, comps) in r.rays.iter().zip(&r.piece_components) {
-        let along = usize::from(r.axes.get(1) == Some(&ray.vary));
-        let other = r.axes[1 - along];
-        let fixed = ray.fixed.iter().find(|(k, _)| *k == other).map_or(0.0, |p| p.1);
-        let at = |v: f64| if along == 0 { (v, fixed) } else { (fixed, v) };
-        let [lo, hi] = r.ranges[along];
-        let mut cursor = lo;
-        for (iv, &c) in ray.feasible.iter().zip(comps) {
-            if iv[0] > cursor {
-                out.push(Stretch { from: at(cursor), to: at(iv[0]), colour: INFEASIBLE, component: None });
-            }
-            out.push(Stretch { from: at(iv[0]), to: at(iv[1]), colour: COMPONENTS[c % COMPONENTS.len()], component: Some(c) });
-            cursor = iv[1];
-        }
-        if cursor < hi {
-            out.push(Stretch { from: at(cursor), to: at(hi), colour: INFEASIBLE, component: None });
-        }
-    }
-    out
+/// Every ray of a 2-D lattice as stretches over its two axes: the feasible pieces in their
+/// component's colour and the gaps between them (infeasible or uncertain) in red.
+pub fn stretches(r: &LatticeResult) -> Vec<Stretch> {
+    let axes: Vec<Option<Coord>> = r.axes.iter().map(|n| Coord::parse(n)).collect();
+    let (Some(Some(a)), Some(Some(b))) = (axes.first(), axes.get(1)) else { return vec![] };
+    ray_pieces(r)
+        .into_iter()
+        .map(|p| {
+            let at = |v: f64| {
+                let mut c = p.at;
+                c[p.vary.index()] = v;
+                (c[a.index()], c[b.index()])
+            };
+            Stretch { from: at(p.from), to: at(p.to), colour: colour(p.component), component: p.component }
+        })
+        .collect()
 }
 
-/// A lattice being built from animation frames.
-struct Build {
-    lattice: Lattice,
-    generation: u32,
-}
-
-/// The cross-section's controls and plot.
+/// The cross-section's controls and plot. The lattice's rays are computed by several Web
+/// Workers at once (a block of rays each, [`row_blocks`]), then joined here into the core's graph
+/// and components ([`join_lattice`], as the slice map joins its rows), with progress and Cancel
+/// (which terminates the workers); the result is kept in `lattice`, which the 3-D view draws too.
 #[component]
-pub fn LatticePanel(parsed: Memo<crate::state::Parsed>, overlay: Signal<Overlay>) -> impl IntoView {
-    let scenario = move || parsed.get().0.as_ref().as_ref().ok().cloned();
-    let pose = RwSignal::new(String::new());
-    let axes = RwSignal::new([Coord::X, Coord::Y]);
-    let range = RwSignal::new([[0.0, 1.0]; 2]);
+pub fn LatticePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, lattice: RwSignal<LatticeState>, overlay: Signal<Overlay>) -> impl IntoView {
+    let scenario = Signal::derive(move || parsed.get().0.as_ref().as_ref().ok().cloned());
+    let section = CrossSection::new();
     let steps = RwSignal::new(7usize);
-    let report = RwSignal::new(None::<Shared<Result<LatticeReport, String>>>);
-    let progress = RwSignal::new(None::<(usize, usize)>);
-    let build: Rc<RefCell<Option<Build>>> = Rc::new(RefCell::new(None));
-    let generation = Rc::new(std::cell::Cell::new(0u32));
-    let (b0, g0) = (build.clone(), generation.clone());
-    Effect::new(move |_| {
-        if let Some(s) = scenario() {
-            let a = default_axes(&s);
-            pose.set(default_pose(&s).unwrap_or_default());
-            axes.set(a);
-            range.set([default_range(&s, a[0]), default_range(&s, a[1])]);
-            g0.set(g0.get() + 1);
-            *b0.borrow_mut() = None;
-            report.set(None);
-            progress.set(None);
-        }
-    });
-    let (b1, g1) = (build.clone(), generation.clone());
-    let start = move |_| {
-        let Some(s) = scenario() else { return };
-        let spec = s
-            .pose(&pose.get_untracked())
-            .map_err(|e| e.to_string())
-            .and_then(|p| LatticeSpec::new(axes.get_untracked().to_vec(), range.get_untracked().to_vec(), vec![steps.get_untracked()], p.coords()).map_err(|e| e.to_string()));
-        match spec {
-            Err(e) => report.set(Some(Shared::new(Err(e)))),
-            Ok(spec) => {
-                g1.set(g1.get() + 1);
-                *b1.borrow_mut() = Some(Build { lattice: Lattice::new(&s, spec), generation: g1.get() });
-                report.set(None);
-                progress.set(Some((0, 1)));
-                pump(b1.clone(), g1.get(), report, progress);
-            }
-        }
-    };
-    let (b2, g2) = (build.clone(), generation.clone());
-    let cancel = move |_| {
-        g2.set(g2.get() + 1);
-        *b2.borrow_mut() = None;
+    let progress = RwSignal::new(None::<(f64, String)>);
+    let running: StoredValue<Vec<Running>, LocalStorage> = StoredValue::new_local(Vec::new());
+    let generation = StoredValue::new(0u32);
+    let stop = move || {
+        generation.update_value(|g| *g += 1);
+        running.update_value(|r| r.iter().for_each(Running::cancel));
+        running.set_value(Vec::new());
         progress.set(None);
     };
-    let set_axis = move |k: usize, name: String| {
-        if let (Some(c), Some(s)) = (Coord::parse(&name), scenario()) {
-            axes.update(|a| a[k] = c);
-            range.update(|r| r[k] = default_range(&s, c));
+    // a new scenario resets the choices, stops a build and drops the lattice
+    Effect::new(move |_| {
+        if let Some(s) = scenario.get() {
+            section.reset(&s);
+            stop();
+            lattice.set(None);
+        }
+    });
+    let start = move |_| {
+        let (Some(s), Some(json)) = (scenario.get_untracked(), source.try_get_untracked()) else { return };
+        stop();
+        let this = generation.get_value();
+        let (pose, a, r, n) = (section.pose.get_untracked(), section.axes.get_untracked(), section.range.get_untracked(), steps.get_untracked());
+        let axes: Vec<String> = a.iter().map(|c| c.name().to_string()).collect();
+        // the request's checks first (the core's errors), before any worker starts
+        let spec = match lattice_spec(&s, &pose, &axes, r.to_vec(), n) {
+            Ok(spec) => spec,
+            Err(e) => return lattice.set(Some(Shared::new(Err(e)))),
+        };
+        let blocks = row_blocks(spec.ray_count() as usize, host::parallelism());
+        let workers = blocks.len();
+        let jobs: Vec<Job> = blocks
+            .iter()
+            .map(|rays| Job::LatticeRays { scenario: json.clone(), pose: pose.clone(), axes: axes.clone(), ranges: r.to_vec(), steps: n, rays: *rays })
+            .collect();
+        let part = |reply: Reply| match reply {
+            Reply::Progress { .. } => None,
+            Reply::LatticeRays { sections, .. } => Some(Ok(sections)),
+            Reply::Failed { error } => Some(Err(error)),
+            _ => Some(Err("the worker answered a lattice job with another job's reply".to_string())),
+        };
+        let on_progress = move |f: f64, parts: usize| {
+            if generation.get_value() == this {
+                progress.set(Some((f.min(0.99), format!("{:.0} % of the rays, {parts} of {workers} blocks done ({workers} workers)", f * 100.0))));
+            }
+        };
+        let on_done = move |parts: Result<Vec<Vec<RaySections>>, String>| {
+            if generation.get_value() != this {
+                return;
+            }
+            let result = parts.and_then(|p| join_lattice(&s, spec.clone(), &p.concat()));
+            lattice.set(Some(Shared::new(result)));
+            generation.update_value(|g| *g += 1);
+            progress.set(None);
+            running.update_value(|r| std::mem::take(r).into_iter().for_each(host::retire));
+        };
+        match host::start_all(&jobs, part, on_progress, on_done) {
+            Ok(started) => {
+                running.set_value(started);
+                lattice.set(None);
+                progress.set(Some((0.0, format!("starting {workers} worker(s)…"))));
+            }
+            Err(e) => lattice.set(Some(Shared::new(Err(e)))),
         }
     };
-    let set_range = move |k: usize, end: usize, text: String| {
-        if let Ok(v) = text.trim().parse::<f64>() {
-            range.update(|r| r[k][end] = v);
-        }
-    };
-    let axis_select = move |k: usize| {
-        view! {
-            <select data-testid=format!("lattice-axis-{k}") on:change=move |ev| set_axis(k, event_target_value(&ev))>
-                {Coord::ALL.map(|c| view! { <option value=c.name() selected=move || axes.get()[k] == c>{c.name()}</option> })}
-            </select>
-            " from "
-            <input class="num" type="number" step="any" prop:value=move || fmt_num(range.get()[k][0]) on:change=move |ev| set_range(k, 0, event_target_value(&ev)) />
-            " to "
-            <input class="num" type="number" step="any" prop:value=move || fmt_num(range.get()[k][1]) on:change=move |ev| set_range(k, 1, event_target_value(&ev)) />
-        }
-    };
-    let running = move || progress.get().is_some();
+    let busy = move || progress.get().is_some();
     view! {
-        <div class="slice-controls">
-            <label>
-                "Other coordinates from pose "
-                <select data-testid="lattice-pose" on:change=move |ev| pose.set(event_target_value(&ev))>
-                    {move || scenario().map(|s| s.poses.iter().map(|(n, _)| {
-                        let (value, key, text) = (n.clone(), n.clone(), n.clone());
-                        view! { <option value=value selected=move || pose.get() == key>{text}</option> }
-                    }).collect_view())}
-                </select>
-            </label>
-            <label>"across " {axis_select(0)}</label>
-            <label>"up " {axis_select(1)}</label>
+        <SectionControls section scenario prefix="lattice">
             <label>
                 "values per axis "
                 <input class="num" type="number" min="2" step="1" data-testid="lattice-steps" prop:value=move || steps.get().to_string()
@@ -167,49 +200,24 @@ pub fn LatticePanel(parsed: Memo<crate::state::Parsed>, overlay: Signal<Overlay>
                         }
                     } />
             </label>
-            <button data-testid="lattice-build" on:click=start disabled=running>"Build lattice"</button>
-            <button data-testid="lattice-cancel" on:click=cancel disabled=move || !running()>"Cancel"</button>
-            <progress data-testid="lattice-progress" max="1" prop:value=move || progress.get().map_or(0.0, |(d, t)| d as f64 / t.max(1) as f64) aria-label="lattice progress"></progress>
-        </div>
-        {move || report.get().map(|r| match r.0.as_ref() {
-            Err(e) => view! { <p class="error">{format!("Lattice: {e}")}</p> }.into_any(),
+            <button data-testid="lattice-build" on:click=start disabled=busy>"Build lattice"</button>
+            <button data-testid="lattice-cancel" on:click=move |_| stop() disabled=move || !busy()>"Cancel"</button>
+            <progress data-testid="lattice-progress" max="1" prop:value=move || progress.get().map_or(0.0, |p| p.0) aria-label="lattice progress"></progress>
+            <span class="readout" data-testid="lattice-state" data-state=move || if busy() { "running" } else { "idle" } aria-live="polite">
+                {move || progress.get().map(|p| p.1)}
+            </span>
+        </SectionControls>
+        {move || lattice.get().map(|r| match r.0.as_ref() {
+            Err(e) => view! { <p class="error" data-testid="lattice-error">{format!("Lattice: {e}")}</p> }.into_any(),
             Ok(r) => view! { <LatticeView report=r.clone() overlay /> }.into_any(),
         })}
     }
 }
 
-fn now() -> f64 {
-    web_sys::window().and_then(|w| w.performance()).map_or(0.0, |p| p.now())
-}
-
-/// Builds the lattice of `generation` for one frame's slice, then schedules the next frame.
-fn pump(build: Rc<RefCell<Option<Build>>>, generation: u32, report: RwSignal<Option<Shared<Result<LatticeReport, String>>>>, progress: RwSignal<Option<(usize, usize)>>) {
-    request_animation_frame(move || {
-        let mut slot = build.borrow_mut();
-        let Some(b) = slot.as_mut().filter(|b| b.generation == generation) else { return };
-        let started = now();
-        let mut p = b.lattice.step(1);
-        while !p.done && now() - started < SLICE_MS {
-            p = b.lattice.step(1);
-        }
-        if p.done {
-            let r = b.lattice.report().ok_or_else(|| "the lattice ended without a report".to_string());
-            *slot = None;
-            drop(slot);
-            progress.set(None);
-            report.set(Some(Shared::new(r)));
-        } else {
-            drop(slot);
-            progress.set(Some((p.rays_done, p.rays_total)));
-            pump(build, generation, report, progress);
-        }
-    });
-}
-
 /// The rays, the axes and the overlay.
 #[component]
-fn LatticeView(report: LatticeReport, overlay: Signal<Overlay>) -> impl IntoView {
-    let axes = [Coord::parse(report.axes[0]).unwrap_or(Coord::X), Coord::parse(report.axes[1]).unwrap_or(Coord::Y)];
+fn LatticeView(report: LatticeResult, overlay: Signal<Overlay>) -> impl IntoView {
+    let axes = [Coord::parse(&report.axes[0]).unwrap_or(Coord::X), Coord::parse(&report.axes[1]).unwrap_or(Coord::Y)];
     let range = [report.ranges[0], report.ranges[1]];
     let x = Scale::new(range[0][0], range[0][1], LEFT, W - RIGHT);
     let y = Scale::new(range[1][0], range[1][1], H - BOTTOM, TOP);
@@ -225,6 +233,7 @@ fn LatticeView(report: LatticeReport, overlay: Signal<Overlay>) -> impl IntoView
             <rect x=LEFT y=TOP width=W - LEFT - RIGHT height=H - TOP - BOTTOM fill="#ffffff" stroke="#5b6670" />
             {lines.into_iter().map(|s| view! {
                 <line data-testid="lattice-ray" data-component=s.component.map_or("none".to_string(), |c| c.to_string())
+                    data-from=format!("{},{}", fmt_exact(s.from.0), fmt_exact(s.from.1)) data-to=format!("{},{}", fmt_exact(s.to.0), fmt_exact(s.to.1))
                     x1=x.at(s.from.0) y1=y.at(s.from.1) x2=x.at(s.to.0) y2=y.at(s.to.1)
                     stroke=s.colour stroke-width=if s.component.is_some() { "2.5" } else { "1.2" } />
             }).collect_view()}
@@ -234,8 +243,8 @@ fn LatticeView(report: LatticeReport, overlay: Signal<Overlay>) -> impl IntoView
             {ticks(range[1][0], range[1][1], 6).into_iter().map(|v| view! {
                 <text x=LEFT - 5.0 y=y.at(v) + 4.0 font-size="11" text-anchor="end" fill="#5b6670">{fmt_num(v)}</text>
             }).collect_view()}
-            <text x=(LEFT + W - RIGHT) / 2.0 y=H - 12.0 font-size="12" text-anchor="middle" fill="#1d2329">{report.axes[0]}</text>
-            <text x=14 y=(TOP + H - BOTTOM) / 2.0 font-size="12" text-anchor="middle" fill="#1d2329" transform=format!("rotate(-90 14 {})", (TOP + H - BOTTOM) / 2.0)>{report.axes[1]}</text>
+            <text x=(LEFT + W - RIGHT) / 2.0 y=H - 12.0 font-size="12" text-anchor="middle" fill="#1d2329">{report.axes[0].clone()}</text>
+            <text x=14 y=(TOP + H - BOTTOM) / 2.0 font-size="12" text-anchor="middle" fill="#1d2329" transform=format!("rotate(-90 14 {})", (TOP + H - BOTTOM) / 2.0)>{report.axes[1].clone()}</text>
             {move || {
                 let o = overlay.get();
                 view! {
@@ -260,12 +269,32 @@ fn LatticeView(report: LatticeReport, overlay: Signal<Overlay>) -> impl IntoView
 mod tests {
     use super::*;
     use crate::presets::{find, PRESETS};
+    use cablenav::lattice::{Lattice, LatticeSpec};
+
+    fn box_lattice() -> LatticeResult {
+        let s = crate::logic::parse_scenario(PRESETS[find("cdpr7-box").unwrap()].json).unwrap();
+        let spec = LatticeSpec::new(vec![Coord::X, Coord::Z], vec![[0.2, 3.8], [0.3, 3.7]], vec![7], s.pose("fig310").unwrap().coords()).unwrap();
+        LatticeResult::from(&Lattice::build(&s, spec).report().unwrap())
+    }
+
+    #[test]
+    fn colours_are_the_same_in_both_views() {
+        assert_eq!(rgba(None), [208.0 / 255.0, 59.0 / 255.0, 59.0 / 255.0, 1.0]);
+        assert_eq!(rgba(Some(0)), [46.0 / 255.0, 160.0 / 255.0, 67.0 / 255.0, 1.0]);
+        assert_eq!(colour(Some(COMPONENTS.len() + 1)), COMPONENTS[1], "colours repeat");
+    }
+
+    #[test]
+    fn ray_pieces_hold_every_coordinate() {
+        let r = box_lattice();
+        let pieces = ray_pieces(&r);
+        assert!(pieces.iter().all(|p| p.at[1] == 2.0 && p.at[3..] == [0.0; 3]), "y = 2 and the orientation from the pose");
+        assert_eq!(pieces.len(), stretches(&r).len());
+    }
 
     #[test]
     fn rays_become_coloured_stretches_covering_their_range() {
-        let s = crate::logic::parse_scenario(PRESETS[find("cdpr7-box").unwrap()].json).unwrap();
-        let spec = LatticeSpec::new(vec![Coord::X, Coord::Z], vec![[0.2, 3.8], [0.3, 3.7]], vec![7], s.pose("fig310").unwrap().coords()).unwrap();
-        let r = Lattice::build(&s, spec).report().unwrap();
+        let r = box_lattice();
         let st = stretches(&r);
         // the x-ray at z = 0.8667: red up to x ≈ 2.0016, then the first component's green
         let z = 0.3 + 3.4 / 6.0;

@@ -6,6 +6,7 @@ pub mod distance;
 pub mod export;
 pub mod geom;
 pub mod lattice;
+pub mod section;
 pub mod slice;
 pub mod strip;
 pub mod tension;

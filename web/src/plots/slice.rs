@@ -3,6 +3,7 @@
 //! classified by several Web Workers at once, each a block of rows ([`row_blocks`]).
 
 use super::geom::{polyline, ticks, Scale};
+use super::section::{CrossSection, SectionControls};
 use super::strip::css;
 use super::Chart;
 use crate::state::Shared;
@@ -143,19 +144,15 @@ fn scales(range: [[f64; 2]; 2]) -> (Scale, Scale) {
 /// The slice controls and map.
 #[component]
 pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, overlay: Signal<Overlay>) -> impl IntoView {
-    let scenario = move || parsed.get().0.as_ref().as_ref().ok().cloned();
-    let pose = RwSignal::new(String::new());
-    let axes = RwSignal::new([Coord::X, Coord::Y]);
+    let scenario = Signal::derive(move || parsed.get().0.as_ref().as_ref().ok().cloned());
+    let section = CrossSection::new();
+    let CrossSection { pose, axes, range } = section;
     let res = RwSignal::new(64usize);
-    let range = RwSignal::new([[0.0, 1.0]; 2]);
     let map = RwSignal::new(None::<Shared<Result<SliceMap, String>>>);
     // a new scenario resets the choices to its defaults and clears the map
     Effect::new(move |_| {
-        if let Some(s) = scenario() {
-            let a = default_axes(&s);
-            pose.set(default_pose(&s).unwrap_or_default());
-            axes.set(a);
-            range.set([default_range(&s, a[0]), default_range(&s, a[1])]);
+        if let Some(s) = scenario.get() {
+            section.reset(&s);
             map.set(None);
         }
     });
@@ -171,7 +168,7 @@ pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, 
         progress.set(None);
     };
     let compute = move |_| {
-        let Some(s) = scenario() else { return };
+        let Some(s) = scenario.get_untracked() else { return };
         stop();
         let this = generation.get_value();
         let (pose_name, a, n, r) = (pose.get_untracked(), axes.get_untracked(), res.get_untracked(), range.get_untracked());
@@ -182,83 +179,42 @@ pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, 
         }
         let Some(json) = source.try_get_untracked() else { return };
         let blocks = row_blocks(n, host::parallelism());
-        let parts: StoredValue<Vec<Option<Vec<Class>>>> = StoredValue::new(vec![None; blocks.len()]);
-        progress.set(Some((0, blocks.len())));
-        let mut started = Vec::new();
-        for (b, rows) in blocks.iter().enumerate() {
-            let job = Job::Slice { scenario: json.clone(), pose: pose_name.clone(), axes: [a[0].name().to_string(), a[1].name().to_string()], res: n, range: r, rows: *rows };
-            let (s, pose_name) = (s.clone(), pose_name.clone());
-            let on_reply = move |reply: Reply| {
-                if generation.get_value() != this {
-                    return;
-                }
-                let result = match reply {
-                    Reply::Sliced { classes, .. } => {
-                        parts.update_value(|p| p[b] = Some(classes));
-                        let done = parts.with_value(|p| p.iter().filter(|x| x.is_some()).count());
-                        progress.set(Some((done, parts.with_value(Vec::len))));
-                        if parts.with_value(|p| p.iter().any(Option::is_none)) {
-                            return;
-                        }
-                        let classes: Vec<Class> = parts.with_value(|p| p.iter().flatten().flatten().copied().collect());
-                        cablenav::verify::slice::slice_from_classes(&s, &pose_name, a, n, r, classes).map_err(|e| e.to_string())
-                    }
-                    Reply::Failed { error } => Err(error),
-                    Reply::Progress { .. } => return,
-                    Reply::Planned { .. } => Err("the worker answered a slice job with a plan".into()),
-                };
-                map.set(Some(Shared::new(result)));
-                generation.update_value(|g| *g += 1);
-                progress.set(None);
-                running.update_value(|r| std::mem::take(r).into_iter().for_each(host::retire));
-            };
-            match host::start(&job, on_reply) {
-                Ok(w) => started.push(w),
-                Err(e) => {
-                    started.iter().for_each(Running::cancel);
-                    progress.set(None);
-                    map.set(Some(Shared::new(Err(e))));
-                    return;
-                }
+        let jobs: Vec<Job> = blocks
+            .iter()
+            .map(|rows| Job::Slice { scenario: json.clone(), pose: pose_name.clone(), axes: [a[0].name().to_string(), a[1].name().to_string()], res: n, range: r, rows: *rows })
+            .collect();
+        let part = |reply: Reply| match reply {
+            Reply::Progress { .. } => None,
+            Reply::Sliced { classes, .. } => Some(Ok(classes)),
+            Reply::Failed { error } => Some(Err(error)),
+            _ => Some(Err("the worker answered a slice job with another job's reply".to_string())),
+        };
+        let workers = blocks.len();
+        let on_progress = move |_: f64, parts: usize| {
+            if generation.get_value() == this {
+                progress.set(Some((parts, workers)));
             }
-        }
-        running.set_value(started);
-    };
-    let set_axis = move |k: usize, name: String| {
-        if let (Some(c), Some(s)) = (Coord::parse(&name), scenario()) {
-            axes.update(|a| a[k] = c);
-            range.update(|r| r[k] = default_range(&s, c));
-        }
-    };
-    let set_range = move |k: usize, end: usize, text: String| {
-        if let Ok(v) = text.trim().parse::<f64>() {
-            range.update(|r| r[k][end] = v);
-        }
-    };
-    let axis_select = move |k: usize| {
-        view! {
-            <select data-testid=format!("slice-axis-{k}") on:change=move |ev| set_axis(k, event_target_value(&ev))>
-                {Coord::ALL.map(|c| view! { <option value=c.name() selected=move || axes.get()[k] == c>{c.name()}</option> })}
-            </select>
-            " from "
-            <input class="num" type="number" step="any" prop:value=move || fmt_num(range.get()[k][0]) on:change=move |ev| set_range(k, 0, event_target_value(&ev)) />
-            " to "
-            <input class="num" type="number" step="any" prop:value=move || fmt_num(range.get()[k][1]) on:change=move |ev| set_range(k, 1, event_target_value(&ev)) />
+        };
+        let on_done = move |parts: Result<Vec<Vec<Class>>, String>| {
+            if generation.get_value() != this {
+                return;
+            }
+            let result = parts.and_then(|p| cablenav::verify::slice::slice_from_classes(&s, &pose_name, a, n, r, p.concat()).map_err(|e| e.to_string()));
+            map.set(Some(Shared::new(result)));
+            generation.update_value(|g| *g += 1);
+            progress.set(None);
+            running.update_value(|r| std::mem::take(r).into_iter().for_each(host::retire));
+        };
+        match host::start_all(&jobs, part, on_progress, on_done) {
+            Ok(started) => {
+                running.set_value(started);
+                progress.set(Some((0, workers)));
+            }
+            Err(e) => map.set(Some(Shared::new(Err(e)))),
         }
     };
     view! {
-        <div class="slice-controls">
-            <label>
-                "Other coordinates from pose "
-                <select data-testid="slice-pose" on:change=move |ev| pose.set(event_target_value(&ev))>
-                    {move || scenario().map(|s| s.poses.iter().map(|(n, _)| {
-                        let (value, key, text) = (n.clone(), n.clone(), n.clone());
-                        view! { <option value=value selected=move || pose.get() == key>{text}</option> }
-                    }).collect_view())}
-                </select>
-            </label>
-            <label>"across " {axis_select(0)}</label>
-            <label>"up " {axis_select(1)}</label>
+        <SectionControls section scenario prefix="slice">
             <label>
                 "cells per side "
                 <select on:change=move |ev| {
@@ -274,7 +230,7 @@ pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, 
             <span class="readout" data-testid="slice-progress" aria-live="polite">
                 {move || progress.get().map(|(done, all)| format!("{done} of {all} row blocks done ({all} workers)"))}
             </span>
-        </div>
+        </SectionControls>
         {move || map.get().map(|m| match m.0.as_ref() {
             Err(e) => view! { <p class="error">{format!("Slice: {e}")}</p> }.into_any(),
             Ok(m) => view! { <SliceMapView map=m.clone() overlay /> }.into_any(),

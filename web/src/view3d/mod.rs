@@ -29,6 +29,10 @@ pub struct SceneView {
     pub cables: String,
     /// Poses in the drawn planned path (0: none).
     pub path_poses: usize,
+    /// Poses in the drawn A* polyline of the lattice planner (0: none; `data-polyline-poses`).
+    pub polyline_poses: usize,
+    /// Ray lattice pieces drawn (`data-lattice-pieces`).
+    pub lattice_pieces: usize,
     /// The clearance tubes drawn, `cable:radius` (1-based cables) joined by spaces (`data-tubes`).
     pub tubes: String,
 }
@@ -234,6 +238,8 @@ pub fn View3d(scene: Memo<Option<Shared<SceneView>>>, handles: Handles) -> impl 
                 data-sections=attr(|v| v.sections.clone())
                 data-cables=attr(|v| v.cables.clone())
                 data-path-poses=attr(|v| v.path_poses.to_string())
+                data-polyline-poses=attr(|v| v.polyline_poses.to_string())
+                data-lattice-pieces=attr(|v| v.lattice_pieces.to_string())
                 data-tubes=attr(|v| v.tubes.clone())
                 on:pointerdown=move |ev: web_sys::PointerEvent| {
                     let Some(c) = canvas_ref.get_untracked() else { return };

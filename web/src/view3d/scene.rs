@@ -129,6 +129,31 @@ pub fn trajectory_polylines(traj: &Trajectory, model: &StripModel) -> Vec<Polyli
         .collect()
 }
 
+/// Samples along an angle ray piece (position rays are straight: their two ends).
+const ANGLE_SAMPLES: usize = 16;
+
+/// A ray lattice's pieces as coloured poses (see [`crate::plots::lattice::ray_pieces`]): feasible
+/// pieces in their component's colour, as in the cross-section panel; the infeasible ones in red
+/// when `infeasible`, else left out.
+pub fn lattice_polylines(l: &crate::worker::protocol::LatticeResult, infeasible: bool) -> Vec<Polyline> {
+    use crate::plots::lattice::{ray_pieces, rgba};
+    ray_pieces(l)
+        .into_iter()
+        .filter(|p| infeasible || p.component.is_some())
+        .map(|p| {
+            let n = if p.vary.is_angle() { ANGLE_SAMPLES } else { 1 };
+            let poses = (0..=n)
+                .map(|k| {
+                    let mut c = p.at;
+                    c[p.vary.index()] = p.from + (p.to - p.from) * k as f64 / n as f64;
+                    Pose::from_coords(c)
+                })
+                .collect();
+            Polyline { colour: rgba(p.component), poses }
+        })
+        .collect()
+}
+
 /// The box the scene occupies: base anchors, obstacles, and every named pose's platform.
 pub fn bounds(s: &Scenario) -> (DVec3, DVec3) {
     let mut min = DVec3::splat(f64::INFINITY);
@@ -173,8 +198,10 @@ pub struct SceneInput<'a> {
     pub cables: &'a [CableState],
     /// The trajectory's pieces (see [`trajectory_polylines`]).
     pub trajectory: &'a [Polyline],
-    /// The planned path, if any.
-    pub path: Option<&'a Polyline>,
+    /// Paths drawn beside the trajectory: the planned path, the lattice planner's A* polyline.
+    pub paths: &'a [Polyline],
+    /// The ray lattice's pieces (see [`lattice_polylines`]), drawn as thin lines.
+    pub lattice: &'a [Polyline],
     /// The draggable handles (m, world frame), the selected one's index and, for it, the axis
     /// (0, 1, 2) a drag is constrained to, if any.
     pub handles: &'a [DVec3],
@@ -256,7 +283,7 @@ pub fn build(input: &SceneInput) -> Geometry {
     }
 
     let tool = tool_point(s, extent);
-    let pieces = input.trajectory.iter().chain(input.path);
+    let pieces = input.trajectory.iter().chain(input.paths);
     for piece in pieces {
         let mut t = Tris::default();
         let positions: Vec<DVec3> = piece.poses.iter().map(|p| dv(&p.position)).collect();
@@ -267,6 +294,17 @@ pub fn build(input: &SceneInput) -> Geometry {
             }
         }
         push_tris(&mut g.solid, &t, piece.colour);
+    }
+
+    // the lattice: the platform origin's trace along position rays, the tool point's along
+    // angle rays (where the origin stays put)
+    for piece in input.lattice {
+        let positions: Vec<DVec3> = piece.poses.iter().map(|p| dv(&p.position)).collect();
+        let still = positions.windows(2).all(|w| (w[1] - w[0]).length() <= 1e-12);
+        let trace: Vec<DVec3> = if still { piece.poses.iter().map(|p| dv(&p.transform(&tool))).collect() } else { positions };
+        for w in trace.windows(2) {
+            line(&mut g.lines, w[0], w[1], piece.colour);
+        }
     }
 
     for (k, o) in s.obstacles.iter().enumerate() {
@@ -387,7 +425,7 @@ mod tests {
         let pieces = trajectory_polylines(traj, &logic::strip(&report));
         let pose = traj.pose_at(0.3);
         let states = cable_states(&s, &pose);
-        let g = build(&SceneInput { scenario: &s, pose: Some(pose), cables: &states, trajectory: &pieces, path: None, handles: &[], selected: None, axis: None, tubes: &[] });
+        let g = build(&SceneInput { scenario: &s, pose: Some(pose), cables: &states, trajectory: &pieces, paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] });
         assert_eq!(g.solid.len() % STRIDE, 0);
         assert_eq!(g.lines.len() % (2 * STRIDE), 0);
         // the platform box and the three obstacles, translucent
@@ -400,9 +438,31 @@ mod tests {
         assert!(solid.contains(&GREEN), "the feasible section");
         assert!(!solid.contains(&PATH), "no path given");
         // without a pose: no cables, no platform
-        let bare = build(&SceneInput { scenario: &s, pose: None, cables: &[], trajectory: &[], path: None, handles: &[], selected: None, axis: None, tubes: &[] });
+        let bare = build(&SceneInput { scenario: &s, pose: None, cables: &[], trajectory: &[], paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] });
         assert!(bare.solid.len() < g.solid.len());
         assert!(!colours(&bare.solid).contains(&RED));
+    }
+
+    #[test]
+    fn the_lattice_is_drawn_in_the_panels_colours() {
+        let s = scenario("cdpr7-box");
+        let spec = cablenav::lattice::LatticeSpec::new(vec![cablenav::model::Coord::X, cablenav::model::Coord::Z], vec![[0.2, 3.8], [0.3, 3.7]], vec![7], s.pose("fig310").unwrap().coords()).unwrap();
+        let l = crate::worker::protocol::LatticeResult::from(&cablenav::lattice::Lattice::build(&s, spec).report().unwrap());
+        let all = lattice_polylines(&l, true);
+        let feasible = lattice_polylines(&l, false);
+        assert!(feasible.len() < all.len() && feasible.iter().all(|p| p.colour != lattice_red()));
+        // the x-ray at z = 0.8667: red from x = 0.2, then green from x ≈ 2.0016, at y = 2
+        let ray: Vec<&Polyline> = all.iter().filter(|p| (p.poses[0].position.z - 0.8666666666666667).abs() < 1e-12 && p.poses[0].position.x != p.poses[1].position.x).collect();
+        assert_eq!(ray.len(), 2);
+        assert_eq!((ray[0].colour, ray[1].colour), (lattice_red(), crate::plots::lattice::rgba(Some(0))));
+        assert!((ray[1].poses[0].position.x - 2.0016).abs() < 1e-3 && ray[1].poses[0].position.y == 2.0);
+        let bare = build(&SceneInput { scenario: &s, pose: None, cables: &[], trajectory: &[], paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] });
+        let g = build(&SceneInput { scenario: &s, pose: None, cables: &[], trajectory: &[], paths: &[], lattice: &all, handles: &[], selected: None, axis: None, tubes: &[] });
+        assert_eq!(g.lines.len() - bare.lines.len(), all.len() * 2 * STRIDE, "a line per position-ray piece");
+    }
+
+    fn lattice_red() -> Rgba {
+        crate::plots::lattice::rgba(None)
     }
 
     #[test]

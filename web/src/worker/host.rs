@@ -96,3 +96,76 @@ pub fn start(job: &Job, mut on_reply: impl FnMut(Reply) + 'static) -> Result<Run
     worker.post_message(&wasm_bindgen::module()).map_err(|e| format!("cannot send the module to the worker: {e:?}"))?;
     Ok(Running { worker, script_url, _onmessage: onmessage, _onerror: onerror })
 }
+
+/// Runs `jobs` at once, one worker each (work split into blocks), and joins their answers:
+/// `part` reads a job's final reply into its part (`Err` for a failure; progress replies and other
+/// kinds are passed to it too and may be ignored with `None`), `progress` gets the mean of the
+/// jobs' progress fractions and the number of parts in after each reply, and `done` gets the parts
+/// in job order once all are in, or the first error (once). Returns the running workers (cancel
+/// or drop them to stop); if one cannot start, those started are cancelled and the error returned.
+pub fn start_all<T: 'static>(
+    jobs: &[Job],
+    part: impl Fn(Reply) -> Option<Result<T, String>> + 'static,
+    progress: impl Fn(f64, usize) + 'static,
+    done: impl Fn(Result<Vec<T>, String>) + 'static,
+) -> Result<Vec<Running>, String> {
+    struct Join<T> {
+        parts: Vec<Option<T>>,
+        fractions: Vec<f64>,
+        over: bool,
+    }
+    let n = jobs.len();
+    let join = std::rc::Rc::new(std::cell::RefCell::new(Join { parts: (0..n).map(|_| None).collect(), fractions: vec![0.0; n], over: false }));
+    let (part, progress, done) = (std::rc::Rc::new(part), std::rc::Rc::new(progress), std::rc::Rc::new(done));
+    let mut started = Vec::with_capacity(n);
+    for (k, job) in jobs.iter().enumerate() {
+        let (join, part, progress, done) = (join.clone(), part.clone(), progress.clone(), done.clone());
+        let on_reply = move |reply: Reply| {
+            if join.borrow().over {
+                return;
+            }
+            if let Reply::Progress { fraction, .. } = &reply {
+                join.borrow_mut().fractions[k] = *fraction;
+            }
+            let got = part(reply);
+            let finished = {
+                let mut j = join.borrow_mut();
+                match got {
+                    None => None,
+                    Some(Err(e)) => {
+                        j.over = true;
+                        Some(Err(e))
+                    }
+                    Some(Ok(p)) => {
+                        j.parts[k] = Some(p);
+                        j.fractions[k] = 1.0;
+                        if j.parts.iter().all(Option::is_some) {
+                            j.over = true;
+                            Some(Ok(j.parts.iter_mut().filter_map(Option::take).collect()))
+                        } else {
+                            None
+                        }
+                    }
+                }
+            };
+            match finished {
+                Some(result) => done(result),
+                None => {
+                    let (mean, count) = {
+                        let j = join.borrow();
+                        (j.fractions.iter().sum::<f64>() / n as f64, j.parts.iter().filter(|p| p.is_some()).count())
+                    };
+                    progress(mean, count);
+                }
+            }
+        };
+        match start(job, on_reply) {
+            Ok(w) => started.push(w),
+            Err(e) => {
+                started.iter().for_each(Running::cancel);
+                return Err(e);
+            }
+        }
+    }
+    Ok(started)
+}

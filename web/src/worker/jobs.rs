@@ -1,7 +1,8 @@
 //! Running a [`Job`] to its end, reporting [`Reply`]s as it goes: plain Rust over the core,
 //! tested natively (the worker calls [`run`]; so do the tests).
 
-use super::protocol::{pose_to_wire, Job, Reply};
+use super::protocol::{pose_to_wire, Job, LatticeResult, PlannedTrajectory, RaySections, Reply, WireReport};
+use cablenav::lattice::{Lattice, LatticeSpec, Ray};
 use crate::logic::fmt_num;
 use cablenav::model::{Coord, Pose};
 use cablenav::plan::choice::{self, Details, PathPlanner, PlanResult, PlannerKind, PlannerOptions, Progress};
@@ -123,6 +124,10 @@ pub fn run(job: Job, report: &mut dyn FnMut(Reply), now: fn() -> f64) {
     let last = match job {
         Job::Plan { scenario, query, planner: id, max_charts } => plan(&scenario, &query, &id, max_charts, report, now),
         Job::Slice { scenario, pose, axes, res, range, rows } => slice_rows(&scenario, &pose, &axes, res, range, rows),
+        Job::LatticeRays { scenario, pose, axes, ranges, steps, rays } => {
+            lattice_rays(&scenario, &pose, &axes, ranges, steps, rays, report, now)
+        }
+        Job::Profiles { scenario, name, samples } => profiles(&scenario, &name, &samples),
     };
     report(last.unwrap_or_else(|error| Reply::Failed { error }));
 }
@@ -151,7 +156,101 @@ fn plan(json: &str, query: &str, id: &str, max_charts: usize, report: &mut dyn F
     }
     let r = p.result((now() - started) / 1000.0).ok_or("the planner ended without a result")?;
     let f = finished(&r);
-    Ok(Reply::Planned { status: f.status.to_string(), summary: f.summary, path: f.path.iter().map(pose_to_wire).collect(), polyline: f.polyline.iter().map(pose_to_wire).collect() })
+    let trajectory = match &r.trajectory {
+        Some(t) => Some(Box::new(planned_trajectory(json, t)?)),
+        None => None,
+    };
+    Ok(Reply::Planned {
+        status: f.status.to_string(),
+        summary: f.summary,
+        path: f.path.iter().map(pose_to_wire).collect(),
+        polyline: f.polyline.iter().map(pose_to_wire).collect(),
+        trajectory,
+    })
+}
+
+/// The scenario `json` with the planned trajectory `t` added (as `cablenav plan --out` writes
+/// it) and the exact verification of that trajectory there, read back from the written text as
+/// `cablenav verify` reads it.
+pub fn planned_trajectory(json: &str, t: &cablenav::model::Trajectory) -> Result<PlannedTrajectory, String> {
+    let (text, name) = cablenav::scenario::with_trajectory(json, t).map_err(|e| e.to_string())?;
+    let s = scenario(&text)?;
+    let index = s.trajectories.iter().position(|x| x.name == name).ok_or("the planned trajectory is missing from the written scenario")?;
+    let report = crate::logic::verify(&s, index).map(|r| WireReport::from(&r));
+    Ok(PlannedTrajectory { scenario: text, name, report })
+}
+
+fn profiles(json: &str, name: &str, samples: &[(f64, [u64; 7])]) -> Result<Reply, String> {
+    use cablenav::verify::profile::{clearances_at, tension_at};
+    let s = scenario(json)?;
+    let samples: Vec<(f64, Pose)> = samples.iter().map(|(t, p)| (*t, super::protocol::pose_from_wire(p))).collect();
+    let clearances = clearances_at(&s, &samples).map(Into::into).map_err(|e| e.to_string());
+    let tension = tension_at(&s, name, &samples).map(Into::into).map_err(|e| e.to_string());
+    Ok(Reply::Profiles { clearances, tension })
+}
+
+/// The checked lattice request of a [`Job::LatticeRays`] (the page checks it before starting
+/// workers; each worker checks it again).
+pub fn lattice_spec(s: &Scenario, pose: &str, axes: &[String], ranges: Vec<[f64; 2]>, steps: usize) -> Result<LatticeSpec, String> {
+    let coords = axes.iter().map(|n| Coord::parse(n).ok_or_else(|| format!("unknown coordinate “{n}”"))).collect::<Result<Vec<_>, _>>()?;
+    let at = s.pose(pose).map_err(|e| e.to_string())?.coords();
+    LatticeSpec::new(coords, ranges, vec![steps], at).map_err(|e| e.to_string())
+}
+
+#[allow(clippy::too_many_arguments)]
+fn lattice_rays(
+    json: &str,
+    pose: &str,
+    axes: &[String],
+    ranges: Vec<[f64; 2]>,
+    steps: usize,
+    rays: [usize; 2],
+    report: &mut dyn FnMut(Reply),
+    now: fn() -> f64,
+) -> Result<Reply, String> {
+    let s = scenario(json)?;
+    let spec = lattice_spec(&s, pose, axes, ranges, steps)?;
+    let total = spec.ray_count() as usize;
+    if rays[0] > rays[1] || rays[1] > total {
+        return Err(format!("rays {}..{} of a lattice of {total}", rays[0], rays[1]));
+    }
+    let l = Lattice::new(&s, spec);
+    let mut sections = Vec::with_capacity(rays[1] - rays[0]);
+    let mut since = now();
+    for r in rays[0]..rays[1] {
+        let (a, cell) = l.spec.ray_at(r);
+        let sec = l.cast(l.spec.coords(&cell), a);
+        sections.push(RaySections::new(&sec.feasible, &sec.uncertain));
+        if now() - since >= PROGRESS_MS {
+            let done = sections.len();
+            report(Reply::Progress { fraction: done as f64 / (rays[1] - rays[0]).max(1) as f64, detail: format!("{done} of {} rays", rays[1] - rays[0]) });
+            since = now();
+        }
+    }
+    Ok(Reply::LatticeRays { rays, sections })
+}
+
+/// The lattice of `spec` from every ray's sections (in ray order, as [`Job::LatticeRays`] blocks
+/// give them): the core's graph and components over them, as the page draws it.
+pub fn join_lattice(s: &Scenario, spec: LatticeSpec, sections: &[RaySections]) -> Result<LatticeResult, String> {
+    let total = spec.ray_count() as usize;
+    if sections.len() != total {
+        return Err(format!("{} ray(s) for a lattice of {total}", sections.len()));
+    }
+    let mut l = Lattice::new(s, spec);
+    l.rays = sections
+        .iter()
+        .enumerate()
+        .map(|(r, sec)| {
+            let (a, cell) = l.spec.ray_at(r);
+            let (coord, c) = (l.spec.axes[a], l.spec.coords(&cell));
+            let fixed = Coord::ALL.into_iter().filter(|&k| k != coord).map(|k| (k.name(), c[k.index()])).collect();
+            Ray { vary: coord.name(), axis: a, cell, fixed, feasible: sec.feasible(), uncertain: sec.uncertain() }
+        })
+        .collect();
+    // every ray is there: this step computes none and builds the graph
+    l.step(1);
+    l.report().map(|r| LatticeResult::from(&r)).ok_or_else(|| "the lattice's graph was not built".to_string())
 }
 
 fn slice_rows(json: &str, pose: &str, axes: &[String; 2], res: usize, range: [[f64; 2]; 2], rows: [usize; 2]) -> Result<Reply, String> {
@@ -186,8 +285,9 @@ mod tests {
         let json = PRESETS[find("robocrane").unwrap()].json;
         let mut replies = vec![];
         run(Job::Plan { scenario: json.into(), query: "q1-q2".into(), planner: "continuation".into(), max_charts: 20_000 }, &mut |r| replies.push(r), clock);
-        let Some(Reply::Planned { status, summary, path, polyline }) = replies.last() else { panic!("{replies:?}") };
+        let Some(Reply::Planned { status, summary, path, polyline, trajectory }) = replies.last() else { panic!("{replies:?}") };
         assert!(polyline.is_empty(), "the atlas has no A* polyline");
+        assert!(trajectory.as_ref().is_some_and(|t| t.report.is_ok()), "the atlas' path as a trajectory, verified");
         assert_eq!(status, "found");
         assert!(summary.starts_with("Path found:"), "{summary}");
         let s = Scenario::from_json(json).unwrap();
@@ -202,8 +302,16 @@ mod tests {
         let json = PRESETS[find("cdpr7-box").unwrap()].json;
         let mut replies = vec![];
         run(Job::Plan { scenario: json.into(), query: "over-box".into(), planner: "ray-lattice".into(), max_charts: 1 }, &mut |r| replies.push(r), clock);
-        let Some(Reply::Planned { status, summary, path, polyline }) = replies.last() else { panic!("{replies:?}") };
+        let Some(Reply::Planned { status, summary, path, polyline, trajectory }) = replies.last() else { panic!("{replies:?}") };
         assert_eq!(status, "found", "{summary}");
+        // the planned trajectory, written into the scenario, verifies feasible on all of [0, 1]
+        // exactly as the core verifies it there
+        let planned = trajectory.as_ref().expect("a trajectory");
+        let written = Scenario::from_json(&planned.scenario).unwrap();
+        let k = written.trajectories.iter().position(|t| t.name == planned.name).unwrap();
+        let direct = crate::logic::verify(&written, k).unwrap();
+        assert_eq!(planned.report.as_ref().unwrap().report(), direct);
+        assert_eq!(direct.feasible, [[0.0, 1.0]], "{direct:?}");
         assert_eq!(path.len(), PATH_SAMPLES + 1);
         assert!(polyline.len() >= 3, "the A* path turns over the box");
         let s = Scenario::from_json(json).unwrap();
@@ -212,14 +320,80 @@ mod tests {
     }
 
     #[test]
+    fn lattice_rays_in_blocks_join_into_the_cores_lattice() {
+        let json = PRESETS[find("cdpr7-box").unwrap()].json;
+        let s = Scenario::from_json(json).unwrap();
+        let (axes, ranges) = (vec!["x".to_string(), "z".to_string()], vec![[0.2, 3.8], [0.3, 3.7]]);
+        let mut sections = vec![];
+        for rays in [[0, 5], [5, 6], [6, 14]] {
+            let mut replies = vec![];
+            let job = Job::LatticeRays { scenario: json.into(), pose: "fig310".into(), axes: axes.clone(), ranges: ranges.clone(), steps: 7, rays };
+            run(job, &mut |r| replies.push(r), clock);
+            // through JSON, as the page gets it
+            let text = super::super::protocol::encode_reply(1, replies.last().unwrap());
+            let Some(Ok(envelope)) = super::super::protocol::decode_reply(&text) else { panic!("{text}") };
+            let Reply::LatticeRays { rays: got, sections: mut part } = envelope.body else { panic!("{text}") };
+            assert_eq!((got, part.len()), (rays, rays[1] - rays[0]));
+            sections.append(&mut part);
+        }
+        let spec = lattice_spec(&s, "fig310", &axes, ranges.clone(), 7).unwrap();
+        let joined = join_lattice(&s, spec.clone(), &sections).unwrap();
+        let core = Lattice::build(&s, spec.clone()).report().unwrap();
+        assert_eq!(joined, LatticeResult::from(&core), "the same rays, bit for bit, and the same graph");
+        assert_eq!((joined.rays.len(), joined.components), (14, core.components));
+        // the x-ray at z = 0.8667 starts at x ≈ 2.002 (thesis Fig. 3.10)
+        let ray = joined.rays.iter().find(|r| r.vary == "x" && (r.at[2] - (0.3 + 3.4 / 6.0)).abs() < 1e-12).unwrap();
+        assert!((ray.feasible[0][0] - 2.002).abs() < 1e-3 && ray.at[0] == 0.2 && ray.at[1] == 2.0, "{ray:?}");
+        assert!(join_lattice(&s, spec, &sections[1..]).unwrap_err().contains("13 ray(s)"));
+    }
+
+    #[test]
+    fn a_profiles_job_gives_the_cores_clearances_and_envelope() {
+        let json = PRESETS[find("robocrane").unwrap()].json;
+        let s = Scenario::from_json(json).unwrap();
+        let t = &s.trajectories[0];
+        let samples: Vec<(f64, Pose)> = (0..=8).map(|k| k as f64 / 8.0).map(|u| (u, t.pose_at(u))).collect();
+        let mut replies = vec![];
+        let wire = samples.iter().map(|(u, p)| (*u, pose_to_wire(p))).collect();
+        run(Job::Profiles { scenario: json.into(), name: t.name.clone(), samples: wire }, &mut |r| replies.push(r), clock);
+        // through JSON, as the page gets it
+        let text = super::super::protocol::encode_reply(1, replies.last().unwrap());
+        let Some(Ok(envelope)) = super::super::protocol::decode_reply(&text) else { panic!("{text}") };
+        let Reply::Profiles { clearances, tension } = envelope.body else { panic!("{text}") };
+        let core = cablenav::verify::profile::tension_at(&s, &t.name, &samples).unwrap();
+        let got = cablenav::report::TensionEnvelope::from(tension.unwrap());
+        assert_eq!((got.t.len(), got.bounds.clone()), (core.t.len(), core.bounds.clone()));
+        let close = |a: &[Option<Vec<f64>>], b: &[Option<Vec<f64>>]| a.iter().flatten().flatten().zip(b.iter().flatten().flatten()).all(|(x, y)| (x - y).abs() <= 1e-12 * y.abs().max(1.0));
+        assert!(close(&got.tension_min, &core.tension_min) && close(&got.tension_max, &core.tension_max));
+        let core = cablenav::verify::profile::clearances_at(&s, &samples).unwrap();
+        let got = cablenav::verify::profile::ClearanceProfile::from(clearances.unwrap());
+        assert_eq!(got.samples.len(), core.samples.len());
+        for (g, c) in got.samples.iter().zip(&core.samples) {
+            assert_eq!((g.t, &g.violated, g.cable_cable.as_ref().map(|x| &x.between)), (c.t, &c.violated, c.cable_cable.as_ref().map(|x| &x.between)));
+            let d = |x: &Option<cablenav::verify::profile::Closest>| x.as_ref().map_or(0.0, |x| x.distance);
+            assert!((d(&g.cable_cable) - d(&c.cable_cable)).abs() <= 1e-12 && (d(&g.cable_obstacle) - d(&c.cable_obstacle)).abs() <= 1e-12);
+        }
+        // no wrench set: the core's reason
+        let mut replies = vec![];
+        let plain = PRESETS[find("cdpr7-tree").unwrap()].json;
+        run(Job::Profiles { scenario: plain.into(), name: "x".into(), samples: vec![] }, &mut |r| replies.push(r), clock);
+        assert!(matches!(replies.last(), Some(Reply::Profiles { clearances: Ok(_), tension: Err(error) }) if error.contains("wrench")), "{replies:?}");
+    }
+
+    #[test]
     fn bad_jobs_fail_with_a_reason() {
         let mut replies = vec![];
         let json = PRESETS[find("robocrane").unwrap()].json.to_string();
         run(Job::Plan { scenario: json.clone(), query: "q1-q2".into(), planner: "nope".into(), max_charts: 1 }, &mut |r| replies.push(r), clock);
         run(Job::Plan { scenario: "{".into(), query: "q".into(), planner: "continuation".into(), max_charts: 1 }, &mut |r| replies.push(r), clock);
-        run(Job::Slice { scenario: json, pose: "q1".into(), axes: ["x".into(), "w".into()], res: 4, range: [[0.0, 1.0]; 2], rows: [0, 4] }, &mut |r| replies.push(r), clock);
+        run(Job::Slice { scenario: json.clone(), pose: "q1".into(), axes: ["x".into(), "w".into()], res: 4, range: [[0.0, 1.0]; 2], rows: [0, 4] }, &mut |r| replies.push(r), clock);
+        let lattice = |pose: &str, steps, rays| Job::LatticeRays { scenario: json.clone(), pose: pose.into(), axes: vec!["x".into(), "y".into()], ranges: vec![[0.0, 1.0]; 2], steps, rays };
+        run(lattice("q1", 0, [0, 1]), &mut |r| replies.push(r), clock);
+        run(lattice("nowhere", 3, [0, 1]), &mut |r| replies.push(r), clock);
+        run(lattice("q1", 3, [2, 7]), &mut |r| replies.push(r), clock);
         let errors: Vec<&str> = replies.iter().filter_map(|r| if let Reply::Failed { error } = r { Some(error.as_str()) } else { None }).collect();
-        assert_eq!(errors.len(), 3, "{replies:?}");
+        assert_eq!(errors.len(), 6, "{replies:?}");
+        assert!(errors[3].contains("steps") && errors[4].contains("nowhere") && errors[5].contains("rays 2..7 of a lattice of 6"), "{errors:?}");
         assert!(errors[0].contains("not available") && errors[2].contains("“w”"), "{errors:?}");
     }
 }

@@ -2,7 +2,10 @@
 //! come out (with the same id): any number of [`Reply::Progress`], then one final reply. All are
 //! JSON text, so that a job is a plain value and the protocol is tested natively.
 
+use cablenav::lattice::LatticeReport;
 use cablenav::model::Pose;
+use cablenav::report::{Boundary, Side, TensionEnvelope, VerifyReport};
+use cablenav::verify::profile::{ClearanceProfile, ClearanceSample, Closest};
 use cablenav::verify::slice::Class;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 use serde::{Deserialize, Serialize};
@@ -28,6 +31,14 @@ pub enum Job {
         range: [[f64; 2]; 2],
         rows: [usize; 2],
     },
+    /// Rays `rays[0]..rays[1]` (in the core's `LatticeSpec::ray_at` order) of the ray lattice
+    /// over `axes` (coordinate names) with `ranges` and `steps` values per axis, the other
+    /// coordinates from pose `pose` (all rays: `[0, total]`; the page splits them over workers
+    /// and joins them with [`super::jobs::join_lattice`]).
+    LatticeRays { scenario: String, pose: String, axes: Vec<String>, ranges: Vec<[f64; 2]>, steps: usize, rays: [usize; 2] },
+    /// The plots along the path `name` at the samples `(t, pose)` (see [`pose_to_wire`]): its
+    /// clearances and its tension envelope.
+    Profiles { scenario: String, name: String, samples: Vec<(f64, [u64; 7])> },
 }
 
 /// What a worker answers.
@@ -37,13 +48,254 @@ pub enum Reply {
     /// How far the job is: a fraction in [0, 1] (never going back) and a line for people.
     Progress { fraction: f64, detail: String },
     /// A planning run ended: its status (`found`, `no_path`, `budget`, `unrepaired`), a summary,
-    /// the path (when there is one) as poses (see [`pose_to_wire`]) and the lattice planner's A*
-    /// polyline (empty for the atlas).
-    Planned { status: String, summary: String, path: Vec<[u64; 7]>, polyline: Vec<[u64; 7]> },
+    /// the path (when there is one) as poses (see [`pose_to_wire`]), the lattice planner's A*
+    /// polyline (empty for the atlas) and the planned trajectory with its exact verification.
+    Planned { status: String, summary: String, path: Vec<[u64; 7]>, polyline: Vec<[u64; 7]>, trajectory: Option<Box<PlannedTrajectory>> },
+    /// Rays `rays[0]..rays[1]` of a lattice: each ray's feasible and uncertain intervals, as bits
+    /// (so the join builds the very graph the core builds).
+    LatticeRays { rays: [usize; 2], sections: Vec<RaySections> },
+    /// The clearances and the tension envelope along a path (each, or why not).
+    Profiles { clearances: Result<WireClearances, String>, tension: Result<WireEnvelope, String> },
     /// A slice map's rows `rows[0]..rows[1]`: their cells' classes, row-major.
     Sliced { rows: [usize; 2], classes: Vec<Class> },
     /// The job could not run; why.
     Failed { error: String },
+}
+
+/// A planned trajectory as the page keeps it: the scenario with the trajectory added under a new
+/// name (as `cablenav plan --out` writes it, so `cablenav verify` checks the same thing) and the
+/// trajectory's exact verification there.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PlannedTrajectory {
+    /// The scenario JSON with the planned trajectory appended.
+    pub scenario: String,
+    /// The planned trajectory's name in it.
+    pub name: String,
+    /// Its verification, or why it failed.
+    pub report: Result<WireReport, String>,
+}
+
+/// A [`VerifyReport`] that crosses bit for bit (numbers as their bits).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct WireReport {
+    trajectory: String,
+    method: String,
+    step: Option<u64>,
+    feasible: Vec<[u64; 2]>,
+    infeasible: Vec<[u64; 2]>,
+    feasible_tau: Vec<[u64; 2]>,
+    infeasible_tau: Vec<[u64; 2]>,
+    /// (t, τ, constraint, whether it enters the feasible set)
+    boundaries: Vec<(u64, u64, String, bool)>,
+    uncertain: Vec<[u64; 2]>,
+    warnings: Vec<String>,
+}
+
+fn to_bits(v: &[[f64; 2]]) -> Vec<[u64; 2]> {
+    v.iter().map(|p| p.map(f64::to_bits)).collect()
+}
+
+fn from_bits(v: &[[u64; 2]]) -> Vec<[f64; 2]> {
+    v.iter().map(|p| p.map(f64::from_bits)).collect()
+}
+
+impl From<&VerifyReport> for WireReport {
+    fn from(r: &VerifyReport) -> WireReport {
+        WireReport {
+            trajectory: r.trajectory.clone(),
+            method: r.method.clone(),
+            step: r.step.map(f64::to_bits),
+            feasible: to_bits(&r.feasible),
+            infeasible: to_bits(&r.infeasible),
+            feasible_tau: to_bits(&r.feasible_tau),
+            infeasible_tau: to_bits(&r.infeasible_tau),
+            boundaries: r.boundaries.iter().map(|b| (b.t.to_bits(), b.tau.to_bits(), b.constraint.clone(), b.enters == Side::Feasible)).collect(),
+            uncertain: to_bits(&r.uncertain),
+            warnings: r.warnings.clone(),
+        }
+    }
+}
+
+impl WireReport {
+    /// The report sent, bit for bit.
+    pub fn report(&self) -> VerifyReport {
+        VerifyReport {
+            trajectory: self.trajectory.clone(),
+            method: self.method.clone(),
+            step: self.step.map(f64::from_bits),
+            feasible: from_bits(&self.feasible),
+            infeasible: from_bits(&self.infeasible),
+            feasible_tau: from_bits(&self.feasible_tau),
+            infeasible_tau: from_bits(&self.infeasible_tau),
+            boundaries: self
+                .boundaries
+                .iter()
+                .map(|(t, tau, c, feasible)| Boundary {
+                    t: f64::from_bits(*t),
+                    tau: f64::from_bits(*tau),
+                    constraint: c.clone(),
+                    enters: if *feasible { Side::Feasible } else { Side::Infeasible },
+                })
+                .collect(),
+            uncertain: from_bits(&self.uncertain),
+            warnings: self.warnings.clone(),
+        }
+    }
+}
+
+/// One ray's exact sections: feasible and uncertain intervals of the varied coordinate, as bits.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RaySections {
+    /// Feasible intervals.
+    pub feasible: Vec<[u64; 2]>,
+    /// Uncertain intervals.
+    pub uncertain: Vec<[u64; 2]>,
+}
+
+impl RaySections {
+    /// The sections as sent.
+    pub fn new(feasible: &[[f64; 2]], uncertain: &[[f64; 2]]) -> RaySections {
+        RaySections { feasible: to_bits(feasible), uncertain: to_bits(uncertain) }
+    }
+
+    /// The feasible intervals, bit for bit.
+    pub fn feasible(&self) -> Vec<[f64; 2]> {
+        from_bits(&self.feasible)
+    }
+
+    /// The uncertain intervals, bit for bit.
+    pub fn uncertain(&self) -> Vec<[f64; 2]> {
+        from_bits(&self.uncertain)
+    }
+}
+
+/// A [`TensionEnvelope`] for the plot (numbers as JSON decimals: within an ulp).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct WireEnvelope {
+    trajectory: String,
+    t: Vec<f64>,
+    tension_min: Vec<Option<Vec<f64>>>,
+    tension_max: Vec<Option<Vec<f64>>>,
+    bounds: Vec<[f64; 2]>,
+}
+
+impl From<TensionEnvelope> for WireEnvelope {
+    fn from(e: TensionEnvelope) -> WireEnvelope {
+        WireEnvelope { trajectory: e.trajectory, t: e.t, tension_min: e.tension_min, tension_max: e.tension_max, bounds: e.bounds }
+    }
+}
+
+impl From<WireEnvelope> for TensionEnvelope {
+    fn from(e: WireEnvelope) -> TensionEnvelope {
+        TensionEnvelope { trajectory: e.trajectory, t: e.t, tension_min: e.tension_min, tension_max: e.tension_max, bounds: e.bounds }
+    }
+}
+
+/// A [`ClearanceProfile`] for the plot (numbers as JSON decimals: within an ulp). Each sample:
+/// t, the least cable–cable and cable–obstacle distances with what they are between, and the
+/// conditions violated.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct WireClearances {
+    samples: Vec<(f64, Option<(f64, String)>, Option<(f64, String)>, Vec<String>)>,
+    clearances: [f64; 2],
+    membership_only: Vec<String>,
+}
+
+impl From<ClearanceProfile> for WireClearances {
+    fn from(p: ClearanceProfile) -> WireClearances {
+        let closest = |c: Option<Closest>| c.map(|c| (c.distance, c.between));
+        WireClearances {
+            samples: p.samples.into_iter().map(|s| (s.t, closest(s.cable_cable), closest(s.cable_obstacle), s.violated)).collect(),
+            clearances: [p.clearance_cable_cable, p.clearance_cable_obstacle],
+            membership_only: p.membership_only,
+        }
+    }
+}
+
+impl From<WireClearances> for ClearanceProfile {
+    fn from(w: WireClearances) -> ClearanceProfile {
+        let closest = |c: Option<(f64, String)>| c.map(|(distance, between)| Closest { distance, between });
+        ClearanceProfile {
+            samples: w.samples.into_iter().map(|(t, cc, co, violated)| ClearanceSample { t, cable_cable: closest(cc), cable_obstacle: closest(co), violated }).collect(),
+            clearance_cable_cable: w.clearances[0],
+            clearance_cable_obstacle: w.clearances[1],
+            membership_only: w.membership_only,
+        }
+    }
+}
+
+/// A ray lattice as the page draws it (the core's [`LatticeReport`], owned and serialisable both
+/// ways; ray ends as JSON decimals, so within an ulp of the core's).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LatticeResult {
+    /// The chosen coordinates' names.
+    pub axes: Vec<String>,
+    /// Their ranges.
+    pub ranges: Vec<[f64; 2]>,
+    /// Their numbers of grid values.
+    pub steps: Vec<usize>,
+    /// The six coordinates the others are held at (x, y, z, φ, θ, σ).
+    pub fixed: [f64; 6],
+    /// Every ray.
+    pub rays: Vec<LatticeRay>,
+    /// Feasible ray pieces (the graph's nodes).
+    pub pieces: usize,
+    /// Connected components of the graph.
+    pub components: usize,
+    /// Grid points.
+    pub grid_points: usize,
+    /// Grid points feasible on every ray through them.
+    pub feasible_points: usize,
+    /// Rays with an uncertain section.
+    pub uncertain_rays: usize,
+}
+
+/// One ray of a [`LatticeResult`].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LatticeRay {
+    /// The varied coordinate's name.
+    pub vary: String,
+    /// All six coordinates of the ray's start (the varied one at its range's start).
+    pub at: [f64; 6],
+    /// Feasible intervals of the varied coordinate.
+    pub feasible: Vec<[f64; 2]>,
+    /// The component of each feasible interval.
+    pub components: Vec<usize>,
+}
+
+impl From<&LatticeReport> for LatticeResult {
+    fn from(r: &LatticeReport) -> LatticeResult {
+        let rays = r
+            .rays
+            .iter()
+            .zip(&r.piece_components)
+            .map(|(ray, comps)| {
+                let mut at = r.fixed;
+                for (name, v) in &ray.fixed {
+                    if let Some(c) = cablenav::model::Coord::parse(name) {
+                        at[c.index()] = *v;
+                    }
+                }
+                let a = r.axes.iter().position(|n| *n == ray.vary).unwrap_or(0);
+                if let Some(c) = cablenav::model::Coord::parse(ray.vary) {
+                    at[c.index()] = r.ranges[a][0];
+                }
+                LatticeRay { vary: ray.vary.to_string(), at, feasible: ray.feasible.clone(), components: comps.clone() }
+            })
+            .collect();
+        LatticeResult {
+            axes: r.axes.iter().map(|a| a.to_string()).collect(),
+            ranges: r.ranges.clone(),
+            steps: r.steps.clone(),
+            fixed: r.fixed,
+            rays,
+            pieces: r.pieces,
+            components: r.components,
+            grid_points: r.grid_points,
+            feasible_points: r.feasible_points,
+            uncertain_rays: r.uncertain_rays,
+        }
+    }
 }
 
 /// A message: a job or a reply, and the id that pairs them.
@@ -120,6 +372,15 @@ mod tests {
         let slice = Job::Slice { scenario: "{}".into(), pose: "q1".into(), axes: ["x".into(), "y".into()], res: 4, range: [[0.1, 2.0 / 3.0], [-1e-300, 7.0]], rows: [0, 4] };
         assert_eq!(decode_job(&encode_job(1, &slice)).unwrap().body, slice, "the range crosses bit for bit");
         assert!(decode_job(r#"{"id":1,"body":{"kind":"dance"}}"#).is_err());
+    }
+
+    #[test]
+    fn reports_cross_bit_for_bit() {
+        let s = crate::logic::parse_scenario(crate::presets::PRESETS[crate::presets::find("cdpr7-tree").unwrap()].json).unwrap();
+        let report = crate::logic::verify(&s, 0).unwrap();
+        assert!(!report.boundaries.is_empty());
+        let text = serde_json::to_string(&WireReport::from(&report)).unwrap();
+        assert_eq!(serde_json::from_str::<WireReport>(&text).unwrap().report(), report);
     }
 
     #[test]
