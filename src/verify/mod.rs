@@ -27,6 +27,11 @@ pub const BOUNDARY_TOL: f64 = 1e-10;
 /// Violation pieces along a list of motions, mapped to user units and concatenated: the overall
 /// union and each condition's own.
 fn violation_pieces(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[Motion], tol_user: f64) -> (Vec<Piece>, Vec<Labelled>) {
+    pieces_settling(conditions, s, motions, tol_user, true)
+}
+
+/// [`violation_pieces`], with `settle` saying whether costly conditions get the settled intervals.
+fn pieces_settling(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[Motion], tol_user: f64, settle: bool) -> (Vec<Piece>, Vec<Labelled>) {
     let mut per: Vec<Labelled> = conditions.iter().map(|c| Labelled { label: c.label(), pieces: vec![] }).collect();
     let mut overall: Vec<Piece> = Vec::new();
     for motion in motions {
@@ -37,7 +42,7 @@ fn violation_pieces(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[
         let order = conditions.iter().enumerate().filter(|(_, c)| !c.costly()).chain(conditions.iter().enumerate().filter(|(_, c)| c.costly()));
         let mut found: Vec<Option<Partition>> = vec![None; conditions.len()];
         for (k, c) in order {
-            if c.costly() {
+            if c.costly() && settle {
                 sweep.settled = settled(&union, SETTLED_MARGIN * tol);
             }
             let v = c.violation(&mut sweep);
@@ -268,5 +273,30 @@ pub fn check_pose(s: &Scenario, name: &str, pose: &Pose) -> PoseReport {
         checks,
         violated,
         wrench: wrench_at(s, pose),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The settled intervals change no section, boundary or active constraint on the presets'
+    /// trajectories with curved obstacles.
+    #[test]
+    fn settled_intervals_change_no_section() {
+        for name in ["cdpr7-tree.json"] {
+            let text = std::fs::read_to_string(format!("{}/static/scenarios/{name}", env!("CARGO_MANIFEST_DIR"))).unwrap();
+            let s = Scenario::from_json(&text).unwrap();
+            let conditions = for_scenario(&s);
+            assert!(conditions.iter().any(|c| c.costly()));
+            for traj in &s.trajectories {
+                let motions = Motion::trajectory(traj);
+                let [with, without] = [true, false].map(|settle| {
+                    let (overall, per) = pieces_settling(&conditions, &s, &motions, BOUNDARY_TOL, settle);
+                    sections(&overall, &per, BOUNDARY_TOL)
+                });
+                assert_eq!(with, without, "{name} {}", traj.name);
+            }
+        }
     }
 }
