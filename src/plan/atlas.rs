@@ -2,6 +2,12 @@
 //! charts grown from a start point, each chart expanded from the vertices of its polytope that lie
 //! outside its ball, new charts cropping their neighbours' polytopes, until every chart is closed.
 //! Generic over [`Manifold`]: it never knows what the equations mean.
+//!
+//! Chart radii adapt to the curvature: a new chart's radius is the step at which the tangent
+//! approximation error measured on the step that made it (the gap to the parent's tangent space
+//! and 1 − |det ΨᵀΨ'|, both quadratic in the step) would reach ε/2, between the least and the
+//! largest radius of [`AtlasParams`]; the start chart has the largest radius.
+//! The polytope cuts are bisectors whatever the radii (Voronoi cells of the centres).
 
 use super::chart::{Chart, ChartState, Polytope};
 use super::manifold::Manifold;

@@ -4,7 +4,11 @@
 //! Henderson's continuation ([`atlas`], [`chart`]) under an A* search ([`search`]) until the goal
 //! is reached (`found`), the start's component is exhausted (`no_path`, at the stated
 //! resolution), or the chart budget runs out (`budget`). Every path found is re-verified edge by
-//! edge by the exact verifier. docs/planner.md has the formulation and the guarantees.
+//! edge by the exact verifier. By default the charts' radii adapt to the manifold's curvature
+//! (between 0.1 and 1) and the search weights its heuristic by 1.5, which finds the full 6-D
+//! Robocrane query in seconds; [`PlanParams`] with `min_radius = radius = 0.4` and
+//! `heuristic_weight = 1` is paper 1's and CuikSuite's setting. docs/planner.md has the
+//! formulation and the guarantees.
 //!
 //! [`Planner`] is resumable ([`Planner::step`]) so the page can drive it between frames; [`plan`]
 //! runs it to the end. Nothing here reads a clock: time budgets are the caller's.
@@ -50,7 +54,7 @@ pub struct PlanParams {
     pub max_charts: usize,
     /// Weight w of the heuristic in the search's f = g + w·h: 1 is paper 1's A*; above 1 the
     /// search heads more directly for the goal (far fewer charts in 6-D) and its chart path may
-    /// be up to w times longer. An exhausted component (`no_path`) does not depend on it.
+    /// be up to w times longer. `no_path` still means the start's component was exhausted.
     pub heuristic_weight: f64,
     /// Barrier scale κ of the auxiliaries w = −κ ln μ (μ: a bound's normalised margin).
     pub barrier: f64,

@@ -1,10 +1,10 @@
 //! A* over the chart centres of an atlas that grows as the search goes (Bohigas et al. §4): the
-//! chart with least f = g + w·h is popped (w = 1: A*; w > 1: weighted A*, Pohl 1970), tested for the goal, and expanded fully before its
-//! neighbours are relaxed. g sums the manifold's distance between consecutive centres and h is the
-//! distance to the nearest goal point, so h is admissible. Edges are checked lazily: when a chart
-//! path is found its dense path is built edge by edge, and an edge whose walks do not meet or
-//! whose motions the manifold's motion validator rejects is removed and the search restarted on
-//! the atlas built so far.
+//! chart with least f = g + w·h is popped (w = 1: A*; w > 1: weighted A*, Pohl 1970), tested for
+//! the goal, and expanded fully before its neighbours are relaxed. g sums the manifold's distance
+//! between consecutive centres and h is the distance to the nearest goal point, so h is
+//! admissible. Edges are checked lazily: when a chart path is found its dense path is built edge
+//! by edge, and an edge whose walks do not meet or whose motions the manifold's motion validator
+//! rejects is removed and the search restarted on the atlas built so far.
 //!
 //! Generic over [`Manifold`] and resumable: [`Continuation::step`] does a bounded amount of work.
 
@@ -113,8 +113,8 @@ impl<M: Manifold> Continuation<M> {
     /// none: explore the start's whole component), with at most `max_charts` charts, popping
     /// charts by f = g + `weight`·h (1: A*; above 1: weighted A*, which goes more directly
     /// towards the goal and creates far fewer charts in high dimensions, for a chart path that
-    /// may be up to `weight` times longer; the weight orders the expansion only, so an exhausted
-    /// component is the same whatever the weight).
+    /// may be up to `weight` times longer; the weight orders the expansion only: `Exhausted`
+    /// still means every chart reachable from the start was expanded).
     pub fn new(manifold: M, start: &[f64], goals: Vec<Vec<f64>>, params: AtlasParams, max_charts: usize, weight: f64) -> Result<Continuation<M>, String> {
         let atlas = Atlas::new(manifold, start, params)?;
         let mut s = Continuation {
