@@ -658,8 +658,10 @@ fn bad_input_is_reported() {
 /// (not in time). On q1 → q3 (φ, θ free) a final walk to the goal used to creep towards a fold of
 /// its chart's map: one unit made 2.2 million projections (tens of seconds). With the walks'
 /// projection cap a unit makes at most a few thousand evaluations — an expansion tries at most
-/// 20 steps, a walk at most 4 n + 16 projections (n = length / δ ≤ 10 here), each projection
-/// at most 30 Newton iterations — and the plan is still found and re-verified clean.
+/// 20 steps, a walk at most 4 n + 16 projections (n = length / δ; a walk goes at most halfway
+/// between two centres, so its length is at most the largest radius, n ≤ radius / δ = 25 with
+/// the defaults), each projection at most 30 Newton iterations — and the plan is still found and
+/// re-verified clean.
 #[test]
 fn every_step_unit_does_bounded_work() {
     let mut s = robocrane();
@@ -678,7 +680,8 @@ fn every_step_unit_does_bounded_work() {
     }
     eprintln!("q1-q3: {units} units; at most {most_evaluations} evaluations, {most_trajectories} trajectory checks, {most_poses} pose checks per unit");
     assert!(most_evaluations > 0 && most_evaluations <= 3000, "{most_evaluations} manifold evaluations in one unit");
-    assert!(most_trajectories <= 2 * (4 * 10 + 16), "{most_trajectories} trajectory checks in one unit");
+    let n = (PlanParams::default().radius / PlanParams::default().delta).ceil() as usize;
+    assert!(most_trajectories <= 2 * (4 * n + 16), "{most_trajectories} trajectory checks in one unit");
     assert!(most_poses <= 2, "{most_poses} pose checks in one unit");
     let out = p.outcome().unwrap();
     assert_eq!(out.status, PlanStatus::Found);
