@@ -170,7 +170,7 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
         }
         Request::Plan { query, params, planner, lattice } => {
             let option = |e: Error| match e.field.as_str() {
-                "radius" | "epsilon" | "max_charts" => Error::new(format!("--{}", e.field.replace('_', "-")), e.reason),
+                "radius" | "min_radius" | "heuristic_weight" | "epsilon" | "max_charts" => Error::new(format!("--{}", e.field.replace('_', "-")), e.reason),
                 _ => e,
             };
             let options = PlannerOptions { kind: *planner, atlas: *params, lattice: *lattice };
@@ -437,12 +437,21 @@ fn lattice_plan_text(r: &LatticePlanReport) -> String {
     out
 }
 
+/// The chart radius as the report prints it: `0.1–1` when adapted, `0.4` when fixed.
+fn radii(p: &PlanParams) -> String {
+    if p.min_radius < p.radius {
+        format!("{}–{}", p.min_radius, p.radius)
+    } else {
+        format!("{}", p.radius)
+    }
+}
+
 fn plan_text(r: &PlanReport) -> String {
     let status = r.status.name();
     let (a, p) = (&r.atlas, &r.atlas.params);
     let mut out = format!(
-        "plan {}: {status} ({} charts, {}-D, {:.3} s; r = {}, ε = {}, δ = {}, κ = {}, margins ≥ {}, ≤ {} charts)\n",
-        r.query, r.charts, a.dimension, r.seconds, p.radius, p.epsilon, p.delta, p.barrier, p.min_margin, p.max_charts
+        "plan {}: {status} ({} charts, {}-D, {:.3} s; r = {}, ε = {}, δ = {}, w = {}, κ = {}, margins ≥ {}, ≤ {} charts)\n",
+        r.query, r.charts, a.dimension, r.seconds, radii(p), p.epsilon, p.delta, p.heuristic_weight, p.barrier, p.min_margin, p.max_charts
     );
     match r.status {
         PlanStatus::Found => {
@@ -465,6 +474,9 @@ fn plan_text(r: &PlanReport) -> String {
     }
     if a.expansion_failures > 0 {
         out += &format!("  warning: {} expansion direction(s) failed; a no_path here is not certified\n", a.expansion_failures);
+    }
+    if a.chart_radii[0] < a.chart_radii[1] {
+        out += &format!("  chart radii adapted to the curvature: {:.3} to {:.3}\n", a.chart_radii[0], a.chart_radii[1]);
     }
     if a.blocked_charts > 0 {
         out += &format!("  note: {} chart(s) blocked by a clearance violation at their centre\n", a.blocked_charts);

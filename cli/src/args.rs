@@ -172,9 +172,15 @@ pub enum Command {
         /// Chart budget: the planner stops with `budget` after this many charts
         #[arg(long, value_name = "N", default_value_t = PlanParams::default().max_charts)]
         max_charts: usize,
-        /// Chart radius r
+        /// Largest chart radius r (the start chart's)
         #[arg(long, value_name = "R", value_parser = finite, allow_negative_numbers = true, default_value_t = PlanParams::default().radius)]
         radius: f64,
+        /// Smallest chart radius the curvature adaptation gives (≥ --radius: every chart has radius r)
+        #[arg(long, value_name = "R", value_parser = finite, allow_negative_numbers = true, default_value_t = PlanParams::default().min_radius)]
+        min_radius: f64,
+        /// Weight w of the search's heuristic, f = g + w·h (1: A*)
+        #[arg(long, value_name = "W", value_parser = finite, allow_negative_numbers = true, default_value_t = PlanParams::default().heuristic_weight)]
+        heuristic_weight: f64,
         /// Chart validity threshold ε (distance to the parent's tangent space)
         #[arg(long, value_name = "E", value_parser = finite, allow_negative_numbers = true, default_value_t = PlanParams::default().epsilon)]
         epsilon: f64,
@@ -239,12 +245,12 @@ impl Command {
                     .collect::<cablenav::Result<Vec<usize>>>()?;
                 plain(scenario, Request::Lattice { pose, axes, ranges, steps }, json)
             }
-            Command::Plan { scenario, query, planner, steps, out, max_charts, radius, epsilon, json } => {
+            Command::Plan { scenario, query, planner, steps, out, max_charts, radius, min_radius, heuristic_weight, epsilon, json } => {
                 let planner = PlannerKind::parse(&planner)?;
                 if steps.is_some() && planner != PlannerKind::Lattice {
                     return Err(cablenav::Error::new("--steps", "is an option of --planner lattice"));
                 }
-                let params = PlanParams { max_charts, radius, epsilon, ..PlanParams::default() };
+                let params = PlanParams { max_charts, radius, min_radius, heuristic_weight, epsilon, ..PlanParams::default() };
                 let lattice = LatticeParams { steps: steps.unwrap_or(LatticeParams::default().steps), ..LatticeParams::default() };
                 Ok(Invocation { scenario, request: Request::Plan { query, params, planner, lattice }, json, png: None, out })
             }

@@ -162,12 +162,18 @@ fn cli_plan_prints_the_documented_report() {
     assert_eq!(first["tilt_torsion"].as_array().unwrap().len(), 3);
     let text = cli("plan robocrane.json --query q1-q2 --radius 0.3 --epsilon 0.3 --max-charts 5000").unwrap();
     assert!(text.starts_with("plan q1-q2: found"), "{text}");
-    let budget = cli("plan robocrane.json --query q5-q6 --max-charts 3").unwrap();
-    assert!(budget.starts_with("plan q5-q6: budget (3 charts"), "{budget}");
+    // The defaults adapt the chart radii (here 0.1 to 1) and weight the heuristic; the old fixed
+    // radius and plain A* are options. With them q5 → q6 needs more than 3 charts.
+    let adapted = cli("plan robocrane.json --query q1-q2").unwrap();
+    assert!(adapted.starts_with("plan q1-q2: found") && adapted.contains("r = 0.1–1,") && adapted.contains("w = 1.5,"), "{adapted}");
+    let budget = cli("plan robocrane.json --query q5-q6 --radius 0.4 --min-radius 0.4 --heuristic-weight 1 --max-charts 3").unwrap();
+    assert!(budget.starts_with("plan q5-q6: budget (3 charts") && budget.contains("r = 0.4,") && budget.contains("w = 1,"), "{budget}");
     for (args, field) in [
         ("plan robocrane.json", "--query"),
         ("plan robocrane.json --query q1-q2 --radius -1", "--radius"),
         ("plan robocrane.json --query q1-q2 --epsilon x", "--epsilon"),
+        ("plan robocrane.json --query q1-q2 --min-radius 0", "--min-radius"),
+        ("plan robocrane.json --query q1-q2 --heuristic-weight 0.9", "--heuristic-weight"),
         ("plan robocrane.json --query q1-q2 --max-charts 0", "--max-charts"),
         ("plan robocrane.json --query q1-q2 --pose q1", "--pose"),
     ] {
@@ -191,7 +197,7 @@ fn every_command_has_its_own_help() {
         ("check", &["--pose", "--json"][..]),
         ("envelope", &["--trajectory", "--samples"][..]),
         ("slice", &["--axes", "--res", "--range", "--png"][..]),
-        ("plan", &["--query", "--max-charts", "--radius", "--epsilon", "[default: 100000]"][..]),
+        ("plan", &["--query", "--max-charts", "--radius", "--min-radius", "--heuristic-weight", "--epsilon", "[default: 100000]"][..]),
     ] {
         for help in [cli(&format!("{command} --help")).unwrap(), cli(&format!("help {command}")).unwrap()] {
             assert!(help.contains("Usage: cablenav"), "{help}");

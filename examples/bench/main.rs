@@ -3,10 +3,12 @@
 //!     cargo run --release --example bench            # every case
 //!     cargo run --release --example bench -- tree/   # the cases whose id contains "tree/"
 //!     cargo run --release --example bench -- lattice # the ray lattice cases (lattice.rs) instead
+//!     cargo run --release --example bench -- atlas   # the atlas planner's defaults, before/after (atlas.rs)
 //!
 //! `scripts/bench.sh` runs it together with the wasm-in-node benchmark (`tests/bench_wasm.rs`,
 //! same cases from `cases.rs`) and writes `docs/benchmarks.md`.
 
+mod atlas;
 mod cases;
 mod lattice;
 
@@ -14,6 +16,10 @@ fn main() {
     let origin = std::time::Instant::now();
     let now = move || origin.elapsed().as_secs_f64() * 1000.0;
     let filter = std::env::args().nth(1).unwrap_or_default();
+    if filter == "atlas" {
+        atlas::run_atlas();
+        return;
+    }
     if filter.starts_with("lattice") {
         lattice::run_lattice("native", &filter, &now, &mut |line| println!("{line}"));
         return;

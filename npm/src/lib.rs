@@ -104,6 +104,8 @@ export interface PlanReport {
   broken_edges: number;
   rejected_edges: number;
   blocked_charts: number;
+  /** Least and greatest radius of the charts that are not blocked (radii adapt to the curvature). */
+  chart_radii: [number, number];
   params: Record<string, number | boolean>;
   verification: {
     edges: number;

@@ -2,6 +2,12 @@
 //! charts grown from a start point, each chart expanded from the vertices of its polytope that lie
 //! outside its ball, new charts cropping their neighbours' polytopes, until every chart is closed.
 //! Generic over [`Manifold`]: it never knows what the equations mean.
+//!
+//! Chart radii adapt to the curvature: a new chart's radius is the step at which the tangent
+//! approximation error measured on the step that made it (the gap to the parent's tangent space
+//! and 1 − |det ΨᵀΨ'|, both quadratic in the step) would reach ε/2, between the least and the
+//! largest radius of [`AtlasParams`]; the start chart has the largest radius.
+//! The polytope cuts are bisectors whatever the radii (Voronoi cells of the centres).
 
 use super::chart::{Chart, ChartState, Polytope};
 use super::manifold::Manifold;
@@ -11,8 +17,12 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 /// The continuation's parameters (see [`super::PlanParams`] for their meaning and defaults).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AtlasParams {
-    /// Chart radius r in tangent coordinates.
+    /// Largest chart radius r_max in tangent coordinates: the start chart's radius, and the most
+    /// the adaptation gives any chart.
     pub radius: f64,
+    /// Smallest radius the adaptation gives an open chart (`min_radius = radius`: every chart has
+    /// radius r, CuikSuite's fixed radius).
+    pub min_radius: f64,
     /// Chart validity threshold ε.
     pub epsilon: f64,
     /// Largest step δ between consecutive path points (in the manifold's distance).
@@ -31,6 +41,8 @@ const MIN_STEP: f64 = 1e-3;
 /// fraction of r before a blocked chart of that radius is placed: the resolution at which the
 /// atlas approaches obstacles.
 const OBSTACLE_STEP: f64 = 1.0 / 8.0;
+/// The error (relative to ε) a chart's radius is chosen to reach at its boundary.
+const TARGET_ERROR: f64 = 0.5;
 /// Two points of the manifold count as the same one within this distance.
 const SAME_POINT: f64 = 1e-7;
 /// A walk of n nominal steps (length / δ, rounded up) may make at most WALK_FACTOR · n +
@@ -167,9 +179,10 @@ impl<M: Manifold> Atlas<M> {
             let u: Vec<f64> = dir.iter().map(|d| d * alpha).collect();
             let predicted = self.predict(c, &u);
             if let Some(x) = self.project(c, &u, &predicted) {
-                if let Some(basis) = self.valid_successor(c, &x, &predicted) {
+                if let Some((basis, error)) = self.valid_successor(c, &x, &predicted) {
                     if self.manifold.admissible(&x) {
-                        self.add_chart(x, basis, Some(c), r, ChartState::Open);
+                        let radius = self.adapted_radius(alpha, error);
+                        self.add_chart(x, basis, Some(c), radius, ChartState::Open);
                         return true;
                     }
                     if alpha <= OBSTACLE_STEP * r {
@@ -195,8 +208,9 @@ impl<M: Manifold> Atlas<M> {
     }
 
     /// Henderson's validity test for a chart at `x` projected from chart `c`'s tangent point
-    /// `predicted`: ‖x − predicted‖ ≤ ε and |det(Ψ_cᵀΨ_x)| ≥ 1 − ε. Returns the new basis.
-    fn valid_successor(&self, c: usize, x: &[f64], predicted: &[f64]) -> Option<DMatrix<f64>> {
+    /// `predicted`: ‖x − predicted‖ ≤ ε and |det(Ψ_cᵀΨ_x)| ≥ 1 − ε. Returns the new basis and
+    /// the step's error, max(‖x − predicted‖, 1 − |det(Ψ_cᵀΨ_x)|) / ε (at most 1).
+    fn valid_successor(&self, c: usize, x: &[f64], predicted: &[f64]) -> Option<(DMatrix<f64>, f64)> {
         let eps = self.params.epsilon;
         let gap = self.diff(x, predicted).iter().map(|a| a * a).sum::<f64>().sqrt();
         if gap > eps {
@@ -204,7 +218,19 @@ impl<M: Manifold> Atlas<M> {
         }
         let basis = self.chart_basis(x, 1e-8).ok()?;
         let cos = (self.charts[c].basis.transpose() * &basis).determinant().abs();
-        (cos >= 1.0 - eps).then_some(basis)
+        (cos >= 1.0 - eps).then_some((basis, gap.max(1.0 - cos) / eps))
+    }
+
+    /// The radius of a chart made by a valid step of length α with error e (relative to ε, see
+    /// [`Atlas::valid_successor`]): both the gap to the tangent space and 1 − |det| grow as the
+    /// square of the step, so the step at which the error would reach TARGET_ERROR·ε is
+    /// α·sqrt(TARGET_ERROR / e): a chart grows where the manifold is flat along the step and
+    /// shrinks where its tangent space turns fast; clamped to [min_radius, radius] (a min_radius
+    /// above radius counts as radius).
+    fn adapted_radius(&self, alpha: f64, error: f64) -> f64 {
+        let p = &self.params;
+        let r = if error > 0.0 { alpha * (TARGET_ERROR / error).sqrt() } else { p.radius };
+        r.clamp(p.min_radius.min(p.radius), p.radius)
     }
 
     /// Adds a chart of radius `radius` in state `state` (an open chart beyond the auxiliary

@@ -4,7 +4,11 @@
 //! Henderson's continuation ([`atlas`], [`chart`]) under an A* search ([`search`]) until the goal
 //! is reached (`found`), the start's component is exhausted (`no_path`, at the stated
 //! resolution), or the chart budget runs out (`budget`). Every path found is re-verified edge by
-//! edge by the exact verifier. docs/planner.md has the formulation and the guarantees.
+//! edge by the exact verifier. By default the charts' radii adapt to the manifold's curvature
+//! (between 0.1 and 1) and the search weights its heuristic by 1.5, which finds the full 6-D
+//! Robocrane query in seconds; [`PlanParams`] with `min_radius = radius = 0.4` and
+//! `heuristic_weight = 1` is paper 1's and CuikSuite's setting. docs/planner.md has the
+//! formulation and the guarantees.
 //!
 //! [`Planner`] is resumable ([`Planner::step`]) so the page can drive it between frames; [`plan`]
 //! runs it to the end. Nothing here reads a clock: time budgets are the caller's.
@@ -33,8 +37,14 @@ use std::f64::consts::PI;
 /// The planner's parameters.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct PlanParams {
-    /// Chart radius r, in tangent coordinates of the manifold (pose coordinates and auxiliaries).
+    /// Largest chart radius r, in tangent coordinates of the manifold (pose coordinates and
+    /// auxiliaries): the start chart's radius and the most any chart gets.
     pub radius: f64,
+    /// Smallest radius the curvature adaptation gives a chart (each new chart's radius is the step
+    /// at which its parent's tangent approximation error would reach half of ε, see
+    /// docs/planner.md); `min_radius ≥ radius` turns the adaptation off (every chart has radius
+    /// r, as in CuikSuite).
+    pub min_radius: f64,
     /// Chart validity threshold ε: a new chart's centre must be within ε of its parent's tangent
     /// space, and |det(Ψ_iᵀΨ_j)| ≥ 1 − ε.
     pub epsilon: f64,
@@ -42,6 +52,10 @@ pub struct PlanParams {
     pub delta: f64,
     /// Most charts the atlas may have before the search stops with `budget`.
     pub max_charts: usize,
+    /// Weight w of the heuristic in the search's f = g + w·h: 1 is paper 1's A*; above 1 the
+    /// search heads more directly for the goal (far fewer charts in 6-D) and its chart path may
+    /// be up to w times longer. `no_path` still means the start's component was exhausted.
+    pub heuristic_weight: f64,
     /// Barrier scale κ of the auxiliaries w = −κ ln μ (μ: a bound's normalised margin).
     pub barrier: f64,
     /// Least normalised margin μ the atlas explores: charts with some μ below it are not expanded
@@ -57,10 +71,11 @@ pub struct PlanParams {
 }
 
 impl Default for PlanParams {
-    /// r = 0.4, ε = 0.4, δ = 0.04 (CuikSuite's defaults), 100 000 charts, κ = 0.1, μ ≥ 1e-3, one
-    /// radian counted as one length unit, angles identified.
+    /// Chart radii adapted between 0.1 and 1, ε = 0.4, δ = 0.04 (CuikSuite's), 100 000 charts,
+    /// heuristic weight 1.5, κ = 0.1, μ ≥ 1e-3, one radian counted as one length unit, angles
+    /// identified.
     fn default() -> PlanParams {
-        PlanParams { radius: 0.4, epsilon: 0.4, delta: 0.04, max_charts: 100_000, barrier: 0.1, min_margin: 1e-3, rotation_length: 1.0, identify_angles: true }
+        PlanParams { radius: 1.0, min_radius: 0.1, epsilon: 0.4, delta: 0.04, max_charts: 100_000, heuristic_weight: 1.5, barrier: 0.1, min_margin: 1e-3, rotation_length: 1.0, identify_angles: true }
     }
 }
 
@@ -75,10 +90,14 @@ impl PlanParams {
             }
         };
         positive("radius", self.radius)?;
+        positive("min_radius", self.min_radius)?;
         positive("epsilon", self.epsilon)?;
         positive("delta", self.delta)?;
         positive("barrier", self.barrier)?;
         positive("rotation_length", self.rotation_length)?;
+        if !(self.heuristic_weight.is_finite() && self.heuristic_weight >= 1.0) {
+            return Err(Error::new("heuristic_weight", format!("must be a finite number ≥ 1 (1 is A*), got {}", self.heuristic_weight)));
+        }
         if self.epsilon >= 1.0 {
             return Err(Error::new("epsilon", format!("must be below 1 (the tangent test is |det| ≥ 1 − ε), got {}", self.epsilon)));
         }
@@ -189,6 +208,9 @@ pub struct AtlasSummary {
     pub rejected_edges: usize,
     /// Charts whose centre violates a clearance (never expanded nor entered).
     pub blocked_charts: usize,
+    /// The least and the greatest radius of the charts that are not blocked (the curvature
+    /// adaptation's range on this atlas).
+    pub chart_radii: [f64; 2],
     /// The parameters used.
     pub params: PlanParams,
 }
@@ -381,8 +403,8 @@ impl Planner {
         };
         let start_x = lift(names[0], "start", &start_coords)?;
         let goals = goal_copies.iter().map(|g| lift(names[1], "goal", g)).collect::<Result<Vec<_>>>()?;
-        let atlas_params = AtlasParams { radius: params.radius, epsilon: params.epsilon, delta: params.delta };
-        let search = Continuation::new(manifold, &start_x, goals, atlas_params, params.max_charts)
+        let atlas_params = AtlasParams { radius: params.radius, min_radius: params.min_radius, epsilon: params.epsilon, delta: params.delta };
+        let search = Continuation::new(manifold, &start_x, goals, atlas_params, params.max_charts, params.heuristic_weight)
             .map_err(|why| Error::new(format!("{field}.start"), format!("no chart can be made at the start pose \"{}\": {why}", names[0])))?;
         Ok(Planner { scenario: scenario.clone(), start, goal, params, search, check: None })
     }
@@ -457,6 +479,7 @@ impl Planner {
                 broken_edges: self.search.broken_edges(),
                 rejected_edges: self.search.rejected_edges(),
                 blocked_charts: self.search.atlas.charts.iter().filter(|c| c.state == chart::ChartState::Blocked).count(),
+                chart_radii: self.search.atlas.charts.iter().filter(|c| c.state != chart::ChartState::Blocked).fold([f64::INFINITY, 0.0], |[lo, hi], c| [lo.min(c.radius), hi.max(c.radius)]),
                 params: self.params,
             },
             verification: check.verification.clone(),

@@ -1,10 +1,10 @@
 //! A* over the chart centres of an atlas that grows as the search goes (Bohigas et al. §4): the
-//! chart with least f = g + h is popped, tested for the goal, and expanded fully before its
-//! neighbours are relaxed. g sums the manifold's distance between consecutive centres and h is the
-//! distance to the nearest goal point, so h is admissible. Edges are checked lazily: when a chart
-//! path is found its dense path is built edge by edge, and an edge whose walks do not meet or
-//! whose motions the manifold's motion validator rejects is removed and the search restarted on
-//! the atlas built so far.
+//! chart with least f = g + w·h is popped (w = 1: A*; w > 1: weighted A*, Pohl 1970), tested for
+//! the goal, and expanded fully before its neighbours are relaxed. g sums the manifold's distance
+//! between consecutive centres and h is the distance to the nearest goal point, so h is
+//! admissible. Edges are checked lazily: when a chart path is found its dense path is built edge
+//! by edge, and an edge whose walks do not meet or whose motions the manifold's motion validator
+//! rejects is removed and the search restarted on the atlas built so far.
 //!
 //! Generic over [`Manifold`] and resumable: [`Continuation::step`] does a bounded amount of work.
 
@@ -83,6 +83,8 @@ pub struct Continuation<M: Manifold> {
     pub atlas: Atlas<M>,
     goals: Vec<Vec<f64>>,
     max_charts: usize,
+    /// The heuristic's weight w in f = g + w·h (1: A*).
+    weight: f64,
     g: Vec<f64>,
     parent: Vec<Option<usize>>,
     popped: Vec<bool>,
@@ -108,13 +110,18 @@ pub struct Continuation<M: Manifold> {
 
 impl<M: Manifold> Continuation<M> {
     /// A search from `start` (a point of the manifold) to any of `goals` (points of the manifold;
-    /// none: explore the start's whole component), with at most `max_charts` charts.
-    pub fn new(manifold: M, start: &[f64], goals: Vec<Vec<f64>>, params: AtlasParams, max_charts: usize) -> Result<Continuation<M>, String> {
+    /// none: explore the start's whole component), with at most `max_charts` charts, popping
+    /// charts by f = g + `weight`·h (1: A*; above 1: weighted A*, which goes more directly
+    /// towards the goal and creates far fewer charts in high dimensions, for a chart path that
+    /// may be up to `weight` times longer; the weight orders the expansion only: `Exhausted`
+    /// still means every chart reachable from the start was expanded).
+    pub fn new(manifold: M, start: &[f64], goals: Vec<Vec<f64>>, params: AtlasParams, max_charts: usize, weight: f64) -> Result<Continuation<M>, String> {
         let atlas = Atlas::new(manifold, start, params)?;
         let mut s = Continuation {
             atlas,
             goals,
             max_charts: max_charts.max(1),
+            weight,
             g: vec![],
             parent: vec![],
             popped: vec![],
@@ -144,7 +151,7 @@ impl<M: Manifold> Continuation<M> {
         self.pending = None;
         self.g[0] = 0.0;
         let h = self.heuristic(0);
-        self.open.push(Entry { f: h, h, chart: 0 });
+        self.open.push(Entry { f: self.weight * h, h, chart: 0 });
     }
 
     /// Distance from chart `c`'s centre to the nearest goal point (0 with no goals).
@@ -246,7 +253,7 @@ impl<M: Manifold> Continuation<M> {
                 self.parent[nb] = Some(c);
                 self.popped[nb] = false;
                 let h = self.heuristic(nb);
-                self.open.push(Entry { f: g + h, h, chart: nb });
+                self.open.push(Entry { f: g + self.weight * h, h, chart: nb });
             }
         }
     }
