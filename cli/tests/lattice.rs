@@ -169,11 +169,7 @@ fn plans_over_the_box_verified_on_all_of_0_1() {
     plans_verified_on_all_of_0_1("box.json", "over-box", "box-left", "box-right");
 }
 
-// Since the exact offset conditions for cylinders and cones replaced the enlarged shapes, the
-// smoothing's exact verification near the trunk and the crown takes minutes (it passed in ~6 s
-// with the enlarged shapes): run it with `cargo test -p cablenav-cli --test lattice -- --ignored`.
 #[test]
-#[ignore = "minutes since the exact cylinder/cone offset conditions (issue 12 follow-up)"]
 fn plans_around_the_tree_verified_on_all_of_0_1() {
     plans_verified_on_all_of_0_1("tree.json", "around-tree", "tree-left", "tree-right");
 }
