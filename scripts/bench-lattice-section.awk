@@ -14,7 +14,7 @@ END {
   print "(`cdpr7-box.json`), case 3 + the tree (`cdpr7-tree.json`). \"rays\": `Lattice::build` (3n² exact rays,"
   print "the graph and its components); \"points\": `point_grid` (n³ poses checked, components by neighbours)."
   print "Median of 3 runs after one untimed run. Measured " date ", commit " commit "; load average before " load_before ", after " load_after
-  print "(a shared 2-core VM: other developers' builds were running, which inflates every time here)."
+  print "(a shared 2-core VM: a load average above 1 means other work ran at the same time and inflated the times)."
   print ""
   print "    " native_cmd
   print "    " wasm_cmd

@@ -51,7 +51,7 @@ lattice_section() {
 run_lattice() {
   cargo run -q --release --example bench -- lattice > "$1"
   CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
-    cargo test -q --release --target wasm32-unknown-unknown --features bench --test bench_wasm -- --nocapture bench_wasm_lattice >> "$1"
+    cargo test --release --target wasm32-unknown-unknown --features bench --test bench_wasm -- --nocapture bench_wasm_lattice >> "$1"
 }
 ATLAS_CMD="cargo run --release --example bench -- atlas"
 # Puts the section in "$2" (between its <!-- atlas:begin/end --> markers) into file "$1": in place of
@@ -84,8 +84,8 @@ if [ "$ATLAS_ONLY" = 1 ]; then
     echo "which the 2-D and 3-D queries never reach), in one run of one build. \"chart radii\" is the range"
     echo "over the atlas's charts (blocked ones aside); the path is the one the planner re-verified. Measured"
     echo "$(date -u '+%Y-%m-%d %H:%M UTC'), commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- src examples 2>/dev/null || echo ' (with uncommitted changes)'), natively (release); load"
-    echo "average before $before, after $after on the shared 2-core VM (other developers' builds were"
-    echo "running: the times are inflated, the chart counts are not). The \"Planner\" table and the"
+    echo "average before $before, after $after on the shared 2-core VM (above 1, other work ran at the"
+    echo "same time: the times are inflated, the chart counts are not). The \"Planner\" table and the"
     echo "targets come from the last full run of this script (date and commit under Machine): when that"
     echo "run predates the adaptive defaults, they show the former ones."
     echo
