@@ -1,6 +1,7 @@
 //! Slice maps: a cell-centred res × res grid over two pose coordinates, the others fixed from a
 //! pose, each cell classified by the conditions at its centre; and the 4-neighbour connected
-//! components of the feasible cells (Bohigas et al. Fig. 5).
+//! components of the feasible cells (Bohigas et al. Fig. 5). An angle axis whose range is one
+//! whole turn (e.g. φ ∈ [−π, π]) closes on itself: its first and last cells are neighbours.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 use crate::conditions::{cables_at, for_scenario, Condition, Kind};
@@ -196,14 +197,16 @@ pub fn slice_from_classes(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: 
         return Err(Error::new("classes", format!("expected {} cells, got {}", res * res, classes.len())));
     }
     map.classes = classes;
-    label_components(&mut map);
+    let wraps = [0, 1].map(|a| axes[a].is_angle() && (range[a][1] - range[a][0] - 2.0 * PI).abs() <= 1e-9 * 2.0 * PI);
+    label_components(&mut map, wraps);
     map.fraction_feasible = map.classes.iter().filter(|&&c| c == Class::Feasible).count() as f64 / (res * res) as f64;
     map.pose_components = poses_on_slice(s, &map, axes);
     Ok(map)
 }
 
-/// 4-neighbour flood fill of the feasible cells.
-fn label_components(map: &mut SliceMap) {
+/// 4-neighbour flood fill of the feasible cells; along an axis that `wraps` (a whole turn of an
+/// angle) the first and last cells are neighbours too.
+fn label_components(map: &mut SliceMap, wraps: [bool; 2]) {
     let res = map.res;
     let mut next = 0;
     let mut stack = Vec::new();
@@ -215,23 +218,24 @@ fn label_components(map: &mut SliceMap) {
         stack.push(start);
         while let Some(k) = stack.pop() {
             let (i, j) = (k % res, k / res);
-            let mut visit = |n: usize| {
+            let mut neighbours = Vec::with_capacity(4);
+            for (at, step, wrap) in [(i, 1, wraps[0]), (j, res, wraps[1])] {
+                if at > 0 {
+                    neighbours.push(k - step);
+                } else if wrap && res > 1 {
+                    neighbours.push(k + (res - 1) * step);
+                }
+                if at + 1 < res {
+                    neighbours.push(k + step);
+                } else if wrap && res > 1 {
+                    neighbours.push(k - (res - 1) * step);
+                }
+            }
+            for n in neighbours {
                 if map.classes[n] == Class::Feasible && map.component[n].is_none() {
                     map.component[n] = Some(next);
                     stack.push(n);
                 }
-            };
-            if i > 0 {
-                visit(k - 1);
-            }
-            if i + 1 < res {
-                visit(k + 1);
-            }
-            if j > 0 {
-                visit(k - res);
-            }
-            if j + 1 < res {
-                visit(k + res);
             }
         }
         next += 1;
@@ -267,4 +271,57 @@ fn poses_on_slice(s: &Scenario, map: &SliceMap, axes: [Coord; 2]) -> Vec<(String
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A 4 × 4 map whose feasible cells are the first and last columns (F.. F per row).
+    fn two_edge_columns() -> SliceMap {
+        let res = 4;
+        let classes = (0..res * res).map(|k| if k % res == 0 || k % res == res - 1 { Class::Feasible } else { Class::Length }).collect();
+        SliceMap {
+            axes: ["phi".into(), "z".into()],
+            range: [[-PI, PI], [0.0, 1.0]],
+            res,
+            fixed: [0.0; 6],
+            fraction_feasible: 0.0,
+            components: 0,
+            classes,
+            component: vec![None; res * res],
+            pose_components: vec![],
+        }
+    }
+
+    #[test]
+    fn a_whole_turn_closes_on_itself() {
+        let mut apart = two_edge_columns();
+        label_components(&mut apart, [false, false]);
+        assert_eq!(apart.components, 2);
+        let mut joined = two_edge_columns();
+        label_components(&mut joined, [true, false]);
+        assert_eq!(joined.components, 1);
+        assert!(joined.component.iter().flatten().all(|&c| c == 0));
+        // wrapping the other axis (rows) joins nothing new here: both columns already span it
+        let mut rows = two_edge_columns();
+        label_components(&mut rows, [false, true]);
+        assert_eq!(rows.components, 2);
+    }
+
+    /// Through the public entry: φ over a whole turn wraps, a shorter φ range or a length axis
+    /// over the same numbers does not.
+    #[test]
+    fn only_a_whole_turn_of_an_angle_wraps() {
+        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/static/scenarios/robocrane.json")).unwrap();
+        let s = Scenario::from_json(&text).unwrap();
+        let pose = s.poses.iter().next().map(|(n, _)| n.clone()).unwrap();
+        let classes = two_edge_columns().classes;
+        let count = |axes: [Coord; 2], range: [[f64; 2]; 2]| slice_from_classes(&s, &pose, axes, 4, range, classes.clone()).unwrap().components;
+        let (phi, theta, z) = (Coord::ALL[3], Coord::ALL[4], Coord::ALL[2]);
+        assert_eq!(count([phi, theta], [[-PI, PI], [0.0, 1.4]]), 1);
+        assert_eq!(count([phi, theta], [[0.0, 2.0 * PI], [0.0, 1.4]]), 1);
+        assert_eq!(count([phi, theta], [[-3.0, 3.0], [0.0, 1.4]]), 2);
+        assert_eq!(count([z, theta], [[-PI, PI], [0.0, 1.4]]), 2);
+    }
 }
