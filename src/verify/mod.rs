@@ -38,19 +38,21 @@ fn pieces_settling(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[M
         let tol = tol_user / motion.param.max_slope().max(1e-300);
         let mut sweep = Sweep::new(&s.robot, motion, tol);
         let mut union = Partition::constant(Truth::False);
-        // the cheap conditions first: where they already violate, the costly ones may stay undecided
-        let order = conditions.iter().enumerate().filter(|(_, c)| !c.costly()).chain(conditions.iter().enumerate().filter(|(_, c)| c.costly()));
-        let mut found: Vec<Option<Partition>> = vec![None; conditions.len()];
-        for (k, c) in order {
+        // the cheap conditions first (a stable sort keeps file order within each group): where
+        // they already violate, the costly ones may stay undecided
+        let mut order: Vec<usize> = (0..conditions.len()).collect();
+        order.sort_by_key(|&k| conditions[k].costly());
+        let mut found = vec![Partition::constant(Truth::False); conditions.len()];
+        for k in order {
+            let c = &conditions[k];
             if c.costly() && settle {
                 sweep.settled = settled(&union, SETTLED_MARGIN * tol);
             }
-            let v = c.violation(&mut sweep);
-            union = union.or(&v);
-            found[k] = Some(v);
+            found[k] = c.violation(&mut sweep);
+            union = union.or(&found[k]);
         }
         for (v, out) in found.iter().zip(per.iter_mut()) {
-            append_mapped(&mut out.pieces, v.as_ref().expect("every condition evaluated"), &motion.param);
+            append_mapped(&mut out.pieces, v, &motion.param);
         }
         append_mapped(&mut overall, &union, &motion.param);
     }
