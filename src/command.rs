@@ -15,7 +15,7 @@ use crate::plan::lattice::{LatticeParams, LatticePlanReport};
 use crate::plan::{PlanParams, PlanReport, PlanStatus};
 use crate::report::{PoseReport, RayReport, Side, TensionEnvelope, VerifyReport};
 use crate::verify::slice::{default_range, slice_counted, Class, SliceMap};
-use crate::verify::{check_pose, ray, tension_envelope, verify_all_counted, verify_pointwise, verify_trajectory};
+use crate::verify::{check_config, check_pose, ray, tension_envelope, verify_all_counted, verify_pointwise, verify_trajectory};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use crate::Scenario;
 use serde::Serialize;
@@ -35,12 +35,13 @@ pub enum Request {
         /// Sample step Δt instead of the exact verifier.
         pointwise: Option<f64>,
     },
-    /// Feasible intervals of one pose coordinate over `range`, the others fixed at the pose's.
+    /// Feasible intervals of one coordinate over `range`, the others fixed at the pose's (or the
+    /// multi-link robot's configuration's).
     Ray {
-        /// Pose name.
+        /// Pose (or configuration) name.
         pose: String,
-        /// The coordinate varied.
-        vary: Coord,
+        /// The coordinate varied, by name (x, y, z, phi, theta, sigma, or a joint coordinate).
+        vary: String,
         /// [LO, HI].
         range: [f64; 2],
     },
@@ -70,10 +71,10 @@ pub enum Request {
     /// The thesis' ray lattice over `axes` (the others from the pose): every ray's exact feasible
     /// intervals, the graph of feasible pieces and its components (docs/lattice.md).
     Lattice {
-        /// Pose the other coordinates come from.
+        /// Pose (or configuration) the other coordinates come from.
         pose: String,
-        /// The chosen coordinates.
-        axes: Vec<Coord>,
+        /// The chosen coordinates, by name.
+        axes: Vec<String>,
         /// [LO, HI] per axis.
         ranges: Vec<[f64; 2]>,
         /// Grid values: one number for every axis, or one per axis.
@@ -140,13 +141,19 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
             let total = scenario.trajectories.len();
             Output::VerifyAll(counted("trajectories verified", total, progress, |done| verify_all_counted(scenario, *pointwise, done))?)
         }
-        Request::Ray { pose, vary, range } => Output::Ray(ray(scenario, pose, *vary, range[0], range[1])?),
-        Request::Check { pose } => Output::Check(check_pose(scenario, pose, scenario.pose(pose)?)),
+        Request::Ray { pose, vary, range } => Output::Ray(ray(scenario, pose, scenario.coord("--vary", vary)?, range[0], range[1])?),
+        Request::Check { pose } => Output::Check(match scenario.robot.chain {
+            Some(_) => check_config(scenario, pose, &scenario.config(pose)?),
+            None => check_pose(scenario, pose, scenario.pose(pose)?),
+        }),
         Request::Envelope { trajectory, samples } => {
             let traj = scenario.trajectory(trajectory.as_deref())?;
             Output::Envelope(tension_envelope(scenario, traj, samples.unwrap_or(100))?)
         }
         Request::Slice { pose, axes, res, range } => {
+            if scenario.robot.chain.is_some() {
+                return Err(Error::new("slice", "slice maps of multi-link robots are not available yet: `lattice --axes A,B --steps N` gives the cross-section over two joint coordinates"));
+            }
             let range = match range {
                 Some(r) => *r,
                 None => {
@@ -157,7 +164,8 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
             Output::Slice(counted("slice rows", *res, progress, |done| slice_counted(scenario, pose, *axes, *res, range, done))?)
         }
         Request::Lattice { pose, axes, ranges, steps } => {
-            let spec = LatticeSpec::new(axes.clone(), ranges.clone(), steps.clone(), scenario.pose(pose)?.coords())?;
+            let axes = axes.iter().map(|a| scenario.coord("--axes", a.trim())).collect::<Result<Vec<Coord>>>()?;
+            let spec = LatticeSpec::new(axes, ranges.clone(), steps.clone(), scenario.config(pose)?)?;
             let mut lattice = Lattice::new(scenario, spec);
             loop {
                 let p = lattice.step(16);

@@ -242,7 +242,7 @@ pub fn ray(
     lo: f64,
     hi: f64,
 ) -> Result<JsValue, JsValue> {
-    call(scenario, coord("vary", &vary).map(|vary| Request::Ray { pose, vary, range: [lo, hi] }))
+    call(scenario, Ok(Request::Ray { pose, vary, range: [lo, hi] }))
 }
 
 /// Each cable's least and greatest tension over the wrench set at `samples` (default 100)
@@ -290,7 +290,6 @@ pub fn lattice(
 
 /// The [`Request::Lattice`] of `lattice`'s arguments.
 fn lattice_request(pose: String, axes: &[String], ranges: &[f64], steps: &JsValue) -> Result<Request, Error> {
-    let axes = axes.iter().map(|a| coord("axes", a)).collect::<Result<Vec<Coord>, Error>>()?;
     if ranges.len() % 2 != 0 {
         return Err(Error::new("ranges", format!("needs [lo, hi] pairs, got {} numbers", ranges.len())));
     }
@@ -301,7 +300,7 @@ fn lattice_request(pose: String, axes: &[String], ranges: &[f64], steps: &JsValu
         None if js_sys::Array::is_array(steps) => js_sys::Array::from(steps).iter().map(|v| whole(&v)).collect::<Option<Vec<usize>>>().ok_or_else(|| Error::new("steps", "needs whole numbers"))?,
         None => return Err(Error::new("steps", "needs a whole number or an array of them")),
     };
-    Ok(Request::Lattice { pose, axes, ranges, steps })
+    Ok(Request::Lattice { pose, axes: axes.to_vec(), ranges, steps })
 }
 
 /// A feasible path for one of the scenario's queries, re-verified exactly. `planner` is

@@ -212,14 +212,14 @@ fn check(py: Python<'_>, scenario: &Bound<'_, PyAny>, pose: String) -> PyResult<
 
 /// Exact feasible intervals of one pose coordinate over `range`, the others held at `pose`'s.
 ///
-/// `vary` is one of "x", "y", "z", "phi", "theta", "sigma"; `range` is (lo, hi), angles in
+/// `vary` is one of "x", "y", "z", "phi", "theta", "sigma" (or, for a multi-link robot, one of
+/// its joint coordinates, `pose` naming a configuration); `range` is (lo, hi), angles in
 /// radians. Returns the dict `cablenav ray SCENARIO --pose POSE --vary V --range LO HI --json`
 /// prints.
 #[pyfunction]
 #[pyo3(signature = (scenario, pose, vary, range))]
 fn ray(py: Python<'_>, scenario: &Bound<'_, PyAny>, pose: String, vary: &str, range: (f64, f64)) -> PyResult<Py<PyAny>> {
-    let request = coord("vary", vary).map(|vary| Request::Ray { pose, vary, range: [range.0, range.1] });
-    call(py, scenario, request)
+    call(py, scenario, Ok(Request::Ray { pose, vary: vary.to_string(), range: [range.0, range.1] }))
 }
 
 /// Each cable's least and greatest tension over the wrench set at `samples` points of a trajectory.
@@ -265,12 +265,8 @@ fn lattice(py: Python<'_>, scenario: &Bound<'_, PyAny>, pose: String, axes: Vec<
         Ok(n) => vec![n],
         Err(_) => steps.extract().map_err(|_| PyTypeError::new_err("steps must be an int or a sequence of ints"))?,
     };
-    let request = axes
-        .iter()
-        .map(|a| coord("axes", a))
-        .collect::<Result<Vec<Coord>, Error>>()
-        .map(|axes| Request::Lattice { pose, axes, ranges: ranges.iter().map(|r| [r.0, r.1]).collect(), steps });
-    call_renaming(py, scenario, request, Some(("--range", "ranges")))
+    let request = Request::Lattice { pose, axes, ranges: ranges.iter().map(|r| [r.0, r.1]).collect(), steps };
+    call_renaming(py, scenario, Ok(request), Some(("--range", "ranges")))
 }
 
 /// A feasible path for one of the scenario's queries, re-verified exactly.

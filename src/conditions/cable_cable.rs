@@ -31,7 +31,7 @@ impl Condition for CableCable {
         let (ci, cj) = (&sweep.cables[self.i], &sweep.cables[self.j]);
         let undecided = ci.tube.undecided_near(&cj.tube, self.clearance);
         let r: HVec = hvec_const(&(cj.base - ci.base));
-        on_undecided(sweep, &undecided, &[self.i, self.j], |alg, _, s, tol| segment_segment(alg, &r, s[0], s[1], self.clearance, tol))
+        on_undecided(sweep, &undecided, &[self.i, self.j], |alg, _, s, tol, _| segment_segment(alg, &r, s[0], s[1], self.clearance, tol))
     }
 
     fn check(&self, cables: &PoseCables) -> PoseCheck {

@@ -117,7 +117,7 @@ impl Condition for CableShape {
             }
             _ => Vec::new(),
         };
-        on_undecided(sweep, &undecided, &[self.cable], |alg, w, s, tol| {
+        on_undecided(sweep, &undecided, &[self.cable], |alg, w, s, tol, _| {
             let s = s[0];
             match &self.geom {
                 Geom::Mesh { faces, edges } => {

@@ -19,7 +19,7 @@
 use std::rc::Rc;
 
 use super::primitives::{GT, LT};
-use super::structure::{det_with, minors5, structure_numerators, Local};
+use super::structure::{det_with, minors, structure_numerators, Local};
 use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
 use crate::model::{Bounds, Wrench};
 use crate::poly::{Bern, Partition, Truth};
@@ -63,12 +63,12 @@ impl FacetPolys {
         let facets = subsets(m, 5)
             .into_iter()
             .map(|s| {
-                let minors = minors5(&n, &[s[0], s[1], s[2], s[3], s[4]]);
+                let minors = minors(&n, &s);
                 let others = (0..m)
                     .filter(|k| !s.contains(k))
-                    .map(|k| (k, det_with(&minors, &std::array::from_fn(|j| &n[j][k]))))
+                    .map(|k| (k, det_with(&minors, &std::array::from_fn::<_, 6, _>(|j| &n[j][k]))))
                     .collect();
-                Facet { others, load: det_with(&minors, &std::array::from_fn(|j| &load[j])) }
+                Facet { others, load: det_with(&minors, &std::array::from_fn::<_, 6, _>(|j| &load[j])) }
             })
             .collect();
         let len2 = local.len2();

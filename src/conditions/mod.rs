@@ -11,10 +11,12 @@
 pub mod algebra;
 mod cable_cable;
 mod cable_length;
+mod cable_link;
 mod cable_shape;
 pub mod primitives;
 mod closure;
 pub mod exists;
+mod joint_closure;
 mod offset;
 mod structure;
 mod tension;
@@ -22,13 +24,16 @@ pub mod tube;
 
 pub use cable_cable::CableCable;
 pub use cable_length::CableLength;
+pub use cable_link::CableLink;
 pub use cable_shape::CableShape;
 pub use closure::{FacetPolys, StaticFeasibility, WrenchClosure};
+pub use joint_closure::JointClosure;
 pub use tension::{CableTension, Side, TensionPolys};
 
 use std::cell::OnceCell;
 use std::rc::Rc;
 
+use crate::model::chain::Frame;
 use crate::model::{Motion, Pose, Robot, Wrench};
 use crate::poly::{Bern, Partition, Truth};
 use crate::query::wrench::{tension_ranges_at, TensionRange};
@@ -57,8 +62,9 @@ pub struct Sweep {
     pub cables: Vec<SweptCable>,
     /// Width (in λ) below which an undecided piece is reported rather than subdivided further.
     pub tol: f64,
-    /// The motion itself.
-    pub motion: Motion,
+    /// The motion of every link (one, the platform's, for a platform robot), all with one weight
+    /// and one parameter.
+    pub links: Vec<Motion>,
     /// The wrench polynomials, built by the first tension condition that needs them.
     pub tension: Option<Rc<TensionPolys>>,
     /// The facet polynomials of robots with more than six cables, built likewise.
@@ -71,13 +77,20 @@ pub struct Sweep {
 }
 
 impl Sweep {
-    /// Prepares the cables of `robot` along `motion`.
+    /// Prepares the cables of a platform robot along the platform's `motion`.
     pub fn new(robot: &Robot, motion: &Motion, tol: f64) -> Sweep {
-        let w = &motion.weight;
+        Sweep::of_links(robot, std::slice::from_ref(motion), tol)
+    }
+
+    /// Prepares the cables of `robot` along its links' motions `links` (one per link, with a
+    /// common weight and parameter; one for a platform robot).
+    pub fn of_links(robot: &Robot, links: &[Motion], tol: f64) -> Sweep {
+        let w = &links[0].weight;
         let cables = robot
             .cables
             .iter()
             .map(|cable| {
+                let motion = &links[cable.link];
                 // X̂ = P̂ + M̂ b (one power of w); s = X̂ − a·w
                 let tip: [crate::poly::Bern; 3] = [0, 1, 2].map(|i| {
                     let mut acc = motion.position[i].clone();
@@ -91,28 +104,34 @@ impl Sweep {
                 SweptCable { base: cable.base, s, tube }
             })
             .collect();
-        Sweep { alg: Alg::new(w), cables, tol, motion: motion.clone(), tension: None, facets: None, settled: Vec::new() }
+        Sweep { alg: Alg::new(w), cables, tol, links: links.to_vec(), tension: None, facets: None, settled: Vec::new() }
+    }
+
+    /// The platform's motion (the first link's for a multi-link robot): the weight and the
+    /// parameter every link shares.
+    pub fn motion(&self) -> &Motion {
+        &self.links[0]
     }
 }
 
 /// The violation set of a condition that the tube pruning decided outside `undecided` (ordered,
 /// disjoint λ-intervals): `False` there, `Unknown` where the sweep's `settled` intervals spare the
-/// work, and on each remaining interval what `exact` finds on the motion restricted to it — the
-/// powers of the restricted w, that w, the restricted cable vectors s of `cables` (in that order),
-/// and the tolerance in the local parameter — mapped back. Exact work is thus done only where the
+/// work, and on each remaining interval (a, b) what `exact` finds on the motion restricted to it —
+/// the powers of the restricted w, that w, the restricted cable vectors s of `cables` (in that
+/// order), the tolerance in the local parameter, and (a, b) itself — mapped back. Exact work is thus done only where the
 /// pruning could not decide and the answer matters.
 pub fn on_undecided(
     sweep: &mut Sweep,
     undecided: &[(f64, f64)],
     cables: &[usize],
-    mut exact: impl FnMut(&mut Alg, &Bern, &[&HVec], f64) -> Partition,
+    mut exact: impl FnMut(&mut Alg, &Bern, &[&HVec], f64, (f64, f64)) -> Partition,
 ) -> Partition {
     let (work, spared) = subtract(undecided, &sweep.settled);
     if let [(a, b)] = work[..] {
         if a <= 0.0 && b >= 1.0 {
-            let Sweep { alg, cables: swept, tol, motion, .. } = sweep;
+            let Sweep { alg, cables: swept, tol, links, .. } = sweep;
             let s: Vec<&HVec> = cables.iter().map(|&i| &swept[i].s).collect();
-            return exact(alg, &motion.weight, &s, *tol);
+            return exact(alg, &links[0].weight, &s, *tol, (0.0, 1.0));
         }
     }
     let mut out = Partition::constant(Truth::False);
@@ -121,11 +140,11 @@ pub fn on_undecided(
         out = out.splice((a, b), &unknown, (a, b));
     }
     for (a, b) in work {
-        let w = sweep.motion.weight.restrict(a, b);
+        let w = sweep.motion().weight.restrict(a, b);
         let mut alg = Alg::new(&w);
         let s: Vec<HVec> = cables.iter().map(|&i| sweep.cables[i].s.clone().map(|h| algebra::H { p: h.p.restrict(a, b), k: h.k })).collect();
         let s_ref: Vec<&HVec> = s.iter().collect();
-        let inner = exact(&mut alg, &w, &s_ref, sweep.tol / (b - a));
+        let inner = exact(&mut alg, &w, &s_ref, sweep.tol / (b - a), (a, b));
         out = out.splice((a, b), &inner, (a, b));
     }
     out
@@ -163,14 +182,16 @@ pub struct PoseCheck {
 }
 
 /// The cables at one pose — base anchor and platform anchor in the world frame, indexable as a
-/// slice of pairs — with the pose itself and the tension ranges, computed at most once per pose
-/// for all the tension conditions that ask.
+/// slice of pairs — with the pose itself, every link's frame, and the tension ranges, computed at
+/// most once per pose for all the tension conditions that ask.
 #[derive(Debug, Clone)]
 pub struct PoseCables {
-    /// The pose.
+    /// The pose (of the platform, or of a multi-link robot's first link).
     pub pose: Pose,
     /// (base anchor, platform anchor) per cable.
     pub cables: Vec<(Vector3<f64>, Vector3<f64>)>,
+    /// Every link's frame (the platform's alone for a platform robot).
+    pub links: Vec<Frame>,
     tensions: OnceCell<Option<[TensionRange; 6]>>,
 }
 
@@ -189,11 +210,33 @@ impl PoseCables {
     }
 }
 
-/// The cables of `robot` at `pose`.
+/// The cables of a platform robot at `pose`.
 pub fn cables_at(robot: &Robot, pose: &Pose) -> PoseCables {
     PoseCables {
         pose: *pose,
         cables: robot.cables.iter().map(|c| (c.base, pose.transform(&c.platform))).collect(),
+        links: vec![(pose.position, pose.matrix())],
+        tensions: OnceCell::new(),
+    }
+}
+
+/// The cables of `robot` at configuration `q`: the pose coordinates (x, y, z, φ, θ, σ) of a
+/// platform robot, the joint coordinates of a multi-link robot.
+pub fn cables_at_config(robot: &Robot, q: &[f64]) -> PoseCables {
+    match &robot.chain {
+        Some(chain) => cables_of_chain(robot, chain.frames(q)),
+        None => cables_at(robot, &Pose::from_coords([q[0], q[1], q[2], q[3], q[4], q[5]])),
+    }
+}
+
+/// The cables of a multi-link `robot` with its links at `links`.
+fn cables_of_chain(robot: &Robot, links: Vec<Frame>) -> PoseCables {
+    let (p, r) = links[0];
+    let pose = Pose { position: p, rotation: nalgebra::UnitQuaternion::from_matrix(&r) };
+    PoseCables {
+        pose,
+        cables: robot.cables.iter().map(|c| (c.base, links[c.link].0 + links[c.link].1 * c.platform)).collect(),
+        links,
         tensions: OnceCell::new(),
     }
 }
@@ -232,7 +275,10 @@ pub trait Condition {
 }
 
 /// Every condition a scenario states: cable lengths (where bounded), cable–cable clearance for
-/// each pair not sharing an anchor, and cable–obstacle clearance for each cable and obstacle.
+/// each pair not sharing an anchor, cable–obstacle clearance for each cable and obstacle; for a
+/// multi-link robot cable–link clearance for each cable and link (but a cable's own link where it
+/// is attached within the clearance) and joint-space wrench closure; the wrench conditions of the
+/// scenario's wrench set.
 pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
     let robot = &s.robot;
     let m = robot.cables.len();
@@ -254,6 +300,21 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
             out.push(Box::new(CableShape::new(i, obstacle, s.clearance.cable_obstacle)));
         }
     }
+    if let Some(chain) = &robot.chain {
+        let clearance = s.clearance.cable_link;
+        for (l, link) in chain.links.iter().enumerate() {
+            if link.radius + clearance <= 0.0 {
+                continue; // no distance is below 0
+            }
+            for (i, cable) in robot.cables.iter().enumerate() {
+                if cable.link == l && attached_inside(&cable.platform, &link.body, link.radius + clearance) {
+                    continue; // reported by the scenario's validation: it would hold nowhere
+                }
+                out.push(Box::new(CableLink { cable: i, link: l, name: link.name.clone(), body: link.body, radius: link.radius, clearance }));
+            }
+        }
+        out.push(Box::new(JointClosure { chain: Rc::new(chain.clone()), cable_links: robot.cables.iter().map(|c| c.link).collect() }));
+    }
     if let Some(wrench) = &s.wrench {
         let wrench = Rc::new(wrench.clone());
         if m == 6 {
@@ -270,4 +331,10 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
         }
     }
     out
+}
+
+/// Whether the anchor `b` (in its link's frame) lies within distance `r` of the link's body
+/// segment: the cable then starts inside the clearance zone of its own link.
+pub fn attached_inside(b: &Vector3<f64>, body: &[Vector3<f64>; 2], r: f64) -> bool {
+    crate::query::point_segment_dist2(b, &body[0], &(body[1] - body[0]), None) < r * r
 }

@@ -23,7 +23,7 @@ pub(crate) struct Local {
 
 impl Local {
     pub(crate) fn of(sweep: &Sweep) -> Local {
-        let m = &sweep.motion;
+        let m = sweep.motion();
         Local {
             position: m.position.clone(),
             rotation: m.rotation.clone(),
@@ -78,22 +78,24 @@ pub(crate) fn structure_numerators(m: &Local, wrench: &Wrench) -> [Vec<Bern>; 6]
     rows
 }
 
-/// The 5×5 minors of the six-row matrix `n` restricted to the columns `cols` (in that order):
-/// entry j is the minor without row j. Laplace expansion along the last column with the
-/// determinants of all row subsets memoised (bit masks).
-pub(crate) fn minors5(n: &[Vec<Bern>; 6], cols: &[usize; 5]) -> [Bern; 6] {
-    let mut det: Vec<Option<Bern>> = vec![None; 64];
+/// The (n−1)×(n−1) minors of the n-row matrix `rows` restricted to the n − 1 columns `cols` (in
+/// that order): entry j is the minor without row j. Laplace expansion along the last column with
+/// the determinants of all row subsets memoised (bit masks).
+pub(crate) fn minors(rows: &[Vec<Bern>], cols: &[usize]) -> Vec<Bern> {
+    let n = rows.len();
+    let full = (1u32 << n) - 1;
+    let mut det: Vec<Option<Bern>> = vec![None; 1 << n];
     det[0] = Some(Bern::constant(1.0));
     // Subsets in order of size: those of size k use the first k of `cols`.
-    let mut masks: Vec<u32> = (1..64u32).filter(|m| m.count_ones() <= 5).collect();
+    let mut masks: Vec<u32> = (1..=full).filter(|m| m.count_ones() < n as u32).collect();
     masks.sort_by_key(|m| m.count_ones());
     for mask in masks {
         let k = mask.count_ones() as usize;
         let c = cols[k - 1];
         let mut acc: Option<Bern> = None;
-        for (pos, row) in (0..6).filter(|r| mask & (1 << r) != 0).enumerate() {
+        for (pos, row) in (0..n).filter(|r| mask & (1 << r) != 0).enumerate() {
             let Some(sub) = det[(mask & !(1 << row)) as usize].as_ref() else { continue };
-            let term = n[row][c].mul(sub);
+            let term = rows[row][c].mul(sub);
             let negative = (pos + k - 1) % 2 == 1;
             acc = Some(match (acc, negative) {
                 (None, false) => term,
@@ -104,15 +106,15 @@ pub(crate) fn minors5(n: &[Vec<Bern>; 6], cols: &[usize; 5]) -> [Bern; 6] {
         }
         det[mask as usize] = acc;
     }
-    std::array::from_fn(|j| det[(63 & !(1u32 << j)) as usize].clone().unwrap_or_else(|| Bern::constant(0.0)))
+    (0..n).map(|j| det[(full & !(1u32 << j)) as usize].clone().unwrap_or_else(|| Bern::constant(0.0))).collect()
 }
 
-
-/// det [Ñ_S | x] for the 5 columns S whose `minors5` are `minors`, x a sixth column: expansion
-/// along the last column, Σ_j (−1)^(j+5) x_j M_j.
-pub(crate) fn det_with(minors: &[Bern; 6], x: &[&Bern; 6]) -> Bern {
-    (0..6).fold(Bern::constant(0.0), |acc, j| {
+/// det [Ñ_S | x] for the n − 1 columns S whose [`minors`] are `minors`, x an n-th column:
+/// expansion along the last column, Σ_j (−1)^(j+n−1) x_j M_j.
+pub(crate) fn det_with(minors: &[Bern], x: &[&Bern]) -> Bern {
+    let n = minors.len();
+    (0..n).fold(Bern::constant(0.0), |acc, j| {
         let t = x[j].mul(&minors[j]);
-        if j % 2 == 1 { acc.add(&t) } else { acc.sub(&t) }
+        if (j + n - 1) % 2 == 0 { acc.add(&t) } else { acc.sub(&t) }
     })
 }

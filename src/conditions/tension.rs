@@ -17,7 +17,7 @@ use std::rc::Rc;
 
 use super::algebra::H;
 use super::primitives::{all_of, any_of, GT, LT};
-use super::structure::{minors5, structure_numerators, Local};
+use super::structure::{minors, structure_numerators, Local};
 use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
 use crate::model::Wrench;
 use crate::poly::{Bern, Partition, Truth};
@@ -88,7 +88,7 @@ impl TensionPolys {
         let mut columns = Vec::with_capacity(cables.len());
         for &i in cables {
             let others: Vec<usize> = (0..6).filter(|&c| c != i).collect();
-            let minors = minors5(&n, &[others[0], others[1], others[2], others[3], others[4]]);
+            let minors = minors(&n, &others);
             // Cofactors C_ji = (−1)^{i+j} M_ji; Δ = Σ_j Ñ_ji C_ji; g_j = w^{k_j} C_ji.
             let cofactors: Vec<Bern> = (0..6).map(|j| if (i + j) % 2 == 0 { minors[j].clone() } else { minors[j].scale(-1.0) }).collect();
             if delta.is_none() {

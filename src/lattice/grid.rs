@@ -4,8 +4,7 @@
 //! the ray lattice certifies instead.
 
 use super::{LatticeSpec, UnionFind};
-use crate::conditions::{cables_at, for_scenario};
-use crate::model::Pose;
+use crate::conditions::{cables_at_config, for_scenario};
 use crate::scenario::Scenario;
 use serde::Serialize;
 
@@ -27,7 +26,7 @@ pub fn point_grid(s: &Scenario, spec: &LatticeSpec) -> PointGrid {
     let points = spec.point_count() as usize;
     let feasible: Vec<bool> = (0..points)
         .map(|flat| {
-            let cables = cables_at(&s.robot, &Pose::from_coords(spec.coords(&spec.point_indices(flat))));
+            let cables = cables_at_config(&s.robot, &spec.coords(&spec.point_indices(flat)));
             conditions.iter().all(|c| !c.check(&cables).violated)
         })
         .collect();

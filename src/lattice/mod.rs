@@ -39,14 +39,16 @@ pub struct LatticeSpec {
     pub ranges: Vec<[f64; 2]>,
     /// Number of grid values per axis (≥ 2): lo + (hi − lo)·k/(steps − 1), k = 0 … steps − 1.
     pub steps: Vec<usize>,
-    /// All six coordinates (x, y, z, φ, θ, σ); the axes' entries are replaced along the grid.
-    pub fixed: [f64; 6],
+    /// Every coordinate of the configuration (x, y, z, φ, θ, σ for a platform robot, the joint
+    /// coordinates of a multi-link robot); the axes' entries are replaced along the grid.
+    pub fixed: Vec<f64>,
 }
 
 impl LatticeSpec {
     /// A checked lattice request. `steps` has one entry for all axes or one per axis. Errors name
     /// the command-line option at fault (`--axes`, `--range`, `--steps`).
-    pub fn new(axes: Vec<Coord>, ranges: Vec<[f64; 2]>, steps: Vec<usize>, fixed: [f64; 6]) -> Result<LatticeSpec> {
+    pub fn new(axes: Vec<Coord>, ranges: Vec<[f64; 2]>, steps: Vec<usize>, fixed: impl Into<Vec<f64>>) -> Result<LatticeSpec> {
+        let fixed: Vec<f64> = fixed.into();
         if axes.is_empty() {
             return Err(Error::new("--axes", "give at least one coordinate"));
         }
@@ -72,7 +74,10 @@ impl LatticeSpec {
             }
         }
         if let Some(i) = fixed.iter().position(|v| !v.is_finite()) {
-            return Err(Error::new("pose", format!("coordinate {} is not finite", Coord::ALL[i].name())));
+            return Err(Error::new("pose", format!("coordinate {} is not finite", i + 1)));
+        }
+        if let Some(a) = axes.iter().find(|a| a.index() >= fixed.len()) {
+            return Err(Error::new("--axes", format!("{} is not a coordinate of this robot", a.name())));
         }
         let spec = LatticeSpec { axes, ranges, steps, fixed };
         let rays = spec.ray_count();
@@ -159,9 +164,9 @@ impl LatticeSpec {
             .collect()
     }
 
-    /// The six coordinates of the grid point with per-axis indices `idx`.
-    pub fn coords(&self, idx: &[usize]) -> [f64; 6] {
-        let mut c = self.fixed;
+    /// The coordinates of the grid point with per-axis indices `idx`.
+    pub fn coords(&self, idx: &[usize]) -> Vec<f64> {
+        let mut c = self.fixed.clone();
         for (a, &k) in idx.iter().enumerate() {
             c[self.axes[a].index()] = self.value(a, k);
         }
@@ -215,7 +220,7 @@ impl LatticeSpec {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Ray {
     /// The coordinate varied.
-    pub vary: &'static str,
+    pub vary: String,
     /// Index of that coordinate among the lattice's axes.
     #[serde(skip)]
     pub axis: usize,
@@ -223,9 +228,10 @@ pub struct Ray {
     #[serde(skip)]
     pub cell: Vec<usize>,
     /// Every other coordinate's value (the other axes' grid values and the fixed coordinates):
-    /// `{"y": 2, "z": 0.8667, "phi": 0, …}` in the order x, y, z, φ, θ, σ.
+    /// `{"y": 2, "z": 0.8667, "phi": 0, …}` in configuration order (x, y, z, φ, θ, σ for a
+    /// platform robot).
     #[serde(serialize_with = "as_object")]
-    pub fixed: Vec<(&'static str, f64)>,
+    pub fixed: Vec<(String, f64)>,
     /// Feasible intervals of the varied coordinate, certified (the lattice's pieces).
     pub feasible: Vec<[f64; 2]>,
     /// Intervals the verifier could not certify either way (counted as infeasible).
@@ -233,7 +239,7 @@ pub struct Ray {
     pub uncertain: Vec<[f64; 2]>,
 }
 
-fn as_object<S: serde::Serializer>(v: &[(&'static str, f64)], ser: S) -> std::result::Result<S::Ok, S::Error> {
+fn as_object<S: serde::Serializer>(v: &[(String, f64)], ser: S) -> std::result::Result<S::Ok, S::Error> {
     use serde::ser::SerializeMap;
     let mut m = ser.serialize_map(Some(v.len()))?;
     for (k, x) in v {
@@ -294,8 +300,14 @@ pub struct Graph {
 impl Lattice {
     /// Prepares the lattice of `scenario` for `spec`; no ray is computed yet.
     pub fn new(scenario: &Scenario, spec: LatticeSpec) -> Lattice {
+        Lattice::with_conditions(scenario, spec, for_scenario(scenario))
+    }
+
+    /// [`Lattice::new`] under `conditions` only (some of the scenario's, e.g. those of one
+    /// [`crate::conditions::Kind`]: the interference-free or the wrench-closure workspace alone).
+    pub fn with_conditions(scenario: &Scenario, spec: LatticeSpec, conditions: Vec<Box<dyn Condition>>) -> Lattice {
         let total = spec.ray_count() as usize;
-        Lattice { scenario: scenario.clone(), conditions: for_scenario(scenario), spec, rays: Vec::with_capacity(total), total, graph: None }
+        Lattice { scenario: scenario.clone(), conditions, spec, rays: Vec::with_capacity(total), total, graph: None }
     }
 
     /// Computes up to `budget` more rays (at least one); once all are computed, the same call
@@ -338,7 +350,7 @@ impl Lattice {
 
     /// The exact sections of the ray through `c` along axis `a` over the axis' range (rays through
     /// points off the grid: a planner's start and goal).
-    pub fn cast(&self, c: [f64; 6], a: usize) -> Sections {
+    pub fn cast(&self, c: &[f64], a: usize) -> Sections {
         let [lo, hi] = self.spec.ranges[a];
         ray_sections(&self.scenario, &self.conditions, c, self.spec.axes[a], lo, hi)
     }
@@ -350,9 +362,10 @@ impl Lattice {
         let c = spec.coords(&cell);
         let coord = spec.axes[a];
         let [lo, hi] = spec.ranges[a];
-        let sec = ray_sections(&self.scenario, &self.conditions, c, coord, lo, hi);
-        let fixed = Coord::ALL.into_iter().filter(|&k| k != coord).map(|k| (k.name(), c[k.index()])).collect();
-        Ray { vary: coord.name(), axis: a, cell, fixed, feasible: sec.feasible, uncertain: sec.uncertain }
+        let sec = ray_sections(&self.scenario, &self.conditions, &c, coord, lo, hi);
+        let s = &self.scenario;
+        let fixed = (0..c.len()).filter(|&k| k != coord.index()).map(|k| (s.coord_name(s.coord_at(k)), c[k])).collect();
+        Ray { vary: s.coord_name(coord), axis: a, cell, fixed, feasible: sec.feasible, uncertain: sec.uncertain }
     }
 
     /// The pieces containing grid point `idx` (one per ray through it that holds it feasible), as
@@ -412,10 +425,10 @@ impl Lattice {
         let pieces = g.piece_component.len();
         let points = g.point_feasible.len();
         Some(LatticeReport {
-            axes: self.spec.axes.iter().map(|a| a.name()).collect(),
+            axes: self.spec.axes.iter().map(|&a| self.scenario.coord_name(a)).collect(),
             ranges: self.spec.ranges.clone(),
             steps: self.spec.steps.clone(),
-            fixed: self.spec.fixed,
+            fixed: self.spec.fixed.clone(),
             rays: self.rays.clone(),
             pieces,
             edges: g.edges,
@@ -435,13 +448,13 @@ impl Lattice {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct LatticeReport {
     /// The chosen coordinates.
-    pub axes: Vec<&'static str>,
+    pub axes: Vec<String>,
     /// Their ranges.
     pub ranges: Vec<[f64; 2]>,
     /// Their numbers of grid values.
     pub steps: Vec<usize>,
-    /// The six coordinates the others are held at (x, y, z, φ, θ, σ).
-    pub fixed: [f64; 6],
+    /// The coordinates the others are held at (x, y, z, φ, θ, σ for a platform robot).
+    pub fixed: Vec<f64>,
     /// Every ray with its feasible intervals.
     pub rays: Vec<Ray>,
     /// Feasible ray pieces (the graph's nodes).

@@ -1,6 +1,7 @@
 //! The robot and its motions as the rest of the core sees them, after the scenario was validated:
 //! cables and their bounds, poses, trajectories, and the rational motions the exact conditions use.
 
+pub mod chain;
 pub mod motion;
 pub mod pose;
 pub mod robot;
@@ -8,6 +9,7 @@ pub mod trajectory;
 pub mod via;
 pub mod wrench;
 
+pub use chain::{Chain, Joint, JointCoord, Link};
 pub use motion::Motion;
 pub use pose::{Coord, Pose};
 pub use robot::{Bounds, Cable, Clearance, Robot};

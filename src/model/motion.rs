@@ -118,7 +118,7 @@ pub struct Motion {
 }
 
 /// A quaternion whose components are polynomials in λ (ascending monomial coefficients).
-type QuatPoly = [Vec<f64>; 4];
+pub(crate) type QuatPoly = [Vec<f64>; 4];
 
 fn poly_mul(a: &[f64], b: &[f64]) -> Vec<f64> {
     let mut c = vec![0.0; a.len() + b.len() - 1];
@@ -137,7 +137,7 @@ fn poly_add(a: &[f64], b: &[f64], sign: f64) -> Vec<f64> {
 }
 
 /// Hamilton product of quaternion polynomials (w, x, y, z).
-fn quat_mul(a: &QuatPoly, b: &QuatPoly) -> QuatPoly {
+pub(crate) fn quat_mul(a: &QuatPoly, b: &QuatPoly) -> QuatPoly {
     let m = |i: usize, j: usize| poly_mul(&a[i], &b[j]);
     let sum = |terms: [(f64, Vec<f64>); 4]| {
         terms.iter().fold(vec![0.0], |acc, (s, p)| poly_add(&acc, p, *s))
@@ -150,7 +150,8 @@ fn quat_mul(a: &QuatPoly, b: &QuatPoly) -> QuatPoly {
     ]
 }
 
-fn quat_const(q: &UnitQuaternion<f64>) -> QuatPoly {
+/// A constant quaternion polynomial.
+pub(crate) fn quat_const(q: &UnitQuaternion<f64>) -> QuatPoly {
     let q = q.quaternion();
     [vec![q.w], vec![q.i], vec![q.j], vec![q.k]]
 }
@@ -158,9 +159,15 @@ fn quat_const(q: &UnitQuaternion<f64>) -> QuatPoly {
 /// Rotation by an angle growing with λ about coordinate axis `axis` (0 = x, 1 = y, 2 = z):
 /// (1, h·λ·e_axis), or its inverse when `inverse`.
 fn quat_axis_ramp(axis: usize, h: f64, inverse: bool) -> QuatPoly {
-    let mut q: QuatPoly = [vec![1.0], vec![0.0], vec![0.0], vec![0.0]];
-    q[axis + 1] = vec![0.0, if inverse { -h } else { h }];
-    q
+    let mut e = nalgebra::Vector3::zeros();
+    e[axis] = if inverse { -1.0 } else { 1.0 };
+    ramp_about(&e, h)
+}
+
+/// Rotation by the angle 2·atan(hλ) about the unit vector `axis`: the quaternion (1, h·λ·axis) up
+/// to scale.
+pub(crate) fn ramp_about(axis: &nalgebra::Vector3<f64>, h: f64) -> QuatPoly {
+    [vec![1.0], vec![0.0, h * axis.x], vec![0.0, h * axis.y], vec![0.0, h * axis.z]]
 }
 
 /// Rotation numerator M̂ and weight w = |N|² of a quaternion polynomial.
@@ -212,7 +219,9 @@ fn power(p: &Bern, k: usize) -> Bern {
 }
 
 impl Motion {
-    fn from_parts(position: [Bern; 3], n: &QuatPoly, param: Param) -> Motion {
+    /// The motion with position `position` (polynomials) and rotation from the quaternion
+    /// polynomial `n`.
+    pub(crate) fn from_parts(position: [Bern; 3], n: &QuatPoly, param: Param) -> Motion {
         let (rotation, weight) = rotation_of(n);
         let position = position.map(|p| p.mul(&weight));
         Motion { position, rotation, weight, param }
@@ -353,6 +362,43 @@ impl Motion {
                 Motion::from_parts(position.clone(), &n, Param::Angle { start, end, h })
             })
             .collect()
+    }
+
+    /// This motion seen from a fixed frame: the frame's origin `p` and rotation `r` applied on
+    /// the left (P̂ ↦ r·P̂ + p·w, M̂ ↦ r·M̂). The identity frame leaves the motion as it is.
+    pub fn placed(&self, p: &nalgebra::Vector3<f64>, r: &nalgebra::Matrix3<f64>) -> Motion {
+        if *p == nalgebra::Vector3::zeros() && *r == nalgebra::Matrix3::identity() {
+            return self.clone();
+        }
+        let rows = |m: &[Bern; 3], extra: Option<f64>, i: usize| {
+            let acc = extra.map_or(Bern::constant(0.0), |x| self.weight.scale(x));
+            (0..3).fold(acc, |acc, j| acc.add(&m[j].scale(r[(i, j)])))
+        };
+        let position = [0, 1, 2].map(|i| rows(&self.position, Some(p[i]), i));
+        let columns: [[Bern; 3]; 3] = [0, 1, 2].map(|c| [0, 1, 2].map(|j| self.rotation[j][c].clone()));
+        let by_column: [[Bern; 3]; 3] = columns.each_ref().map(|col| [0, 1, 2].map(|i| rows(col, None, i)));
+        let rotation = [0, 1, 2].map(|i| [0, 1, 2].map(|c| by_column[c][i].clone()));
+        Motion { position, rotation, weight: self.weight.clone(), param: self.param }
+    }
+
+    /// The frame fixed to this moving one at offset `t` and relative rotation `r`
+    /// (P̂ ↦ P̂ + M̂·t, M̂ ↦ M̂·r).
+    pub fn then(&self, t: &nalgebra::Vector3<f64>, r: &nalgebra::Matrix3<f64>) -> Motion {
+        let position = [0, 1, 2].map(|i| (0..3).fold(self.position[i].clone(), |acc, j| acc.add(&self.rotation[i][j].scale(t[j]))));
+        let rotation = [0, 1, 2].map(|i| {
+            [0, 1, 2].map(|c| (0..3).fold(Bern::constant(0.0), |acc, j| acc.add(&self.rotation[i][j].scale(r[(j, c)]))))
+        });
+        Motion { position, rotation, weight: self.weight.clone(), param: self.param }
+    }
+
+    /// A frame that does not move, written over the weight `w` of the motions beside it.
+    pub fn fixed((p, r): &(nalgebra::Vector3<f64>, nalgebra::Matrix3<f64>), w: &Bern, param: Param) -> Motion {
+        Motion {
+            position: [0, 1, 2].map(|i| w.scale(p[i])),
+            rotation: [0, 1, 2].map(|i| [0, 1, 2].map(|j| w.scale(r[(i, j)]))),
+            weight: w.clone(),
+            param,
+        }
     }
 
     /// Position and rotation matrix at λ (for checks; the exact conditions use the polynomials).

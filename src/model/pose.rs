@@ -7,9 +7,19 @@
 use nalgebra::{Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector3};
 use std::f64::consts::PI;
 
-/// One of the six pose coordinates (x, y, z, φ, θ, σ) — position and tilt-and-torsion angles.
+/// One of the six pose coordinates (x, y, z, φ, θ, σ) — position and tilt-and-torsion angles —
+/// or a joint coordinate of a multi-link robot.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Coord {
+    /// Joint coordinate `index` (0-based, in [`crate::model::Chain::coords`] order) of a
+    /// multi-link robot, an angle or a length; its scenario name is
+    /// [`crate::Scenario::coord_name`]'s.
+    Joint {
+        /// Index into the configuration.
+        index: u8,
+        /// Whether it is an angle (radians).
+        angle: bool,
+    },
     /// Position x.
     X,
     /// Position y.
@@ -42,19 +52,33 @@ impl Coord {
             Coord::Phi => "phi",
             Coord::Theta => "theta",
             Coord::Sigma => "sigma",
+            Coord::Joint { index, .. } => JOINT_NAMES.get(index as usize).copied().unwrap_or("q?"),
         }
     }
 
-    /// Index into [`Pose::coords`].
+    /// Index into [`Pose::coords`], or into a multi-link robot's configuration.
     pub fn index(self) -> usize {
-        Coord::ALL.iter().position(|&c| c == self).unwrap_or(0)
+        match self {
+            Coord::Joint { index, .. } => index as usize,
+            _ => Coord::ALL.iter().position(|&c| c == self).unwrap_or(0),
+        }
     }
 
     /// Whether this coordinate is an angle (radians).
     pub fn is_angle(self) -> bool {
-        self.index() >= 3
+        match self {
+            Coord::Joint { angle, .. } => angle,
+            _ => self.index() >= 3,
+        }
     }
 }
+
+/// Generic names of joint coordinates (`q1` … `q64`), for messages that have no scenario at hand.
+const JOINT_NAMES: [&str; 64] = [
+    "q1", "q2", "q3", "q4", "q5", "q6", "q7", "q8", "q9", "q10", "q11", "q12", "q13", "q14", "q15", "q16", "q17", "q18", "q19", "q20", "q21", "q22",
+    "q23", "q24", "q25", "q26", "q27", "q28", "q29", "q30", "q31", "q32", "q33", "q34", "q35", "q36", "q37", "q38", "q39", "q40", "q41", "q42", "q43",
+    "q44", "q45", "q46", "q47", "q48", "q49", "q50", "q51", "q52", "q53", "q54", "q55", "q56", "q57", "q58", "q59", "q60", "q61", "q62", "q63", "q64",
+];
 
 /// A platform pose: position of the platform origin and orientation.
 #[derive(Debug, Clone, Copy, PartialEq)]

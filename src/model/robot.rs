@@ -1,6 +1,8 @@
-//! A 6-DoF cable robot: m ≥ 6 cables, each the segment from a base anchor (world frame) to a
-//! platform anchor (platform frame), with length and tension bounds.
+//! A cable robot: cables, each the segment from a base anchor (world frame) to an anchor on the
+//! platform or on one link of a multi-link chain (in that link's frame), with length and tension
+//! bounds.
 
+use super::Chain;
 use nalgebra::Vector3;
 
 /// A closed range `[min, max]`.
@@ -19,26 +21,32 @@ impl Bounds {
     }
 }
 
-/// One cable: the segment a_i → p + R·b_i.
+/// One cable: the segment a_i → p + R·b_i, (p, R) the pose of the platform or of its link.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Cable {
     /// Base anchor a_i in the world frame.
     pub base: Vector3<f64>,
-    /// Platform anchor b_i in the platform frame.
+    /// Platform anchor b_i in the platform's (or its link's) frame.
     pub platform: Vector3<f64>,
+    /// The link it pulls (index into the chain's links; 0 for the platform).
+    pub link: usize,
     /// Allowed cable length.
     pub length: Bounds,
     /// Allowed cable tension.
     pub tension: Bounds,
 }
 
-/// The robot: its cables and the cable diameter (informational; clearances are between centrelines).
+/// The robot: its cables, the cable diameter (informational; clearances are between
+/// centrelines), and its links if it is a multi-link robot.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Robot {
     /// The cables, numbered from 1 in reports.
     pub cables: Vec<Cable>,
     /// Cable diameter.
     pub diameter: f64,
+    /// The links of a multi-link robot; `None` for a platform robot (one link, free joint,
+    /// configured by poses).
+    pub chain: Option<Chain>,
 }
 
 /// Minimum distances the verifier enforces, between cable centrelines and from a centreline to an
@@ -49,6 +57,8 @@ pub struct Clearance {
     pub cable_cable: f64,
     /// Minimum distance between a cable and an obstacle.
     pub cable_obstacle: f64,
+    /// Minimum distance between a cable and a link's body (multi-link robots).
+    pub cable_link: f64,
 }
 
 impl Robot {
@@ -56,6 +66,6 @@ impl Robot {
     /// design, so their mutual clearance is not checked.
     pub fn share_anchor(&self, i: usize, j: usize) -> bool {
         let (a, b) = (&self.cables[i], &self.cables[j]);
-        a.base == b.base || a.platform == b.platform
+        a.base == b.base || (a.link == b.link && a.platform == b.platform)
     }
 }

@@ -391,7 +391,7 @@ impl LatticePlanner {
     fn coords_of(&self, v: usize) -> [f64; 6] {
         let n = self.points();
         if v < n {
-            self.lattice.spec.coords(&self.lattice.spec.point_indices(v))
+            six(&self.lattice.spec.coords(&self.lattice.spec.point_indices(v)))
         } else {
             self.specials[v - n]
         }
@@ -430,7 +430,7 @@ impl LatticePlanner {
     /// cell corners still to verify, as (special vertex, corner vertex).
     fn join_rays(&mut self) -> Vec<(usize, usize)> {
         let k = self.lattice.spec.axes.len();
-        let ends = [slice_coords(&self.start, &self.lattice.spec.fixed, &self.lattice.spec.axes), slice_coords(&self.goal, &self.lattice.spec.fixed, &self.lattice.spec.axes)];
+        let ends = [slice_coords(&self.start, &six(&self.lattice.spec.fixed), &self.lattice.spec.axes), slice_coords(&self.goal, &six(&self.lattice.spec.fixed), &self.lattice.spec.axes)];
         let ids = [self.vertex(ends[0]), self.vertex(ends[1])];
         self.ends = ids;
         let mut segments = vec![];
@@ -448,7 +448,7 @@ impl LatticePlanner {
                     continue;
                 }
                 // c's own ray along a
-                let feasible = self.lattice.cast(c, a).feasible;
+                let feasible = self.lattice.cast(&c, a).feasible;
                 self.end_rays.push(EndRay { axis: a, feasible });
                 let ray_no = self.end_rays.len() - 1;
                 let mut on_ray: Vec<usize> = vec![v];
@@ -564,7 +564,7 @@ impl LatticePlanner {
         if v < self.points() {
             let spec = &self.lattice.spec;
             let idx = spec.point_indices(v);
-            let here = Pose::from_coords(spec.coords(&idx));
+            let here = Pose::from_coords(six(&spec.coords(&idx)));
             for a in 0..spec.axes.len() {
                 let r = spec.ray_index(a, &idx);
                 let ray = &self.lattice.rays[r];
@@ -574,7 +574,7 @@ impl LatticePlanner {
                         let mut n = idx.clone();
                         n[a] = j;
                         let w = spec.point_index(&n);
-                        out.push((w, metric(&here, &Pose::from_coords(spec.coords(&n)), self.params.rotation_length)));
+                        out.push((w, metric(&here, &Pose::from_coords(six(&spec.coords(&n))), self.params.rotation_length)));
                     }
                 }
             }
@@ -790,4 +790,10 @@ fn run_segment(points: &[[f64; 6]]) -> Segment {
 fn run_trajectory(points: &[[f64; 6]], name: &str) -> Trajectory {
     let seg = run_segment(points);
     Trajectory::single(name, seg.translation, seg.orientation)
+}
+
+/// The six pose coordinates of a platform robot's lattice point (the lattice planner plans for
+/// platform robots only; their configurations have six coordinates).
+fn six(c: &[f64]) -> [f64; 6] {
+    std::array::from_fn(|i| c.get(i).copied().unwrap_or(0.0))
 }

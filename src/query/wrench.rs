@@ -53,37 +53,43 @@ pub fn structure_matrix_m(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vecto
 /// strictly positive tension vector lies in J's null space. Determinants below
 /// [`SINGULAR_RATIO`] times the product of the columns' norms count as zero.
 pub fn closure_holds(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>) -> bool {
-    let j = structure_matrix_m(cables, point);
-    let m = j.ncols();
+    positively_spans(&structure_matrix_m(cables, point))
+}
+
+/// Whether the columns of the n×m matrix `j` positively span ℝⁿ: rank n and, for every n − 1
+/// columns S spanning a hyperplane, the other columns lie strictly on both sides of it.
+/// Determinants below [`SINGULAR_RATIO`] times the product of the columns' norms count as zero.
+pub fn positively_spans(j: &DMatrix<f64>) -> bool {
+    let (n, m) = j.shape();
+    if n == 0 || m <= n {
+        return false;
+    }
     let norms: Vec<f64> = (0..m).map(|i| j.column(i).norm()).collect();
     let det_of = |cols: &[usize]| {
-        let mut a = Matrix6::zeros();
-        for (c, &k) in cols.iter().enumerate() {
-            a.set_column(c, &j.column(k));
-        }
+        let a = DMatrix::from_fn(n, n, |r, c| j[(r, cols[c])]);
         let scale: f64 = cols.iter().map(|&k| norms[k]).product();
         let d = a.determinant();
         if d.abs() > SINGULAR_RATIO * scale { d.signum() } else { 0.0 }
     };
-    let mut rank6 = false;
-    let mut s = [0usize; 6];
-    for subset in subsets(m, 5) {
-        s[..5].copy_from_slice(&subset);
+    let mut full_rank = false;
+    let mut s = vec![0usize; n];
+    for subset in subsets(m, n - 1) {
+        s[..n - 1].copy_from_slice(&subset);
         let (mut pos, mut neg) = (false, false);
         for k in (0..m).filter(|k| !subset.contains(k)) {
-            s[5] = k;
+            s[n - 1] = k;
             let d = det_of(&s);
             pos |= d > 0.0;
             neg |= d < 0.0;
         }
         if pos || neg {
-            rank6 = true;
+            full_rank = true;
             if !(pos && neg) {
                 return false;
             }
         }
     }
-    rank6
+    full_rank
 }
 
 /// The k-element subsets of 0..m in lexicographic order.

@@ -6,8 +6,8 @@
 //! * bodies: exactly one rigid link (the platform) with a `SPATIAL_EULER_XYZ` joint on the
 //!   base (parent 0). Its `q_initial = "x y z a b g"` becomes the pose `initial`: position
 //!   (x, y, z) plus the parent `location`, orientation R = Rx(a)·Ry(b)·Rz(g) with the angles in
-//!   radians (written as `euler_xyz_deg`). Multi-link robots (arms, trees) are refused with a
-//!   message that says so.
+//!   radians (written as `euler_xyz_deg`). Multi-link robots (arms, trees) are read by
+//!   [`super::caspr_links`] into a `cablenav-scenario/3` scenario.
 //! * cables: the `default_cable_set` (or the only set); every `cable_*` element with two
 //!   attachments, one on link 0 (the base anchor, world frame) and one on link 1 (the platform
 //!   anchor). With `attachment_reference="com"` the platform location is relative to the
@@ -38,6 +38,9 @@ pub struct Import {
 
 /// Converts a CASPR bodies file and cables file into scenario JSON called `name`.
 pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import> {
+    if super::caspr_links::is_multi_link(bodies_xml) {
+        return super::caspr_links::to_json(name, bodies_xml, cables_xml);
+    }
     let platform = platform(bodies_xml)?;
     let cables = cables(cables_xml, &platform)?;
     let mut notes = Vec::new();
@@ -103,12 +106,12 @@ pub fn kind(xml: &str) -> Option<&'static str> {
 /// One value for all cables when they agree, one per cable when all give one, else `None`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
-enum OneOrEach {
+pub(super) enum OneOrEach {
     One(f64),
     Each(Vec<f64>),
 }
 
-fn combine(values: impl Iterator<Item = Option<f64>>) -> Option<OneOrEach> {
+pub(super) fn combine(values: impl Iterator<Item = Option<f64>>) -> Option<OneOrEach> {
     let all: Option<Vec<f64>> = values.collect();
     let all = all?;
     let first = *all.first()?;
@@ -203,12 +206,12 @@ struct RawCable {
 
 /// Parses XML; CASPR files start with a `<!DOCTYPE ... SYSTEM "...dtd">`, which is allowed (an
 /// external DTD is never loaded).
-fn parse_xml(text: &str) -> std::result::Result<Document<'_>, roxmltree::Error> {
+pub(super) fn parse_xml(text: &str) -> std::result::Result<Document<'_>, roxmltree::Error> {
     Document::parse_with_options(text, ParsingOptions { allow_dtd: true, ..ParsingOptions::default() })
 }
 
 /// Parses `text` as XML for `file`, with the root element `root`.
-fn document<'a>(file: &str, text: &'a str, root: &str) -> Result<Document<'a>> {
+pub(super) fn document<'a>(file: &str, text: &'a str, root: &str) -> Result<Document<'a>> {
     let doc = parse_xml(text).map_err(|e| Error::new(file, format!("not well-formed XML: {e}")))?;
     let got = doc.root_element().tag_name().name();
     if got != root {
@@ -221,22 +224,22 @@ fn document<'a>(file: &str, text: &'a str, root: &str) -> Result<Document<'a>> {
 }
 
 /// "line N" of a node, for messages.
-fn line(node: Node) -> String {
+pub(super) fn line(node: Node) -> String {
     format!("line {}", node.document().text_pos_at(node.range().start).row)
 }
 
 /// Element children of `node` called `tag`.
-fn children<'a, 'i>(node: Node<'a, 'i>, tag: &'a str) -> impl Iterator<Item = Node<'a, 'i>> {
+pub(super) fn children<'a, 'i>(node: Node<'a, 'i>, tag: &'a str) -> impl Iterator<Item = Node<'a, 'i>> {
     node.children().filter(move |c| c.is_element() && c.tag_name().name() == tag)
 }
 
 /// The one child `tag` of `node`, if any.
-fn child<'a, 'i>(node: Node<'a, 'i>, tag: &'a str) -> Option<Node<'a, 'i>> {
+pub(super) fn child<'a, 'i>(node: Node<'a, 'i>, tag: &'a str) -> Option<Node<'a, 'i>> {
     children(node, tag).next()
 }
 
 /// `N` finite numbers separated by white space, from `text` at `node` (for messages).
-fn numbers<const N: usize>(file: &str, node: Node, what: &str, text: &str) -> Result<[f64; N]> {
+pub(super) fn numbers<const N: usize>(file: &str, node: Node, what: &str, text: &str) -> Result<[f64; N]> {
     let parts: Vec<&str> = text.split_whitespace().collect();
     if parts.len() != N {
         return Err(Error::new(file, format!("{}: {what} needs {N} numbers, got {:?}", line(node), text.trim())));
@@ -253,7 +256,7 @@ fn numbers<const N: usize>(file: &str, node: Node, what: &str, text: &str) -> Re
 }
 
 /// The text of child `tag` of `node` as `N` numbers; `None` when there is no such child.
-fn child_numbers<const N: usize>(file: &str, node: Node, tag: &str) -> Result<Option<[f64; N]>> {
+pub(super) fn child_numbers<const N: usize>(file: &str, node: Node, tag: &str) -> Result<Option<[f64; N]>> {
     match child(node, tag) {
         None => Ok(None),
         Some(c) => numbers(file, c, &format!("<{tag}>"), c.text().unwrap_or_default()).map(Some),
@@ -312,12 +315,11 @@ fn platform(xml: &str) -> Result<Platform> {
     })
 }
 
-fn cables(xml: &str, platform: &Platform) -> Result<Vec<RawCable>> {
+/// The cable set to import: the `default_cable_set`, or the only one.
+pub(super) fn cable_set<'a, 'i>(root: Node<'a, 'i>) -> Result<Node<'a, 'i>> {
     const FILE: &str = "cables";
-    let doc = document(FILE, xml, "cables")?;
-    let root = doc.root_element();
     let sets: Vec<Node> = children(root, "cable_set").collect();
-    let set = match root.attribute("default_cable_set") {
+    Ok(match root.attribute("default_cable_set") {
         Some(id) => sets.iter().find(|s| s.attribute("id") == Some(id)).copied().ok_or_else(|| {
             Error::new(FILE, format!("default_cable_set {id:?} names no <cable_set id=...> in the file"))
         })?,
@@ -325,19 +327,30 @@ fn cables(xml: &str, platform: &Platform) -> Result<Vec<RawCable>> {
             [only] => *only,
             _ => return Err(Error::new(FILE, format!("{} cable sets and no default_cable_set to choose one", sets.len()))),
         },
+    })
+}
+
+/// A cable's `force_min`, `force_max` and `diameter` properties, where given.
+pub(super) fn properties(cable: Node) -> Result<[Option<f64>; 3]> {
+    let props = child(cable, "properties");
+    let prop = |tag: &str| -> Result<Option<f64>> {
+        match props {
+            Some(p) => Ok(child_numbers::<1>("cables", p, tag)?.map(|[x]| x)),
+            None => Ok(None),
+        }
     };
+    Ok([prop("force_min")?, prop("force_max")?, prop("diameter")?])
+}
+
+fn cables(xml: &str, platform: &Platform) -> Result<Vec<RawCable>> {
+    const FILE: &str = "cables";
+    let doc = document(FILE, xml, "cables")?;
+    let set = cable_set(doc.root_element())?;
     let mut out = Vec::new();
     for cable in set.children().filter(|c| c.is_element() && c.tag_name().name().starts_with("cable_")) {
         let name = cable.attribute("name").map_or_else(|| format!("#{}", out.len() + 1), str::to_owned);
         let at = format!("cable {name:?} ({})", line(cable));
-        let props = child(cable, "properties");
-        let prop = |tag: &str| -> Result<Option<f64>> {
-            match props {
-                Some(p) => Ok(child_numbers::<1>(FILE, p, tag)?.map(|[x]| x)),
-                None => Ok(None),
-            }
-        };
-        let (force_min, force_max, diameter) = (prop("force_min")?, prop("force_max")?, prop("diameter")?);
+        let [force_min, force_max, diameter] = properties(cable)?;
         let attachments: Vec<Node> = child(cable, "attachments").map(|a| children(a, "attachment").collect()).unwrap_or_default();
         if attachments.len() != 2 {
             return Err(Error::new(

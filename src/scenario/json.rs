@@ -22,6 +22,9 @@ pub const FORMAT: &str = "cablenav-scenario/1";
 /// using pieces must declare it, so that a reader of version 1 refuses the file by its version
 /// instead of by an unknown field.
 pub const FORMAT_2: &str = "cablenav-scenario/2";
+/// Format version 3: version 2 plus multi-link robots (`robot.links`, cables' `link`,
+/// `configurations`, `clearance.cable_link`). A file using them must declare it.
+pub const FORMAT_3: &str = "cablenav-scenario/3";
 
 /// The whole file.
 #[derive(Debug, Deserialize)]
@@ -44,6 +47,8 @@ pub struct RawScenario {
     pub trajectories: Vec<RawTrajectory>,
     #[serde(default)]
     pub queries: Vec<RawQuery>,
+    #[serde(default)]
+    pub configurations: Ordered<Ordered<f64>>,
 }
 
 /// The wrench set: nominal wrench, ellipsoid (a 6×6 matrix or a radius), application point.
@@ -71,6 +76,47 @@ pub struct RawRobot {
     pub tension: Option<RawBounds>,
     #[serde(default)]
     pub diameter: Option<f64>,
+    #[serde(default)]
+    pub links: Option<Vec<RawLink>>,
+}
+
+/// One link of a multi-link robot.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawLink {
+    pub name: String,
+    /// The parent link's name; absent for a link on the base.
+    #[serde(default)]
+    pub parent: Option<String>,
+    /// The joint's position in the parent's frame (default the origin).
+    #[serde(default)]
+    pub location: Option<Fixed<f64, 3>>,
+    pub joint: RawJoint,
+    #[serde(default)]
+    pub body: Option<RawBody>,
+}
+
+/// A joint: its type, axis (revolute and prismatic), coordinate names and ranges.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawJoint {
+    #[serde(rename = "type")]
+    pub kind: String,
+    #[serde(default)]
+    pub axis: Option<Fixed<f64, 3>>,
+    pub coordinates: Vec<String>,
+    #[serde(default)]
+    pub range: Option<Vec<Fixed<f64, 2>>>,
+}
+
+/// A link's collision body: a segment in the link's frame and a radius.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawBody {
+    pub from: Fixed<f64, 3>,
+    pub to: Fixed<f64, 3>,
+    #[serde(default)]
+    pub radius: Option<f64>,
 }
 
 /// Robot-level bounds: each end a number for all cables or an array with one number per cable.
@@ -88,6 +134,9 @@ pub struct RawBounds {
 pub struct RawCable {
     pub base: Fixed<f64, 3>,
     pub platform: Fixed<f64, 3>,
+    /// The link the cable pulls (multi-link robots), by name.
+    #[serde(default)]
+    pub link: Option<String>,
     #[serde(default)]
     pub length: Option<RawCableBounds>,
     #[serde(default)]
@@ -111,6 +160,8 @@ pub struct RawClearance {
     pub cable_cable: Option<f64>,
     #[serde(default)]
     pub cable_obstacle: Option<f64>,
+    #[serde(default)]
+    pub cable_link: Option<f64>,
 }
 
 /// An obstacle with the union of all types' fields; `validate` checks that exactly the fields of
@@ -455,11 +506,11 @@ pub fn parse(text: &str) -> Result<RawScenario> {
     let head: FormatOnly = read(text)?;
     match head.format {
         None => {
-            return Err(Error::new("format", format!("missing; this version reads \"{FORMAT}\" and \"{FORMAT_2}\"")));
+            return Err(Error::new("format", format!("missing; this version reads \"{FORMAT}\", \"{FORMAT_2}\" and \"{FORMAT_3}\"")));
         }
-        Some(serde_json::Value::String(s)) if s == FORMAT || s == FORMAT_2 => {}
+        Some(serde_json::Value::String(s)) if s == FORMAT || s == FORMAT_2 || s == FORMAT_3 => {}
         Some(other) => {
-            return Err(Error::new("format", format!("unsupported format {other}; this version reads \"{FORMAT}\" and \"{FORMAT_2}\"")));
+            return Err(Error::new("format", format!("unsupported format {other}; this version reads \"{FORMAT}\", \"{FORMAT_2}\" and \"{FORMAT_3}\"")));
         }
     }
     read(text)

@@ -2,6 +2,8 @@
 //! parsing with serde, and validation into the model with errors that name the field.
 
 pub mod caspr;
+mod caspr_links;
+pub mod chain;
 pub mod json;
 pub mod link;
 pub mod validate;
@@ -10,7 +12,7 @@ use crate::error::{Error, Result};
 use crate::model::{Clearance, Coord, Pose, Robot, Trajectory, Wrench};
 use crate::shape::Obstacle;
 
-pub use json::FORMAT;
+pub use json::{FORMAT, FORMAT_3};
 
 /// A planning query between two named poses, optionally on a slice with some coordinates fixed.
 #[derive(Debug, Clone, PartialEq)]
@@ -48,6 +50,9 @@ pub struct Scenario {
     pub queries: Vec<Query>,
     /// The wrench set the robot must withstand, if any.
     pub wrench: Option<Wrench>,
+    /// Named joint configurations of a multi-link robot (its coordinates in
+    /// [`crate::model::Chain::coords`] order), in file order; empty for a platform robot.
+    pub configs: Vec<(String, Vec<f64>)>,
     /// Things the user should know that did not stop parsing (e.g. a quaternion normalised).
     pub warnings: Vec<String>,
 }
@@ -71,6 +76,50 @@ impl Scenario {
             };
             Error::new("pose", format!("no pose named \"{name}\"; {known}"))
         })
+    }
+
+    /// The configuration called `name`: a multi-link robot's joint coordinates, or a platform
+    /// pose's coordinates (x, y, z, φ, θ, σ).
+    pub fn config(&self, name: &str) -> Result<Vec<f64>> {
+        if self.robot.chain.is_none() {
+            return Ok(self.pose(name)?.coords().to_vec());
+        }
+        self.configs.iter().find(|(n, _)| n == name).map(|(_, q)| q.clone()).ok_or_else(|| {
+            let names: Vec<&str> = self.configs.iter().map(|(n, _)| n.as_str()).collect();
+            let known = if names.is_empty() { "the scenario has no configurations".to_owned() } else { format!("known configurations: {}", names.join(", ")) };
+            Error::new("pose", format!("no configuration named \"{name}\"; {known}"))
+        })
+    }
+
+    /// The coordinate called `name`: a joint coordinate's name (or `q1`, `q2`, …) for a
+    /// multi-link robot, one of x, y, z, phi, theta, sigma for a platform robot. Errors name
+    /// `field`.
+    pub fn coord(&self, field: &str, name: &str) -> Result<Coord> {
+        let Some(chain) = &self.robot.chain else {
+            return Coord::parse(name).ok_or_else(|| Error::new(field, format!("{name:?} is not one of x, y, z, phi, theta, sigma")));
+        };
+        let by_q = name.strip_prefix('q').and_then(|k| k.parse::<usize>().ok()).filter(|k| (1..=chain.dof()).contains(k)).map(|k| k - 1);
+        let index = chain.coord_index(name).or(by_q).ok_or_else(|| {
+            let names: Vec<&str> = chain.coords().map(|(_, _, c)| c.name.as_str()).collect();
+            Error::new(field, format!("{name:?} is not a coordinate of this robot; its coordinates: {}", names.join(", ")))
+        })?;
+        Ok(Coord::Joint { index: index as u8, angle: chain.is_angle(index) })
+    }
+
+    /// Coordinate number `k` of a configuration (0-based; x, y, z, φ, θ, σ for a platform robot).
+    pub fn coord_at(&self, k: usize) -> Coord {
+        match &self.robot.chain {
+            Some(chain) => Coord::Joint { index: k as u8, angle: chain.is_angle(k) },
+            None => Coord::ALL[k.min(5)],
+        }
+    }
+
+    /// The name the scenario gives coordinate `c`.
+    pub fn coord_name(&self, c: Coord) -> String {
+        match (&self.robot.chain, c) {
+            (Some(chain), Coord::Joint { index, .. }) => chain.coords().nth(index as usize).map_or_else(|| c.name().to_string(), |(_, _, jc)| jc.name.clone()),
+            _ => c.name().to_string(),
+        }
     }
 
     /// The trajectory called `name`, or the first one for `None`.

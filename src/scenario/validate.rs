@@ -37,8 +37,9 @@ pub const UNIT_TOLERANCE: f64 = 1e-9;
 /// Validates a raw scenario; warnings go into the result.
 pub fn scenario(raw: RawScenario) -> Result<Scenario> {
     let mut warnings = Vec::new();
-    let robot = robot(&raw.robot)?;
+    let mut robot = robot(&raw.robot)?;
     let clearance = clearance(&raw)?;
+    let configs = multi_link(&raw, &mut robot, &clearance, &mut warnings)?;
     let obstacles = obstacles(&raw.obstacles)?;
     let poses = poses(&raw.poses.0, &mut warnings)?;
     check_cable_lengths(&robot, &poses)?;
@@ -62,7 +63,58 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
             robot.cables.len()
         ));
     }
-    Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses, trajectories, queries, wrench, warnings })
+    Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses, trajectories, queries, wrench, configs, warnings })
+}
+
+/// The multi-link sections (format 3): the chain and each cable's link go into `robot`; returns
+/// the named configurations. A platform robot must not use them, and a multi-link robot is
+/// configured by configurations only (no poses, trajectories, queries or wrench set yet).
+fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clearance, warnings: &mut Vec<String>) -> Result<Vec<(String, Vec<f64>)>> {
+    let Some(links) = &raw.robot.links else {
+        if let Some(i) = raw.robot.cables.iter().position(|c| c.link.is_some()) {
+            return Err(Error::new(format!("robot.cables[{i}].link"), "only the cables of a multi-link robot (robot.links) name a link"));
+        }
+        if !raw.configurations.0.is_empty() {
+            return Err(Error::new("configurations", "only multi-link robots (robot.links) have configurations; a platform robot has poses"));
+        }
+        return Ok(Vec::new());
+    };
+    if raw.format != super::json::FORMAT_3 {
+        return Err(Error::new("robot.links", format!("multi-link robots need \"format\": \"{}\"", super::json::FORMAT_3)));
+    }
+    let chain = super::chain::chain(links)?;
+    for (cable, link) in robot.cables.iter_mut().zip(super::chain::cable_links(&raw.robot.cables, &chain)?) {
+        cable.link = link;
+    }
+    for (field, given) in [
+        ("poses", !raw.poses.0.is_empty()),
+        ("trajectories", !raw.trajectories.is_empty()),
+        ("queries", !raw.queries.is_empty()),
+        ("wrench", raw.wrench.is_some()),
+    ] {
+        if given {
+            return Err(Error::new(
+                field,
+                "not supported for multi-link robots yet: they are configured by named joint configurations \
+                 (`configurations`), and their wrench condition is joint-space wrench closure, always checked",
+            ));
+        }
+    }
+    for (i, cable) in robot.cables.iter().enumerate() {
+        let link = &chain.links[cable.link];
+        let zone = link.radius + clearance.cable_link;
+        if zone > 0.0 && crate::conditions::attached_inside(&cable.platform, &link.body, zone) {
+            warnings.push(format!(
+                "robot.cables[{i}]: cable {} is attached within {zone} (radius + clearance) of its own link {}'s body; \
+                 its clearance to that link is not checked",
+                i + 1,
+                link.name
+            ));
+        }
+    }
+    robot.chain = Some(chain);
+    let chain = robot.chain.as_ref().ok_or_else(|| Error::new("robot.links", "internal: chain missing"))?;
+    super::chain::configurations(&raw.configurations, robot, chain, warnings)
 }
 
 /// Most cables a robot with a wrench section may have: the m > 6 conditions test all C(m, 5)
@@ -126,8 +178,10 @@ fn unit_quaternion(field: &str, q: [f64; 4], warnings: &mut Vec<String>) -> Resu
 
 fn robot(raw: &RawRobot) -> Result<Robot> {
     let n = raw.cables.len();
-    if n < MIN_CABLES {
-        return Err(Error::new("robot.cables", format!("a 6-DoF robot needs at least {MIN_CABLES} cables, got {n}")));
+    let least = if raw.links.is_some() { 1 } else { MIN_CABLES };
+    if n < least {
+        let what = if raw.links.is_some() { "a multi-link robot" } else { "a 6-DoF robot" };
+        return Err(Error::new("robot.cables", format!("{what} needs at least {least} cable(s), got {n}")));
     }
     if n > MAX_CABLES {
         return Err(Error::new("robot.cables", format!("at most {MAX_CABLES} cables are supported, got {n}")));
@@ -137,7 +191,7 @@ fn robot(raw: &RawRobot) -> Result<Robot> {
         let base = vec3(&format!("robot.cables[{i}].base"), &c.base)?;
         let platform = vec3(&format!("robot.cables[{i}].platform"), &c.platform)?;
         for (j, (b, p)) in anchors.iter().enumerate() {
-            if *b == base && *p == platform {
+            if *b == base && *p == platform && raw.cables[j].link == c.link {
                 return Err(Error::new(
                     format!("robot.cables[{i}]"),
                     format!(
@@ -161,9 +215,9 @@ fn robot(raw: &RawRobot) -> Result<Robot> {
         .into_iter()
         .zip(length)
         .zip(tension)
-        .map(|(((base, platform), length), tension)| Cable { base, platform, length, tension })
+        .map(|(((base, platform), length), tension)| Cable { base, platform, link: 0, length, tension })
         .collect();
-    Ok(Robot { cables, diameter })
+    Ok(Robot { cables, diameter, chain: None })
 }
 
 /// One value of a bound and the JSON path it came from (empty for the default).
@@ -233,6 +287,7 @@ fn clearance(raw: &RawScenario) -> Result<Clearance> {
         Some(c) => (c.cable_cable, c.cable_obstacle),
         None => (None, None),
     };
+    let cl = raw.clearance.as_ref().and_then(|c| c.cable_link);
     Ok(Clearance {
         cable_cable: match cc {
             Some(x) => non_negative("clearance.cable_cable", x)?,
@@ -240,6 +295,10 @@ fn clearance(raw: &RawScenario) -> Result<Clearance> {
         },
         cable_obstacle: match co {
             Some(x) => non_negative("clearance.cable_obstacle", x)?,
+            None => 0.0,
+        },
+        cable_link: match cl {
+            Some(x) => non_negative("clearance.cable_link", x)?,
             None => 0.0,
         },
     })

@@ -11,7 +11,7 @@ pub use sections::{push_merged, sections, Labelled, Piece, Sections};
 pub use slice::{slice, SliceMap};
 
 use std::sync::atomic::{AtomicUsize, Ordering};
-use crate::conditions::{cables_at, for_scenario, Condition, PoseCables, Sweep};
+use crate::conditions::{cables_at, cables_at_config, for_scenario, Condition, PoseCables, Sweep};
 use crate::model::{Bounds, Wrench};
 use crate::query::wrench::{closure_holds, static_margin};
 use crate::error::{Error, Result};
@@ -26,17 +26,20 @@ pub const BOUNDARY_TOL: f64 = 1e-10;
 
 /// Violation pieces along a list of motions, mapped to user units and concatenated: the overall
 /// union and each condition's own.
-fn violation_pieces(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[Motion], tol_user: f64) -> (Vec<Piece>, Vec<Labelled>) {
+fn violation_pieces(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[Vec<Motion>], tol_user: f64) -> (Vec<Piece>, Vec<Labelled>) {
     pieces_settling(conditions, s, motions, tol_user, true)
 }
 
 /// [`violation_pieces`], with `settle` saying whether costly conditions get the settled intervals.
-fn pieces_settling(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[Motion], tol_user: f64, settle: bool) -> (Vec<Piece>, Vec<Labelled>) {
+/// Each entry of `motions` is one piece: the motion of every link (the platform's alone for a
+/// platform robot).
+fn pieces_settling(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[Vec<Motion>], tol_user: f64, settle: bool) -> (Vec<Piece>, Vec<Labelled>) {
     let mut per: Vec<Labelled> = conditions.iter().map(|c| Labelled { label: c.label(), pieces: vec![] }).collect();
     let mut overall: Vec<Piece> = Vec::new();
-    for motion in motions {
+    for links in motions {
+        let motion = &links[0];
         let tol = tol_user / motion.param.max_slope().max(1e-300);
-        let mut sweep = Sweep::new(&s.robot, motion, tol);
+        let mut sweep = Sweep::of_links(&s.robot, links, tol);
         let mut union = Partition::constant(Truth::False);
         // the cheap conditions first (a stable sort keeps file order within each group): where
         // they already violate, the costly ones may stay undecided
@@ -79,7 +82,7 @@ fn append_mapped(out: &mut Vec<Piece>, p: &Partition, param: &Param) {
 /// to [`BOUNDARY_TOL`] in t with its active constraint, or reported in `uncertain`.
 pub fn verify_trajectory(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport> {
     let conditions = for_scenario(s);
-    let motions = Motion::trajectory(traj);
+    let motions = one_link(Motion::trajectory(traj));
     let (overall, per) = violation_pieces(&conditions, s, &motions, BOUNDARY_TOL);
     let sec = sections(&overall, &per, BOUNDARY_TOL);
     let mut warnings = s.warnings.clone();
@@ -132,14 +135,20 @@ fn trajectory_report(traj: &Trajectory, sec: Sections, method: &str, step: Optio
     }
 }
 
-/// Exact feasible intervals of one pose coordinate over [lo, hi], the others held at `pose`'s.
+/// The pieces of a platform motion, each as the list of link motions the verifier takes.
+fn one_link(motions: Vec<Motion>) -> Vec<Vec<Motion>> {
+    motions.into_iter().map(|m| vec![m]).collect()
+}
+
+/// Exact feasible intervals of one coordinate over [lo, hi], the others held at the named pose's
+/// (or a multi-link robot's configuration's).
 pub fn ray(s: &Scenario, pose_name: &str, coord: Coord, lo: f64, hi: f64) -> Result<RayReport> {
-    let pose = s.pose(pose_name)?;
+    let q = s.config(pose_name)?;
     check_ray_range(coord, lo, hi)?;
     let conditions = for_scenario(s);
-    let sec = ray_sections(s, &conditions, pose.coords(), coord, lo, hi);
+    let sec = ray_sections(s, &conditions, &q, coord, lo, hi);
     Ok(RayReport {
-        vary: coord.name().to_string(),
+        vary: s.coord_name(coord),
         pose: pose_name.to_string(),
         range: [lo, hi],
         feasible: sec.feasible,
@@ -161,12 +170,16 @@ pub fn check_ray_range(coord: Coord, lo: f64, hi: f64) -> Result<()> {
     Ok(())
 }
 
-/// The sections of the ray through the coordinates `c` (x, y, z, φ, θ, σ, the angles as given)
-/// along `coord` over [lo, hi] (checked with [`check_ray_range`]) under `conditions` (the
-/// scenario's, [`for_scenario`]), exactly; boundaries certified to [`BOUNDARY_TOL`] relative to
-/// the range. What [`ray`] reports, and what the ray lattice is made of.
-pub fn ray_sections(s: &Scenario, conditions: &[Box<dyn Condition>], c: [f64; 6], coord: Coord, lo: f64, hi: f64) -> Sections {
-    let motions = Motion::ray_through(c, coord, lo, hi);
+/// The sections of the ray through the configuration `c` (x, y, z, φ, θ, σ with the angles as
+/// given, or a multi-link robot's joint coordinates) along `coord` over [lo, hi] (checked with
+/// [`check_ray_range`]) under `conditions` (the scenario's, [`for_scenario`]), exactly; boundaries
+/// certified to [`BOUNDARY_TOL`] relative to the range. What [`ray`] reports, and what the ray
+/// lattice is made of.
+pub fn ray_sections(s: &Scenario, conditions: &[Box<dyn Condition>], c: &[f64], coord: Coord, lo: f64, hi: f64) -> Sections {
+    let motions = match &s.robot.chain {
+        Some(chain) => chain.ray(c, coord.index(), lo, hi),
+        None => one_link(Motion::ray_through([c[0], c[1], c[2], c[3], c[4], c[5]], coord, lo, hi)),
+    };
     let tol = BOUNDARY_TOL * (hi - lo).abs().max(1.0);
     let (overall, per) = violation_pieces(conditions, s, &motions, tol);
     sections(&overall, &per, tol)
@@ -259,7 +272,18 @@ pub fn tension_envelope(s: &Scenario, traj: &Trajectory, samples: usize) -> Resu
 
 /// Every condition at one pose, with lengths and distances.
 pub fn check_pose(s: &Scenario, name: &str, pose: &Pose) -> PoseReport {
-    let cables = cables_at(&s.robot, pose);
+    check_cables(s, name, cables_at(&s.robot, pose), wrench_at(s, pose))
+}
+
+/// Every condition at configuration `q` (a multi-link robot's joint coordinates, or a platform
+/// pose's six coordinates), with lengths and distances.
+pub fn check_config(s: &Scenario, name: &str, q: &[f64]) -> PoseReport {
+    let cables = cables_at_config(&s.robot, q);
+    let wrench = if s.robot.chain.is_none() { wrench_at(s, &cables.pose) } else { None };
+    check_cables(s, name, cables, wrench)
+}
+
+fn check_cables(s: &Scenario, name: &str, cables: PoseCables, wrench: Option<WrenchReport>) -> PoseReport {
     let checks: Vec<CheckEntry> = for_scenario(s)
         .iter()
         .map(|c| {
@@ -274,7 +298,7 @@ pub fn check_pose(s: &Scenario, name: &str, pose: &Pose) -> PoseReport {
         lengths: cables.iter().map(|(a, x)| (x - a).norm()).collect(),
         checks,
         violated,
-        wrench: wrench_at(s, pose),
+        wrench,
     }
 }
 
@@ -292,7 +316,7 @@ mod tests {
             let conditions = for_scenario(&s);
             assert!(conditions.iter().any(|c| c.costly()));
             for traj in &s.trajectories {
-                let motions = Motion::trajectory(traj);
+                let motions = one_link(Motion::trajectory(traj));
                 let [with, without] = [true, false].map(|settle| {
                     let (overall, per) = pieces_settling(&conditions, &s, &motions, BOUNDARY_TOL, settle);
                     sections(&overall, &per, BOUNDARY_TOL)

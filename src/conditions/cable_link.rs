@@ -1,0 +1,69 @@
+//! Cable–link clearance of a multi-link robot (thesis §3.4): a link's collision body is a segment
+//! with a radius, moving with the link; the cable's centreline must stay at least the clearance
+//! away from the body's surface, i.e. farther than radius + clearance from its segment. Along a
+//! motion both segments move, so this is the cable–cable primitive with a moving offset.
+
+use super::algebra::{HVec, H};
+use super::primitives::{point_segment, segment_segment};
+use super::{on_undecided, Condition, Kind, PoseCables, PoseCheck, Sweep};
+use crate::poly::{Bern, Partition};
+use crate::query::{point_segment_dist2, segment_segment_dist};
+use nalgebra::Vector3;
+
+/// Clearance between one cable and one link's body.
+#[derive(Debug, Clone)]
+pub struct CableLink {
+    /// The cable (0-based).
+    pub cable: usize,
+    /// The link (index into the chain).
+    pub link: usize,
+    /// The link's name, for reports.
+    pub name: String,
+    /// The body segment in the link's frame (a point when both ends are equal).
+    pub body: [Vector3<f64>; 2],
+    /// The body's radius.
+    pub radius: f64,
+    /// Minimum allowed distance from the cable's centreline to the body's surface.
+    pub clearance: f64,
+}
+
+impl Condition for CableLink {
+    fn kind(&self) -> Kind {
+        Kind::Interference
+    }
+
+    fn label(&self) -> String {
+        format!("cable {} - link {}", self.cable + 1, self.name)
+    }
+
+    fn violation(&self, sweep: &mut Sweep) -> Partition {
+        let m = &sweep.links[self.link];
+        let base = sweep.cables[self.cable].base;
+        let [b0, b1] = self.body;
+        let d = b1 - b0;
+        // r̂ = B̂0 − a·w = P̂ + M̂ b0 − a·w and d̂ = M̂ (b1 − b0), both over w
+        let lin = |i: usize, v: &Vector3<f64>, acc: Bern| (0..3).fold(acc, |acc, j| acc.add(&m.rotation[i][j].scale(v[j])));
+        let r: [Bern; 3] = [0, 1, 2].map(|i| lin(i, &b0, m.position[i].sub(&m.weight.scale(base[i]))));
+        let dir: [Bern; 3] = [0, 1, 2].map(|i| lin(i, &d, Bern::constant(0.0)));
+        let point = d == Vector3::zeros();
+        let c = self.radius + self.clearance;
+        on_undecided(sweep, &[(0.0, 1.0)], &[self.cable], |alg, _, s, tol, (a, b)| {
+            let local = |v: &[Bern; 3]| -> HVec { v.each_ref().map(|p| H { p: if (a, b) == (0.0, 1.0) { p.clone() } else { p.restrict(a, b) }, k: 1 }) };
+            let r = local(&r);
+            if point {
+                point_segment(alg, &r, s[0], c, None, tol)
+            } else {
+                segment_segment(alg, &r, s[0], &local(&dir), c, tol)
+            }
+        })
+    }
+
+    fn check(&self, cables: &PoseCables) -> PoseCheck {
+        let (a, x) = cables[self.cable];
+        let (p, rot) = cables.links[self.link];
+        let (b0, b1) = (p + rot * self.body[0], p + rot * self.body[1]);
+        let centre = if b0 == b1 { point_segment_dist2(&b0, &a, &(x - a), None).sqrt() } else { segment_segment_dist(&a, &(x - a), &b0, &(b1 - b0)) };
+        let d = centre - self.radius;
+        PoseCheck { violated: d < self.clearance, distance: Some(d) }
+    }
+}

@@ -1,0 +1,285 @@
+//! Import of CASPR multi-link robots (arms, trees: `BMArm`, `BMArm_X4_2`) into a
+//! `cablenav-scenario/3` scenario. Conventions: `../shared/notes/caspr-mcdr-conventions.md`.
+//!
+//! What is read:
+//!
+//! * bodies: every `<link_rigid num="k">` in order, with its `<parent>` (`num`, 0 = base, and the
+//!   joint's `location` in the parent's frame) and joint: `S_EULER_XYZ` (spherical, coordinates
+//!   alpha, beta, gamma), `R_X`/`R_Y`/`R_Z` (revolute about that axis of the joint frame,
+//!   coordinate theta), `P_X`/`P_Y`/`P_Z` (prismatic, coordinate d); a name already taken gets the
+//!   link number appended (`theta3`). `q_min`/`q_max` become the coordinates' ranges, `q_initial`
+//!   the configuration `initial`. The link's body is the segment from its joint to its
+//!   `end_location`, radius 0 (CASPR has no collision geometry).
+//! * cables: as for a platform, each straight from the base (link 0) to one link k, the
+//!   attachment in link k's frame (`attachment_reference="com"` adds k's `com_location`).
+//!
+//! Not supported, with a message: other joint types (a spatial joint inside a chain), cables
+//! routed over several links (more than two attachments), cables between two links.
+
+use roxmltree::Node;
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+use super::caspr::{cable_set, child, child_numbers, children, combine, document, line, parse_xml, properties, Import, OneOrEach};
+use super::json::FORMAT_3;
+use crate::error::{Error, Result};
+
+const BODIES: &str = "bodies";
+const CABLES: &str = "cables";
+
+/// Whether a bodies file describes a multi-link robot: more than one link, or one whose joint is
+/// not the free `SPATIAL_EULER_XYZ` of a platform.
+pub fn is_multi_link(bodies_xml: &str) -> bool {
+    let Ok(doc) = parse_xml(bodies_xml) else { return false };
+    let Some(links) = child(doc.root_element(), "links") else { return false };
+    let all: Vec<Node> = links.children().filter(|c| c.is_element()).collect();
+    match all.as_slice() {
+        [one] => child(*one, "joint").and_then(|j| j.attribute("type")).is_some_and(|t| t != "SPATIAL_EULER_XYZ"),
+        more => more.len() > 1,
+    }
+}
+
+/// One link as read.
+struct LinkIn {
+    name: String,
+    parent: usize,
+    location: [f64; 3],
+    kind: &'static str,
+    axis: Option<[f64; 3]>,
+    coordinates: Vec<String>,
+    range: Vec<[f64; 2]>,
+    initial: Vec<f64>,
+    end: [f64; 3],
+    com: [f64; 3],
+}
+
+fn links(xml: &str) -> Result<Vec<LinkIn>> {
+    let doc = document(BODIES, xml, "bodies_system")?;
+    let root = doc.root_element();
+    let links = child(root, "links").ok_or_else(|| Error::new(BODIES, "no <links> element"))?;
+    let mut out: Vec<LinkIn> = Vec::new();
+    let mut taken: Vec<String> = Vec::new();
+    for (k, link) in links.children().filter(|c| c.is_element()).enumerate() {
+        let at = line(link);
+        if link.tag_name().name() != "link_rigid" {
+            return Err(Error::new(BODIES, format!("{at}: <{}> is not supported, only <link_rigid>", link.tag_name().name())));
+        }
+        let num = link.attribute("num").and_then(|n| n.parse::<usize>().ok()).unwrap_or(k + 1);
+        if num != k + 1 {
+            return Err(Error::new(BODIES, format!("{at}: links must be numbered 1, 2, … in order; found num=\"{num}\" at position {}", k + 1)));
+        }
+        let name = link.attribute("name").map_or_else(|| format!("link {num}"), str::to_owned);
+        let joint = child(link, "joint").ok_or_else(|| Error::new(BODIES, format!("{at}: the link has no <joint>")))?;
+        let jt = joint.attribute("type").unwrap_or_default();
+        let (kind, axis, base_names): (&str, Option<[f64; 3]>, &[&str]) = match jt {
+            "S_EULER_XYZ" => ("spherical", None, &["alpha", "beta", "gamma"]),
+            "R_X" => ("revolute", Some([1.0, 0.0, 0.0]), &["theta"]),
+            "R_Y" => ("revolute", Some([0.0, 1.0, 0.0]), &["theta"]),
+            "R_Z" => ("revolute", Some([0.0, 0.0, 1.0]), &["theta"]),
+            "P_X" => ("prismatic", Some([1.0, 0.0, 0.0]), &["d"]),
+            "P_Y" => ("prismatic", Some([0.0, 1.0, 0.0]), &["d"]),
+            "P_Z" => ("prismatic", Some([0.0, 0.0, 1.0]), &["d"]),
+            other => {
+                return Err(Error::new(
+                    BODIES,
+                    format!("{}: joint type {other:?} of link {num} is not supported in a multi-link robot (S_EULER_XYZ, R_X/R_Y/R_Z, P_X/P_Y/P_Z are)", line(joint)),
+                ))
+            }
+        };
+        let n = base_names.len();
+        let read = |attr: &str, default: f64| -> Result<Vec<f64>> {
+            match joint.attribute(attr) {
+                None => Ok(vec![default; n]),
+                Some(text) => {
+                    let parts: Vec<&str> = text.split_whitespace().collect();
+                    if parts.len() != n {
+                        return Err(Error::new(BODIES, format!("{}: {attr} of a {jt} joint needs {n} number(s), got {:?}", line(joint), text.trim())));
+                    }
+                    parts.iter().map(|p| p.parse::<f64>().ok().filter(|x| x.is_finite()).ok_or_else(|| Error::new(BODIES, format!("{}: {attr}: {p:?} is not a finite number", line(joint))))).collect()
+                }
+            }
+        };
+        let (lo, hi, initial) = (read("q_min", -std::f64::consts::PI)?, read("q_max", std::f64::consts::PI)?, read("q_initial", 0.0)?);
+        let coordinates: Vec<String> = base_names
+            .iter()
+            .map(|b| if taken.iter().any(|t| t == b) { format!("{b}{num}") } else { (*b).to_string() })
+            .collect();
+        taken.extend(coordinates.iter().cloned());
+        let (location, parent) = match child(link, "parent") {
+            None => ([0.0; 3], 0),
+            Some(p) => (child_numbers::<3>(BODIES, p, "location")?.unwrap_or([0.0; 3]), child_numbers::<1>(BODIES, p, "num")?.map_or(0.0, |[x]| x) as usize),
+        };
+        if parent >= num {
+            return Err(Error::new(BODIES, format!("{at}: link {num}'s parent is link {parent}; a parent must come before its child (0 is the base)")));
+        }
+        let (end, com) = match child(link, "physical") {
+            Some(ph) => (child_numbers::<3>(BODIES, ph, "end_location")?.unwrap_or([0.0; 3]), child_numbers::<3>(BODIES, ph, "com_location")?.unwrap_or([0.0; 3])),
+            None => ([0.0; 3], [0.0; 3]),
+        };
+        out.push(LinkIn { name, parent, location, kind, axis, coordinates, range: lo.into_iter().zip(hi).map(|(a, b)| [a, b]).collect(), initial, end, com });
+    }
+    Ok(out)
+}
+
+/// One cable as read: base anchor, link number, anchor in that link's frame, properties.
+struct CableIn {
+    base: [f64; 3],
+    link: usize,
+    anchor: [f64; 3],
+    props: [Option<f64>; 3],
+}
+
+fn cables(xml: &str, links: &[LinkIn]) -> Result<Vec<CableIn>> {
+    let doc = document(CABLES, xml, "cables")?;
+    let set = cable_set(doc.root_element())?;
+    let mut out = Vec::new();
+    for cable in set.children().filter(|c| c.is_element() && c.tag_name().name().starts_with("cable_")) {
+        let name = cable.attribute("name").map_or_else(|| format!("#{}", out.len() + 1), str::to_owned);
+        let at = format!("cable {name:?} ({})", line(cable));
+        let attachments: Vec<Node> = child(cable, "attachments").map(|a| children(a, "attachment").collect()).unwrap_or_default();
+        if attachments.len() != 2 {
+            return Err(Error::new(CABLES, format!("{at}: {} attachments; only straight cables from the base to one link (2 attachments) are supported, not routed ones", attachments.len())));
+        }
+        let mut ends = Vec::with_capacity(2);
+        for a in &attachments {
+            let [link] = child_numbers::<1>(CABLES, *a, "link")?.ok_or_else(|| Error::new(CABLES, format!("{at}: an attachment has no <link>")))?;
+            let loc = child_numbers::<3>(CABLES, *a, "location")?.ok_or_else(|| Error::new(CABLES, format!("{at}: an attachment has no <location>")))?;
+            ends.push((link as usize, loc));
+        }
+        ends.sort_by_key(|e| e.0);
+        let [(0, base), (k, local)] = ends[..] else {
+            return Err(Error::new(CABLES, format!("{at}: needs one attachment on the base (link 0) and one on a link; cables between two links are not supported")));
+        };
+        let Some(link) = links.get(k.wrapping_sub(1)) else {
+            return Err(Error::new(CABLES, format!("{at}: attachment on link {k}; the bodies file has links 1 to {}", links.len())));
+        };
+        let anchor = match cable.attribute("attachment_reference").unwrap_or("joint") {
+            "joint" => local,
+            "com" => [0, 1, 2].map(|i| local[i] + link.com[i]),
+            other => return Err(Error::new(CABLES, format!("{at}: attachment_reference {other:?} is not \"joint\" or \"com\""))),
+        };
+        out.push(CableIn { base, link: k, anchor, props: properties(cable)? });
+    }
+    if out.is_empty() {
+        return Err(Error::new(CABLES, "the cable set has no cables"));
+    }
+    Ok(out)
+}
+
+#[derive(Serialize)]
+struct Out<'a> {
+    format: &'static str,
+    name: &'a str,
+    robot: OutRobot,
+    configurations: BTreeMap<&'static str, BTreeMap<String, f64>>,
+}
+
+#[derive(Serialize)]
+struct OutRobot {
+    links: Vec<OutLink>,
+    cables: Vec<OutCable>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tension: Option<OutBounds>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    diameter: Option<f64>,
+}
+
+#[derive(Serialize)]
+struct OutBounds {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    min: Option<OneOrEach>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    max: Option<OneOrEach>,
+}
+
+#[derive(Serialize)]
+struct OutLink {
+    name: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    parent: Option<String>,
+    location: [f64; 3],
+    joint: OutJoint,
+    body: OutBody,
+}
+
+#[derive(Serialize)]
+struct OutJoint {
+    #[serde(rename = "type")]
+    kind: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    axis: Option<[f64; 3]>,
+    coordinates: Vec<String>,
+    range: Vec<[f64; 2]>,
+}
+
+#[derive(Serialize)]
+struct OutBody {
+    from: [f64; 3],
+    to: [f64; 3],
+}
+
+#[derive(Serialize)]
+struct OutCable {
+    base: [f64; 3],
+    link: String,
+    platform: [f64; 3],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tension: Option<OutCableBounds>,
+}
+
+#[derive(Serialize)]
+struct OutCableBounds {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    min: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    max: Option<f64>,
+}
+
+/// Converts a CASPR multi-link bodies file and cables file into scenario JSON called `name`.
+pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import> {
+    let links = links(bodies_xml)?;
+    let cables = cables(cables_xml, &links)?;
+    let mut notes = vec!["multi-link robot: clearances are left at 0 (the thesis' case study uses ε = 0.02, clearance.cable_cable and clearance.cable_link); link bodies are segments of radius 0".to_string()];
+    let diameters: Vec<f64> = cables.iter().filter_map(|c| c.props[2]).collect();
+    let diameter = diameters.iter().copied().reduce(f64::max);
+    if let Some(d) = diameter {
+        if diameters.iter().any(|x| *x != d) {
+            notes.push(format!("cable diameters differ; robot.diameter is the largest, {d}"));
+        }
+    }
+    let (min, max) = (combine(cables.iter().map(|c| c.props[0])), combine(cables.iter().map(|c| c.props[1])));
+    let per_cable = min.is_none() && cables.iter().any(|c| c.props[0].is_some()) || max.is_none() && cables.iter().any(|c| c.props[1].is_some());
+    let tension = (!per_cable && (min.is_some() || max.is_some())).then_some(OutBounds { min, max });
+    let link_name = |num: usize| links.get(num.wrapping_sub(1)).map(|l| l.name.clone());
+    let initial = links.iter().flat_map(|l| l.coordinates.iter().cloned().zip(l.initial.iter().copied())).collect();
+    let out = Out {
+        format: FORMAT_3,
+        name,
+        robot: OutRobot {
+            links: links
+                .iter()
+                .map(|l| OutLink {
+                    name: l.name.clone(),
+                    parent: link_name(l.parent),
+                    location: l.location,
+                    joint: OutJoint { kind: l.kind, axis: l.axis, coordinates: l.coordinates.clone(), range: l.range.clone() },
+                    body: OutBody { from: [0.0; 3], to: l.end },
+                })
+                .collect(),
+            cables: cables
+                .iter()
+                .map(|c| OutCable {
+                    base: c.base,
+                    link: link_name(c.link).unwrap_or_default(),
+                    platform: c.anchor,
+                    tension: per_cable.then_some(OutCableBounds { min: c.props[0], max: c.props[1] }),
+                })
+                .collect(),
+            tension,
+            diameter,
+        },
+        configurations: BTreeMap::from([("initial", initial)]),
+    };
+    let json = serde_json::to_string_pretty(&out).map_err(|e| Error::new("", format!("internal: {e}")))?;
+    Ok(Import { json, notes })
+}

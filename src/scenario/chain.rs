@@ -1,0 +1,234 @@
+//! Validation of a multi-link robot's sections (format 3: `robot.links`, cables' `link`,
+//! `configurations`): the links into a [`Chain`] (parents before children), each cable's link, and
+//! the named configurations. Errors name the JSON path; a configuration outside the joint ranges
+//! is kept with a warning (a cross-section may need the limits widened, thesis Fig. 3.12).
+
+use super::json::{Fixed, Ordered, RawCable, RawLink};
+use crate::error::{finite, Error, Result};
+use crate::model::{Chain, Joint, JointCoord, Link, Robot};
+use nalgebra::Vector3;
+use std::f64::consts::PI;
+
+/// Most links of one robot.
+pub const MAX_LINKS: usize = 64;
+/// Most joint coordinates of one robot.
+pub const MAX_DOF: usize = 64;
+
+fn vec3(field: &str, v: &Fixed<f64, 3>) -> Result<Vector3<f64>> {
+    let [x, y, z] = v.0;
+    Ok(Vector3::new(finite(&format!("{field}[0]"), x)?, finite(&format!("{field}[1]"), y)?, finite(&format!("{field}[2]"), z)?))
+}
+
+/// The links of `raw` as a chain, parents before children (file order otherwise).
+pub fn chain(raw: &[RawLink]) -> Result<Chain> {
+    if raw.is_empty() {
+        return Err(Error::new("robot.links", "a multi-link robot needs at least one link"));
+    }
+    if raw.len() > MAX_LINKS {
+        return Err(Error::new("robot.links", format!("at most {MAX_LINKS} links are supported, got {}", raw.len())));
+    }
+    let names: Vec<&str> = raw.iter().map(|l| l.name.as_str()).collect();
+    for (k, name) in names.iter().enumerate() {
+        if name.is_empty() {
+            return Err(Error::new(format!("robot.links[{k}].name"), "a link name must not be empty"));
+        }
+        if names[..k].contains(name) {
+            return Err(Error::new(format!("robot.links[{k}].name"), format!("duplicate link name \"{name}\"")));
+        }
+    }
+    // parents by file index
+    let mut parent: Vec<Option<usize>> = Vec::with_capacity(raw.len());
+    for (k, l) in raw.iter().enumerate() {
+        parent.push(match &l.parent {
+            None => None,
+            Some(p) => match names.iter().position(|n| n == p) {
+                Some(i) if i == k => return Err(Error::new(format!("robot.links[{k}].parent"), format!("link \"{p}\" cannot be its own parent"))),
+                Some(i) => Some(i),
+                None => return Err(Error::new(format!("robot.links[{k}].parent"), format!("no link named \"{p}\"; known links: {}", names.join(", ")))),
+            },
+        });
+    }
+    for k in 0..raw.len() {
+        let mut path = vec![k];
+        let mut at = k;
+        while let Some(p) = parent[at] {
+            if path.contains(&p) {
+                path.push(p);
+                let cycle: Vec<&str> = path.iter().map(|&i| names[i]).collect();
+                return Err(Error::new(format!("robot.links[{k}].parent"), format!("the links form a loop ({}); a chain's parents must lead to the base", cycle.join(" → "))));
+            }
+            path.push(p);
+            at = p;
+        }
+    }
+    // parents before children: repeatedly take, in file order, the links whose parent is placed
+    let mut order: Vec<usize> = Vec::with_capacity(raw.len());
+    while order.len() < raw.len() {
+        for k in 0..raw.len() {
+            if !order.contains(&k) && parent[k].is_none_or(|p| order.contains(&p)) {
+                order.push(k);
+            }
+        }
+    }
+    let mut links = Vec::with_capacity(raw.len());
+    let mut all_names: Vec<String> = Vec::new();
+    for &k in &order {
+        let l = &raw[k];
+        let path = format!("robot.links[{k}]");
+        let location = l.location.as_ref().map(|v| vec3(&format!("{path}.location"), v)).transpose()?.unwrap_or_else(Vector3::zeros);
+        let joint = joint(&path, l)?;
+        let coords = coordinates(&path, l, &joint, &mut all_names)?;
+        let (body, radius) = match &l.body {
+            None => ([Vector3::zeros(); 2], 0.0),
+            Some(b) => {
+                let r = b.radius.unwrap_or(0.0);
+                if !r.is_finite() || r < 0.0 {
+                    return Err(Error::new(format!("{path}.body.radius"), format!("must be a finite number ≥ 0, got {r}")));
+                }
+                ([vec3(&format!("{path}.body.from"), &b.from)?, vec3(&format!("{path}.body.to"), &b.to)?], r)
+            }
+        };
+        let parent = parent[k].map(|p| order.iter().position(|&o| o == p).unwrap_or(0));
+        links.push(Link { name: l.name.clone(), parent, location, joint, coords, body, radius });
+    }
+    let chain = Chain { links };
+    if chain.dof() > MAX_DOF {
+        return Err(Error::new("robot.links", format!("at most {MAX_DOF} joint coordinates are supported, got {}", chain.dof())));
+    }
+    Ok(chain)
+}
+
+fn joint(path: &str, l: &RawLink) -> Result<Joint> {
+    let j = &l.joint;
+    let field = format!("{path}.joint");
+    let axis = |needed: bool| -> Result<Option<Vector3<f64>>> {
+        match (&j.axis, needed) {
+            (None, true) => Err(Error::new(format!("{field}.axis"), format!("a {} joint needs an axis", j.kind))),
+            (Some(_), false) => Err(Error::new(format!("{field}.axis"), format!("a {} joint has no axis", j.kind))),
+            (None, false) => Ok(None),
+            (Some(a), true) => {
+                let a = vec3(&format!("{field}.axis"), a)?;
+                let n = a.norm();
+                if !(n > 1e-12) || !n.is_finite() {
+                    return Err(Error::new(format!("{field}.axis"), "has zero length: a joint axis needs a direction"));
+                }
+                Ok(Some(a / n))
+            }
+        }
+    };
+    Ok(match j.kind.as_str() {
+        "free" => {
+            axis(false)?;
+            Joint::Free
+        }
+        "spherical" => {
+            axis(false)?;
+            Joint::Spherical
+        }
+        "revolute" => Joint::Revolute(axis(true)?.unwrap_or_else(Vector3::x)),
+        "prismatic" => Joint::Prismatic(axis(true)?.unwrap_or_else(Vector3::x)),
+        other => return Err(Error::new(format!("{field}.type"), format!("unknown joint type {other:?}; expected free, spherical, revolute or prismatic"))),
+    })
+}
+
+fn coordinates(path: &str, l: &RawLink, joint: &Joint, all: &mut Vec<String>) -> Result<Vec<JointCoord>> {
+    let j = &l.joint;
+    let field = format!("{path}.joint");
+    let n = joint.dof();
+    if j.coordinates.len() != n {
+        return Err(Error::new(format!("{field}.coordinates"), format!("a {} joint has {n} coordinate(s), got {} name(s)", j.kind, j.coordinates.len())));
+    }
+    if let Some(r) = &j.range {
+        if r.len() != n {
+            return Err(Error::new(format!("{field}.range"), format!("give one [min, max] per coordinate: {n} coordinate(s), {} range(s)", r.len())));
+        }
+    }
+    let mut out = Vec::with_capacity(n);
+    for (k, name) in j.coordinates.iter().enumerate() {
+        let at = format!("{field}.coordinates[{k}]");
+        if name.is_empty() || name.chars().any(|c| c.is_whitespace() || c == ',') {
+            return Err(Error::new(at, format!("{name:?} is not a usable coordinate name (non-empty, no spaces or commas)")));
+        }
+        if all.contains(name) {
+            return Err(Error::new(at, format!("duplicate coordinate name \"{name}\"")));
+        }
+        all.push(name.clone());
+        let range = match &j.range {
+            Some(r) => {
+                let rf = format!("{field}.range[{k}]");
+                let [lo, hi] = r[k].0;
+                let (lo, hi) = (finite(&rf, lo)?, finite(&rf, hi)?);
+                if lo > hi {
+                    return Err(Error::new(rf, format!("min {lo} is greater than max {hi}")));
+                }
+                if joint.is_angle(k) && hi - lo > 2.0 * PI + 1e-12 {
+                    return Err(Error::new(rf, format!("an angle range wider than one turn (2π) is not meaningful, got [{lo}, {hi}]")));
+                }
+                [lo, hi]
+            }
+            None if joint.is_angle(k) => [-PI, PI],
+            None => [f64::NEG_INFINITY, f64::INFINITY],
+        };
+        out.push(JointCoord { name: name.clone(), range });
+    }
+    Ok(out)
+}
+
+/// Each cable's link, by name (every cable of a multi-link robot names one).
+pub fn cable_links(cables: &[RawCable], chain: &Chain) -> Result<Vec<usize>> {
+    cables
+        .iter()
+        .enumerate()
+        .map(|(i, c)| {
+            let field = format!("robot.cables[{i}].link");
+            let Some(name) = &c.link else { return Err(Error::new(field, "a cable of a multi-link robot names the link it pulls")) };
+            chain.links.iter().position(|l| &l.name == name).ok_or_else(|| {
+                let known: Vec<&str> = chain.links.iter().map(|l| l.name.as_str()).collect();
+                Error::new(field, format!("no link named \"{name}\"; known links: {}", known.join(", ")))
+            })
+        })
+        .collect()
+}
+
+/// The named configurations: every coordinate of the robot given once, finite. One outside its
+/// joint's range gets a warning.
+pub fn configurations(raw: &Ordered<Ordered<f64>>, robot: &Robot, chain: &Chain, warnings: &mut Vec<String>) -> Result<Vec<(String, Vec<f64>)>> {
+    let names: Vec<&str> = chain.coords().map(|(_, _, c)| c.name.as_str()).collect();
+    let mut out: Vec<(String, Vec<f64>)> = Vec::with_capacity(raw.0.len());
+    for (name, values) in &raw.0 {
+        let path = format!("configurations.{name}");
+        if name.is_empty() {
+            return Err(Error::new("configurations", "a configuration name must not be empty"));
+        }
+        if out.iter().any(|(n, _)| n == name) {
+            return Err(Error::new(path, format!("duplicate configuration name \"{name}\"")));
+        }
+        let mut q = vec![f64::NAN; names.len()];
+        for (coord, v) in &values.0 {
+            let field = format!("{path}.{coord}");
+            let Some(i) = names.iter().position(|n| n == coord) else {
+                return Err(Error::new(field, format!("no coordinate named \"{coord}\"; the robot's coordinates: {}", names.join(", "))));
+            };
+            if !q[i].is_nan() {
+                return Err(Error::new(field, "given twice"));
+            }
+            q[i] = finite(&field, *v)?;
+        }
+        if let Some(i) = q.iter().position(|v| v.is_nan()) {
+            return Err(Error::new(path, format!("coordinate {} is missing (give all of {})", names[i], names.join(", "))));
+        }
+        for (i, (_, _, c)) in chain.coords().enumerate() {
+            if q[i] < c.range[0] || q[i] > c.range[1] {
+                warnings.push(format!("{path}.{}: {} is outside the joint's range [{}, {}]", c.name, q[i], c.range[0], c.range[1]));
+            }
+        }
+        let at = crate::conditions::cables_at_config(robot, &q);
+        for (i, (a, x)) in at.iter().enumerate() {
+            if (x - a).norm() <= 1e-12 * (1.0 + a.norm().max(x.norm())) {
+                return Err(Error::new(path, format!("cable {} has zero length at configuration {name}", i + 1)));
+            }
+        }
+        out.push((name.clone(), q));
+    }
+    Ok(out)
+}
