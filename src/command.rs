@@ -15,7 +15,7 @@ use crate::plan::lattice::{LatticeParams, LatticePlanReport};
 use crate::plan::{PlanParams, PlanReport, PlanStatus};
 use crate::report::{PoseReport, RayReport, Side, TensionEnvelope, VerifyReport};
 use crate::verify::slice::{default_range, slice_counted, Class, SliceMap};
-use crate::verify::{check_config, check_pose, ray, tension_envelope, verify_all_counted, verify_pointwise, verify_trajectory};
+use crate::verify::{along, check_config, check_pose, ray, tension_envelope, verify_all_counted, verify_along, verify_pointwise_along};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use crate::Scenario;
 use serde::Serialize;
@@ -61,8 +61,8 @@ pub enum Request {
     Slice {
         /// Pose the other coordinates come from.
         pose: String,
-        /// The two coordinates (columns, rows).
-        axes: [Coord; 2],
+        /// The two coordinates (columns, rows), by name.
+        axes: [String; 2],
         /// Grid side.
         res: usize,
         /// Ranges of the two axes (`None`: [-π, π] for angles; position axes need one).
@@ -131,14 +131,14 @@ pub struct Progress {
 pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Progress)) -> Result<Output> {
     Ok(match request {
         Request::Verify { trajectory, pointwise } => {
-            let traj = scenario.trajectory(trajectory.as_deref())?;
+            let path = along(scenario, trajectory.as_deref())?;
             Output::Verify(match pointwise {
-                Some(dt) => verify_pointwise(scenario, traj, *dt)?,
-                None => verify_trajectory(scenario, traj)?,
+                Some(dt) => verify_pointwise_along(scenario, path, *dt)?,
+                None => verify_along(scenario, path)?,
             })
         }
         Request::VerifyAll { pointwise } => {
-            let total = scenario.trajectories.len();
+            let total = scenario.trajectories.len() + scenario.joint_paths.len();
             Output::VerifyAll(counted("trajectories verified", total, progress, |done| verify_all_counted(scenario, *pointwise, done))?)
         }
         Request::Ray { pose, vary, range } => Output::Ray(ray(scenario, pose, scenario.coord("--vary", vary)?, range[0], range[1])?),
@@ -151,17 +151,15 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
             Output::Envelope(tension_envelope(scenario, traj, samples.unwrap_or(100))?)
         }
         Request::Slice { pose, axes, res, range } => {
-            if scenario.robot.chain.is_some() {
-                return Err(Error::new("slice", "slice maps of multi-link robots are not available yet: `lattice --axes A,B --steps N` gives the cross-section over two joint coordinates"));
-            }
+            let axes = [scenario.coord("--axes", &axes[0])?, scenario.coord("--axes", &axes[1])?];
             let range = match range {
                 Some(r) => *r,
                 None => {
-                    let pick = |c: Coord| default_range(c).ok_or_else(|| Error::new("--range", format!("is required for the position axis {}", c.name())));
+                    let pick = |c: Coord| default_range(c).ok_or_else(|| Error::new("--range", format!("is required for the position axis {}", scenario.coord_name(c))));
                     [pick(axes[0])?, pick(axes[1])?]
                 }
             };
-            Output::Slice(counted("slice rows", *res, progress, |done| slice_counted(scenario, pose, *axes, *res, range, done))?)
+            Output::Slice(counted("slice rows", *res, progress, |done| slice_counted(scenario, pose, axes, *res, range, done))?)
         }
         Request::Lattice { pose, axes, ranges, steps } => {
             let axes = axes.iter().map(|a| scenario.coord("--axes", a.trim())).collect::<Result<Vec<Coord>>>()?;

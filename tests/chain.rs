@@ -199,10 +199,62 @@ fn random_chain_rays_agree_with_dense_sampling() {
     assert!(feasible_seen > 2_000 && infeasible_seen > 2_000, "{feasible_seen} feasible, {infeasible_seen} infeasible samples");
 }
 
+#[test]
+fn random_chain_paths_agree_with_dense_sampling() {
+    let mut rng = Rng(29);
+    let (mut paths, mut judged, mut feasible_seen, mut infeasible_seen) = (0, 0, 0, 0);
+    while paths < 100 {
+        let (mut value, q) = random_chain(&mut rng);
+        let names: Vec<String> = {
+            let s = Scenario::from_json(&value.to_string()).unwrap();
+            s.robot.chain.as_ref().unwrap().coords().map(|(_, _, c)| c.name.clone()).collect()
+        };
+        // two or three configurations around q, joined by a path
+        let count = rng.int(2, 3);
+        let mut configs = serde_json::Map::new();
+        for k in 0..count {
+            let c: serde_json::Map<String, Value> = names.iter().zip(&q).map(|(n, v)| (n.clone(), json!(v + rng.range(-0.6, 0.6)))).collect();
+            configs.insert(format!("c{k}"), Value::Object(c));
+        }
+        value["configurations"] = Value::Object(configs);
+        value["trajectories"] = json!([{"name": "path", "through": (0..count).map(|k| format!("c{k}")).collect::<Vec<_>>()}]);
+        let s = Scenario::from_json(&value.to_string()).unwrap_or_else(|e| panic!("{e}\n{value}"));
+        let along = cablenav::verify::along(&s, None).unwrap();
+        let report = cablenav::verify::verify_along(&s, along).unwrap();
+        let sampled = cablenav::verify::verify_pointwise_along(&s, along, 1.0 / 300.0).unwrap();
+        paths += 1;
+        let conditions = for_scenario(&s);
+        let (Some(chain), cablenav::verify::Along::Joints(path)) = (s.robot.chain.as_ref(), along) else { unreachable!() };
+        for k in 0..=300 {
+            let t = k as f64 / 300.0;
+            if inside(&report.uncertain, t, 0.0) {
+                continue;
+            }
+            let cables = cables_at_config(&s.robot, &path.config_at(chain, t));
+            let violated = conditions.iter().any(|c| c.check(&cables).violated);
+            if inside(&report.feasible, t, 1e-6) {
+                judged += 1;
+                feasible_seen += 1;
+                assert!(!violated, "path {paths}: t = {t} in a feasible interval {:?} is violated\n{value}", report.feasible);
+            } else if inside(&report.infeasible, t, 1e-6) {
+                judged += 1;
+                infeasible_seen += 1;
+                assert!(violated, "path {paths}: t = {t} in an infeasible interval {:?} holds\n{value}", report.infeasible);
+            }
+        }
+        // the point-wise baseline's sections bracket the exact ones
+        assert_eq!(report.trajectory, "path");
+        assert!(sampled.feasible.len() <= report.feasible.len() + 1 || report.feasible.is_empty(), "{:?} vs {:?}", sampled.feasible, report.feasible);
+    }
+    assert!(judged > 20_000, "{judged} samples judged");
+    assert!(feasible_seen > 1_000 && infeasible_seen > 1_000, "{feasible_seen} feasible, {infeasible_seen} infeasible samples");
+}
+
+#[cfg(not(target_arch = "wasm32"))]
 /// A platform scenario rewritten as a one-link chain with a free joint: the cables pull the link,
 /// the poses become configurations (x, y, z, φ, θ, σ), no wrench set.
 fn as_chain(text: &str) -> Option<(Scenario, Scenario)> {
-    let platform = Scenario::from_json(text).ok()?;
+    let platform = Scenario::from_json(text).ok().filter(|s| s.robot.chain.is_none())?;
     let mut v: Value = serde_json::from_str(text).ok()?;
     let o = v.as_object_mut()?;
     for k in ["wrench", "trajectories", "queries", "poses"] {
@@ -224,6 +276,8 @@ fn as_chain(text: &str) -> Option<(Scenario, Scenario)> {
     Some((plain, chain))
 }
 
+// reads the preset directory: native only (wasm32 in node has no file system)
+#[cfg(not(target_arch = "wasm32"))]
 #[test]
 fn one_free_link_equals_the_platform_robot_on_every_preset() {
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/static/scenarios");
@@ -317,11 +371,32 @@ fn bad_chains_name_the_field() {
 /// configuration γ = −π/12, θ = π/12 (γ is outside CASPR's ±0.1745 limit: a warning).
 fn fig_3_12() -> Scenario {
     let mut v = import(X4_BODIES, X4_CABLES);
+    v["name"] = json!("BMArm_X4_2 (thesis §3.5.2)");
     v["clearance"] = json!({"cable_cable": 0.02, "cable_link": 0.02});
     v["configurations"]["fig312"] = json!({"alpha": 0.0, "beta": 0.0, "gamma": -PI / 12.0, "theta": PI / 12.0});
+    v["configurations"]["below"] = json!({"alpha": 0.0, "beta": -0.4, "gamma": -PI / 12.0, "theta": PI / 12.0});
+    v["configurations"]["above"] = json!({"alpha": 0.0, "beta": 0.4, "gamma": -PI / 12.0, "theta": PI / 12.0});
+    v["trajectories"] = json!([{"name": "across the gap", "through": ["below", "above"]}]);
+    if cfg!(not(target_arch = "wasm32")) && std::env::var("WRITE_PRESET").is_ok() {
+        std::fs::write(concat!(env!("CARGO_MANIFEST_DIR"), "/static/multilink/bmarm-x4-2.json"), serde_json::to_string_pretty(&v).unwrap() + "\n").unwrap();
+    }
     let s = Scenario::from_json(&v.to_string()).expect("valid");
     assert!(s.warnings.iter().any(|w| w.contains("configurations.fig312.gamma") && w.contains("outside")), "{:?}", s.warnings);
     s
+}
+
+/// The path from β = −0.4 to 0.4 (α = 0) crosses the gap between the two regions of Fig. 3.12(c):
+/// cables 2 and 3 (the thesis' T2, T3) come closer than ε there, an interval the 10-step grid
+/// does not sample.
+#[test]
+fn the_path_across_the_gap_has_an_infeasible_section() {
+    let s = fig_3_12();
+    let r = cablenav::verify::verify_along(&s, cablenav::verify::along(&s, Some("across the gap")).unwrap()).unwrap();
+    assert_eq!(r.infeasible.len(), 1, "{r:?}");
+    assert_eq!(r.boundaries.iter().map(|b| b.constraint.as_str()).collect::<Vec<_>>(), ["cables 2-3", "cables 2-3"]);
+    let [a, b] = r.infeasible[0];
+    assert!(a > 0.4 && b < 0.6 && b - a > 0.05, "{a} {b}");
+    assert!(r.uncertain.is_empty());
 }
 
 /// The α–β cross-section on the ray lattice with 10 steps, under the conditions of `kind`
@@ -336,6 +411,13 @@ fn cross_section(s: &Scenario, kind: Option<Kind>) -> (usize, usize) {
     assert_eq!(r.disagreements, 0);
     assert_eq!(r.uncertain_rays, 0);
     (r.components, r.feasible_points)
+}
+
+#[test]
+fn the_multilink_preset_is_the_imported_arm() {
+    let imported = fig_3_12();
+    let preset = Scenario::from_json(include_str!("../static/multilink/bmarm-x4-2.json")).expect("valid");
+    assert_eq!(preset, imported);
 }
 
 #[test]

@@ -43,8 +43,8 @@ fn fig310(steps: usize) -> LatticeSpec {
     LatticeSpec::new(vec![Coord::X, Coord::Z], vec![[0.2, 3.8], [0.3, 3.7]], vec![steps], [0.0, 2.0, 0.0, 0.0, 0.0, 0.0]).unwrap()
 }
 
-fn feasible_at(s: &Scenario, c: [f64; 6]) -> bool {
-    check_pose(s, "grid", &Pose::from_coords(c)).feasible
+fn feasible_at(s: &Scenario, c: Vec<f64>) -> bool {
+    check_pose(s, "grid", &Pose::from_slice(&c)).feasible
 }
 
 #[test]
@@ -53,7 +53,7 @@ fn fig_3_10_ray_at_z_0_8667_starts_at_2_002() {
     let l = Lattice::build(&s, fig310(7));
     assert_eq!(l.rays.len(), 14);
     let z = 0.3 + 3.4 / 6.0;
-    let ray = l.rays.iter().find(|r| r.vary == "x" && r.fixed.iter().any(|&(k, v)| k == "z" && (v - z).abs() < 1e-12)).expect("the x-ray at z = 0.8667");
+    let ray = l.rays.iter().find(|r| r.vary == "x" && r.fixed.iter().any(|(k, v)| k == "z" && (v - z).abs() < 1e-12)).expect("the x-ray at z = 0.8667");
     assert_eq!(ray.feasible.len(), 1, "{:?}", ray.feasible);
     assert!((ray.feasible[0][0] - 2.002).abs() < 5e-4, "starts at {}", ray.feasible[0][0]);
     assert_eq!(ray.feasible[0][1], 3.8);
@@ -72,7 +72,7 @@ fn grid_statuses_equal_check_and_the_point_wise_grid() {
         for flat in 0..49 {
             let idx = spec.point_indices(flat);
             let c = spec.coords(&idx);
-            let check = feasible_at(&s, c);
+            let check = feasible_at(&s, c.clone());
             assert_eq!(g.point_feasible[flat], check, "{} at {c:?}", s.name);
             assert_eq!(grid.feasible[flat], check, "{} at {c:?}", s.name);
             // every ray through the point agrees
@@ -88,7 +88,7 @@ fn grid_statuses_equal_check_and_the_point_wise_grid() {
 /// lattice step (so the lattice's rays are fine grid lines): the brute-force reference.
 fn flood_fill(s: &Scenario, spec: &LatticeSpec, refine: usize) -> (Vec<Option<usize>>, usize) {
     let n: Vec<usize> = spec.steps.iter().map(|&k| (k - 1) * refine + 1).collect();
-    let fine = LatticeSpec::new(spec.axes.clone(), spec.ranges.clone(), n.clone(), spec.fixed).unwrap();
+    let fine = LatticeSpec::new(spec.axes.clone(), spec.ranges.clone(), n.clone(), spec.fixed.clone()).unwrap();
     let feasible: Vec<bool> = (0..n[0] * n[1]).map(|f| feasible_at(s, fine.coords(&fine.point_indices(f)))).collect();
     let mut label = vec![None; feasible.len()];
     let mut next = 0;

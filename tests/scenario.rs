@@ -479,7 +479,7 @@ fn trajectory_forms() {
 
 #[test]
 fn format_field() {
-    expect(|v| v["format"] = json!("cablenav-scenario/3"), "format", "cablenav-scenario/1");
+    expect(|v| v["format"] = json!("cablenav-scenario/4"), "format", "cablenav-scenario/1");
     expect(|v| v["format"] = json!(1), "format", "cablenav-scenario/1");
     expect(
         |v| {

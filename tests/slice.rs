@@ -23,10 +23,10 @@ fn robocrane_phi_theta_slice_components() {
     // every cell's class agrees with the per-pose test at its centre
     for j in (0..res).step_by(7) {
         for i in (0..res).step_by(5) {
-            let mut c = m.fixed;
+            let mut c = m.fixed.clone();
             c[3] = m.center(0, i);
             c[4] = m.center(1, j);
-            let w = wrench_at(&s, &Pose::from_coords(c)).unwrap();
+            let w = wrench_at(&s, &Pose::from_slice(&c)).unwrap();
             let class = m.classes[j * res + i];
             assert_eq!(class == Class::Feasible, w.feasible, "cell ({i}, {j})");
             assert_eq!(m.component[j * res + i].is_some(), w.feasible);

@@ -2,7 +2,6 @@
 //! `--help`, turned into a [`Request`] for the core.
 
 use cablenav::command::Request;
-use cablenav::model::Coord;
 use cablenav::plan::choice::PlannerKind;
 use cablenav::plan::lattice::LatticeParams;
 use cablenav::plan::PlanParams;
@@ -19,7 +18,7 @@ Exit codes:
   70  internal error: a bug (please report the command and the scenario)
   74  the report could not be written to stdout";
 
-const SCENARIO_HELP: &str = "A cablenav-scenario/1 or /2 JSON file (docs/scenario-format.md)";
+const SCENARIO_HELP: &str = "A cablenav-scenario/1, /2 or /3 JSON file (docs/scenario-format.md)";
 
 /// Exact feasibility of cable-driven parallel robot motions.
 ///
@@ -55,16 +54,18 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// Feasible intervals of one pose coordinate, the others fixed at the pose's values
+    /// Feasible intervals of one coordinate, the others fixed at the pose's (or a multi-link
+    /// robot's configuration's) values
     #[command(after_help = EXIT_CODES)]
     Ray {
         #[arg(value_name = "SCENARIO", help = SCENARIO_HELP)]
         scenario: String,
-        /// The pose the other coordinates come from
+        /// The pose (multi-link robots: the configuration) the other coordinates come from
         #[arg(long, value_name = "NAME")]
         pose: String,
-        /// The coordinate to vary
-        #[arg(long, value_name = "COORD", value_parser = COORDS)]
+        /// The coordinate to vary: one of x, y, z, phi, theta, sigma, or a multi-link robot's joint
+        /// coordinate (its name in the scenario, or q1, q2, …)
+        #[arg(long, value_name = "COORD")]
         vary: String,
         /// The interval of the varied coordinate (angles in radians)
         #[arg(long, num_args = 2, value_names = ["LO", "HI"], required = true, value_parser = finite, allow_negative_numbers = true)]
@@ -111,7 +112,7 @@ pub enum Command {
         pose: String,
         /// Two coordinates, columns first (x, y, z, phi, theta, sigma)
         #[arg(long, value_name = "A,B", value_parser = axes)]
-        axes: [Coord; 2],
+        axes: [String; 2],
         /// Grid side (cells per axis)
         #[arg(long, value_name = "N")]
         res: usize,
@@ -132,10 +133,11 @@ pub enum Command {
     Lattice {
         #[arg(value_name = "SCENARIO", help = SCENARIO_HELP)]
         scenario: String,
-        /// The pose the other coordinates come from
+        /// The pose (multi-link robots: the configuration) the other coordinates come from
         #[arg(long, value_name = "NAME")]
         pose: String,
-        /// The coordinates, comma-separated (x, y, z, phi, theta, sigma)
+        /// The coordinates, comma-separated (x, y, z, phi, theta, sigma, or a multi-link robot's
+        /// joint coordinates)
         #[arg(long, value_name = "A,B[,C…]")]
         axes: String,
         /// One LO HI pair per axis, in the order of --axes
@@ -211,8 +213,6 @@ pub struct Invocation {
     pub out: Option<String>,
 }
 
-const COORDS: [&str; 6] = ["x", "y", "z", "phi", "theta", "sigma"];
-
 impl Command {
     /// The core request of a command that reads a scenario (not of `completions`).
     pub fn invocation(self) -> cablenav::Result<Invocation> {
@@ -265,11 +265,10 @@ fn finite(text: &str) -> Result<f64, String> {
     }
 }
 
-/// Two different coordinates separated by a comma.
-fn axes(text: &str) -> Result<[Coord; 2], String> {
-    let axes: Option<Vec<Coord>> = text.split(',').map(|a| Coord::parse(a.trim())).collect();
-    match axes.as_deref() {
-        Some(&[a, b]) => Ok([a, b]),
-        _ => Err(format!("{text:?} is not two of x, y, z, phi, theta, sigma separated by a comma")),
+/// Two coordinate names separated by a comma (checked against the scenario by the core).
+fn axes(text: &str) -> Result<[String; 2], String> {
+    match text.split(',').map(|a| a.trim().to_string()).collect::<Vec<_>>().as_slice() {
+        [a, b] if !a.is_empty() && !b.is_empty() => Ok([a.clone(), b.clone()]),
+        _ => Err(format!("{text:?} is not two coordinates separated by a comma (x, y, z, phi, theta, sigma, or a multi-link robot's joint coordinates)")),
     }
 }

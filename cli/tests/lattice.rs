@@ -87,7 +87,7 @@ fn rays_equal_the_ray_command_and_dense_sampling() {
     for (r, ray) in l.rays.iter().enumerate() {
         let [lo, hi] = l.spec.ranges[ray.axis];
         let (lo, hi, pose) = (lo.to_string(), hi.to_string(), format!("ray{r}"));
-        let v = files.json(&["ray", "rays.json", "--pose", &pose, "--vary", ray.vary, "--range", &lo, &hi, "--json"]);
+        let v = files.json(&["ray", "rays.json", "--pose", &pose, "--vary", &ray.vary, "--range", &lo, &hi, "--json"]);
         let want: Vec<[f64; 2]> = serde_json::from_value(v["feasible"].clone()).unwrap();
         // the same machinery: equal up to the rounding of the pose's coordinates through JSON
         assert_eq!(ray.feasible.len(), want.len(), "ray {r}: {:?} vs {want:?}", ray.feasible);
@@ -97,7 +97,7 @@ fn rays_equal_the_ray_command_and_dense_sampling() {
         // dense sampling, away from the certified boundaries
         let cut: Vec<f64> = ray.feasible.iter().flatten().copied().collect();
         boundaries += cut.len();
-        let axis = Coord::parse(ray.vary).unwrap().index();
+        let axis = Coord::parse(&ray.vary).unwrap().index();
         let (lo, hi) = (l.spec.ranges[ray.axis][0], l.spec.ranges[ray.axis][1]);
         for k in 0..=400 {
             let x = lo + (hi - lo) * k as f64 / 400.0;
@@ -106,7 +106,7 @@ fn rays_equal_the_ray_command_and_dense_sampling() {
             }
             let mut c = l.spec.coords(&ray.cell);
             c[axis] = x;
-            assert_eq!(ray.piece_at(x).is_some(), feasible_at(&s, c), "ray {r} ({}) at {x}", ray.vary);
+            assert_eq!(ray.piece_at(x).is_some(), feasible_at(&s, std::array::from_fn(|i| c[i])), "ray {r} ({}) at {x}", ray.vary);
         }
     }
     assert!(boundaries > 10);

@@ -8,7 +8,6 @@
 //! parameter) in `.field`.
 
 use cablenav::command::{self, Request};
-use cablenav::model::Coord;
 use cablenav::plan::choice::PlannerKind;
 use cablenav::plan::lattice::LatticeParams;
 use cablenav::plan::PlanParams;
@@ -184,11 +183,6 @@ fn call_renaming(py: Python<'_>, scenario: &Bound<'_, PyAny>, request: Result<Re
     Ok(py.import("json")?.call_method1("loads", (json,))?.unbind())
 }
 
-/// A pose coordinate by name.
-fn coord(field: &str, name: &str) -> Result<Coord, Error> {
-    Coord::parse(name).ok_or_else(|| Error::new(field, format!("{name:?} is not one of x, y, z, phi, theta, sigma")))
-}
-
 /// Feasible and infeasible sections of a trajectory, exactly (or sampled every `pointwise` in t).
 ///
 /// Returns the dict `cablenav verify SCENARIO --json` prints: `trajectory`, `method`,
@@ -241,13 +235,8 @@ fn envelope(py: Python<'_>, scenario: &Bound<'_, PyAny>, trajectory: Option<Stri
 #[pyfunction]
 #[pyo3(signature = (scenario, pose, axes, res, range=None))]
 fn slice(py: Python<'_>, scenario: &Bound<'_, PyAny>, pose: String, axes: (String, String), res: usize, range: Option<((f64, f64), (f64, f64))>) -> PyResult<Py<PyAny>> {
-    let request = coord("axes", &axes.0).and_then(|a| Ok([a, coord("axes", &axes.1)?])).map(|axes| Request::Slice {
-        pose,
-        axes,
-        res,
-        range: range.map(|(a, b)| [[a.0, a.1], [b.0, b.1]]),
-    });
-    call(py, scenario, request)
+    let request = Request::Slice { pose, axes: [axes.0, axes.1], res, range: range.map(|(a, b)| [[a.0, a.1], [b.0, b.1]]) };
+    call(py, scenario, Ok(request))
 }
 
 /// The thesis' ray lattice over `axes` (the others held at `pose`'s): every ray's exact feasible

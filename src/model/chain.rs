@@ -69,44 +69,68 @@ impl Joint {
 
     /// The joint's motion (translation and rotation relative to the joint frame) as coordinate `k`
     /// runs over [lo, hi] and the others stay at `q`: one piece for a translation, one per
-    /// [`ANGLE_PIECE`] or less of range for an angle.
+    /// [`ANGLE_PIECE`] or less of range for an angle (the platform's own pieces for a free joint).
     fn ray(&self, q: &[f64], k: usize, lo: f64, hi: f64) -> Vec<Motion> {
         if let Joint::Free = self {
             let c = [q[0], q[1], q[2], q[3], q[4], q[5]];
             return Motion::ray_through(c, Coord::ALL[k], lo, hi);
         }
-        if let Joint::Prismatic(axis) = self {
-            let position = [0, 1, 2].map(|i| Bern::from_bernstein(vec![axis[i] * lo, axis[i] * hi]));
-            return vec![Motion::from_parts(position, &quat_const(&UnitQuaternion::identity()), Param::Linear { lo, hi })];
+        if !self.is_angle(k) {
+            return self.sweep(&with(q, k, lo), &with(q, k, hi), Param::Linear { lo, hi }).into_iter().collect();
         }
         let pieces = (((hi - lo).abs() / ANGLE_PIECE).ceil() as usize).max(1);
-        let zero = [0, 1, 2].map(|_| Bern::constant(0.0));
         (0..pieces)
-            .map(|p| {
+            .filter_map(|p| {
                 let start = lo + (hi - lo) * p as f64 / pieces as f64;
                 let end = if p + 1 == pieces { hi } else { lo + (hi - lo) * (p + 1) as f64 / pieces as f64 };
                 let h = ((end - start) / 2.0).tan();
-                let about = |axis: Vector3<f64>, a: f64| quat_const(&UnitQuaternion::from_axis_angle(&nalgebra::Unit::new_unchecked(axis), a));
-                let n: QuatPoly = match self {
-                    Joint::Revolute(axis) => quat_mul(&about(*axis, start), &ramp_about(axis, h)),
-                    _ => {
-                        // Rx(α)·Ry(β)·Rz(γ) with the varied factor advanced by ψ(λ)
-                        let axes = [Vector3::x(), Vector3::y(), Vector3::z()];
-                        let mut n: QuatPoly = [vec![1.0], vec![0.0], vec![0.0], vec![0.0]];
-                        for (i, axis) in axes.iter().enumerate() {
-                            let angle = if i == k { start } else { q[i] };
-                            n = quat_mul(&n, &about(*axis, angle));
-                            if i == k {
-                                n = quat_mul(&n, &ramp_about(axis, h));
-                            }
-                        }
-                        n
-                    }
-                };
-                Motion::from_parts(zero.clone(), &n, Param::Angle { start, end, h })
+                self.sweep(&with(q, k, start), &with(q, k, end), Param::Angle { start, end, h })
             })
             .collect()
     }
+
+    /// The joint's motion from coordinates `from` to `to` (`None` if they are equal): every angle
+    /// advances by the tan-half-angle ramp 2·atan(h·λ), h = tan(Δ/2), every length linearly —
+    /// for a free joint the angles are φ, θ and σ − φ (R = Rz(φ)·Ry(θ)·Rz(σ − φ)). Steps of an
+    /// angle should stay small (the callers keep them within [`ANGLE_PIECE`]).
+    fn sweep(&self, from: &[f64], to: &[f64], param: Param) -> Option<Motion> {
+        if from == to {
+            return None;
+        }
+        let about = |axis: &Vector3<f64>, a: f64| quat_const(&UnitQuaternion::from_axis_angle(&nalgebra::Unit::new_unchecked(*axis), a));
+        // a rotation by `a` then by the ramp of `d` about `axis`, on the right of `n`
+        let turn = |n: QuatPoly, axis: &Vector3<f64>, a: f64, d: f64| {
+            let n = quat_mul(&n, &about(axis, a));
+            if d == 0.0 { n } else { quat_mul(&n, &ramp_about(axis, (d / 2.0).tan())) }
+        };
+        let one: QuatPoly = [vec![1.0], vec![0.0], vec![0.0], vec![0.0]];
+        let line = |a: &Vector3<f64>, b: &Vector3<f64>| [0, 1, 2].map(|i| Bern::from_bernstein(vec![a[i], b[i]]));
+        let zero = Vector3::zeros();
+        let (x, y, z) = (Vector3::x(), Vector3::y(), Vector3::z());
+        let (position, n) = match self {
+            Joint::Free => {
+                let (pa, pb) = (Vector3::new(from[0], from[1], from[2]), Vector3::new(to[0], to[1], to[2]));
+                let n = turn(one, &z, from[3], to[3] - from[3]);
+                let n = turn(n, &y, from[4], to[4] - from[4]);
+                (line(&pa, &pb), turn(n, &z, from[5] - from[3], (to[5] - to[3]) - (from[5] - from[3])))
+            }
+            Joint::Spherical => {
+                let n = turn(one, &x, from[0], to[0] - from[0]);
+                let n = turn(n, &y, from[1], to[1] - from[1]);
+                (line(&zero, &zero), turn(n, &z, from[2], to[2] - from[2]))
+            }
+            Joint::Revolute(axis) => (line(&zero, &zero), turn(one, axis, from[0], to[0] - from[0])),
+            Joint::Prismatic(axis) => (line(&(axis * from[0]), &(axis * to[0])), one),
+        };
+        Some(Motion::from_parts(position, &n, param))
+    }
+}
+
+/// `q` with entry `k` set to `v`.
+fn with(q: &[f64], k: usize, v: f64) -> Vec<f64> {
+    let mut out = q.to_vec();
+    out[k] = v;
+    out
 }
 
 /// One named coordinate of a joint, with its allowed range.
@@ -222,31 +246,225 @@ impl Chain {
     /// ray.
     pub fn ray(&self, q: &[f64], i: usize, lo: f64, hi: f64) -> Vec<Vec<Motion>> {
         let Some((varied, k, _)) = self.coords().nth(i) else { return Vec::new() };
-        let frames = self.frames(q);
         let o = self.offset(varied);
         let link = &self.links[varied];
         link.joint
             .ray(&q[o..o + link.joint.dof()], k, lo, hi)
             .into_iter()
             .map(|joint| {
-                let w = joint.weight.clone();
-                let mut out: Vec<Motion> = Vec::with_capacity(self.links.len());
-                for (l, link) in self.links.iter().enumerate() {
-                    let m = if l == varied {
-                        let (pp, rp) = link.parent.map_or((Vector3::zeros(), Matrix3::identity()), |p| frames[p]);
-                        joint.placed(&(pp + rp * link.location), &rp)
-                    } else if self.descends(l, varied) {
-                        let parent = link.parent.expect("a link below the varied one has a parent");
-                        let lo_ = self.offset(l);
-                        let (t, r) = link.joint.transform(&q[lo_..lo_ + link.joint.dof()]);
-                        out[parent].then(&(link.location + t), &r)
-                    } else {
-                        Motion::fixed(&frames[l], &w, joint.param)
-                    };
-                    out.push(m);
-                }
-                out
+                let mut locals = vec![None; self.links.len()];
+                locals[varied] = Some(joint);
+                self.compose(q, locals)
             })
             .collect()
+    }
+
+    /// Every link's motion from configuration `from` to `to`, all joints at once (each as
+    /// [`Joint`]'s sweep: tan-half-angle ramps, linear lengths), λ mapped to the user's parameter
+    /// by `param`. The angle steps should be at most [`ANGLE_PIECE`] (see [`JointPath`]).
+    pub fn sweep(&self, from: &[f64], to: &[f64], param: Param) -> Vec<Motion> {
+        let locals = self
+            .links
+            .iter()
+            .enumerate()
+            .map(|(l, link)| {
+                let o = self.offset(l);
+                let n = link.joint.dof();
+                link.joint.sweep(&from[o..o + n], &to[o..o + n], param)
+            })
+            .collect();
+        self.compose(from, locals)
+    }
+
+    /// The links' world motions from each joint's own motion (`None`: the joint stays at `q`),
+    /// brought to one common weight: the product of the moving joints' weights.
+    fn compose(&self, q: &[f64], locals: Vec<Option<Motion>>) -> Vec<Motion> {
+        let frames = self.frames(q);
+        let param = locals.iter().flatten().next().map_or(Param::Linear { lo: 0.0, hi: 1.0 }, |m| m.param);
+        // per link: its motion (None while constant) and which joints' weights it carries
+        let mut moving: Vec<Option<(Motion, Vec<usize>)>> = Vec::with_capacity(self.links.len());
+        for (l, link) in self.links.iter().enumerate() {
+            let parent = link.parent.and_then(|p| moving[p].clone());
+            let m = match (&locals[l], parent) {
+                (None, None) => None,
+                (None, Some((m, carried))) => {
+                    let o = self.offset(l);
+                    let (t, r) = link.joint.transform(&q[o..o + link.joint.dof()]);
+                    Some((m.then(&(link.location + t), &r), carried))
+                }
+                (Some(j), None) => {
+                    let (pp, rp) = link.parent.map_or((Vector3::zeros(), Matrix3::identity()), |p| frames[p]);
+                    Some((j.placed(&(pp + rp * link.location), &rp), vec![l]))
+                }
+                (Some(j), Some((m, mut carried))) => {
+                    carried.push(l);
+                    Some((m.compose(&link.location, j), carried))
+                }
+            };
+            moving.push(m);
+        }
+        let weights: Vec<(usize, &Bern)> = locals.iter().enumerate().filter_map(|(l, m)| m.as_ref().map(|m| (l, &m.weight))).collect();
+        let product = |skip: &[usize]| {
+            let mut factors = weights.iter().filter(|(l, _)| !skip.contains(l)).map(|(_, w)| *w);
+            let first = factors.next().cloned().unwrap_or_else(|| Bern::constant(1.0));
+            factors.fold(first, |acc, w| acc.mul(w))
+        };
+        let all = product(&[]);
+        moving
+            .into_iter()
+            .enumerate()
+            .map(|(l, m)| match m {
+                None => Motion::fixed(&frames[l], &all, param),
+                Some((m, carried)) if carried.len() == weights.len() => m,
+                Some((m, carried)) => m.times(&product(&carried)),
+            })
+            .collect()
+    }
+}
+
+/// A path through configurations of a multi-link robot, verified exactly: from each
+/// configuration to the next every joint moves at once, each angle with tan-half-angle timing
+/// (its half-angle tangent grows linearly from one end to the other) and each length linearly.
+/// Each leg is cut into the fewest equal steps of at most [`ANGLE_PIECE`] in every angle; the
+/// path's t runs over [0, 1], the legs taking equal shares and the steps equal shares of their
+/// leg.
+#[derive(Debug, Clone, PartialEq)]
+pub struct JointPath {
+    /// Its name.
+    pub name: String,
+    /// The configurations it passes through (at least two).
+    pub through: Vec<Vec<f64>>,
+}
+
+impl JointPath {
+    /// Its steps: (from, to, t at from, t at to).
+    pub fn steps(&self, chain: &Chain) -> Vec<(Vec<f64>, Vec<f64>, f64, f64)> {
+        let legs = self.through.len().saturating_sub(1).max(1);
+        let mut out = Vec::new();
+        for (leg, w) in self.through.windows(2).enumerate() {
+            let (a, b) = (&w[0], &w[1]);
+            let widest = (0..a.len()).filter(|&i| chain.is_angle(i)).map(|i| (b[i] - a[i]).abs()).fold(0.0, f64::max);
+            let n = ((widest / ANGLE_PIECE).ceil() as usize).max(1);
+            let at = |j: usize| -> Vec<f64> { if j == n { b.clone() } else { a.iter().zip(b).map(|(x, y)| x + (y - x) * j as f64 / n as f64).collect() } };
+            let t = |j: usize| if leg + 1 == legs && j == n { 1.0 } else { (leg as f64 + j as f64 / n as f64) / legs as f64 };
+            for j in 0..n {
+                out.push((at(j), at(j + 1), t(j), t(j + 1)));
+            }
+        }
+        out
+    }
+
+    /// Every link's motion along each step (see [`Chain::sweep`]).
+    pub fn motions(&self, chain: &Chain) -> Vec<Vec<Motion>> {
+        self.steps(chain).into_iter().map(|(a, b, t0, t1)| chain.sweep(&a, &b, Param::Linear { lo: t0, hi: t1 })).collect()
+    }
+
+    /// The configuration at t ∈ [0, 1].
+    pub fn config_at(&self, chain: &Chain, t: f64) -> Vec<f64> {
+        let steps = self.steps(chain);
+        let Some((a, b, t0, t1)) = steps.iter().find(|s| t <= s.3).or(steps.last()) else { return self.through.first().cloned().unwrap_or_default() };
+        let lam = ((t - t0) / (t1 - t0)).clamp(0.0, 1.0);
+        let mut q: Vec<f64> = a.iter().zip(b).map(|(x, y)| x + (y - x) * lam).collect();
+        // angles: the tan-half-angle timing of each joint's sweep
+        let mut o = 0;
+        for link in &chain.links {
+            let turns: Vec<(usize, f64)> = match link.joint {
+                // φ, θ and σ − φ ramp; σ = φ + (σ − φ)
+                Joint::Free => {
+                    let ramp = |d: f64| 2.0 * ((d / 2.0).tan() * lam).atan();
+                    let (dphi, dpsi) = (b[o + 3] - a[o + 3], (b[o + 5] - b[o + 3]) - (a[o + 5] - a[o + 3]));
+                    q[o + 3] = a[o + 3] + ramp(dphi);
+                    q[o + 4] = a[o + 4] + ramp(b[o + 4] - a[o + 4]);
+                    q[o + 5] = q[o + 3] + (a[o + 5] - a[o + 3]) + ramp(dpsi);
+                    Vec::new()
+                }
+                Joint::Spherical => (0..3).map(|k| (o + k, b[o + k] - a[o + k])).collect(),
+                Joint::Revolute(_) => vec![(o, b[o] - a[o])],
+                Joint::Prismatic(_) => Vec::new(),
+            };
+            for (i, d) in turns {
+                q[i] = a[i] + 2.0 * ((d / 2.0).tan() * lam).atan();
+            }
+            o += link.joint.dof();
+        }
+        q
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn link(name: &str, parent: Option<usize>, location: [f64; 3], joint: Joint) -> Link {
+        let coords = (0..joint.dof()).map(|k| JointCoord { name: format!("{name}{k}"), range: [-10.0, 10.0] }).collect();
+        Link { name: name.into(), parent, location: Vector3::from(location), joint, coords, body: [Vector3::zeros(); 2], radius: 0.0 }
+    }
+
+    /// A tree with every joint type: free root, spherical and prismatic children, a revolute
+    /// grandchild.
+    fn tree() -> Chain {
+        Chain {
+            links: vec![
+                link("f", None, [0.1, 0.2, 0.3], Joint::Free),
+                link("s", Some(0), [0.0, 0.0, 0.7], Joint::Spherical),
+                link("p", Some(0), [0.3, 0.0, 0.1], Joint::Prismatic(Vector3::new(0.6, 0.0, 0.8))),
+                link("r", Some(1), [0.0, 0.1, 0.5], Joint::Revolute(Vector3::new(0.0, 0.6, -0.8))),
+            ],
+        }
+    }
+
+    fn close(m: &Motion, lam: f64, (p, r): &Frame) -> bool {
+        let (mp, mr) = m.eval(lam);
+        (mp - p).norm() < 1e-11 && (mr - r).norm() < 1e-11
+    }
+
+    #[test]
+    fn rays_follow_the_links_frames() {
+        let chain = tree();
+        let q = [0.2, -0.1, 0.4, 0.3, 0.5, -0.2, 0.3, -0.4, 0.2, 0.15, 0.7];
+        for i in 0..chain.dof() {
+            let (lo, hi) = (q[i] - 0.9, q[i] + 0.6);
+            for piece in chain.ray(&q, i, lo, hi) {
+                assert!(piece.iter().all(|m| m.weight == piece[0].weight));
+                for k in 0..=4 {
+                    let lam = k as f64 / 4.0;
+                    let frames = chain.frames(&with(&q, i, piece[0].param.value(lam)));
+                    for (l, m) in piece.iter().enumerate() {
+                        assert!(close(m, lam, &frames[l]), "coordinate {i}, link {l}, λ = {lam}");
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn paths_follow_their_configurations() {
+        let chain = tree();
+        let a = vec![0.2, -0.1, 0.4, 0.3, 0.5, -0.2, 0.3, -0.4, 0.2, 0.15, 0.7];
+        let b = vec![-0.3, 0.2, 0.1, -0.9, 1.1, 0.6, -0.5, 0.4, 1.0, -0.25, -0.8];
+        let c = vec![0.0; 11];
+        let path = JointPath { name: "p".into(), through: vec![a.clone(), b.clone(), c.clone()] };
+        let steps = path.steps(&chain);
+        assert!(steps.len() > 2, "the legs are cut into steps of at most π/8");
+        assert_eq!((steps[0].2, steps.last().unwrap().3), (0.0, 1.0));
+        assert_eq!(path.config_at(&chain, 0.0), a);
+        assert_eq!(path.config_at(&chain, 1.0), c);
+        assert!(path.config_at(&chain, 0.5).iter().zip(&b).all(|(x, y)| (x - y).abs() < 1e-12));
+        for (motions, (_, _, t0, t1)) in path.motions(&chain).iter().zip(&steps) {
+            // one weight: the same product of the moving joints' weights, multiplied in different
+            // orders (each an enclosure of the exact product within its error bound)
+            let w = &motions[0].weight;
+            for m in motions {
+                assert_eq!(m.weight.c.len(), w.c.len());
+                assert!(m.weight.c.iter().zip(&w.c).all(|(a, b)| (a - b).abs() <= m.weight.err + w.err), "{:?} vs {:?}", m.weight, w);
+            }
+            for k in 0..=4 {
+                let lam = k as f64 / 4.0;
+                let frames = chain.frames(&path.config_at(&chain, t0 + (t1 - t0) * lam));
+                for (l, m) in motions.iter().enumerate() {
+                    assert!(close(m, lam, &frames[l]), "link {l} at t = {}", t0 + (t1 - t0) * lam);
+                }
+            }
+        }
     }
 }

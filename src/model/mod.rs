@@ -9,7 +9,7 @@ pub mod trajectory;
 pub mod via;
 pub mod wrench;
 
-pub use chain::{Chain, Joint, JointCoord, Link};
+pub use chain::{Chain, Joint, JointCoord, JointPath, Link};
 pub use motion::Motion;
 pub use pose::{Coord, Pose};
 pub use robot::{Bounds, Cable, Clearance, Robot};

@@ -391,6 +391,28 @@ impl Motion {
         Motion { position, rotation, weight: self.weight.clone(), param: self.param }
     }
 
+    /// This (moving) frame followed by a joint at `location` in it moving by `joint` (relative):
+    /// P̂ = P̂·ŵ_j + M̂·(location·ŵ_j + P̂_j), M̂ = M̂·M̂_j over the product of the weights.
+    pub fn compose(&self, location: &nalgebra::Vector3<f64>, joint: &Motion) -> Motion {
+        let wj = &joint.weight;
+        let position = [0, 1, 2].map(|i| {
+            (0..3).fold(self.position[i].mul(wj), |acc, k| acc.add(&self.rotation[i][k].mul(&joint.position[k].add(&wj.scale(location[k])))))
+        });
+        let rotation = [0, 1, 2].map(|i| [0, 1, 2].map(|c| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&self.rotation[i][k].mul(&joint.rotation[k][c])))));
+        Motion { position, rotation, weight: self.weight.mul(wj), param: self.param }
+    }
+
+    /// The same motion over a weight `f` times larger (numerators and weight multiplied by the
+    /// positive polynomial `f`).
+    pub fn times(&self, f: &Bern) -> Motion {
+        Motion {
+            position: self.position.each_ref().map(|p| p.mul(f)),
+            rotation: self.rotation.each_ref().map(|row| row.each_ref().map(|p| p.mul(f))),
+            weight: self.weight.mul(f),
+            param: self.param,
+        }
+    }
+
     /// A frame that does not move, written over the weight `w` of the motions beside it.
     pub fn fixed((p, r): &(nalgebra::Vector3<f64>, nalgebra::Matrix3<f64>), w: &Bern, param: Param) -> Motion {
         Motion {

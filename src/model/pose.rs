@@ -146,6 +146,12 @@ impl Pose {
         Pose::from_tilt_torsion(Vector3::new(c[0], c[1], c[2]), [c[3], c[4], c[5]])
     }
 
+    /// A pose from a configuration slice of a platform robot (x, y, z, φ, θ, σ; missing entries
+    /// are 0).
+    pub fn from_slice(c: &[f64]) -> Pose {
+        Pose::from_coords(std::array::from_fn(|i| c.get(i).copied().unwrap_or(0.0)))
+    }
+
     /// The rotation matrix R.
     pub fn matrix(&self) -> Matrix3<f64> {
         *self.rotation.to_rotation_matrix().matrix()

@@ -3,9 +3,9 @@
 //! the named configurations. Errors name the JSON path; a configuration outside the joint ranges
 //! is kept with a warning (a cross-section may need the limits widened, thesis Fig. 3.12).
 
-use super::json::{Fixed, Ordered, RawCable, RawLink};
+use super::json::{Fixed, Ordered, RawCable, RawLink, RawTrajectory};
 use crate::error::{finite, Error, Result};
-use crate::model::{Chain, Joint, JointCoord, Link, Robot};
+use crate::model::{Chain, Joint, JointCoord, JointPath, Link, Robot};
 use nalgebra::Vector3;
 use std::f64::consts::PI;
 
@@ -229,6 +229,40 @@ pub fn configurations(raw: &Ordered<Ordered<f64>>, robot: &Robot, chain: &Chain,
             }
         }
         out.push((name.clone(), q));
+    }
+    Ok(out)
+}
+
+/// A multi-link robot's trajectories: each a `name` and the configurations it passes `through`
+/// (at least two, by name).
+pub fn joint_paths(raw: &[RawTrajectory], configs: &[(String, Vec<f64>)]) -> Result<Vec<JointPath>> {
+    let mut out: Vec<JointPath> = Vec::with_capacity(raw.len());
+    for (k, t) in raw.iter().enumerate() {
+        let path = format!("trajectories[{k}]");
+        if t.translation.is_some() || t.orientation.is_some() || t.pieces.is_some() {
+            return Err(Error::new(path, "a multi-link robot's trajectory is `through`: the configurations it passes, by name (no translation, orientation or pieces)"));
+        }
+        if t.name.is_empty() {
+            return Err(Error::new(format!("{path}.name"), "a trajectory name must not be empty"));
+        }
+        if out.iter().any(|p| p.name == t.name) {
+            return Err(Error::new(format!("{path}.name"), format!("duplicate trajectory name \"{}\"", t.name)));
+        }
+        let Some(names) = &t.through else { return Err(Error::new(format!("{path}.through"), "missing: give the names of at least two configurations")) };
+        if names.len() < 2 {
+            return Err(Error::new(format!("{path}.through"), format!("needs at least two configurations, got {}", names.len())));
+        }
+        let through = names
+            .iter()
+            .enumerate()
+            .map(|(i, n)| {
+                configs.iter().find(|(c, _)| c == n).map(|(_, q)| q.clone()).ok_or_else(|| {
+                    let known: Vec<&str> = configs.iter().map(|(c, _)| c.as_str()).collect();
+                    Error::new(format!("{path}.through[{i}]"), format!("no configuration named \"{n}\"; known configurations: {}", known.join(", ")))
+                })
+            })
+            .collect::<Result<Vec<_>>>()?;
+        out.push(JointPath { name: t.name.clone(), through });
     }
     Ok(out)
 }

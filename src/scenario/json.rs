@@ -251,6 +251,9 @@ pub struct RawTrajectory {
     pub orientation: Option<RawOrientation>,
     #[serde(default)]
     pub pieces: Option<Vec<RawPiece>>,
+    /// A multi-link robot's path: the names of the configurations it passes through (format 3).
+    #[serde(default)]
+    pub through: Option<Vec<String>>,
 }
 
 /// One piece of a piecewise trajectory.

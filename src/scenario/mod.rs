@@ -53,6 +53,8 @@ pub struct Scenario {
     /// Named joint configurations of a multi-link robot (its coordinates in
     /// [`crate::model::Chain::coords`] order), in file order; empty for a platform robot.
     pub configs: Vec<(String, Vec<f64>)>,
+    /// A multi-link robot's trajectories: paths through its configurations, in file order.
+    pub joint_paths: Vec<crate::model::JointPath>,
     /// Things the user should know that did not stop parsing (e.g. a quaternion normalised).
     pub warnings: Vec<String>,
 }

@@ -40,6 +40,11 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
     let mut robot = robot(&raw.robot)?;
     let clearance = clearance(&raw)?;
     let configs = multi_link(&raw, &mut robot, &clearance, &mut warnings)?;
+    if robot.chain.is_some() {
+        let joint_paths = super::chain::joint_paths(&raw.trajectories, &configs)?;
+        let obstacles = obstacles(&raw.obstacles)?;
+        return Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses: Vec::new(), trajectories: Vec::new(), queries: Vec::new(), wrench: None, configs, joint_paths, warnings });
+    }
     let obstacles = obstacles(&raw.obstacles)?;
     let poses = poses(&raw.poses.0, &mut warnings)?;
     check_cable_lengths(&robot, &poses)?;
@@ -63,7 +68,7 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
             robot.cables.len()
         ));
     }
-    Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses, trajectories, queries, wrench, configs, warnings })
+    Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses, trajectories, queries, wrench, configs, joint_paths: Vec::new(), warnings })
 }
 
 /// The multi-link sections (format 3): the chain and each cable's link go into `robot`; returns
@@ -71,6 +76,9 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
 /// configured by configurations only (no poses, trajectories, queries or wrench set yet).
 fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clearance, warnings: &mut Vec<String>) -> Result<Vec<(String, Vec<f64>)>> {
     let Some(links) = &raw.robot.links else {
+        if let Some(k) = raw.trajectories.iter().position(|t| t.through.is_some()) {
+            return Err(Error::new(format!("trajectories[{k}].through"), "only a multi-link robot's trajectories pass through configurations; a platform robot's have translation and orientation"));
+        }
         if let Some(i) = raw.robot.cables.iter().position(|c| c.link.is_some()) {
             return Err(Error::new(format!("robot.cables[{i}].link"), "only the cables of a multi-link robot (robot.links) name a link"));
         }
@@ -86,17 +94,13 @@ fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clearance, warni
     for (cable, link) in robot.cables.iter_mut().zip(super::chain::cable_links(&raw.robot.cables, &chain)?) {
         cable.link = link;
     }
-    for (field, given) in [
-        ("poses", !raw.poses.0.is_empty()),
-        ("trajectories", !raw.trajectories.is_empty()),
-        ("queries", !raw.queries.is_empty()),
-        ("wrench", raw.wrench.is_some()),
-    ] {
+    for (field, given) in [("poses", !raw.poses.0.is_empty()), ("queries", !raw.queries.is_empty()), ("wrench", raw.wrench.is_some())] {
         if given {
             return Err(Error::new(
                 field,
                 "not supported for multi-link robots yet: they are configured by named joint configurations \
-                 (`configurations`), and their wrench condition is joint-space wrench closure, always checked",
+                 (`configurations`, paths through them in `trajectories`), and their wrench condition is \
+                 joint-space wrench closure, always checked",
             ));
         }
     }

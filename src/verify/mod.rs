@@ -6,7 +6,7 @@ pub mod profile;
 mod sections;
 pub mod slice;
 
-pub use pointwise::verify_pointwise;
+pub use pointwise::{verify_pointwise, verify_pointwise_along};
 pub use sections::{push_merged, sections, Labelled, Piece, Sections};
 pub use slice::{slice, SliceMap};
 
@@ -16,7 +16,7 @@ use crate::model::{Bounds, Wrench};
 use crate::query::wrench::{closure_holds, static_margin};
 use crate::error::{Error, Result};
 use crate::model::motion::Param;
-use crate::model::{Coord, Motion, Pose, Trajectory};
+use crate::model::{Coord, JointPath, Motion, Pose, Trajectory};
 use crate::poly::{Partition, Truth};
 use crate::report::{Boundary, CheckEntry, PoseReport, RayBoundary, RayReport, TensionEnvelope, VerifyReport, WrenchReport};
 use crate::scenario::Scenario;
@@ -78,18 +78,99 @@ fn append_mapped(out: &mut Vec<Piece>, p: &Partition, param: &Param) {
     }
 }
 
+/// What a verification runs along: a platform robot's trajectory or a multi-link robot's path
+/// through configurations; both parametrised by t ∈ [0, 1].
+#[derive(Debug, Clone, Copy)]
+pub enum Along<'a> {
+    /// A platform robot's trajectory.
+    Trajectory(&'a Trajectory),
+    /// A multi-link robot's path.
+    Joints(&'a JointPath),
+}
+
+impl Along<'_> {
+    /// Its name.
+    pub fn name(&self) -> &str {
+        match self {
+            Along::Trajectory(t) => &t.name,
+            Along::Joints(p) => &p.name,
+        }
+    }
+
+    /// Its pieces as the verifier takes them: the motion of every link per piece.
+    fn motions(&self, s: &Scenario) -> Vec<Vec<Motion>> {
+        match (self, &s.robot.chain) {
+            (Along::Joints(p), Some(chain)) => p.motions(chain),
+            (Along::Trajectory(t), _) => one_link(Motion::trajectory(t)),
+            (Along::Joints(_), None) => Vec::new(),
+        }
+    }
+
+    /// The cables at t.
+    fn cables_at(&self, s: &Scenario, t: f64) -> PoseCables {
+        match (self, &s.robot.chain) {
+            (Along::Joints(p), Some(chain)) => cables_at_config(&s.robot, &p.config_at(chain, t)),
+            // a path needs a chain (validation pairs them); without one only its start is known
+            (Along::Joints(p), None) => cables_at_config(&s.robot, p.through.first().map_or(&[0.0; 6][..], |q| q)),
+            (Along::Trajectory(traj), _) => cables_at(&s.robot, &traj.pose_at(t)),
+        }
+    }
+
+    /// τ of t (the trajectory's own parameter; t itself for a path).
+    fn tau_of_t(&self, t: f64) -> f64 {
+        match self {
+            Along::Trajectory(traj) => traj.tau_of_t(t),
+            Along::Joints(_) => t,
+        }
+    }
+}
+
+/// The trajectory (platform robot) or path (multi-link robot) called `name`, or the first one for
+/// `None`.
+pub fn along<'a>(s: &'a Scenario, name: Option<&str>) -> Result<Along<'a>> {
+    if s.robot.chain.is_none() {
+        return s.trajectory(name).map(Along::Trajectory);
+    }
+    let paths = &s.joint_paths;
+    let found = match name {
+        None => paths.first(),
+        Some(n) => paths.iter().find(|p| p.name == n),
+    };
+    found.map(Along::Joints).ok_or_else(|| {
+        let names: Vec<&str> = paths.iter().map(|p| p.name.as_str()).collect();
+        let known = if names.is_empty() { "the scenario has no trajectories".to_owned() } else { format!("known trajectories: {}", names.join(", ")) };
+        match name {
+            None => Error::new("trajectory", "the scenario has no trajectories"),
+            Some(n) => Error::new("trajectory", format!("no trajectory named \"{n}\"; {known}")),
+        }
+    })
+}
+
+/// Every trajectory of the scenario, in file order (a multi-link robot's paths).
+fn all_along(s: &Scenario) -> Vec<Along<'_>> {
+    match s.robot.chain {
+        Some(_) => s.joint_paths.iter().map(Along::Joints).collect(),
+        None => s.trajectories.iter().map(Along::Trajectory).collect(),
+    }
+}
+
 /// Exact verification of a trajectory: feasible and infeasible t-intervals, each boundary certified
 /// to [`BOUNDARY_TOL`] in t with its active constraint, or reported in `uncertain`.
 pub fn verify_trajectory(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport> {
+    verify_along(s, Along::Trajectory(traj))
+}
+
+/// Exact verification along a trajectory or a multi-link robot's path ([`verify_trajectory`]).
+pub fn verify_along(s: &Scenario, along: Along) -> Result<VerifyReport> {
     let conditions = for_scenario(s);
-    let motions = one_link(Motion::trajectory(traj));
+    let motions = along.motions(s);
     let (overall, per) = violation_pieces(&conditions, s, &motions, BOUNDARY_TOL);
     let sec = sections(&overall, &per, BOUNDARY_TOL);
     let mut warnings = s.warnings.clone();
     if !sec.uncertain.is_empty() {
         warnings.push(format!("{} section(s) could not be certified either way; see \"uncertain\"", sec.uncertain.len()));
     }
-    Ok(trajectory_report(traj, sec, "exact", None, warnings))
+    Ok(trajectory_report(along, sec, "exact", None, warnings))
 }
 
 /// Verification of every trajectory of the scenario (what `cablenav verify SCENARIO --all`
@@ -103,10 +184,11 @@ pub fn verify_all(s: &Scenario, pointwise: Option<f64>) -> Result<Vec<VerifyRepo
 /// [`verify_all`], adding 1 to `done` after each trajectory is verified (from any worker
 /// thread), so that a caller on another thread can show progress.
 pub fn verify_all_counted(s: &Scenario, pointwise: Option<f64>, done: &AtomicUsize) -> Result<Vec<VerifyReport>> {
-    let reports = crate::parallel::map_with(s.trajectories.len(), || (), |_, i| {
+    let all = all_along(s);
+    let reports = crate::parallel::map_with(all.len(), || (), |_, i| {
         let report = match pointwise {
-            Some(dt) => verify_pointwise(s, &s.trajectories[i], dt),
-            None => verify_trajectory(s, &s.trajectories[i]),
+            Some(dt) => pointwise::verify_pointwise_along(s, all[i], dt),
+            None => verify_along(s, all[i]),
         };
         done.fetch_add(1, Ordering::Relaxed);
         report
@@ -115,10 +197,10 @@ pub fn verify_all_counted(s: &Scenario, pointwise: Option<f64>, done: &AtomicUsi
 }
 
 /// Builds the report of a trajectory from its sections in t.
-fn trajectory_report(traj: &Trajectory, sec: Sections, method: &str, step: Option<f64>, warnings: Vec<String>) -> VerifyReport {
-    let to_tau = |v: &[[f64; 2]]| v.iter().map(|iv| [traj.tau_of_t(iv[0]), traj.tau_of_t(iv[1])]).collect();
+fn trajectory_report(along: Along, sec: Sections, method: &str, step: Option<f64>, warnings: Vec<String>) -> VerifyReport {
+    let to_tau = |v: &[[f64; 2]]| v.iter().map(|iv| [along.tau_of_t(iv[0]), along.tau_of_t(iv[1])]).collect();
     VerifyReport {
-        trajectory: traj.name.clone(),
+        trajectory: along.name().to_string(),
         method: method.to_string(),
         step,
         feasible_tau: to_tau(&sec.feasible),
@@ -126,7 +208,7 @@ fn trajectory_report(traj: &Trajectory, sec: Sections, method: &str, step: Optio
         boundaries: sec
             .boundaries
             .into_iter()
-            .map(|(t, constraint, enters)| Boundary { t, tau: traj.tau_of_t(t), constraint, enters })
+            .map(|(t, constraint, enters)| Boundary { t, tau: along.tau_of_t(t), constraint, enters })
             .collect(),
         feasible: sec.feasible,
         infeasible: sec.infeasible,

@@ -3,8 +3,8 @@
 //! between the samples that disagree, so they are only as good as Δt.
 
 use super::sections::{push_merged, sections, Labelled, Piece};
-use super::trajectory_report;
-use crate::conditions::{cables_at, for_scenario};
+use super::{trajectory_report, Along};
+use crate::conditions::for_scenario;
 use crate::error::{Error, Result};
 use crate::model::Trajectory;
 use crate::poly::Truth;
@@ -16,6 +16,11 @@ const MAX_SAMPLES: f64 = 1e7;
 
 /// Point-wise verification of a trajectory with step `dt`.
 pub fn verify_pointwise(s: &Scenario, traj: &Trajectory, dt: f64) -> Result<VerifyReport> {
+    verify_pointwise_along(s, Along::Trajectory(traj), dt)
+}
+
+/// Point-wise verification along a trajectory or a multi-link robot's path with step `dt`.
+pub fn verify_pointwise_along(s: &Scenario, along: Along, dt: f64) -> Result<VerifyReport> {
     if !(dt.is_finite() && dt > 0.0 && dt <= 1.0) || 1.0 / dt > MAX_SAMPLES {
         return Err(Error::new("--pointwise", format!("the step must be in [1e-7, 1], got {dt}")));
     }
@@ -25,7 +30,7 @@ pub fn verify_pointwise(s: &Scenario, traj: &Trajectory, dt: f64) -> Result<Veri
     let states: Vec<Vec<bool>> = ts
         .iter()
         .map(|&t| {
-            let cables = cables_at(&s.robot, &traj.pose_at(t));
+            let cables = along.cables_at(s, t);
             conditions.iter().map(|c| c.check(&cables).violated).collect()
         })
         .collect();
@@ -50,5 +55,5 @@ pub fn verify_pointwise(s: &Scenario, traj: &Trajectory, dt: f64) -> Result<Veri
         .map(|(i, c)| Labelled { label: c.label(), pieces: pieces_of(&|k| states[k][i]) })
         .collect();
     let sec = sections(&overall, &per, 0.0);
-    Ok(trajectory_report(traj, sec, "pointwise", Some(dt), s.warnings.clone()))
+    Ok(trajectory_report(along, sec, "pointwise", Some(dt), s.warnings.clone()))
 }

@@ -1,12 +1,13 @@
-//! Slice maps: a cell-centred res × res grid over two pose coordinates, the others fixed from a
-//! pose, each cell classified by the conditions at its centre; and the 4-neighbour connected
+//! Slice maps: a cell-centred res × res grid over two coordinates (pose coordinates, or a
+//! multi-link robot's joint coordinates), the others fixed from a pose (or configuration), each
+//! cell classified by the conditions at its centre; and the 4-neighbour connected
 //! components of the feasible cells (Bohigas et al. Fig. 5). An angle axis whose range is one
 //! whole turn (e.g. φ ∈ [−π, π]) closes on itself: its first and last cells are neighbours.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
-use crate::conditions::{cables_at, for_scenario, Condition, Kind};
+use crate::conditions::{cables_at_config, for_scenario, Condition, Kind};
 use crate::error::{Error, Result};
-use crate::model::{Coord, Pose};
+use crate::model::Coord;
 use crate::scenario::Scenario;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -20,7 +21,8 @@ pub const MAX_RES: usize = 2000;
 pub enum Class {
     /// Every condition holds.
     Feasible,
-    /// Some cable's tension range leaves its bounds over the wrench set.
+    /// Some cable's tension range leaves its bounds over the wrench set (a multi-link robot:
+    /// joint-space wrench closure fails).
     Tension,
     /// Some cable length is out of its bounds.
     Length,
@@ -39,8 +41,9 @@ pub struct SliceMap {
     pub range: [[f64; 2]; 2],
     /// Grid side.
     pub res: usize,
-    /// The six coordinates of the fixed pose (the axes' entries are overwritten per cell).
-    pub fixed: [f64; 6],
+    /// The coordinates of the fixed pose or configuration (the axes' entries are overwritten per
+    /// cell).
+    pub fixed: Vec<f64>,
     /// Share of feasible cells.
     pub fraction_feasible: f64,
     /// Number of connected components of feasible cells.
@@ -101,8 +104,8 @@ pub fn default_range(c: Coord) -> Option<[f64; 2]> {
     c.is_angle().then_some([-PI, PI])
 }
 
-fn classify(s: &Scenario, conditions: &[Box<dyn Condition>], pose: &Pose) -> Class {
-    let cables = cables_at(&s.robot, pose);
+fn classify(s: &Scenario, conditions: &[Box<dyn Condition>], q: &[f64]) -> Class {
+    let cables = cables_at_config(&s.robot, q);
     let violated = |kind: Kind| conditions.iter().filter(|c| c.kind() == kind).any(|c| c.check(&cables).violated);
     if violated(Kind::Length) {
         return Class::Length;
@@ -147,10 +150,10 @@ fn empty_map(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range:
         }
     }
     Ok(SliceMap {
-        axes: [axes[0].name().to_string(), axes[1].name().to_string()],
+        axes: [s.coord_name(axes[0]), s.coord_name(axes[1])],
         range,
         res,
-        fixed: s.pose(pose_name)?.coords(),
+        fixed: s.config(pose_name)?,
         fraction_feasible: 0.0,
         components: 0,
         classes: Vec::new(),
@@ -177,10 +180,10 @@ fn classify_rows(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, ra
     let classes = crate::parallel::map_with(rows.len(), || for_scenario(s), |conditions, k| {
         let row = (0..res)
             .map(|i| {
-                let mut c = map.fixed;
+                let mut c = map.fixed.clone();
                 c[axes[0].index()] = map.center(0, i);
                 c[axes[1].index()] = map.center(1, first + k);
-                classify(s, conditions, &Pose::from_coords(c))
+                classify(s, conditions, &c)
             })
             .collect::<Vec<_>>();
         rows_done.fetch_add(1, Ordering::Relaxed);
@@ -243,18 +246,28 @@ fn label_components(map: &mut SliceMap, wraps: [bool; 2]) {
     map.components = next;
 }
 
-/// The scenario's poses that lie on the slice (their other coordinates equal the fixed ones to
-/// 1e-9) and inside its square, with the component of their cell. A tilt-and-torsion orientation
-/// has two coordinate triples, (φ, θ, σ) and (φ + π, −θ, σ): the first inside the square is used.
+/// The scenario's poses (or a multi-link robot's configurations) that lie on the slice (their
+/// other coordinates equal the fixed ones to 1e-9) and inside its square, with the component of
+/// their cell. A tilt-and-torsion orientation has two coordinate triples, (φ, θ, σ) and
+/// (φ + π, −θ, σ): the first inside the square is used.
 fn poses_on_slice(s: &Scenario, map: &SliceMap, axes: [Coord; 2]) -> Vec<(String, Option<usize>)> {
     let wrap = crate::model::pose::wrap_angle;
     let same = |a: f64, b: f64, angle: bool| if angle { wrap(a - b).abs() < 1e-9 } else { (a - b).abs() < 1e-9 };
+    let named: Vec<(String, Vec<Vec<f64>>)> = match s.robot.chain {
+        Some(_) => s.configs.iter().map(|(n, q)| (n.clone(), vec![q.clone()])).collect(),
+        None => s
+            .poses
+            .iter()
+            .map(|(n, p)| {
+                let c = p.coords();
+                (n.clone(), vec![c.to_vec(), vec![c[0], c[1], c[2], wrap(c[3] + PI), -c[4], c[5]]])
+            })
+            .collect(),
+    };
     let mut out = vec![];
-    for (name, pose) in &s.poses {
-        let c = pose.coords();
-        let alt = [c[0], c[1], c[2], wrap(c[3] + PI), -c[4], c[5]];
-        for cand in [c, alt] {
-            let on_slice = Coord::ALL.iter().filter(|k| !axes.contains(k)).all(|&k| same(cand[k.index()], map.fixed[k.index()], k.is_angle()));
+    for (name, candidates) in named {
+        for cand in candidates {
+            let on_slice = (0..cand.len()).map(|k| s.coord_at(k)).filter(|k| !axes.contains(k)).all(|k| same(cand[k.index()], map.fixed[k.index()], k.is_angle()));
             // an angle axis may hold the value shifted by a whole turn
             let value = |a: usize| {
                 let v = cand[axes[a].index()];
@@ -285,7 +298,7 @@ mod tests {
             axes: ["phi".into(), "z".into()],
             range: [[-PI, PI], [0.0, 1.0]],
             res,
-            fixed: [0.0; 6],
+            fixed: vec![0.0; 6],
             fraction_feasible: 0.0,
             components: 0,
             classes,

@@ -219,7 +219,7 @@ fn lattice_rays(
     let mut since = now();
     for r in rays[0]..rays[1] {
         let (a, cell) = l.spec.ray_at(r);
-        let sec = l.cast(l.spec.coords(&cell), a);
+        let sec = l.cast(&l.spec.coords(&cell), a);
         sections.push(RaySections::new(&sec.feasible, &sec.uncertain));
         if now() - since >= PROGRESS_MS {
             let done = sections.len();

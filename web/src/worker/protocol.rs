@@ -263,6 +263,11 @@ pub struct LatticeRay {
     pub components: Vec<usize>,
 }
 
+/// The six pose coordinates of a platform robot's lattice (the page draws platform robots).
+fn six(c: &[f64]) -> [f64; 6] {
+    std::array::from_fn(|i| c.get(i).copied().unwrap_or(0.0))
+}
+
 impl From<&LatticeReport> for LatticeResult {
     fn from(r: &LatticeReport) -> LatticeResult {
         let rays = r
@@ -270,14 +275,14 @@ impl From<&LatticeReport> for LatticeResult {
             .iter()
             .zip(&r.piece_components)
             .map(|(ray, comps)| {
-                let mut at = r.fixed;
+                let mut at = six(&r.fixed);
                 for (name, v) in &ray.fixed {
                     if let Some(c) = cablenav::model::Coord::parse(name) {
                         at[c.index()] = *v;
                     }
                 }
                 let a = r.axes.iter().position(|n| *n == ray.vary).unwrap_or(0);
-                if let Some(c) = cablenav::model::Coord::parse(ray.vary) {
+                if let Some(c) = cablenav::model::Coord::parse(&ray.vary) {
                     at[c.index()] = r.ranges[a][0];
                 }
                 LatticeRay { vary: ray.vary.to_string(), at, feasible: ray.feasible.clone(), components: comps.clone() }
@@ -287,7 +292,7 @@ impl From<&LatticeReport> for LatticeResult {
             axes: r.axes.iter().map(|a| a.to_string()).collect(),
             ranges: r.ranges.clone(),
             steps: r.steps.clone(),
-            fixed: r.fixed,
+            fixed: six(&r.fixed),
             rays,
             pieces: r.pieces,
             components: r.components,

@@ -1,0 +1,104 @@
+//! Multi-link robots on the command line (issue 11): joint coordinates wherever pose coordinates
+//! go (`check --pose CONFIG`, `ray --vary alpha`, `lattice --axes alpha,beta`), the thesis'
+//! Fig. 3.12 cross-section from the preset, and the commands that do not take a multi-link robot
+//! yet refusing it by name.
+
+use cablenav::Error;
+use cablenav_cli::{run, CliError};
+use serde_json::Value;
+
+const ARM: &str = include_str!("../../static/multilink/bmarm-x4-2.json");
+
+fn cli(args: &[&str]) -> Result<String, CliError> {
+    let read = |p: &str| if p == "arm.json" { Ok(ARM.to_string()) } else { Err(Error::new(p, "no such file")) };
+    let write = |_: &str, _: &[u8]| Ok(());
+    run(args.iter().copied(), &read, &write, &mut |_| {})
+}
+
+fn json(args: &[&str]) -> Value {
+    serde_json::from_str(&cli(args).unwrap_or_else(|e| panic!("{args:?}: {e}"))).unwrap()
+}
+
+const QUARTER: &str = "0.7853981633974483";
+const MINUS_QUARTER: &str = "-0.7853981633974483";
+
+#[test]
+fn check_and_ray_take_joint_coordinates() {
+    let check = json(&["check", "arm.json", "--pose", "fig312", "--json"]);
+    assert_eq!(check["lengths"].as_array().unwrap().len(), 5);
+    assert!(check["checks"].as_array().unwrap().iter().any(|c| c["constraint"] == "cable 4 - link Upper Arm"));
+
+    // fig312 itself lies in the gap between the two regions (cables 2-3); "below" does not
+    assert_eq!(check["violated"], serde_json::json!(["cables 2-3"]));
+    let ray = json(&["ray", "arm.json", "--pose", "below", "--vary", "alpha", "--range", MINUS_QUARTER, QUARTER, "--json"]);
+    assert_eq!(ray["vary"], "alpha");
+    let feasible = ray["feasible"].as_array().unwrap();
+    assert!(!feasible.is_empty());
+    // the same ray by its generic name
+    let by_q = json(&["ray", "arm.json", "--pose", "below", "--vary", "q1", "--range", MINUS_QUARTER, QUARTER, "--json"]);
+    assert_eq!(by_q["feasible"], ray["feasible"]);
+    let text = cli(&["ray", "arm.json", "--pose", "fig312", "--vary", "theta", "--range", "-0.5", "0.5"]).unwrap();
+    assert!(text.contains("ray theta over [-0.5, 0.5] from pose fig312"), "{text}");
+}
+
+#[test]
+fn a_slice_map_over_two_joint_coordinates() {
+    let m = json(&["slice", "arm.json", "--pose", "fig312", "--axes", "alpha,beta", "--res", "40", "--range", MINUS_QUARTER, QUARTER, MINUS_QUARTER, QUARTER, "--json"]);
+    assert_eq!(m["axes"], serde_json::json!(["alpha", "beta"]));
+    assert_eq!(m["fixed"].as_array().unwrap().len(), 4);
+    let classes = m["classes"].as_array().unwrap();
+    assert_eq!(classes.len(), 1600);
+    for class in ["feasible", "interference", "tension"] {
+        assert!(classes.iter().any(|c| c == class), "no {class} cell");
+    }
+    // fig312 lies on the slice (α = β = 0 inside the square, γ and θ the fixed ones); initial not
+    assert!(m["pose_components"].get("fig312").is_some() && m["pose_components"].get("below").is_some(), "{}", m["pose_components"]);
+    assert!(m["pose_components"].get("initial").is_none(), "{}", m["pose_components"]);
+    // the default range of angle axes is one turn
+    let whole = json(&["slice", "arm.json", "--pose", "fig312", "--axes", "alpha,theta", "--res", "8", "--json"]);
+    assert_eq!(whole["range"][1], serde_json::json!([-std::f64::consts::PI, std::f64::consts::PI]));
+}
+
+#[test]
+fn verify_takes_a_path_through_configurations() {
+    let r = json(&["verify", "arm.json", "--json"]);
+    assert_eq!(r["trajectory"], "across the gap");
+    assert_eq!(r["infeasible"].as_array().unwrap().len(), 1);
+    let sampled = json(&["verify", "arm.json", "--trajectory", "across the gap", "--pointwise", "0.01", "--json"]);
+    assert_eq!(sampled["method"], "pointwise");
+    let all = json(&["verify", "arm.json", "--all", "--json"]);
+    assert_eq!(all.as_array().unwrap().len(), 1);
+}
+
+#[test]
+fn the_fig_3_12_lattice_has_two_components() {
+    let l = json(&["lattice", "arm.json", "--pose", "fig312", "--axes", "alpha,beta", "--range", MINUS_QUARTER, QUARTER, MINUS_QUARTER, QUARTER, "--steps", "10", "--json"]);
+    assert_eq!(l["axes"], serde_json::json!(["alpha", "beta"]));
+    assert_eq!(l["components"], 2);
+    assert_eq!(l["feasible_points"], 77);
+    let ray = &l["rays"][0];
+    assert_eq!(ray["vary"], "alpha");
+    assert!(ray["fixed"]["gamma"].as_f64().is_some_and(|g| (g + std::f64::consts::PI / 12.0).abs() < 1e-15), "{ray}");
+}
+
+fn input_error(args: &[&str]) -> Error {
+    match cli(args) {
+        Err(CliError::Input(e)) => e,
+        other => panic!("{args:?}: expected an input error, got {other:?}"),
+    }
+}
+
+#[test]
+fn unknown_coordinates_and_unsupported_commands_say_why() {
+    let e = input_error(&["ray", "arm.json", "--pose", "fig312", "--vary", "x", "--range", "0", "1"]);
+    assert_eq!(e.field, "--vary");
+    assert!(e.reason.contains("alpha, beta, gamma, theta"), "{e}");
+    let e = input_error(&["lattice", "arm.json", "--pose", "fig312", "--axes", "alpha,omega", "--range", "0", "1", "0", "1", "--steps", "3"]);
+    assert_eq!(e.field, "--axes");
+    let e = input_error(&["check", "arm.json", "--pose", "upright"]);
+    assert_eq!(e.field, "pose");
+    assert!(e.reason.contains("no configuration named \"upright\"") && e.reason.contains("fig312"), "{e}");
+    let e = input_error(&["slice", "arm.json", "--pose", "fig312", "--axes", "phi,theta", "--res", "8"]);
+    assert_eq!(e.field, "--axes");
+    assert!(e.reason.contains("\"phi\" is not a coordinate of this robot"), "{e}");
+}
