@@ -363,9 +363,17 @@ impl Lattice {
         let coord = spec.axes[a];
         let [lo, hi] = spec.ranges[a];
         let sec = ray_sections(&self.scenario, &self.conditions, &c, coord, lo, hi);
+        self.ray_with(r, sec.feasible, sec.uncertain)
+    }
+
+    /// Ray `r` with its sections `feasible` and `uncertain`, computed here or elsewhere (the
+    /// page's workers compute rays apart and join them).
+    pub fn ray_with(&self, r: usize, feasible: Vec<[f64; 2]>, uncertain: Vec<[f64; 2]>) -> Ray {
+        let (a, cell) = self.spec.ray_at(r);
+        let (coord, c) = (self.spec.axes[a], self.spec.coords(&cell));
         let s = &self.scenario;
         let fixed = (0..c.len()).filter(|&k| k != coord.index()).map(|k| (s.coord_name(s.coord_at(k)), c[k])).collect();
-        Ray { vary: s.coord_name(coord), axis: a, cell, fixed, feasible: sec.feasible, uncertain: sec.uncertain }
+        Ray { vary: s.coord_name(coord), axis: a, cell, fixed, feasible, uncertain }
     }
 
     /// The pieces containing grid point `idx` (one per ray through it that holds it feasible), as

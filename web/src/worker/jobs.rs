@@ -2,7 +2,7 @@
 //! tested natively (the worker calls [`run`]; so do the tests).
 
 use super::protocol::{pose_to_wire, Job, LatticeResult, PlannedTrajectory, RaySections, Reply, WireReport};
-use cablenav::lattice::{Lattice, LatticeSpec, Ray};
+use cablenav::lattice::{Lattice, LatticeSpec};
 use crate::logic::fmt_num;
 use cablenav::model::{Coord, Pose};
 use cablenav::plan::choice::{self, Details, PathPlanner, PlanResult, PlannerKind, PlannerOptions, Progress};
@@ -241,12 +241,7 @@ pub fn join_lattice(s: &Scenario, spec: LatticeSpec, sections: &[RaySections]) -
     l.rays = sections
         .iter()
         .enumerate()
-        .map(|(r, sec)| {
-            let (a, cell) = l.spec.ray_at(r);
-            let (coord, c) = (l.spec.axes[a], l.spec.coords(&cell));
-            let fixed = Coord::ALL.into_iter().filter(|&k| k != coord).map(|k| (k.name(), c[k.index()])).collect();
-            Ray { vary: coord.name(), axis: a, cell, fixed, feasible: sec.feasible(), uncertain: sec.uncertain() }
-        })
+        .map(|(r, sec)| l.ray_with(r, sec.feasible(), sec.uncertain()))
         .collect();
     // every ray is there: this step computes none and builds the graph
     l.step(1);
