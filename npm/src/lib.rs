@@ -20,7 +20,8 @@ export type ScenarioInput = string | object;
 /** An interval [lo, hi]. */
 export type Interval = [number, number];
 /** A pose coordinate. */
-export type Coord = "x" | "y" | "z" | "phi" | "theta" | "sigma";
+/** A coordinate: a platform pose's, or (any other string) a multi-link robot's joint coordinate by its name in the scenario, or q1, q2, …. */
+export type Coord = "x" | "y" | "z" | "phi" | "theta" | "sigma" | (string & {});
 
 /** What `verify` returns (`cablenav verify --json`). */
 export interface VerifyReport {
@@ -123,8 +124,8 @@ export interface LatticeReport {
   axes: Coord[];
   ranges: Interval[];
   steps: number[];
-  /** x, y, z, phi, theta, sigma the other coordinates are held at. */
-  fixed: [number, number, number, number, number, number];
+  /** The coordinates the others are held at (x, y, z, phi, theta, sigma for a platform robot, the joint coordinates of a multi-link robot). */
+  fixed: number[];
   rays: { vary: Coord; fixed: Partial<Record<Coord, number>>; feasible: Interval[]; uncertain?: Interval[] }[];
   pieces: number;
   edges: number;
@@ -228,7 +229,8 @@ pub fn check(#[wasm_bindgen(unchecked_param_type = "ScenarioInput")] scenario: J
     call(scenario, Ok(Request::Check { pose }))
 }
 
-/// Exact feasible intervals of one coordinate over [lo, hi], the others held at the pose's.
+/// Exact feasible intervals of one coordinate over [lo, hi], the others held at the pose's (a
+/// multi-link robot: `pose` names a configuration, `vary` a joint coordinate).
 #[wasm_bindgen(unchecked_return_type = "RayReport")]
 pub fn ray(
     #[wasm_bindgen(unchecked_param_type = "ScenarioInput")] scenario: JsValue,

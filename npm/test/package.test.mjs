@@ -97,6 +97,18 @@ test('lattice and the lattice planner equal the CLI (to the last bits of libm)',
   assert.deepEqual(plan.steps, [5, 5, 5]);
 });
 
+test('multi-link robots: joint coordinates by name, equal to the CLI', () => {
+  const path = join(root, 'static', 'multilink', 'bmarm-x4-2.json');
+  const arm = readFileSync(path, 'utf8');
+  const q = Math.PI / 4;
+  close(cablenav.ray(arm, 'below', 'alpha', -q, q), cli('ray', path, '--pose', 'below', '--vary', 'alpha', '--range', -q, q));
+  const ours = cablenav.lattice(arm, 'fig312', ['alpha', 'beta'], [-q, q, -q, q], 10);
+  close(ours, cli('lattice', path, '--pose', 'fig312', '--axes', 'alpha,beta', '--range', -q, q, -q, q, '--steps', 10));
+  assert.equal(ours.components, 2);
+  close(cablenav.verify(arm, 'across the gap'), cli('verify', path, '--trajectory', 'across the gap'));
+  assert.throws(() => cablenav.ray(arm, 'fig312', 'x', 0, 1), (e) => e.field === 'vary' && /alpha, beta, gamma, theta/.test(e.message));
+});
+
 test('errors are ScenarioErrors naming the field', () => {
   const scenario = JSON.parse(preset('cdpr7.json'));
   const throws = (f, field) => {

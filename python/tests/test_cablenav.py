@@ -67,6 +67,21 @@ def test_lattice_and_the_lattice_planner_equal_the_cli(cli):
     assert ours == theirs and ours["steps"] == [5, 5, 5]
 
 
+def test_multi_link_robots_equal_the_cli(cli):
+    arm = ROOT / "static" / "multilink" / "bmarm-x4-2.json"
+    quarter = 0.7853981633974483
+    assert cablenav.check(arm, "fig312") == cli("check", arm, "--pose", "fig312")
+    assert cablenav.ray(arm, "below", "alpha", (-quarter, quarter)) == cli("ray", arm, "--pose", "below", "--vary", "alpha", "--range", -quarter, quarter)
+    ours = cablenav.lattice(arm, "fig312", ("alpha", "beta"), ((-quarter, quarter), (-quarter, quarter)), 10)
+    assert ours == cli("lattice", arm, "--pose", "fig312", "--axes", "alpha,beta", "--range", -quarter, quarter, -quarter, quarter, "--steps", 10)
+    assert ours["components"] == 2 and ours["axes"] == ["alpha", "beta"]
+    assert cablenav.slice(arm, "fig312", ("alpha", "theta"), 12) == cli("slice", arm, "--pose", "fig312", "--axes", "alpha,theta", "--res", 12)
+    assert cablenav.verify(arm, "across the gap") == cli("verify", arm, "--trajectory", "across the gap")
+    with pytest.raises(cablenav.ScenarioError) as e:
+        cablenav.ray(arm, "fig312", "x", (0, 1))
+    assert e.value.field == "vary" and "alpha, beta, gamma, theta" in str(e.value)
+
+
 def test_errors_carry_the_field():
     scenario = load(ROOT / "static" / "scenarios" / "cdpr7.json")
     bad = json.loads(json.dumps(scenario))

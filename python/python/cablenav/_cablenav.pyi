@@ -28,7 +28,8 @@ def check(scenario: Scenario, pose: str) -> Report:
     """Lengths, clearances, violated conditions and wrench tension ranges at one pose."""
 
 def ray(scenario: Scenario, pose: str, vary: str, range: Tuple[float, float]) -> Report:
-    """Exact feasible intervals of one coordinate (x, y, z, phi, theta, sigma) over ``range``."""
+    """Exact feasible intervals of one coordinate (x, y, z, phi, theta, sigma, or a multi-link
+    robot's joint coordinate by name, ``pose`` naming a configuration) over ``range``."""
 
 def envelope(scenario: Scenario, trajectory: Optional[str] = None, *, samples: Optional[int] = None) -> Report:
     """Each cable's least and greatest tension over the wrench set along a trajectory."""
