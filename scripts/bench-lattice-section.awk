@@ -50,5 +50,22 @@ END {
     res = summ[c]; gsub(";", ", ", res); gsub("=", " ", res)
     printf "| %s | %s | %s | %s |\n", qs[i], cell("native", c), cell("wasm", c), res
   }
+  print ""
+  print "### Multi-link robot: the thesis' 4-DoF arm (Fig. 3.12, docs/multilink.md)"
+  print ""
+  print "`static/multilink/bmarm-x4-2.json`: the α–β cross-section at γ = −π/12, θ = π/12 over [−π/4, π/4]²"
+  print "(n values per axis; all conditions: cable–cable, cable–link, joint-space wrench closure), and the"
+  print "path `across the gap` (β from −0.4 to 0.4) verified exactly and point-wise."
+  print ""
+  print "| case | native median | wasm median | result |"
+  print "|---|---:|---:|---|"
+  split("mcdr-fig312/rays-10 mcdr-fig312/points-10 mcdr-fig312/rays-40 mcdr-fig312/points-40 mcdr-path/exact mcdr-path/pointwise-0.01 mcdr-path/pointwise-0.001", ms, " ")
+  for (i = 1; i <= 7; i++) {
+    c = "lattice/" ms[i]
+    res = summ[c]; gsub(";", ", ", res); gsub("=", " ", res)
+    printf "| %s | %s | %s | %s |\n", ms[i], cell("native", c), cell("wasm", c), res
+  }
+  print ""
+  printf "Exact path verification against point-wise sampling in the same run: Δt = 0.01 %s, Δt = 0.001 %s (point-wise / exact, native).\n", r(med["native", "lattice/mcdr-path/pointwise-0.01"], med["native", "lattice/mcdr-path/exact"]), r(med["native", "lattice/mcdr-path/pointwise-0.001"], med["native", "lattice/mcdr-path/exact"])
   print "<!-- lattice:end -->"
 }

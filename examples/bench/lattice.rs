@@ -9,12 +9,14 @@
 use cablenav::lattice::{point_grid, Lattice, LatticeSpec};
 use cablenav::model::Coord;
 use cablenav::plan::lattice::{LatticeParams, LatticePlanner};
+use cablenav::verify::{along, verify_along, verify_pointwise_along};
 use cablenav::Scenario;
 
 const CDPR7: &str = include_str!("../../static/scenarios/cdpr7.json");
 const CDPR7_TREE: &str = include_str!("../../static/scenarios/cdpr7-tree.json");
 const CDPR7_BOX: &str = include_str!("../../static/scenarios/cdpr7-box.json");
 const ROBOCRANE: &str = include_str!("../../static/scenarios/robocrane.json");
+const ARM: &str = include_str!("../../static/multilink/bmarm-x4-2.json");
 
 /// Timed runs per case (after one untimed run).
 const RUNS: usize = 3;
@@ -59,6 +61,32 @@ pub fn run_lattice(platform: &str, filter: &str, now: &dyn Fn() -> f64, out: &mu
                 format!("points={};components={};feasible_points={}", g.feasible.len(), g.components, g.feasible.iter().filter(|&&f| f).count())
             }, out);
         }
+    }
+    // the thesis' 4-DoF arm (§3.5.2): Fig. 3.12's α–β cross-section, and the path across its gap
+    let arm = parse(ARM);
+    let axes = vec![arm.coord("--axes", "alpha").expect("alpha"), arm.coord("--axes", "beta").expect("beta")];
+    let quarter = std::f64::consts::FRAC_PI_4;
+    for steps in [10, 40] {
+        let spec = LatticeSpec::new(axes.clone(), vec![[-quarter, quarter]; 2], vec![steps], arm.config("fig312").expect("fig312")).expect("arm lattice");
+        time(platform, now, filter, &format!("lattice/mcdr-fig312/rays-{steps}"), &mut || {
+            let r = Lattice::build(&arm, spec.clone()).report().expect("built");
+            format!("rays={};components={};feasible_points={}", r.rays.len(), r.components, r.feasible_points)
+        }, out);
+        time(platform, now, filter, &format!("lattice/mcdr-fig312/points-{steps}"), &mut || {
+            let g = point_grid(&arm, &spec);
+            format!("points={};components={};feasible_points={}", g.feasible.len(), g.components, g.feasible.iter().filter(|&&f| f).count())
+        }, out);
+    }
+    let path = along(&arm, Some("across the gap")).expect("path");
+    time(platform, now, filter, "lattice/mcdr-path/exact", &mut || {
+        let r = verify_along(&arm, path).expect("verified");
+        format!("infeasible={:?}", r.infeasible).replace(' ', "")
+    }, out);
+    for dt in [0.01, 0.001] {
+        time(platform, now, filter, &format!("lattice/mcdr-path/pointwise-{dt}"), &mut || {
+            let r = verify_pointwise_along(&arm, path, dt).expect("sampled");
+            format!("infeasible={:?}", r.infeasible).replace(' ', "")
+        }, out);
     }
     let queries = [("tree/around-tree", parse(CDPR7_TREE), "around-tree"), ("box/over-box", parse(CDPR7_BOX), "over-box"), ("robocrane/q1-q2", parse(ROBOCRANE), "q1-q2")];
     for (id, s, query) in &queries {
