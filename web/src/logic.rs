@@ -66,9 +66,18 @@ pub struct StripModel {
     pub gaps: Vec<[f64; 2]>,
 }
 
-/// Parses scenario JSON with the core; the error is the core's "field: reason" text.
+/// Parses scenario JSON with the core; the error is the core's "field: reason" text. A
+/// multi-link robot (format 3) is valid but not drawn or analysed by the page yet: that is said
+/// as the error, and the text stays as the user wrote it.
 pub fn parse_scenario(text: &str) -> Result<Scenario, String> {
-    Scenario::from_json(text).map_err(|e| e.to_string())
+    let s = Scenario::from_json(text).map_err(|e| e.to_string())?;
+    if s.robot.chain.is_some() {
+        return Err("robot.links: a valid multi-link robot, but the page shows platform robots only so far; \
+                    analyse it with the cablenav CLI (check, ray, lattice, slice, verify), the Python or the npm \
+                    package (docs/multilink.md)"
+            .to_string());
+    }
+    Ok(s)
 }
 
 /// Verifies trajectory `index` of `scenario` with the core.
@@ -267,5 +276,13 @@ mod tests {
     fn a_missing_trajectory_is_an_error_not_a_panic() {
         let s = parse_scenario(crate::presets::PRESETS[0].json).unwrap();
         assert!(verify(&s, usize::MAX).is_err());
+    }
+
+    #[test]
+    fn a_multi_link_robot_is_named_not_dropped() {
+        let arm = include_str!("../../static/multilink/bmarm-x4-2.json");
+        assert!(cablenav::Scenario::from_json(arm).is_ok());
+        let e = super::parse_scenario(arm).unwrap_err();
+        assert!(e.starts_with("robot.links: a valid multi-link robot") && e.contains("docs/multilink.md"), "{e}");
     }
 }
