@@ -4,6 +4,15 @@
 function s(us) { return (us >= 1e6) ? sprintf("%.2f s", us / 1e6) : sprintf("%.1f ms", us / 1000) }
 function r(a, b) { return (a > 0 && b > 0) ? sprintf("%.1f×", a / b) : "–" }
 function cell(p, c) { return ((p, c) in med) ? s(med[p, c]) : "not run" }
+# One table row per case of the space-separated list (ids below lattice/): native, wasm, result.
+function rows(list,    ids, n, i, c, res) {
+  n = split(list, ids, " ")
+  for (i = 1; i <= n; i++) {
+    c = "lattice/" ids[i]
+    res = summ[c]; gsub(";", ", ", res); gsub("=", " ", res)
+    printf "| %s | %s | %s | %s |\n", ids[i], cell("native", c), cell("wasm", c), res
+  }
+}
 $1 == "BENCH" && $3 ~ /^lattice\// { med[$2, $3] = $4; best[$2, $3] = $5; summ[$3] = $8 }
 END {
   print "<!-- lattice:begin (scripts/bench.sh --lattice rewrites this section) -->"
@@ -44,12 +53,7 @@ END {
   print ""
   print "| query | native median | wasm median | result |"
   print "|---|---:|---:|---|"
-  split("tree/around-tree box/over-box robocrane/q1-q2", qs, " ")
-  for (i = 1; i <= 3; i++) {
-    c = "lattice/plan/" qs[i]
-    res = summ[c]; gsub(";", ", ", res); gsub("=", " ", res)
-    printf "| %s | %s | %s | %s |\n", qs[i], cell("native", c), cell("wasm", c), res
-  }
+  rows("plan/tree/around-tree plan/box/over-box plan/robocrane/q1-q2")
   print ""
   print "### Multi-link robot: the thesis' 4-DoF arm (Fig. 3.12, docs/multilink.md)"
   print ""
@@ -59,12 +63,7 @@ END {
   print ""
   print "| case | native median | wasm median | result |"
   print "|---|---:|---:|---|"
-  split("mcdr-fig312/rays-10 mcdr-fig312/points-10 mcdr-fig312/rays-40 mcdr-fig312/points-40 mcdr-path/exact mcdr-path/pointwise-0.01 mcdr-path/pointwise-0.001", ms, " ")
-  for (i = 1; i <= 7; i++) {
-    c = "lattice/" ms[i]
-    res = summ[c]; gsub(";", ", ", res); gsub("=", " ", res)
-    printf "| %s | %s | %s | %s |\n", ms[i], cell("native", c), cell("wasm", c), res
-  }
+  rows("mcdr-fig312/rays-10 mcdr-fig312/points-10 mcdr-fig312/rays-40 mcdr-fig312/points-40 mcdr-path/exact mcdr-path/pointwise-0.01 mcdr-path/pointwise-0.001")
   print ""
   printf "Exact path verification against point-wise sampling in the same run: Δt = 0.01 %s, Δt = 0.001 %s (point-wise / exact, native).\n", r(med["native", "lattice/mcdr-path/pointwise-0.01"], med["native", "lattice/mcdr-path/exact"]), r(med["native", "lattice/mcdr-path/pointwise-0.001"], med["native", "lattice/mcdr-path/exact"])
   print "<!-- lattice:end -->"

@@ -14,6 +14,9 @@ use cablenav::Scenario;
 use serde_json::{json, Value};
 use std::f64::consts::PI;
 
+mod support;
+use support::reference::Rng;
+
 macro_rules! model {
     ($path:literal) => {
         include_str!(concat!("../../shared/models/caspr/", $path))
@@ -74,23 +77,9 @@ fn bmarm_imports_and_checks() {
     assert_eq!(r.lengths.len(), 6);
 }
 
-/// A small deterministic generator.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
-    fn int(&mut self, lo: usize, hi: usize) -> usize {
-        lo + ((hi - lo + 1) as f64 * self.next()) as usize % (hi - lo + 1)
-    }
-    fn v3(&mut self, r: f64) -> [f64; 3] {
-        [self.range(-r, r), self.range(-r, r), self.range(-r, r)]
-    }
+/// A random vector in the cube [−r, r]³.
+fn v3(rng: &mut Rng, r: f64) -> [f64; 3] {
+    [rng.range(-r, r), rng.range(-r, r), rng.range(-r, r)]
 }
 
 /// A random chain of 1–3 links (spherical, revolute, prismatic or free joints, each link's parent
@@ -113,7 +102,7 @@ fn random_chain(rng: &mut Rng) -> (Value, Vec<f64>) {
         }
         let mut joint = json!({"type": kind, "coordinates": names});
         if kind == "revolute" || kind == "prismatic" {
-            joint["axis"] = json!(rng.v3(1.0));
+            joint["axis"] = json!(v3(rng, 1.0));
         }
         let mut link = json!({
             "name": format!("L{k}"),
@@ -144,7 +133,7 @@ fn random_chain(rng: &mut Rng) -> (Value, Vec<f64>) {
         "robot": {"links": links, "cables": cables, "length": {"min": rng.range(0.0, 0.5), "max": rng.range(1.5, 3.0)}},
         "clearance": {"cable_cable": rng.range(0.0, 0.1), "cable_link": rng.range(0.0, 0.1), "cable_obstacle": rng.range(0.0, 0.1)},
     });
-    if rng.next() < 0.4 {
+    if rng.chance(0.4) {
         scenario["obstacles"] = json!([{"type": "sphere", "center": [rng.range(-0.8, 0.8), rng.range(-0.8, 0.8), rng.range(0.0, 1.0)], "radius": rng.range(0.05, 0.3)}]);
     }
     (scenario, q)
@@ -157,7 +146,7 @@ fn inside(intervals: &[[f64; 2]], x: f64, margin: f64) -> bool {
 
 #[test]
 fn random_chain_rays_agree_with_dense_sampling() {
-    let mut rng = Rng(11);
+    let mut rng = Rng::new(11);
     let (mut rays, mut judged, mut feasible_seen, mut infeasible_seen) = (0, 0, 0, 0);
     while rays < 200 {
         let (value, q) = random_chain(&mut rng);
@@ -201,7 +190,7 @@ fn random_chain_rays_agree_with_dense_sampling() {
 
 #[test]
 fn random_chain_paths_agree_with_dense_sampling() {
-    let mut rng = Rng(29);
+    let mut rng = Rng::new(29);
     let (mut paths, mut judged, mut feasible_seen, mut infeasible_seen) = (0, 0, 0, 0);
     while paths < 100 {
         let (mut value, q) = random_chain(&mut rng);

@@ -107,30 +107,37 @@ impl Condition for WrenchClosure {
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let tol = sweep.tol;
         let polys = FacetPolys::of(sweep, &self.wrench);
-        // Some d_k of the facet with the given sign (`GT`: positive), lazily.
-        let some_side = |f: &Facet, side: bool| {
-            f.others.iter().fold(Partition::constant(Truth::False), |acc, (_, d)| {
-                if acc.is_all(Truth::True) { acc } else { acc.or(&Partition::atom(d, side, tol)) }
-            })
-        };
-        let mut holds = Partition::constant(Truth::True);
-        let mut any_facet = false;
-        for f in polys.facets.iter().filter(|f| !f.degenerate()) {
-            any_facet = true;
-            holds = holds.and(&some_side(f, GT)).and(&some_side(f, LT));
-            if holds.is_all(Truth::False) {
-                break;
-            }
-        }
-        if !any_facet {
-            return Partition::constant(Truth::True); // rank < 5 all along: no closure anywhere
-        }
-        holds.not()
+        not_spanning(polys.facets.iter().map(|f| f.others.iter().map(|(_, d)| d.clone()).collect()), tol)
     }
 
     fn check(&self, at: &PoseCables) -> PoseCheck {
         PoseCheck { violated: !closure_holds(&at.cables, &self.wrench.point_at(&at.pose)), distance: None }
     }
+}
+
+/// Where the columns of a structure matrix along a motion do not positively span: given, per
+/// facet candidate S (n − 1 columns), the determinants d_k = det [J_S | j_k] of the other columns
+/// (computed lazily: the search stops once closure fails everywhere), closure holds where every
+/// facet not degenerate all along has some d_k > 0 and some d_k < 0; nowhere if every facet is
+/// degenerate (rank below n − 1 all along).
+pub(super) fn not_spanning(facets: impl Iterator<Item = Vec<Bern>>, tol: f64) -> Partition {
+    // Some d_k with the given sign (`GT`: positive), lazily.
+    let some_side = |d: &[Bern], side: bool| {
+        d.iter().fold(Partition::constant(Truth::False), |acc, p| if acc.is_all(Truth::True) { acc } else { acc.or(&Partition::atom(p, side, tol)) })
+    };
+    let mut holds = Partition::constant(Truth::True);
+    let mut any_facet = false;
+    for d in facets.filter(|d| !d.iter().all(|p| p.max_abs() <= p.err)) {
+        any_facet = true;
+        holds = holds.and(&some_side(&d, GT)).and(&some_side(&d, LT));
+        if holds.is_all(Truth::False) {
+            break;
+        }
+    }
+    if !any_facet {
+        return Partition::constant(Truth::True);
+    }
+    holds.not()
 }
 
 /// Static feasibility of the nominal wrench for a robot with m ≥ 7 cables: tensions strictly

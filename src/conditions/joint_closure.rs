@@ -19,7 +19,7 @@
 use std::rc::Rc;
 
 use super::algebra::H;
-use super::primitives::{GT, LT};
+use super::closure::not_spanning;
 use super::structure::{det_with, minors};
 use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
 use crate::model::{Chain, Joint};
@@ -141,27 +141,11 @@ impl Condition for JointClosure {
         if m <= n {
             return Partition::constant(Truth::True); // m ≤ n cables never positively span ℝⁿ
         }
-        let mut holds = Partition::constant(Truth::True);
-        let mut any_facet = false;
-        for s in subsets(m, n - 1) {
+        let facets = subsets(m, n - 1).into_iter().map(|s| {
             let minors = minors(&rows, &s);
-            let d: Vec<Bern> = (0..m).filter(|k| !s.contains(k)).map(|k| det_with(&minors, &rows.iter().map(|r| &r[k]).collect::<Vec<_>>())).collect();
-            if d.iter().all(|p| p.max_abs() <= p.err) {
-                continue; // S spans less than a hyperplane all along
-            }
-            any_facet = true;
-            let some_side = |side: bool| {
-                d.iter().fold(Partition::constant(Truth::False), |acc, p| if acc.is_all(Truth::True) { acc } else { acc.or(&Partition::atom(p, side, tol)) })
-            };
-            holds = holds.and(&some_side(GT)).and(&some_side(LT));
-            if holds.is_all(Truth::False) {
-                break;
-            }
-        }
-        if !any_facet {
-            return Partition::constant(Truth::True); // rank < n − 1 all along: no closure anywhere
-        }
-        holds.not()
+            (0..m).filter(|k| !s.contains(k)).map(|k| det_with(&minors, &rows.iter().map(|r| &r[k]).collect::<Vec<_>>())).collect()
+        });
+        not_spanning(facets, tol)
     }
 
     fn check(&self, at: &PoseCables) -> PoseCheck {

@@ -44,19 +44,7 @@ pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import>
     let platform = platform(bodies_xml)?;
     let cables = cables(cables_xml, &platform)?;
     let mut notes = Vec::new();
-
-    let diameters: Vec<f64> = cables.iter().filter_map(|c| c.diameter).collect();
-    let diameter = diameters.iter().copied().fold(None, |m: Option<f64>, d| Some(m.map_or(d, |m| m.max(d))));
-    if let Some(d) = diameter {
-        if diameters.iter().any(|x| *x != d) {
-            notes.push(format!("cable diameters differ; robot.diameter is the largest, {d}"));
-        }
-    }
-    let min = combine(cables.iter().map(|c| c.force_min));
-    let max = combine(cables.iter().map(|c| c.force_max));
-    let per_cable = min.is_none() && cables.iter().any(|c| c.force_min.is_some())
-        || max.is_none() && cables.iter().any(|c| c.force_max.is_some());
-    let tension = (!per_cable && (min.is_some() || max.is_some())).then(|| OutBounds { min: min.clone(), max: max.clone() });
+    let Properties { diameter, tension, per_cable } = Properties::of(cables.iter().map(|c| [c.force_min, c.force_max, c.diameter]).collect(), &mut notes);
 
     let out = OutScenario {
         format: FORMAT,
@@ -103,6 +91,31 @@ pub fn kind(xml: &str) -> Option<&'static str> {
     }
 }
 
+/// The robot-level cable properties of an import: the diameter (the largest given), the tension
+/// bounds (one number when all cables agree), or whether the bounds go on each cable.
+pub(super) struct Properties {
+    pub(super) diameter: Option<f64>,
+    pub(super) tension: Option<OutBounds>,
+    pub(super) per_cable: bool,
+}
+
+impl Properties {
+    /// From each cable's `[force_min, force_max, diameter]`; a note when diameters differ.
+    pub(super) fn of(each: Vec<[Option<f64>; 3]>, notes: &mut Vec<String>) -> Properties {
+        let diameters: Vec<f64> = each.iter().filter_map(|c| c[2]).collect();
+        let diameter = diameters.iter().copied().reduce(f64::max);
+        if let Some(d) = diameter {
+            if diameters.iter().any(|x| *x != d) {
+                notes.push(format!("cable diameters differ; robot.diameter is the largest, {d}"));
+            }
+        }
+        let (min, max) = (combine(each.iter().map(|c| c[0])), combine(each.iter().map(|c| c[1])));
+        let per_cable = min.is_none() && each.iter().any(|c| c[0].is_some()) || max.is_none() && each.iter().any(|c| c[1].is_some());
+        let tension = (!per_cable && (min.is_some() || max.is_some())).then_some(OutBounds { min, max });
+        Properties { diameter, tension, per_cable }
+    }
+}
+
 /// One value for all cables when they agree, one per cable when all give one, else `None`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
@@ -111,7 +124,7 @@ pub(super) enum OneOrEach {
     Each(Vec<f64>),
 }
 
-pub(super) fn combine(values: impl Iterator<Item = Option<f64>>) -> Option<OneOrEach> {
+fn combine(values: impl Iterator<Item = Option<f64>>) -> Option<OneOrEach> {
     let all: Option<Vec<f64>> = values.collect();
     let all = all?;
     let first = *all.first()?;
@@ -144,20 +157,22 @@ struct OutCable {
     tension: Option<OutCableBounds>,
 }
 
+/// Robot-level tension bounds as written.
 #[derive(Serialize)]
-struct OutBounds {
+pub(super) struct OutBounds {
     #[serde(skip_serializing_if = "Option::is_none")]
-    min: Option<OneOrEach>,
+    pub(super) min: Option<OneOrEach>,
     #[serde(skip_serializing_if = "Option::is_none")]
-    max: Option<OneOrEach>,
+    pub(super) max: Option<OneOrEach>,
 }
 
+/// A cable's own tension bounds as written.
 #[derive(Serialize)]
-struct OutCableBounds {
+pub(super) struct OutCableBounds {
     #[serde(skip_serializing_if = "Option::is_none")]
-    min: Option<f64>,
+    pub(super) min: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
-    max: Option<f64>,
+    pub(super) max: Option<f64>,
 }
 
 #[derive(Serialize)]

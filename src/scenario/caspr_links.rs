@@ -20,7 +20,7 @@ use roxmltree::Node;
 use serde::Serialize;
 use std::collections::BTreeMap;
 
-use super::caspr::{cable_set, child, child_numbers, children, combine, document, line, parse_xml, properties, Import, OneOrEach};
+use super::caspr::{cable_set, child, child_numbers, children, document, line, parse_xml, properties, Import, OutBounds, OutCableBounds, Properties};
 use super::json::FORMAT_3;
 use crate::error::{Error, Result};
 
@@ -185,14 +185,6 @@ struct OutRobot {
 }
 
 #[derive(Serialize)]
-struct OutBounds {
-    #[serde(skip_serializing_if = "Option::is_none")]
-    min: Option<OneOrEach>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    max: Option<OneOrEach>,
-}
-
-#[derive(Serialize)]
 struct OutLink {
     name: String,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -227,29 +219,12 @@ struct OutCable {
     tension: Option<OutCableBounds>,
 }
 
-#[derive(Serialize)]
-struct OutCableBounds {
-    #[serde(skip_serializing_if = "Option::is_none")]
-    min: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    max: Option<f64>,
-}
-
 /// Converts a CASPR multi-link bodies file and cables file into scenario JSON called `name`.
 pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import> {
     let links = links(bodies_xml)?;
     let cables = cables(cables_xml, &links)?;
     let mut notes = vec!["multi-link robot: clearances are left at 0 (the thesis' case study uses ε = 0.02, clearance.cable_cable and clearance.cable_link); link bodies are segments of radius 0".to_string()];
-    let diameters: Vec<f64> = cables.iter().filter_map(|c| c.props[2]).collect();
-    let diameter = diameters.iter().copied().reduce(f64::max);
-    if let Some(d) = diameter {
-        if diameters.iter().any(|x| *x != d) {
-            notes.push(format!("cable diameters differ; robot.diameter is the largest, {d}"));
-        }
-    }
-    let (min, max) = (combine(cables.iter().map(|c| c.props[0])), combine(cables.iter().map(|c| c.props[1])));
-    let per_cable = min.is_none() && cables.iter().any(|c| c.props[0].is_some()) || max.is_none() && cables.iter().any(|c| c.props[1].is_some());
-    let tension = (!per_cable && (min.is_some() || max.is_some())).then_some(OutBounds { min, max });
+    let Properties { diameter, tension, per_cable } = Properties::of(cables.iter().map(|c| c.props).collect(), &mut notes);
     let link_name = |num: usize| links.get(num.wrapping_sub(1)).map(|l| l.name.clone());
     let initial = links.iter().flat_map(|l| l.coordinates.iter().cloned().zip(l.initial.iter().copied())).collect();
     let out = Out {
