@@ -146,6 +146,9 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
             Some(_) => check_config(scenario, pose, &scenario.config(pose)?),
             None => check_pose(scenario, pose, scenario.pose(pose)?),
         }),
+        Request::Envelope { .. } if scenario.robot.chain.is_some() => {
+            return Err(Error::new("envelope", "tension envelopes need a wrench set; a multi-link robot's wrench condition is joint-space wrench closure, which has no tension ranges"));
+        }
         Request::Envelope { trajectory, samples } => {
             let traj = scenario.trajectory(trajectory.as_deref())?;
             Output::Envelope(tension_envelope(scenario, traj, samples.unwrap_or(100))?)
@@ -173,6 +176,9 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
                 progress(Progress { stage: "rays", done: p.rays_done, total: p.rays_total });
             }
             Output::Lattice(lattice.report().ok_or_else(|| Error::new("lattice", "the lattice stopped before its end"))?)
+        }
+        Request::Plan { .. } if scenario.robot.chain.is_some() => {
+            return Err(Error::new("plan", "planning for multi-link robots is not available yet (docs/multilink.md); `lattice --axes …` shows the connected regions"));
         }
         Request::Plan { query, params, planner, lattice } => {
             let option = |e: Error| match e.field.as_str() {

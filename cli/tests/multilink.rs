@@ -39,6 +39,9 @@ fn check_and_ray_take_joint_coordinates() {
     assert_eq!(by_q["feasible"], ray["feasible"]);
     let text = cli(&["ray", "arm.json", "--pose", "fig312", "--vary", "theta", "--range", "-0.5", "0.5"]).unwrap();
     assert!(text.contains("ray theta over [-0.5, 0.5] from pose fig312"), "{text}");
+    // γ's own range is ±0.1745: a ray past it is computed, with a warning
+    let past = json(&["ray", "arm.json", "--pose", "fig312", "--vary", "gamma", "--range", "-0.5", "0.5", "--json"]);
+    assert!(past["warnings"].as_array().unwrap().iter().any(|w| w.as_str().unwrap().starts_with("gamma: [-0.5, 0.5] leaves the joint's range")), "{past}");
 }
 
 #[test]
@@ -98,6 +101,11 @@ fn unknown_coordinates_and_unsupported_commands_say_why() {
     let e = input_error(&["check", "arm.json", "--pose", "upright"]);
     assert_eq!(e.field, "pose");
     assert!(e.reason.contains("no configuration named \"upright\"") && e.reason.contains("fig312"), "{e}");
+    let e = input_error(&["envelope", "arm.json"]);
+    assert_eq!(e.field, "envelope");
+    let e = input_error(&["plan", "arm.json", "--query", "up"]);
+    assert_eq!(e.field, "plan");
+    assert!(e.reason.contains("multi-link"), "{e}");
     let e = input_error(&["slice", "arm.json", "--pose", "fig312", "--axes", "phi,theta", "--res", "8"]);
     assert_eq!(e.field, "--axes");
     assert!(e.reason.contains("\"phi\" is not a coordinate of this robot"), "{e}");

@@ -447,7 +447,7 @@ impl Lattice {
             point_components: (0..points).map(|flat| self.component_at(&self.spec.point_indices(flat))).collect(),
             disagreements: g.disagreements,
             uncertain_rays: self.rays.iter().filter(|r| !r.uncertain.is_empty()).count(),
-            warnings: self.scenario.warnings.clone(),
+            warnings: self.scenario.warnings.iter().cloned().chain(self.spec.axes.iter().zip(&self.spec.ranges).filter_map(|(&a, &r)| self.scenario.range_warning(a, r))).collect(),
         })
     }
 }

@@ -116,6 +116,15 @@ impl Scenario {
         }
     }
 
+    /// A warning when [lo, hi] leaves the range of joint coordinate `c` (multi-link robots; the
+    /// joints' ranges are not conditions, a ray or a map may look past them).
+    pub fn range_warning(&self, c: Coord, [lo, hi]: [f64; 2]) -> Option<String> {
+        let chain = self.robot.chain.as_ref()?;
+        let (_, _, jc) = chain.coords().nth(c.index())?;
+        let [a, b] = jc.range;
+        (lo < a || hi > b).then(|| format!("{}: [{lo}, {hi}] leaves the joint's range [{a}, {b}] (joint ranges are not checked as conditions)", jc.name))
+    }
+
     /// The name the scenario gives coordinate `c`.
     pub fn coord_name(&self, c: Coord) -> String {
         match (&self.robot.chain, c) {

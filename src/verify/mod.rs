@@ -237,7 +237,7 @@ pub fn ray(s: &Scenario, pose_name: &str, coord: Coord, lo: f64, hi: f64) -> Res
         infeasible: sec.infeasible,
         boundaries: sec.boundaries.into_iter().map(|(value, constraint, enters)| RayBoundary { value, constraint, enters }).collect(),
         uncertain: sec.uncertain,
-        warnings: s.warnings.clone(),
+        warnings: s.warnings.iter().cloned().chain(s.range_warning(coord, [lo, hi])).collect(),
     })
 }
 
