@@ -15,7 +15,7 @@
 
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { begin, cliJson, cliSections, cliVerify, frameStats, recordFrames, stopFrames, stripSections, watchProblems } from './harness.mjs';
+import { begin, cliJson, cliSections, cliVerify, frameStats, openTab, recordFrames, stopFrames, stripSections, watchProblems } from './harness.mjs';
 
 const { root, artifacts, scratch, test, finish, base, browser, close } = await begin(import.meta.url, { watchdogMinutes: 10, scratch: 'cablenav-lattice-' });
 const TIMEOUT = 60_000;
@@ -29,6 +29,7 @@ await page.waitForSelector('section[data-testid="result"][data-origin="cdpr7-box
 
 /** Sets the lattice panel's request. */
 async function request(pose, axes, ranges, steps) {
+  await openTab(page, 'lattice');
   await page.selectOption('select[data-testid="lattice-pose"]', pose);
   for (let k = 0; k < 2; k++) {
     await page.selectOption(`select[data-testid="lattice-axis-${k}"]`, axes[k]);
@@ -125,6 +126,7 @@ await test('Cancel stops a lattice build in its workers', async () => {
  * meanwhile; then the strip's sections of the planned trajectory must equal `cablenav verify` on
  * the exported scenario with the plan (and the 3-D view's too), and the A* polyline be drawn. */
 async function planAndCompare(query, shot) {
+  await openTab(page, 'planning');
   await page.selectOption('select[data-testid="planner"]', 'ray-lattice');
   await page.selectOption('select[data-testid="plan-query"]', query);
   await recordFrames(page, `document.querySelector('[data-testid="plan-status"]').dataset.state`);
@@ -148,6 +150,7 @@ async function planAndCompare(query, shot) {
   const view = (await page.getAttribute('canvas[data-testid="view3d"]', 'data-sections')).split(' ').filter(Boolean).map((x) => { const [kind, t0, t1] = x.split(':'); return { kind, t0: Number(t0), t1: Number(t1) }; });
   const polyline = Number(await page.getAttribute('canvas[data-testid="view3d"]', 'data-polyline-poses'));
   if (polyline < 2) throw new Error(`the A* polyline is not drawn (${polyline} poses)`);
+  await openTab(page, 'exports');
   const download = page.waitForEvent('download');
   await page.click('[data-testid="export-planned-scenario"]');
   const file = join(scratch, `${shot}.json`);

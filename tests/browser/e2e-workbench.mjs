@@ -8,14 +8,18 @@
 //   the strip's sections at the end equal `cablenav verify` on the exported scenario, the editor's
 //   via-point fields follow, the frame and per-update times are recorded (in the output and
 //   artifacts/drag-times.json: how many frames took over 25 ms, i.e. were dropped at 60 Hz);
+// - the results in tabs: one panel shown, arrow keys/Home/End move between the tabs (focus and
+//   panel follow), the open tab and the planner ride in the shared URL and come back from it;
+//   links without them (older ones) open the first tab;
 // - undo restores the previous scenario exactly (as JSON), redo and "Reset" too;
 // - a long planning run in a Web Worker while typing into an editor field and orbiting the view:
 //   the worst frame stays under 50 ms and the typed text is kept.
 // Ends with "N passed, M failed"; exits 1 on failure.
 
 import { writeFileSync } from 'node:fs';
+import { deflateRawSync } from 'node:zlib';
 import { join } from 'node:path';
-import { begin, cliSections, cliVerify as cliVerifyAt, frameStats as stats, recordFrames, stopFrames as stopRecording, stripSections, watchProblems } from './harness.mjs';
+import { begin, cliSections, cliVerify as cliVerifyAt, frameStats as stats, openTab, recordFrames, stopFrames as stopRecording, stripSections, watchProblems } from './harness.mjs';
 
 const { root, artifacts, scratch, test, finish, base, browser, close } = await begin(import.meta.url, { watchdogMinutes: 15, scratch: 'cablenav-wb-' });
 const TIMEOUT = 60_000;
@@ -84,6 +88,74 @@ for (const [w, h] of [[1366, 768], [390, 844]]) {
     return detail;
   });
 }
+
+await test('results in tabs: arrow keys move between them, one panel shows, the open tab and the planner ride in the shared URL', async () => {
+  const context = await browser.newContext({ viewport: { width: 1366, height: 768 } });
+  const problems = watchProblems(context);
+  const page = await context.newPage();
+  await page.goto(`${base}/#preset=cdpr7-tree`, { waitUntil: 'load' });
+  await page.waitForSelector('section[data-testid="result"] svg[data-testid="strip"]', { timeout: TIMEOUT });
+  /** The selected tab(s), the focused one, the panels shown, and whether the ARIA links hold. */
+  const tabs = () => page.evaluate(() => {
+    const all = [...document.querySelectorAll('[role="tablist"] [role="tab"]')];
+    const panels = [...document.querySelectorAll('[role="tabpanel"]')];
+    const linked = all.every((t) => { const p = document.getElementById(t.getAttribute('aria-controls')); return p && p.getAttribute('aria-labelledby') === t.id; });
+    return {
+      count: all.length,
+      selected: all.filter((t) => t.getAttribute('aria-selected') === 'true').map((t) => t.dataset.tab),
+      inTabOrder: all.filter((t) => t.tabIndex === 0).map((t) => t.dataset.tab),
+      focused: document.activeElement?.dataset?.tab ?? null,
+      shown: panels.filter((p) => !p.hidden && p.getBoundingClientRect().height > 0).map((p) => p.dataset.testid),
+      panels: panels.length,
+      linked,
+      hash: location.hash,
+    };
+  });
+  const expect = (t, tab, focused, what) => {
+    if (t.selected.join() !== tab || t.inTabOrder.join() !== tab || t.shown.join() !== `panel-${tab}` || (focused && t.focused !== tab))
+      throw new Error(`${what}: expected tab ${tab}${focused ? ' focused' : ''}, got ${JSON.stringify(t)}`);
+  };
+  let t = await tabs();
+  if (t.count !== 8 || t.panels !== 8 || !t.linked) throw new Error(`8 tabs and 8 linked panels expected: ${JSON.stringify(t)}`);
+  expect(t, 'intervals', false, 'an old link (no tab in it)');
+  if (t.hash !== '#preset=cdpr7-tree') throw new Error(`the default tab changed the link: ${t.hash}`);
+  // keyboard: focus the open tab, then arrows (wrapping), End, Home
+  await page.focus('[role="tab"][data-tab="intervals"]');
+  const steps = [['ArrowRight', 'planning'], ['ArrowLeft', 'intervals'], ['ArrowLeft', 'view-key'], ['ArrowRight', 'intervals'], ['End', 'view-key'], ['Home', 'intervals'], ['ArrowRight', 'planning'], ['ArrowRight', 'clearances']];
+  for (const [key, want] of steps) {
+    await page.keyboard.press(key);
+    expect(await tabs(), want, true, `after ${key}`);
+  }
+  // Tab leaves the tab row for the open panel
+  await page.keyboard.press('Tab');
+  const into = await page.evaluate(() => document.activeElement.closest('[role="tabpanel"]')?.dataset.testid ?? document.activeElement.tagName);
+  if (into !== 'panel-clearances') throw new Error(`Tab from the tab row went to ${into}, not the open panel`);
+  // a click opens a tab; the address keeps it, and the planner chosen in it
+  await openTab(page, 'planning');
+  await page.selectOption('select[data-testid="planner"]', 'ray-lattice');
+  await page.waitForFunction(() => location.hash === '#preset=cdpr7-tree&tab=planning&planner=ray-lattice', null, { timeout: TIMEOUT }).catch(async () => { throw new Error(`hash ${await page.evaluate(() => location.hash)}`); });
+  const shared = await page.inputValue('[data-testid="share-link"]').catch(() => page.textContent('[data-testid="share-link"]'));
+  if (!shared.endsWith('#preset=cdpr7-tree&tab=planning&planner=ray-lattice')) throw new Error(`the share link does not carry the tab and planner: ${shared}`);
+  // the link opens on the same tab and planner, in a fresh page (no autosave)
+  const fresh = await (await browser.newContext({ viewport: { width: 1366, height: 768 } })).newPage();
+  await fresh.goto(`${base}/#preset=cdpr7-tree&tab=planning&planner=ray-lattice`, { waitUntil: 'load' });
+  await fresh.waitForSelector('[role="tabpanel"][data-testid="panel-planning"]:not([hidden])', { timeout: TIMEOUT });
+  if ((await fresh.$eval('select[data-testid="planner"]', (s) => s.value)) !== 'ray-lattice') throw new Error('the shared link did not restore the planner');
+  // an edited scenario's link (#s=…) with a tab; an unknown tab falls back to the first
+  const renamed = JSON.stringify({ ...JSON.parse(await source(page)), name: 'renamed in a link' });
+  await fresh.goto(`${base}/#s=${deflateRawSync(renamed, { level: 9 }).toString('base64url')}&tab=lattice`, { waitUntil: 'load' });
+  await fresh.waitForSelector('section[data-testid="result"][data-origin="edited"]', { timeout: TIMEOUT });
+  await fresh.waitForSelector('[role="tabpanel"][data-testid="panel-lattice"]:not([hidden])', { timeout: TIMEOUT });
+  if (!(await fresh.textContent('section[data-testid="result"] h2')).includes('renamed in a link')) throw new Error('the #s= link with a tab lost its scenario');
+  await fresh.goto(`${base}/#preset=cdpr7&tab=nonsense`, { waitUntil: 'load' });
+  await fresh.waitForSelector('section[data-testid="result"][data-origin="cdpr7"]', { timeout: TIMEOUT });
+  await fresh.waitForSelector('[role="tabpanel"][data-testid="panel-intervals"]:not([hidden])', { timeout: TIMEOUT });
+  await fresh.context().close();
+  await page.screenshot({ path: join(artifacts, 'tabs-planning.png') });
+  problems.assertNone();
+  await context.close();
+  return `8 tabs, keys ${steps.map((s) => s[0]).join(' ')} → focus and panel followed; link ${shared.slice(shared.indexOf('#'))}`;
+});
 
 const context = await browser.newContext({ viewport: { width: 1366, height: 768 } });
 const problems = watchProblems(context);
@@ -214,6 +286,7 @@ await test('a long planning run in a worker: typing and orbiting meanwhile, wors
   await box.fill(JSON.stringify(scenario, null, 1));
   await page.click('button[data-testid="apply"]');
   await page.waitForSelector('section[data-testid="result"][data-origin="edited"]', { timeout: TIMEOUT });
+  await openTab(page, 'planning');
   await page.selectOption('select[data-testid="plan-query"]', 'q1-q2 6-D');
   await page.waitForFunction(() => !document.querySelector('[data-testid="plan-run"]').disabled, null, { timeout: TIMEOUT });
   // the editor's JSON box is the field typed into: typing there does not change the scenario

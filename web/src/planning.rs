@@ -3,7 +3,7 @@
 //! progress and the path, so typing, scrolling and orbiting stay smooth; Cancel terminates the
 //! worker.
 
-use crate::state::{Motion, Parsed, Planned, Shared};
+use crate::state::{Motion, Parsed, Planned, Settings, Shared};
 use crate::view3d::scene::Rgba;
 use crate::worker::host::{self, Running};
 use crate::worker::protocol::{pose_from_wire, Job, Reply};
@@ -98,9 +98,10 @@ fn motion(t: crate::worker::protocol::PlannedTrajectory) -> Option<Motion> {
 
 /// The planning controls.
 #[component]
-pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSignal<Option<Shared<Planned>>>) -> impl IntoView {
+pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSignal<Option<Shared<Planned>>>, settings: RwSignal<Settings>) -> impl IntoView {
     let query = RwSignal::new(String::new());
-    let planner_id = RwSignal::new(PLANNERS[0].0.to_string());
+    // the planner is one of the page's settings (kept in the address)
+    let planner_id = Memo::new(move |_| settings.with(|s| s.planner));
     let budget = RwSignal::new(20_000usize);
     let ui = Ui { state: RwSignal::new(RunState::Idle), progress: RwSignal::new(0.0), detail: RwSignal::new(String::new()), planned };
     let run: Rc<RefCell<Option<Running>>> = Rc::new(RefCell::new(None));
@@ -130,7 +131,7 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
             return;
         }
         let q = query.get_untracked();
-        let job = Job::Plan { scenario: json, query: q.clone(), planner: planner_id.get_untracked(), max_charts: budget.get_untracked() };
+        let job = Job::Plan { scenario: json, query: q.clone(), planner: planner_id.get_untracked().to_string(), max_charts: budget.get_untracked() };
         planned.set(None);
         gen2.set(gen2.get() + 1);
         let this = gen2.get();
@@ -171,7 +172,12 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
         <div class="planning" data-testid="planning">
             <label>
                 "Planner "
-                <select data-testid="planner" on:change=move |ev| planner_id.set(event_target_value(&ev))>
+                <select data-testid="planner" on:change=move |ev| {
+                    let id = event_target_value(&ev);
+                    if let Some((id, _, _)) = PLANNERS.iter().find(|p| p.0 == id) {
+                        settings.update(|s| s.planner = id)
+                    }
+                }>
                     {PLANNERS.map(|(id, label, ok)| view! { <option value=id disabled=!ok selected=move || planner_id.get() == id>{label}</option> })}
                 </select>
             </label>
