@@ -16,6 +16,21 @@ use std::rc::Rc;
 pub const PLANNERS: [(&str, &str, bool); 2] =
     [("continuation", "Atlas continuation (Bohigas et al.)", true), ("ray-lattice", "Ray lattice + A* + Bézier (Zhang)", true)];
 
+/// The lattice planner's id in [`PLANNERS`].
+const LATTICE: &str = "ray-lattice";
+
+/// The grid values per free coordinate to send with a plan: the typed `text` as a whole number
+/// for the lattice planner (the core checks its range in the worker, as for the CLI), the CLI's
+/// default for the atlas, which has no steps. Text that is no whole number is refused with the
+/// message `cablenav lattice --steps` gives.
+pub fn lattice_steps(planner: &str, text: &str) -> Result<usize, String> {
+    if planner != LATTICE {
+        return Ok(cablenav::plan::lattice::LatticeParams::default().steps);
+    }
+    let text = text.trim();
+    text.parse::<usize>().map_err(|_| cablenav::Error::new("--steps", format!("not a whole number: {text:?}")).to_string())
+}
+
 /// Colour of the lattice planner's A* polyline, drawn beside the smoothed path.
 pub const POLYLINE: Rgba = [0.93, 0.55, 0.12, 1.0];
 
@@ -130,8 +145,12 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
             ui.state.set(RunState::Failed(format!("the planner “{}” is not available", planner_id.get_untracked())));
             return;
         }
+        let steps = match settings.with_untracked(|s| lattice_steps(planner_id.get_untracked(), &s.steps)) {
+            Ok(n) => n,
+            Err(e) => return ui.state.set(RunState::Failed(e)),
+        };
         let q = query.get_untracked();
-        let job = Job::Plan { scenario: json, query: q.clone(), planner: planner_id.get_untracked().to_string(), max_charts: budget.get_untracked() };
+        let job = Job::Plan { scenario: json, query: q.clone(), planner: planner_id.get_untracked().to_string(), max_charts: budget.get_untracked(), steps };
         planned.set(None);
         gen2.set(gen2.get() + 1);
         let this = gen2.get();
@@ -166,6 +185,7 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
         ui.detail.set("Cancelled: the planner's worker was stopped.".into());
     };
     let running = move || ui.state.get() == RunState::Running;
+    let lattice = move || planner_id.get() == LATTICE;
 
     view! {
         <h2>"Planning"</h2>
@@ -199,6 +219,15 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
                         }
                     } />
             </label>
+            <label title="grid values per free coordinate, both ends of its range included (cablenav plan --planner lattice --steps N)">
+                "Lattice steps "
+                <input class="num" type="number" min="2" max="10000" step="1" data-testid="plan-steps" disabled=move || !lattice()
+                    prop:value=move || settings.with(|s| s.steps.clone())
+                    on:change=move |ev| {
+                        let text = event_target_value(&ev);
+                        settings.update(|s| s.steps = text.trim().to_string())
+                    } />
+            </label>
             <button data-testid="plan-run" on:click=start disabled=move || running() || queries().is_empty()>"Plan"</button>
             <button data-testid="plan-cancel" on:click=cancel disabled=move || !running()>"Cancel"</button>
             <progress data-testid="plan-progress" max="1" prop:value=move || ui.progress.get() aria-label="planning progress"></progress>
@@ -222,5 +251,15 @@ mod tests {
         assert_eq!(RunState::Done("no_path".into()).name(), "no_path");
         assert_eq!(RunState::Failed("x".into()).name(), "error");
         assert_eq!(PLANNERS.iter().filter(|p| p.2).count(), 2, "the atlas and the ray lattice");
+        assert!(PLANNERS.iter().any(|p| p.0 == LATTICE));
+    }
+
+    #[test]
+    fn steps_are_whole_numbers_for_the_lattice_only() {
+        assert_eq!(lattice_steps(LATTICE, " 9 "), Ok(9));
+        assert_eq!(lattice_steps(LATTICE, "1"), Ok(1), "the range is the core's to check");
+        assert_eq!(lattice_steps(LATTICE, "7.5"), Err("--steps: not a whole number: \"7.5\"".into()));
+        assert_eq!(lattice_steps(LATTICE, ""), Err("--steps: not a whole number: \"\"".into()));
+        assert_eq!(lattice_steps(PLANNERS[0].0, "nonsense"), Ok(7), "the atlas has no steps");
     }
 }
