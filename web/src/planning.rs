@@ -151,7 +151,9 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
         };
         let q = query.get_untracked();
         let job = Job::Plan { scenario: json, query: q.clone(), planner: planner_id.get_untracked().to_string(), max_charts: budget.get_untracked(), steps };
-        planned.set(None);
+        if planned.with_untracked(Option::is_some) {
+            planned.set(None);
+        }
         gen2.set(gen2.get() + 1);
         let this = gen2.get();
         let (slot, gen) = (run2.clone(), gen2.clone());

@@ -33,6 +33,18 @@ impl<T> Shared<T> {
     }
 }
 
+impl<T: PartialEq> Shared<T> {
+    /// `value` shared, or `prev` itself when it holds an equal value: a memo returning it does
+    /// not notify its readers when its content did not change (the 3-D view is not rebuilt and
+    /// redrawn for the same geometry).
+    pub fn or_same(prev: Option<&Shared<T>>, value: T) -> Self {
+        match prev {
+            Some(p) if *p.0 == value => p.clone(),
+            _ => Shared::new(value),
+        }
+    }
+}
+
 /// The core's reading of the scenario (or why it cannot be read).
 pub type Parsed = Shared<Result<Scenario, String>>;
 /// The selected trajectory's verification (`None`: no trajectory).
@@ -395,6 +407,14 @@ mod tests {
         empty.begin_batch();
         empty.end_batch();
         assert_eq!(empty.undo(), None, "a batch without changes is no step");
+    }
+
+    #[test]
+    fn an_equal_value_keeps_the_shared_one() {
+        let a = Shared::new(vec![1, 2]);
+        assert!(Shared::or_same(Some(&a), vec![1, 2]) == a, "the same Arc: readers are not notified");
+        assert!(Shared::or_same(Some(&a), vec![1, 3]) != a);
+        assert_eq!(*Shared::or_same(None, vec![4]).0, vec![4]);
     }
 
     #[test]

@@ -123,7 +123,9 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
     // a new scenario drops the planned path and rewinds (not while dragging: the platform stays)
     Effect::new(move |_| {
         parsed.track();
-        planned.set(None);
+        if planned.with_untracked(Option::is_some) {
+            planned.set(None);
+        }
         follow.set(Follow::Trajectory);
         if dragging.with_value(Option::is_none) {
             scrub.set(0.0);
@@ -166,19 +168,19 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         _ => None,
     });
     let traj_index = move |s: &Scenario| trajectory.get().min(s.trajectories.len().saturating_sub(1));
-    let trajectory_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |_| {
+    let trajectory_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |prev| {
         let parsed = parsed.get();
         let pieces = match (scenario_of(&parsed), strip.get(), motion()) {
             (_, Some(model), Some(p)) => p.0.motion.as_ref().map_or_else(Vec::new, |m| scene::trajectory_polylines(&m.trajectory, &model)),
             (Some(s), Some(model), None) if !s.trajectories.is_empty() => scene::trajectory_polylines(&s.trajectories[traj_index(s)], &model),
             _ => vec![],
         };
-        Shared::new(pieces)
+        Shared::or_same(prev, pieces)
     });
     // beside it: the planned path (unless it is the one drawn in its sections) and the lattice
     // planner's A* polyline
-    let path_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |_| {
-        let Some(p) = planned.get() else { return Shared::new(vec![]) };
+    let path_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |prev| {
+        let Some(p) = planned.get() else { return Shared::or_same(prev, vec![]) };
         let mut pieces = vec![];
         if motion().is_none() {
             pieces.push(Polyline { colour: PATH, poses: p.0.poses.clone() });
@@ -186,18 +188,18 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         if !p.0.polyline.is_empty() {
             pieces.push(Polyline { colour: crate::planning::POLYLINE, poses: p.0.polyline.clone() });
         }
-        Shared::new(pieces)
+        Shared::or_same(prev, pieces)
     });
     // the ray lattice built in its panel, drawn in the 3-D view too
     let lattice = RwSignal::new(None::<Shared<Result<crate::worker::protocol::LatticeResult, String>>>);
     let lattice_in_view = RwSignal::new(true);
     let lattice_infeasible = RwSignal::new(false);
-    let lattice_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |_| {
+    let lattice_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |prev| {
         let pieces = match (lattice.get(), lattice_in_view.get()) {
             (Some(l), true) => l.0.as_ref().as_ref().map_or_else(|_| vec![], |l| scene::lattice_polylines(l, lattice_infeasible.get())),
             _ => vec![],
         };
-        Shared::new(pieces)
+        Shared::or_same(prev, pieces)
     });
 
     // a boundary pointed at in the strip: the platform goes there, with its clearance tubes
