@@ -13,7 +13,9 @@
 //   links without them (older ones) open the first tab;
 // - undo restores the previous scenario exactly (as JSON), redo and "Reset" too;
 // - a long planning run in a Web Worker while typing into an editor field and orbiting the view:
-//   the worst frame stays under 50 ms and the typed text is kept.
+//   the frames compared with the same typing and orbiting with nothing running, before and after
+//   the run (no frame over max(50 ms, 1.5 × the idle worst), long frames no more frequent than
+//   idle + 5 %); the run goes on and progresses meanwhile, and the typed text is kept.
 // Ends with "N passed, M failed"; exits 1 on failure.
 
 import { writeFileSync } from 'node:fs';
@@ -275,7 +277,28 @@ await test('undo restores the previous scenario exactly; redo and Reset too', as
   return 'drag undone and redone, rename undone, Reset undone';
 });
 
-await test('a long planning run in a worker: typing and orbiting meanwhile, worst frame under 50 ms, typed text kept', async () => {
+/** Types `text` at the end of the editor's JSON box, then orbits the view by a left-button drag
+ * from an empty corner (no handle there), recording the animation frames meanwhile with the
+ * planning state at each; returns the frames, their states and how many times the view redrew. */
+async function typeAndOrbit(page, text) {
+  const box = page.locator('textarea[data-testid="source"]');
+  const canvas = page.locator('canvas[data-testid="view3d"]');
+  await recordFrames(page, `document.querySelector('[data-testid="plan-status"]').dataset.state`);
+  await box.click();
+  await page.keyboard.press('Control+End');
+  await page.keyboard.type(text, { delay: 20 });
+  await canvas.scrollIntoViewIfNeeded();
+  const c = await canvas.boundingBox();
+  const drawsBefore = Number(await canvas.getAttribute('data-draws'));
+  await page.mouse.move(c.x + 8, c.y + c.height - 8);
+  await page.mouse.down();
+  for (let i = 1; i <= 20; i++) await page.mouse.move(c.x + 8 + 10 * i, c.y + c.height - 8 - 2 * i);
+  await page.mouse.up();
+  const { frames, states } = await stopRecording(page);
+  return { frames, states, redraws: Number(await canvas.getAttribute('data-draws')) - drawsBefore };
+}
+
+await test('a long planning run in a worker: typing and orbiting meanwhile, frames as when idle, typed text kept', async () => {
   // Robocrane's q1 → q2 with no coordinate fixed: the 6-D search runs for minutes
   await pickPreset(page, 'robocrane');
   const scenario = JSON.parse(await source(page));
@@ -289,43 +312,47 @@ await test('a long planning run in a worker: typing and orbiting meanwhile, wors
   await openTab(page, 'planning');
   await page.selectOption('select[data-testid="plan-query"]', 'q1-q2 6-D');
   await page.waitForFunction(() => !document.querySelector('[data-testid="plan-run"]').disabled, null, { timeout: TIMEOUT });
-  // the editor's JSON box is the field typed into: typing there does not change the scenario
-  // until it is applied, so the run goes on
+  // The baseline: the same typing and orbiting with nothing running, before and after the run, in
+  // this run of the test (the machine's load and the software WebGL's cost fall on both alike).
+  // The editor's JSON box is the field typed into: typing there does not change the scenario
+  // until it is applied, so the run goes on.
+  const idleBefore = await typeAndOrbit(page, ' typed while idle');
   await page.click('[data-testid="plan-run"]');
   await page.waitForSelector('[data-testid="plan-status"][data-state="running"]', { state: 'attached', timeout: TIMEOUT });
   // wait until the worker reports progress: the run is under way off the main thread
   await page.waitForFunction(() => /charts/.test(document.querySelector('[data-testid="plan-status"]').textContent), null, { timeout: TIMEOUT });
-  await recordFrames(page);
-  const states = [];
-  await box.click();
-  await page.keyboard.press('Control+End');
+  const statusBefore = await page.textContent('[data-testid="plan-status"]');
   const typed = ' typed while planning';
-  await page.keyboard.type(typed, { delay: 20 });
-  states.push(await page.getAttribute('[data-testid="plan-status"]', 'data-state'));
-  const canvas = page.locator('canvas[data-testid="view3d"]');
-  await canvas.scrollIntoViewIfNeeded();
-  const c = await canvas.boundingBox();
-  const drawsBefore = Number(await canvas.getAttribute('data-draws'));
-  // orbit with the left button from an empty corner of the view (no handle there)
-  await page.mouse.move(c.x + 8, c.y + c.height - 8);
-  await page.mouse.down();
-  for (let i = 1; i <= 20; i++) await page.mouse.move(c.x + 8 + 10 * i, c.y + c.height - 8 - 2 * i);
-  await page.mouse.up();
-  states.push(await page.getAttribute('[data-testid="plan-status"]', 'data-state'));
-  const frames = await stopFrames(page);
-  const drawsAfter = Number(await canvas.getAttribute('data-draws'));
+  const run = await typeAndOrbit(page, typed);
   const text = await box.inputValue();
   const status = await page.textContent('[data-testid="plan-status"]');
-  if (states.some((s) => s !== 'running')) throw new Error(`the run was not going all along: ${states}; ${status}`);
   await page.click('[data-testid="plan-cancel"]');
   await page.waitForSelector('[data-testid="plan-status"][data-state="cancelled"]', { state: 'attached', timeout: TIMEOUT });
+  const idleAfter = await typeAndOrbit(page, ' typed after the run');
+  if (run.states.some((s) => s !== 'running')) throw new Error(`the run was not going all along: ${[...new Set(run.states)]}; ${status}`);
+  if (status === statusBefore) throw new Error(`the run made no progress while typing and orbiting: ${status}`);
   if (!text.endsWith(typed)) throw new Error(`typed text lost: …${JSON.stringify(text.slice(-40))}`);
-  if (drawsAfter <= drawsBefore) throw new Error('orbiting did not redraw the view');
-  const f = stats(frames);
-  writeFileSync(join(artifacts, 'planning-frames.json'), JSON.stringify(frames));
-  if (f.worst >= FRAME_LIMIT_MS) throw new Error(`worst frame ${f.worst.toFixed(1)} ms while planning (median ${f.median.toFixed(1)} over ${f.n}): ${frames.map((x) => x.toFixed(0)).join(' ')}`);
+  if (run.redraws <= 0) throw new Error('orbiting did not redraw the view');
+  // The check: while the run is in its worker, the main thread is as free as when idle. Every
+  // frame of the run counts (all of them had it running at both ends, checked above).
+  //  - no frame of the run is longer than FRAME_LIMIT_MS, unless idle frames of the same
+  //    interaction were nearly as long: its worst stays under max(FRAME_LIMIT_MS, 1.5 × the idle
+  //    worst) — a planner blocking the main thread for that long fails;
+  //  - long frames (over FRAME_LIMIT_MS) are no more frequent than when idle, give or take
+  //    5 % of the frames — a planner taking slices of every frame fails.
+  const idle = [...idleBefore.frames, ...idleAfter.frames];
+  const f = stats(run.frames);
+  const b = stats(idle);
+  const longShare = (xs) => xs.filter((x) => x > FRAME_LIMIT_MS).length / Math.max(1, xs.length);
+  writeFileSync(join(artifacts, 'planning-frames.json'), JSON.stringify({ running: run.frames, idle_before: idleBefore.frames, idle_after: idleAfter.frames }));
+  const summary = `while planning: ${f.n} frames, median ${f.median.toFixed(1)} ms, worst ${f.worst.toFixed(1)} ms, ${(100 * longShare(run.frames)).toFixed(0)} % over ${FRAME_LIMIT_MS} ms; `
+    + `idle (same typing and orbiting, before and after): ${b.n} frames, median ${b.median.toFixed(1)} ms, worst ${b.worst.toFixed(1)} ms, ${(100 * longShare(idle)).toFixed(0)} % over ${FRAME_LIMIT_MS} ms`;
+  const limit = Math.max(FRAME_LIMIT_MS, 1.5 * b.worst);
+  if (!(f.worst < limit)) throw new Error(`worst frame ${f.worst.toFixed(1)} ms while planning, limit ${limit.toFixed(1)} ms (${summary}): ${run.frames.map((x) => x.toFixed(0)).join(' ')}`);
+  if (!(longShare(run.frames) <= longShare(idle) + 0.05)) throw new Error(`more long frames while planning than idle (${summary}): ${run.frames.map((x) => x.toFixed(0)).join(' ')}`);
+  if (f.n < 20 || b.n < 20) throw new Error(`too few frames to compare (${summary})`);
   problems.assertNone();
-  return `${status.trim()}; ${f.n} frames while typing and orbiting during the run: median ${f.median.toFixed(1)} ms, worst ${f.worst.toFixed(1)} ms; ${drawsAfter - drawsBefore} redraws`;
+  return `${status.trim()}; ${summary}; ${run.redraws} redraws while orbiting`;
 });
 
 await close();
