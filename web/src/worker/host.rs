@@ -3,6 +3,7 @@
 //! page never waits for a planner to notice a flag.
 
 use super::protocol::{decode_reply, encode_job, Job, Reply};
+use leptos::prelude::{GetValue, LocalStorage, SetValue, StoredValue, UpdateValue};
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 
@@ -111,6 +112,58 @@ pub fn start(job: &Job, mut on_reply: impl FnMut(Reply) + 'static) -> Result<Run
     worker.set_onerror(Some(onerror.as_ref().unchecked_ref()));
     worker.post_message(&wasm_bindgen::module()).map_err(|e| format!("cannot send the module to the worker: {e:?}"))?;
     Ok(Running { worker, _onmessage: onmessage, _onerror: onerror })
+}
+
+/// The page's hold on one fan-out run ([`start_all`]) at a time: its workers, and a generation
+/// that a new run, Cancel or the run's end moves on, so the replies of an older run are ignored.
+/// Copyable into the run's callbacks.
+#[derive(Clone, Copy)]
+pub struct FanOut {
+    running: StoredValue<Vec<Running>, LocalStorage>,
+    generation: StoredValue<u32>,
+}
+
+impl FanOut {
+    /// Nothing running.
+    pub fn new() -> FanOut {
+        FanOut { running: StoredValue::new_local(Vec::new()), generation: StoredValue::new(0) }
+    }
+
+    /// Stops the run going, if any: its workers are terminated and its late replies ignored.
+    /// Returns the generation of the next run.
+    pub fn stop(&self) -> u32 {
+        self.generation.update_value(|g| *g += 1);
+        self.running.update_value(|r| std::mem::take(r).iter().for_each(Running::cancel));
+        self.generation.get_value()
+    }
+
+    /// Whether run `this` is still the current one (not stopped, replaced or ended).
+    pub fn is_current(&self, this: u32) -> bool {
+        self.generation.get_value() == this
+    }
+
+    /// Keeps the workers [`start_all`] started for the current run.
+    pub fn hold(&self, started: Vec<Running>) {
+        self.running.set_value(started);
+    }
+
+    /// The end of run `this` (for `start_all`'s `done`): `finish` takes its result only if the
+    /// run is still current; then the run is over (later replies are ignored) and its workers are
+    /// retired after this event.
+    pub fn finish(&self, this: u32, finish: impl FnOnce()) {
+        if !self.is_current(this) {
+            return;
+        }
+        finish();
+        self.generation.update_value(|g| *g += 1);
+        self.running.update_value(|r| std::mem::take(r).into_iter().for_each(retire));
+    }
+}
+
+impl Default for FanOut {
+    fn default() -> Self {
+        FanOut::new()
+    }
 }
 
 /// Runs `jobs` at once, one worker each (work split into blocks), and joins their answers:
