@@ -14,8 +14,9 @@
 // - undo restores the previous scenario exactly (as JSON), redo and "Reset" too;
 // - a long planning run in a Web Worker while typing into an editor field and orbiting the view:
 //   the frames compared with the same typing and orbiting with nothing running, before and after
-//   the run (no frame over max(50 ms, 1.5 × the idle worst), long frames no more frequent than
-//   idle + 5 %); the run goes on and progresses meanwhile, and the typed text is kept.
+//   the run (no long frame with more main-thread script than max(50 ms, 1.5 × the most idle),
+//   long frames no more frequent than idle + 5 %); the run goes on and progresses meanwhile, and
+//   the typed text is kept.
 // Ends with "N passed, M failed"; exits 1 on failure.
 
 import { writeFileSync } from 'node:fs';
@@ -279,10 +280,20 @@ await test('undo restores the previous scenario exactly; redo and Reset too', as
 
 /** Types `text` at the end of the editor's JSON box, then orbits the view by a left-button drag
  * from an empty corner (no handle there), recording the animation frames meanwhile with the
- * planning state at each; returns the frames, their states and how many times the view redrew. */
+ * planning state at each, and the main thread's script time in each of Chromium's long animation
+ * frames (over 50 ms); returns the frames, their states, the long frames' script times and how
+ * many times the view redrew. */
 async function typeAndOrbit(page, text) {
   const box = page.locator('textarea[data-testid="source"]');
   const canvas = page.locator('canvas[data-testid="view3d"]');
+  await page.evaluate(() => {
+    window.__scripts = [];
+    window.__loaf?.disconnect();
+    window.__loaf = new PerformanceObserver((list) => {
+      for (const e of list.getEntries()) window.__scripts.push(e.scripts.reduce((s, x) => s + x.duration, 0));
+    });
+    window.__loaf.observe({ type: 'long-animation-frame' });
+  });
   await recordFrames(page, `document.querySelector('[data-testid="plan-status"]').dataset.state`);
   await box.click();
   await page.keyboard.press('Control+End');
@@ -295,7 +306,9 @@ async function typeAndOrbit(page, text) {
   for (let i = 1; i <= 20; i++) await page.mouse.move(c.x + 8 + 10 * i, c.y + c.height - 8 - 2 * i);
   await page.mouse.up();
   const { frames, states } = await stopRecording(page);
-  return { frames, states, redraws: Number(await canvas.getAttribute('data-draws')) - drawsBefore };
+  // long-animation-frame entries are delivered after their frame: one more frame, then read
+  const scripts = await page.evaluate(() => new Promise((ok) => requestAnimationFrame(() => setTimeout(() => { window.__loaf.disconnect(); ok(window.__scripts); }, 50))));
+  return { frames, states, scripts, redraws: Number(await canvas.getAttribute('data-draws')) - drawsBefore };
 }
 
 await test('a long planning run in a worker: typing and orbiting meanwhile, frames as when idle, typed text kept', async () => {
@@ -335,20 +348,25 @@ await test('a long planning run in a worker: typing and orbiting meanwhile, fram
   if (run.redraws <= 0) throw new Error('orbiting did not redraw the view');
   // The check: while the run is in its worker, the main thread is as free as when idle. Every
   // frame of the run counts (all of them had it running at both ends, checked above).
-  //  - no frame of the run is longer than FRAME_LIMIT_MS, unless idle frames of the same
-  //    interaction were nearly as long: its worst stays under max(FRAME_LIMIT_MS, 1.5 × the idle
-  //    worst) — a planner blocking the main thread for that long fails;
+  //  - no long animation frame of the run has more main-thread script than
+  //    max(FRAME_LIMIT_MS, 1.5 × the most in an idle one) — a planner blocking the main thread
+  //    fails; a frame that is long because the machine is busy (the worker takes one of two cores,
+  //    the software WebGL others) has little script in it and passes;
   //  - long frames (over FRAME_LIMIT_MS) are no more frequent than when idle, give or take
   //    5 % of the frames — a planner taking slices of every frame fails.
   const idle = [...idleBefore.frames, ...idleAfter.frames];
   const f = stats(run.frames);
   const b = stats(idle);
+  const mostScript = (xs) => Math.max(0, ...xs);
+  const idleScript = mostScript([...idleBefore.scripts, ...idleAfter.scripts]);
+  const runScript = mostScript(run.scripts);
   const longShare = (xs) => xs.filter((x) => x > FRAME_LIMIT_MS).length / Math.max(1, xs.length);
   writeFileSync(join(artifacts, 'planning-frames.json'), JSON.stringify({ running: run.frames, idle_before: idleBefore.frames, idle_after: idleAfter.frames }));
   const summary = `while planning: ${f.n} frames, median ${f.median.toFixed(1)} ms, worst ${f.worst.toFixed(1)} ms, ${(100 * longShare(run.frames)).toFixed(0)} % over ${FRAME_LIMIT_MS} ms; `
-    + `idle (same typing and orbiting, before and after): ${b.n} frames, median ${b.median.toFixed(1)} ms, worst ${b.worst.toFixed(1)} ms, ${(100 * longShare(idle)).toFixed(0)} % over ${FRAME_LIMIT_MS} ms`;
-  const limit = Math.max(FRAME_LIMIT_MS, 1.5 * b.worst);
-  if (!(f.worst < limit)) throw new Error(`worst frame ${f.worst.toFixed(1)} ms while planning, limit ${limit.toFixed(1)} ms (${summary}): ${run.frames.map((x) => x.toFixed(0)).join(' ')}`);
+    + `idle (same typing and orbiting, before and after): ${b.n} frames, median ${b.median.toFixed(1)} ms, worst ${b.worst.toFixed(1)} ms, ${(100 * longShare(idle)).toFixed(0)} % over ${FRAME_LIMIT_MS} ms; `
+    + `most main-thread script in a long frame: ${runScript.toFixed(0)} ms while planning, ${idleScript.toFixed(0)} ms idle`;
+  const limit = Math.max(FRAME_LIMIT_MS, 1.5 * idleScript);
+  if (!(runScript < limit)) throw new Error(`a frame with ${runScript.toFixed(1)} ms of main-thread script while planning, limit ${limit.toFixed(1)} ms (${summary}): ${run.frames.map((x) => x.toFixed(0)).join(' ')}`);
   if (!(longShare(run.frames) <= longShare(idle) + 0.05)) throw new Error(`more long frames while planning than idle (${summary}): ${run.frames.map((x) => x.toFixed(0)).join(' ')}`);
   if (f.n < 20 || b.n < 20) throw new Error(`too few frames to compare (${summary})`);
   problems.assertNone();
