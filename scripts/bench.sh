@@ -394,6 +394,12 @@ grep ' lattice/' "$TMP/wasm.txt" >> "$TMP/lattice.txt" || true
 say "page drag updates: tests/browser/bench-drag.mjs (headless Chromium)"
 node tests/browser/bench-drag.mjs "$TMP/page" >> "$TMP/benchmarks.md"
 
+# The main thread at a plan's start and result compares two builds of the page
+# (tests/browser/bench-plan-frames.mjs BEFORE_PAGE AFTER_PAGE): a full run keeps that section.
+if grep -q '<!-- plan-frames:begin' "$OUT"; then
+  { echo; sed -n '/<!-- plan-frames:begin/,/<!-- plan-frames:end -->/p' "$OUT"; } >> "$TMP/benchmarks.md"
+fi
+
 # The atlas defaults section takes minutes to measure: a full run keeps it as it is (--atlas
 # rewrites it).
 if grep -q '<!-- atlas:begin' "$OUT"; then

@@ -12,9 +12,10 @@
 #                                      against the CLI that step 1 built)
 #   7. tests/browser/e2e-view.mjs      the page's 3-D view, plots, exports and planning end to end
 #                                      (compares with the CLI: builds the release binary if missing)
-#   8. tests/browser/e2e-workbench.mjs the layout at 1366×768 and 390×844, dragging a via point in
-#                                      3-D (against the CLI), undo/redo, planning in a Web Worker
-#                                      while typing and orbiting
+#   8. tests/browser/e2e-workbench.mjs the layout at 1366×768 and 390×844, the results tabs,
+#                                      dragging a via point in 3-D (against the CLI), undo/redo,
+#                                      planning in a Web Worker while typing and orbiting (frames
+#                                      compared with idle ones of the same run)
 #   8b. tests/browser/e2e-lattice.mjs  the ray lattice panel and 3-D drawing against `cablenav lattice`,
 #                                      Cancel, lattice planning in a worker (cdpr7-box over-box,
 #                                      Robocrane q1-q2) against `cablenav verify`

@@ -10,12 +10,16 @@
 //   runs (the frame times are recorded and reported, not asserted), the A* polyline and the
 //   smoothed path are drawn, and the strip's sections of the planned trajectory equal
 //   `cablenav verify` on the exported scenario with the plan; the same for Robocrane "q1-q2"
-//   (with its wrench set).
+//   (with its wrench set);
+// - the lattice planner's steps in the planning tab: 1 is refused with the core's error exactly as
+//   `cablenav plan --planner lattice --steps 1` prints it, 9 gives the lattice and A* polyline of
+//   `--steps 9`, and the steps and planner ride in the URL (a reload restores them).
 // Ends with "N passed, M failed"; exits 1 on failure.
 
+import { spawnSync } from 'node:child_process';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { begin, cliJson, cliSections, cliVerify, frameStats, recordFrames, stopFrames, stripSections, watchProblems } from './harness.mjs';
+import { begin, cliJson, cliSections, cliVerify, frameStats, openTab, recordFrames, stopFrames, stripSections, watchProblems } from './harness.mjs';
 
 const { root, artifacts, scratch, test, finish, base, browser, close } = await begin(import.meta.url, { watchdogMinutes: 10, scratch: 'cablenav-lattice-' });
 const TIMEOUT = 60_000;
@@ -29,6 +33,7 @@ await page.waitForSelector('section[data-testid="result"][data-origin="cdpr7-box
 
 /** Sets the lattice panel's request. */
 async function request(pose, axes, ranges, steps) {
+  await openTab(page, 'lattice');
   await page.selectOption('select[data-testid="lattice-pose"]', pose);
   for (let k = 0; k < 2; k++) {
     await page.selectOption(`select[data-testid="lattice-axis-${k}"]`, axes[k]);
@@ -125,6 +130,7 @@ await test('Cancel stops a lattice build in its workers', async () => {
  * meanwhile; then the strip's sections of the planned trajectory must equal `cablenav verify` on
  * the exported scenario with the plan (and the 3-D view's too), and the A* polyline be drawn. */
 async function planAndCompare(query, shot) {
+  await openTab(page, 'planning');
   await page.selectOption('select[data-testid="planner"]', 'ray-lattice');
   await page.selectOption('select[data-testid="plan-query"]', query);
   await recordFrames(page, `document.querySelector('[data-testid="plan-status"]').dataset.state`);
@@ -148,6 +154,7 @@ async function planAndCompare(query, shot) {
   const view = (await page.getAttribute('canvas[data-testid="view3d"]', 'data-sections')).split(' ').filter(Boolean).map((x) => { const [kind, t0, t1] = x.split(':'); return { kind, t0: Number(t0), t1: Number(t1) }; });
   const polyline = Number(await page.getAttribute('canvas[data-testid="view3d"]', 'data-polyline-poses'));
   if (polyline < 2) throw new Error(`the A* polyline is not drawn (${polyline} poses)`);
+  await openTab(page, 'exports');
   const download = page.waitForEvent('download');
   await page.click('[data-testid="export-planned-scenario"]');
   const file = join(scratch, `${shot}.json`);
@@ -166,6 +173,50 @@ async function planAndCompare(query, shot) {
 }
 
 await test('lattice planning of cdpr7-box "over-box" in a worker: the page keeps drawing; the strip equals `cablenav verify` on the exported plan', () => planAndCompare('over-box', 'lattice-plan-box'));
+
+await test('the lattice planner\'s steps: 1 is refused with the CLI\'s error, 9 plans as `cablenav plan --steps 9`, and they ride in the URL', async () => {
+  await openTab(page, 'planning');
+  await page.selectOption('select[data-testid="planner"]', 'ray-lattice');
+  await page.selectOption('select[data-testid="plan-query"]', 'over-box');
+  const setSteps = async (n) => {
+    await page.fill('input[data-testid="plan-steps"]', String(n));
+    await page.dispatchEvent('input[data-testid="plan-steps"]', 'change');
+  };
+  const planned = async () => {
+    await page.click('[data-testid="plan-run"]');
+    await page.waitForFunction(() => !['running', 'idle'].includes(document.querySelector('[data-testid="plan-status"]').dataset.state), null, { timeout: PLAN_TIMEOUT, polling: 100 });
+    return { state: await page.getAttribute('[data-testid="plan-status"]', 'data-state'), status: (await page.textContent('[data-testid="plan-status"]')).trim() };
+  };
+  const args = ['plan', 'static/scenarios/cdpr7-box.json', '--query', 'over-box', '--planner', 'lattice', '--steps'];
+  // out of range: the core's error, as the CLI prints it
+  await setSteps(1);
+  const refused = await planned();
+  const cli = spawnSync(join(root, 'target', 'release', 'cablenav'), [...args, '1'], { cwd: root, encoding: 'utf8' });
+  const want = cli.stderr.trim().replace(/^cablenav: /, '');
+  if (cli.status === 0 || !want.startsWith('--steps:')) throw new Error(`the CLI accepted --steps 1: ${cli.stdout} ${cli.stderr}`);
+  if (refused.state !== 'error' || refused.status !== `The planner refused: ${want}`) throw new Error(`page: ${refused.state} "${refused.status}"; CLI: "${want}"`);
+  // 9 steps: the lattice the CLI builds
+  await setSteps(9);
+  const ok = await planned();
+  const ref = cliJson(root, [...args, '9']);
+  const same = `${ref.rays} rays, ${ref.components} component(s)`;
+  if (ok.state !== ref.status || !ok.status.includes(same) || !ok.status.includes(ref.message.slice(ref.message.indexOf('(lattice')))) throw new Error(`page: ${ok.state} "${ok.status}"; CLI: ${ref.status}, ${same}, ${ref.message}`);
+  if (!ok.status.includes(`A* polyline: ${ref.polyline.length} points`)) throw new Error(`page: "${ok.status}"; CLI polyline of ${ref.polyline.length} points`);
+  // the steps and the planner are in the address, and come back from it
+  const hash = await page.evaluate(() => location.hash);
+  if (!hash.endsWith('&tab=planning&planner=ray-lattice&steps=9')) throw new Error(`hash ${hash}`);
+  await page.reload({ waitUntil: 'load' });
+  await page.waitForSelector('[role="tabpanel"][data-testid="panel-planning"]:not([hidden]) input[data-testid="plan-steps"]', { timeout: TIMEOUT });
+  const back = [await page.inputValue('input[data-testid="plan-steps"]'), await page.$eval('select[data-testid="planner"]', (s) => s.value)];
+  if (back.join() !== '9,ray-lattice') throw new Error(`after a reload: steps and planner ${back}`);
+  // the atlas has no steps: the field is disabled
+  await page.selectOption('select[data-testid="planner"]', 'continuation');
+  if (!(await page.$eval('input[data-testid="plan-steps"]', (i) => i.disabled))) throw new Error('the steps field is enabled for the atlas');
+  await page.selectOption('select[data-testid="planner"]', 'ray-lattice');
+  await setSteps(7);
+  problems.assertNone();
+  return `refused "${want}"; 9 steps: ${same} as the CLI; ${hash.slice(hash.indexOf('&'))} restored after a reload`;
+});
 
 await test('lattice planning of Robocrane "q1-q2" (with its wrench set) in a worker: the strip equals `cablenav verify` on the exported plan', async () => {
   await page.selectOption('select[data-testid="preset"]', 'robocrane');

@@ -7,7 +7,7 @@
 
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { begin, cliSections, cliVerify as cliVerifyAt, stripSections, watchProblems } from './harness.mjs';
+import { begin, cliSections, cliVerify as cliVerifyAt, openTab, stripSections, watchProblems } from './harness.mjs';
 
 const { root, artifacts, scratch, test, finish, base, browser, close } = await begin(import.meta.url, { watchdogMinutes: 15 });
 const TIMEOUT = 60_000;
@@ -177,12 +177,14 @@ await test('plots: boundary on tap, clearances, tension envelope, slice map with
   const co = await page.getAttribute('[data-testid="distance-co"]', 'd');
   if (!cc.startsWith('M') || !co.startsWith('M')) throw new Error('distance lines missing');
   if (!(await page.$('[data-testid="tension-none"]'))) throw new Error('cdpr7-tree has no wrench: the envelope must say so');
+  await openTab(page, 'slice');
   await page.click('[data-testid="slice-compute"]');
   await page.waitForSelector('[data-testid="chart-slice"] image', { timeout: TIMEOUT });
   for (const m of ['slice-start', 'slice-goal', 'slice-path']) if (!(await page.$(`[data-testid="${m}"]`))) throw new Error(`no ${m} on the slice map`);
   await (await page.$('[data-testid="chart-slice"]')).screenshot({ path: join(artifacts, 'slice-cdpr7-tree.png') });
   await pick(page, 'preset', 'robocrane');
   await waitResult(page, 'robocrane', 0);
+  await openTab(page, 'tension');
   await page.waitForSelector('[data-testid="tension-panel"]', { timeout: TIMEOUT });
   const panels = await page.$$eval('[data-testid="tension-panel"]', (gs) => gs.length);
   if (panels !== 6) throw new Error(`${panels} tension panels for 6 cables`);
@@ -195,6 +197,7 @@ await test('exports: intervals CSV and report JSON match the CLI; SVG and PNG pl
   await pick(page, 'preset', 'cdpr7-tree');
   await waitResult(page, 'cdpr7-tree', 0);
   const report = cliVerify('static/scenarios/cdpr7-tree.json', 'linear');
+  await openTab(page, 'exports');
   const json = JSON.parse((await download(page, 'export-report-json')).bytes.toString('utf8'));
   if (JSON.stringify(json) !== JSON.stringify(report)) throw new Error(`report JSON differs from the CLI:\n${JSON.stringify(json)}\n${JSON.stringify(report)}`);
   const csv = (await download(page, 'export-intervals-csv')).bytes.toString('utf8');
@@ -202,10 +205,12 @@ await test('exports: intervals CSV and report JSON match the CLI; SVG and PNG pl
   assertSameSections(rows.sort((a, b) => a.t0 - b.t0), cliSections(report), 'intervals CSV');
   const path = (await download(page, 'export-path-csv')).bytes.toString('utf8').trim().split('\n');
   if (path[0] !== 't,x,y,z,phi,theta,sigma,qw,qx,qy,qz' || path.length < 100) throw new Error(`path CSV: ${path[0]} (${path.length} lines)`);
+  await openTab(page, 'clearances');
   const svg = (await download(page, 'export-distance-svg')).bytes.toString('utf8');
   if (!svg.startsWith('<svg') || !svg.includes('xmlns="http://www.w3.org/2000/svg"') || !svg.includes('<path')) throw new Error(`SVG export: ${svg.slice(0, 120)}`);
   const png = (await download(page, 'export-distance-png')).bytes;
   if (png.subarray(1, 4).toString('latin1') !== 'PNG' || png.length < 2000) throw new Error(`PNG export: ${png.length} bytes`);
+  await openTab(page, 'exports');
   const view = (await download(page, 'export-view-png')).bytes;
   if (view.subarray(1, 4).toString('latin1') !== 'PNG') throw new Error('3-D view PNG export');
   assertNoProblems();
@@ -217,6 +222,7 @@ await test('Robocrane q1→q2 from the page: the progress bar moves, no frame ov
   if (!planner) throw new Error('no planning controls on the page (the planner is not wired in)');
   await pick(page, 'preset', 'robocrane');
   await waitResult(page, 'robocrane', 0);
+  await openTab(page, 'planning');
   await pick(page, 'plan-query', 'q1-q2');
   await page.waitForSelector('[data-testid="plan-status"][data-state="idle"]', { state: 'attached', timeout: TIMEOUT });
   // record every animation frame's length, and the progress bar, while planning
@@ -278,6 +284,7 @@ await test('Robocrane q1→q2 from the page: the progress bar moves, no frame ov
   });
   if (purple < 20) throw new Error(`the planned path is not drawn in the 3-D view (${purple} purple px)`);
   await page.screenshot({ path: join(artifacts, 'plan-robocrane.png'), fullPage: true });
+  await openTab(page, 'slice');
   await page.click('[data-testid="slice-compute"]');
   await page.waitForSelector('[data-testid="chart-slice"] [data-testid="slice-path"]', { timeout: TIMEOUT });
   const d = await page.getAttribute('[data-testid="chart-slice"] [data-testid="slice-path"]', 'd');
@@ -290,6 +297,7 @@ await test('Robocrane q1→q2 from the page: the progress bar moves, no frame ov
 
 await test('Cancel stops a run (Robocrane q5→q6, a 3-D slice)', async () => {
   if (!planner) throw new Error('no planning controls on the page');
+  await openTab(page, 'planning');
   await pick(page, 'plan-query', 'q5-q6');
   await page.waitForFunction(() => !document.querySelector('[data-testid="plan-run"]').disabled, null, { timeout: TIMEOUT });
   // Plan, then Cancel two frames later (the run takes many frames), as a user clicking fast

@@ -188,6 +188,13 @@ export async function stripSections(scope) {
   return (await readSections(scope)).map(({ kind, t0, t1 }) => ({ kind, t0, t1 })).sort((a, b) => a.t0 - b.t0 || a.t1 - b.t1);
 }
 
+/** Opens the results tab `id` (`planning`, `lattice`, … : web/src/state.rs `Tab::id`) by clicking
+ * it, and waits until its panel shows (the other panels are hidden). */
+export async function openTab(page, id) {
+  await page.click(`.tablist [role="tab"][data-tab="${id}"]`);
+  await page.waitForSelector(`[role="tabpanel"][data-testid="panel-${id}"]:not([hidden])`, { timeout: 60_000 });
+}
+
 /** Starts recording animation-frame lengths (ms) in window.__frames, and with each the value of
  * `stateOf()` (evaluated in the page, e.g. a data-state) in window.__states. */
 export async function recordFrames(page, stateOf = '""') {

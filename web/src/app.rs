@@ -10,7 +10,7 @@ use crate::workbench::Workbench;
 
 /// The whole page: a top bar (what the page shows, the scenario and trajectory pickers, undo,
 /// redo and reset), then the workbench: the 3-D view and the strip first, the editor in a side
-/// panel, the results in panels under the view. Embed mode keeps the view and the strip.
+/// panel, the results in tabs under the view. Embed mode keeps the view and the strip.
 #[component]
 pub fn App() -> impl IntoView {
     // Where the page starts: a shared link, the autosave, or the first preset (crate::persist).
@@ -22,7 +22,9 @@ pub fn App() -> impl IntoView {
     let trajectory = RwSignal::new(0usize);
     // Where `source` came from: a preset's id, or "edited" (shown as `data-origin` for tests).
     let origin = RwSignal::new(boot.origin);
-    crate::persist::keep(source, origin, preset, embed);
+    // The open results tab and the planning choices, kept in the address with the scenario.
+    let settings = RwSignal::new(boot.settings);
+    crate::persist::keep(source, origin, preset, settings, embed);
     // The path the planner found for the current scenario, if any.
     let planned = RwSignal::new(None);
     let history = Undo::new(source, origin, preset);
@@ -54,7 +56,7 @@ pub fn App() -> impl IntoView {
     }
 
     let note = boot.note.map(|n| view! { <p class="error" role="alert">{n}</p> });
-    let page = PageState { parsed, verified, trajectory, planned, source, origin, history };
+    let page = PageState { parsed, verified, trajectory, planned, source, origin, history, settings };
     view! {
         <header class="topbar" class:embed=embed>
             <div class="title">
@@ -82,7 +84,7 @@ pub fn App() -> impl IntoView {
                     <aside class="side" data-testid="side-panel" aria-label="scenario editor, sharing and help">
                         <crate::editor::ScenarioEditor source origin />
                         <Editor source on_apply=apply_edit />
-                        <crate::editor::share::SharePanel source origin />
+                        <crate::editor::share::SharePanel source origin settings />
                         <crate::help::Help />
                     </aside>
                 }

@@ -2,7 +2,7 @@
 //! `app` the page and its top bar, `editor` the scenario editor, `persist` sharing and
 //! autosave, `help` the help panel, `workbench` the analysis area (`view3d` the WebGL view,
 //! `plots` the SVG plots, `planning` the planning controls), `results` the verdict's strip and
-//! tables, `worker` the Web Workers that run planning and slice maps; `logic` and
+//! tables, `tabs` the results tabs, `worker` the Web Workers that run planning and slice maps; `logic` and
 //! `edit_logic` hold what they show as plain, natively tested functions. All maths is in the
 //! `cablenav` core crate.
 
@@ -17,6 +17,7 @@ mod plots;
 pub mod presets;
 mod results;
 pub mod state;
+mod tabs;
 mod view3d;
 mod workbench;
 pub mod worker;

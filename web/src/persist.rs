@@ -4,13 +4,16 @@
 //!
 //! Hash forms: `#preset=<id>` for an unedited preset, `#s=<data>` for anything else, where
 //! `<data>` is the scenario JSON, deflated (raw DEFLATE, level 9) and base64url-encoded
-//! without padding.
+//! without padding; then the page's [`Settings`] that differ from their defaults, as
+//! `&tab=<id>&planner=<id>&steps=<n>` (links without them, written before they existed, open
+//! with the defaults).
 
 use leptos::prelude::*;
 use serde_json::{json, Value};
 use wasm_bindgen::JsCast;
 
 use crate::presets::{self, PRESETS};
+use crate::state::{Settings, Tab};
 pub use cablenav::scenario::link::{decode_scenario, encode_scenario, MAX_SHARED_BYTES};
 
 /// The localStorage key of the autosaved scenario.
@@ -29,6 +32,7 @@ pub enum Shared {
 /// form, else what it shares or why it cannot be read.
 pub fn parse_hash(hash: &str) -> Option<Result<Shared, String>> {
     let h = hash.strip_prefix('#').unwrap_or(hash);
+    let h = h.split('&').next().unwrap_or_default();
     if let Some(id) = h.strip_prefix("preset=") {
         return Some(
             presets::find(id)
@@ -47,9 +51,59 @@ pub fn hash_for(source: &str, origin: &str) -> String {
     }
 }
 
-/// The autosave record: the scenario and where it came from.
-pub fn saved_record(source: &str, origin: &str) -> String {
-    json!({"source": source, "origin": origin}).to_string()
+/// The settings part of a hash: `&key=value` for each setting that differs from its default
+/// (empty when none does). Steps typed as anything but a whole number are not kept.
+pub fn settings_query(s: &Settings) -> String {
+    let d = Settings::default();
+    let mut out = String::new();
+    if s.tab != d.tab {
+        out += &format!("&tab={}", s.tab.id());
+    }
+    if s.planner != d.planner {
+        out += &format!("&planner={}", s.planner);
+    }
+    if s.steps != d.steps && is_whole(&s.steps) {
+        out += &format!("&steps={}", s.steps);
+    }
+    out
+}
+
+/// Whether `text` is a whole number as the address keeps it (1 to 12 digits).
+fn is_whole(text: &str) -> bool {
+    (1..=12).contains(&text.len()) && text.bytes().all(|b| b.is_ascii_digit())
+}
+
+/// The settings of a hash (the `&key=value` pairs after its first part, or a bare settings
+/// string): unknown keys and values are left at their defaults, so a link from a newer page
+/// still opens.
+pub fn parse_settings(hash: &str) -> Settings {
+    let h = hash.strip_prefix('#').unwrap_or(hash);
+    let mut s = Settings::default();
+    for pair in h.split('&') {
+        let Some((key, value)) = pair.split_once('=') else { continue };
+        match key {
+            "tab" => s.tab = Tab::from_id(value).unwrap_or(s.tab),
+            "planner" => {
+                if let Some((id, _, true)) = crate::planning::PLANNERS.iter().find(|p| p.0 == value) {
+                    s.planner = *id;
+                }
+            }
+            "steps" if is_whole(value) => s.steps = value.to_string(),
+            _ => {}
+        }
+    }
+    s
+}
+
+/// The whole hash that shares the page: the scenario ([`hash_for`]) and the settings
+/// ([`settings_query`]).
+pub fn share_hash(source: &str, origin: &str, settings: &Settings) -> String {
+    hash_for(source, origin) + &settings_query(settings)
+}
+
+/// The autosave record: the scenario, where it came from and the settings.
+pub fn saved_record(source: &str, origin: &str, settings: &Settings) -> String {
+    json!({"source": source, "origin": origin, "settings": settings_query(settings)}).to_string()
 }
 
 /// Where the page starts.
@@ -65,6 +119,8 @@ pub struct Boot {
     pub note: Option<String>,
     /// `?embed=1`: view and results only.
     pub embed: bool,
+    /// The open tab and the planning choices.
+    pub settings: Settings,
 }
 
 /// `origin` as a static name: a preset id, else `"edited"`.
@@ -79,19 +135,19 @@ fn static_origin(origin: &str, source: &str) -> (&'static str, usize) {
 /// Decides the start: a shared hash first, then (when `restore`, i.e. a top-level page that is
 /// not embedded) the autosave, then the first preset.
 pub fn boot_state(hash: &str, saved: Option<&str>, restore: bool, embed: bool) -> Boot {
-    let first = |note| Boot { source: PRESETS[0].json.to_string(), origin: PRESETS[0].id, preset: 0, note, embed };
+    let first = |note| Boot { source: PRESETS[0].json.to_string(), origin: PRESETS[0].id, preset: 0, note, embed, settings: Settings::default() };
     let mut note = None;
     match parse_hash(hash) {
         Some(Ok(Shared::Preset(id))) => {
             let i = presets::find(id).unwrap_or(0);
-            return Boot { source: PRESETS[i].json.to_string(), origin: PRESETS[i].id, preset: i, note: None, embed };
+            return Boot { source: PRESETS[i].json.to_string(), origin: PRESETS[i].id, preset: i, note: None, embed, settings: parse_settings(hash) };
         }
         Some(Ok(Shared::Scenario(source))) => {
             let (origin, preset) = PRESETS
                 .iter()
                 .position(|p| p.json == source)
                 .map_or(("edited", 0), |i| (PRESETS[i].id, i));
-            return Boot { source, origin, preset, note: None, embed };
+            return Boot { source, origin, preset, note: None, embed, settings: parse_settings(hash) };
         }
         Some(Err(e)) => note = Some(e),
         None => {}
@@ -101,7 +157,8 @@ pub fn boot_state(hash: &str, saved: Option<&str>, restore: bool, embed: bool) -
         if let Some(source) = record.as_ref().and_then(|r| r.get("source")?.as_str()) {
             let origin = record.as_ref().and_then(|r| r.get("origin")?.as_str()).unwrap_or("edited");
             let (origin, preset) = static_origin(origin, source);
-            return Boot { source: source.to_string(), origin, preset, note, embed };
+            let settings = parse_settings(record.as_ref().and_then(|r| r.get("settings")?.as_str()).unwrap_or_default());
+            return Boot { source: source.to_string(), origin, preset, note, embed, settings };
         }
     }
     first(note)
@@ -171,15 +228,16 @@ pub fn page_address() -> String {
 }
 
 /// Keeps the URL hash and (outside frames and embed mode) the autosave in step with the
-/// scenario, and loads a shared link pasted into the address bar of the open page.
-pub fn keep(source: RwSignal<String>, origin: RwSignal<&'static str>, preset: RwSignal<usize>, embed: bool) {
+/// scenario and the settings, and loads a shared link pasted into the address bar of the open
+/// page.
+pub fn keep(source: RwSignal<String>, origin: RwSignal<&'static str>, preset: RwSignal<usize>, settings: RwSignal<Settings>, embed: bool) {
     if embed {
         return;
     }
     let autosave = !in_frame();
     Effect::new(move |_| {
         let (text, from) = (source.get(), origin.get());
-        let hash = hash_for(&text, from);
+        let hash = settings.with(|s| share_hash(&text, from, s));
         if let Some(w) = window() {
             if w.location().hash().ok().as_deref() != Some(hash.as_str()) {
                 let _ = w.history().and_then(|h| h.replace_state_with_url(&wasm_bindgen::JsValue::NULL, "", Some(&hash)));
@@ -187,17 +245,23 @@ pub fn keep(source: RwSignal<String>, origin: RwSignal<&'static str>, preset: Rw
         }
         if autosave {
             if let Some(s) = storage() {
-                let _ = s.set_item(STORAGE_KEY, &saved_record(&text, from));
+                let _ = s.set_item(STORAGE_KEY, &settings.with(|x| saved_record(&text, from, x)));
             }
         }
     });
     let handle = window_event_listener(leptos::ev::hashchange, move |_| {
         let hash = window().and_then(|w| w.location().hash().ok()).unwrap_or_default();
-        if hash != hash_for(&source.get_untracked(), origin.get_untracked()) && matches!(parse_hash(&hash), Some(Ok(_))) {
+        let now = settings.with_untracked(|s| share_hash(&source.get_untracked(), origin.get_untracked(), s));
+        if hash != now && matches!(parse_hash(&hash), Some(Ok(_))) {
             let b = boot_state(&hash, None, false, false);
-            preset.set(b.preset);
-            source.set(b.source);
-            origin.set(b.origin);
+            if b.source != source.get_untracked() {
+                preset.set(b.preset);
+                source.set(b.source);
+                origin.set(b.origin);
+            }
+            if settings.with_untracked(|s| *s != b.settings) {
+                settings.set(b.settings);
+            }
         }
     });
     on_cleanup(move || handle.remove());
@@ -288,7 +352,7 @@ mod tests {
     #[test]
     fn start_prefers_the_link_then_the_autosave_then_the_first_preset() {
         let edited = PRESETS[2].json.replace("crown", "crown2");
-        let saved = saved_record(&edited, "edited");
+        let saved = saved_record(&edited, "edited", &Settings::default());
         // nothing: the first preset
         let b = boot_state("", None, true, false);
         assert_eq!((b.origin, b.preset, b.source.as_str()), (PRESETS[0].id, 0, PRESETS[0].json));
@@ -300,7 +364,7 @@ mod tests {
         assert_eq!(b.origin, PRESETS[0].id);
         assert!(b.embed);
         // an autosaved preset keeps its id
-        let b = boot_state("", Some(&saved_record(PRESETS[3].json, PRESETS[3].id)), true, false);
+        let b = boot_state("", Some(&saved_record(PRESETS[3].json, PRESETS[3].id, &Settings::default())), true, false);
         assert_eq!((b.origin, b.preset), (PRESETS[3].id, 3));
         // the link wins over the autosave
         let h = hash_for(PRESETS[1].json, PRESETS[1].id);
@@ -316,6 +380,36 @@ mod tests {
         // a damaged autosave: the first preset
         let b = boot_state("", Some("{not json"), true, false);
         assert_eq!(b.origin, PRESETS[0].id);
+    }
+
+    #[test]
+    fn settings_ride_after_the_scenario_and_old_links_still_open() {
+        let p = &PRESETS[1];
+        let d = Settings::default();
+        assert_eq!(share_hash(p.json, p.id, &d), format!("#preset={}", p.id), "the defaults add nothing: links stay as they were");
+        let s = Settings { tab: Tab::Lattice, planner: "ray-lattice", steps: "9".into() };
+        let h = share_hash(p.json, p.id, &s);
+        assert_eq!(h, format!("#preset={}&tab=lattice&planner=ray-lattice&steps=9", p.id));
+        assert_eq!(parse_hash(&h), Some(Ok(Shared::Preset(p.id))));
+        assert_eq!(parse_settings(&h), s);
+        let b = boot_state(&h, None, true, false);
+        assert_eq!((b.preset, b.settings), (1, s.clone()));
+        // an edited scenario: base64url has no '&', so the settings follow its data
+        let edited = p.json.replace("\"box\"", "\"crate\"");
+        let h = share_hash(&edited, "edited", &s);
+        assert_eq!(parse_hash(&h), Some(Ok(Shared::Scenario(edited.clone()))));
+        assert_eq!(boot_state(&h, None, true, false).settings, s);
+        // an old link: the defaults
+        assert_eq!(boot_state(&hash_for(&edited, "edited"), None, true, false).settings, d);
+        // unknown keys, tabs, planners and steps that are not whole numbers are ignored
+        let odd = parse_settings(&format!("#preset={}&tab=nope&planner=magic&steps=1e3&zoom=2&steps", p.id));
+        assert_eq!(odd, d);
+        assert_eq!(parse_settings("#preset=x&steps=1").steps, "1", "a bad count is kept: the core says why at Plan");
+        assert_eq!(settings_query(&Settings { steps: "seven".into(), ..d.clone() }), "", "text is not put in the address");
+        // the autosave keeps them too
+        let saved = saved_record(p.json, p.id, &s);
+        assert_eq!(boot_state("", Some(&saved), true, false).settings, s);
+        assert_eq!(boot_state("", Some(&json!({"source": p.json, "origin": p.id}).to_string()), true, false).settings, d, "an older autosave");
     }
 
     #[test]

@@ -3,7 +3,7 @@
 //! progress and the path, so typing, scrolling and orbiting stay smooth; Cancel terminates the
 //! worker.
 
-use crate::state::{Motion, Parsed, Planned, Shared};
+use crate::state::{Motion, Parsed, Planned, Settings, Shared};
 use crate::view3d::scene::Rgba;
 use crate::worker::host::{self, Running};
 use crate::worker::protocol::{pose_from_wire, Job, Reply};
@@ -15,6 +15,21 @@ use std::rc::Rc;
 /// ([`crate::worker::jobs::planner`] sets it up).
 pub const PLANNERS: [(&str, &str, bool); 2] =
     [("continuation", "Atlas continuation (Bohigas et al.)", true), ("ray-lattice", "Ray lattice + A* + Bézier (Zhang)", true)];
+
+/// The lattice planner's id in [`PLANNERS`].
+const LATTICE: &str = "ray-lattice";
+
+/// The grid values per free coordinate to send with a plan: the typed `text` as a whole number
+/// for the lattice planner (the core checks its range in the worker, as for the CLI), the CLI's
+/// default for the atlas, which has no steps. Text that is no whole number is refused with the
+/// message `cablenav lattice --steps` gives.
+pub fn lattice_steps(planner: &str, text: &str) -> Result<usize, String> {
+    if planner != LATTICE {
+        return Ok(cablenav::plan::lattice::LatticeParams::default().steps);
+    }
+    let text = text.trim();
+    text.parse::<usize>().map_err(|_| cablenav::Error::new("--steps", format!("not a whole number: {text:?}")).to_string())
+}
 
 /// Colour of the lattice planner's A* polyline, drawn beside the smoothed path.
 pub const POLYLINE: Rgba = [0.93, 0.55, 0.12, 1.0];
@@ -98,9 +113,10 @@ fn motion(t: crate::worker::protocol::PlannedTrajectory) -> Option<Motion> {
 
 /// The planning controls.
 #[component]
-pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSignal<Option<Shared<Planned>>>) -> impl IntoView {
+pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSignal<Option<Shared<Planned>>>, settings: RwSignal<Settings>) -> impl IntoView {
     let query = RwSignal::new(String::new());
-    let planner_id = RwSignal::new(PLANNERS[0].0.to_string());
+    // the planner is one of the page's settings (kept in the address)
+    let planner_id = Memo::new(move |_| settings.with(|s| s.planner));
     let budget = RwSignal::new(20_000usize);
     let ui = Ui { state: RwSignal::new(RunState::Idle), progress: RwSignal::new(0.0), detail: RwSignal::new(String::new()), planned };
     let run: Rc<RefCell<Option<Running>>> = Rc::new(RefCell::new(None));
@@ -129,9 +145,15 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
             ui.state.set(RunState::Failed(format!("the planner “{}” is not available", planner_id.get_untracked())));
             return;
         }
+        let steps = match settings.with_untracked(|s| lattice_steps(planner_id.get_untracked(), &s.steps)) {
+            Ok(n) => n,
+            Err(e) => return ui.state.set(RunState::Failed(e)),
+        };
         let q = query.get_untracked();
-        let job = Job::Plan { scenario: json, query: q.clone(), planner: planner_id.get_untracked(), max_charts: budget.get_untracked() };
-        planned.set(None);
+        let job = Job::Plan { scenario: json, query: q.clone(), planner: planner_id.get_untracked().to_string(), max_charts: budget.get_untracked(), steps };
+        if planned.with_untracked(Option::is_some) {
+            planned.set(None);
+        }
         gen2.set(gen2.get() + 1);
         let this = gen2.get();
         let (slot, gen) = (run2.clone(), gen2.clone());
@@ -165,13 +187,19 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
         ui.detail.set("Cancelled: the planner's worker was stopped.".into());
     };
     let running = move || ui.state.get() == RunState::Running;
+    let lattice = move || planner_id.get() == LATTICE;
 
     view! {
         <h2>"Planning"</h2>
         <div class="planning" data-testid="planning">
             <label>
                 "Planner "
-                <select data-testid="planner" on:change=move |ev| planner_id.set(event_target_value(&ev))>
+                <select data-testid="planner" on:change=move |ev| {
+                    let id = event_target_value(&ev);
+                    if let Some((id, _, _)) = PLANNERS.iter().find(|p| p.0 == id) {
+                        settings.update(|s| s.planner = id)
+                    }
+                }>
                     {PLANNERS.map(|(id, label, ok)| view! { <option value=id disabled=!ok selected=move || planner_id.get() == id>{label}</option> })}
                 </select>
             </label>
@@ -191,6 +219,15 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
                         if let Ok(v) = event_target_value(&ev).trim().parse::<usize>() {
                             budget.set(v.max(1))
                         }
+                    } />
+            </label>
+            <label title="grid values per free coordinate, both ends of its range included (cablenav plan --planner lattice --steps N)">
+                "Lattice steps "
+                <input class="num" type="number" min="2" max="10000" step="1" data-testid="plan-steps" disabled=move || !lattice()
+                    prop:value=move || settings.with(|s| s.steps.clone())
+                    on:change=move |ev| {
+                        let text = event_target_value(&ev);
+                        settings.update(|s| s.steps = text.trim().to_string())
                     } />
             </label>
             <button data-testid="plan-run" on:click=start disabled=move || running() || queries().is_empty()>"Plan"</button>
@@ -216,5 +253,15 @@ mod tests {
         assert_eq!(RunState::Done("no_path".into()).name(), "no_path");
         assert_eq!(RunState::Failed("x".into()).name(), "error");
         assert_eq!(PLANNERS.iter().filter(|p| p.2).count(), 2, "the atlas and the ray lattice");
+        assert!(PLANNERS.iter().any(|p| p.0 == LATTICE));
+    }
+
+    #[test]
+    fn steps_are_whole_numbers_for_the_lattice_only() {
+        assert_eq!(lattice_steps(LATTICE, " 9 "), Ok(9));
+        assert_eq!(lattice_steps(LATTICE, "1"), Ok(1), "the range is the core's to check");
+        assert_eq!(lattice_steps(LATTICE, "7.5"), Err("--steps: not a whole number: \"7.5\"".into()));
+        assert_eq!(lattice_steps(LATTICE, ""), Err("--steps: not a whole number: \"\"".into()));
+        assert_eq!(lattice_steps(PLANNERS[0].0, "nonsense"), Ok(7), "the atlas has no steps");
     }
 }

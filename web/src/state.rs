@@ -33,6 +33,18 @@ impl<T> Shared<T> {
     }
 }
 
+impl<T: PartialEq> Shared<T> {
+    /// `value` shared, or `prev` itself when it holds an equal value: a memo returning it does
+    /// not notify its readers when its content did not change (the 3-D view is not rebuilt and
+    /// redrawn for the same geometry).
+    pub fn or_same(prev: Option<&Shared<T>>, value: T) -> Self {
+        match prev {
+            Some(p) if *p.0 == value => p.clone(),
+            _ => Shared::new(value),
+        }
+    }
+}
+
 /// The core's reading of the scenario (or why it cannot be read).
 pub type Parsed = Shared<Result<Scenario, String>>;
 /// The selected trajectory's verification (`None`: no trajectory).
@@ -76,6 +88,107 @@ pub enum Follow {
     Planned,
 }
 
+
+/// The results tabs under the 3-D view, in their order on the page.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Tab {
+    /// The tables of intervals and boundaries, and the warnings.
+    Intervals,
+    /// The planners.
+    Planning,
+    /// The clearances along the followed path.
+    Clearances,
+    /// The tension envelope along the followed path.
+    Tension,
+    /// The slice map.
+    Slice,
+    /// The ray lattice.
+    Lattice,
+    /// The exports.
+    Exports,
+    /// The 3-D view's colours and controls.
+    ViewKey,
+}
+
+impl Tab {
+    /// Every tab, in order.
+    pub const ALL: [Tab; 8] =
+        [Tab::Intervals, Tab::Planning, Tab::Clearances, Tab::Tension, Tab::Slice, Tab::Lattice, Tab::Exports, Tab::ViewKey];
+
+    /// Its id: in the address (`&tab=…`), the element ids and the panel's `data-testid`
+    /// (`panel-<id>`).
+    pub fn id(self) -> &'static str {
+        match self {
+            Tab::Intervals => "intervals",
+            Tab::Planning => "planning",
+            Tab::Clearances => "clearances",
+            Tab::Tension => "tension",
+            Tab::Slice => "slice",
+            Tab::Lattice => "lattice",
+            Tab::Exports => "exports",
+            Tab::ViewKey => "view-key",
+        }
+    }
+
+    /// Its label on the page.
+    pub fn label(self) -> &'static str {
+        match self {
+            Tab::Intervals => "Intervals",
+            Tab::Planning => "Planning",
+            Tab::Clearances => "Clearances",
+            Tab::Tension => "Tensions",
+            Tab::Slice => "Slice map",
+            Tab::Lattice => "Ray lattice",
+            Tab::Exports => "Exports",
+            Tab::ViewKey => "3-D view key",
+        }
+    }
+
+    /// The tab of id `id`.
+    pub fn from_id(id: &str) -> Option<Tab> {
+        Tab::ALL.into_iter().find(|t| t.id() == id)
+    }
+
+    /// Where a key pressed on this tab moves (the WAI-ARIA tabs pattern): `ArrowRight` and
+    /// `ArrowLeft` to the next and previous tab, wrapping around, `Home` and `End` to the first and
+    /// last; `None` for any other key.
+    pub fn after_key(self, key: &str) -> Option<Tab> {
+        let n = Tab::ALL.len();
+        let i = Tab::ALL.iter().position(|t| *t == self).unwrap_or(0);
+        let to = match key {
+            "ArrowRight" => (i + 1) % n,
+            "ArrowLeft" => (i + n - 1) % n,
+            "Home" => 0,
+            "End" => n - 1,
+            _ => return None,
+        };
+        Some(Tab::ALL[to])
+    }
+}
+
+/// What the page's address keeps beside the scenario (`#preset=…&tab=…`, [`crate::persist`]):
+/// the open results tab and the planning choices.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Settings {
+    /// The open results tab.
+    pub tab: Tab,
+    /// The planner's id (one of [`crate::planning::PLANNERS`]).
+    pub planner: &'static str,
+    /// The lattice planner's grid values per free coordinate, as typed (checked by the core when
+    /// a plan starts, as `cablenav plan --planner lattice --steps N` checks it).
+    pub steps: String,
+}
+
+impl Default for Settings {
+    /// The intervals tab, the atlas planner, 7 lattice steps (the CLI's default).
+    fn default() -> Settings {
+        Settings {
+            tab: Tab::Intervals,
+            planner: crate::planning::PLANNERS[0].0,
+            steps: cablenav::plan::lattice::LatticeParams::default().steps.to_string(),
+        }
+    }
+}
 
 /// The scenario as the page holds it at one moment: its JSON text and where it came from (a
 /// preset's id, or `"edited"`). What undo and redo restore.
@@ -245,6 +358,8 @@ pub struct PageState {
     pub origin: RwSignal<&'static str>,
     /// Undo and redo of `source`.
     pub history: Undo,
+    /// The open results tab and the planning choices (kept in the address).
+    pub settings: RwSignal<Settings>,
 }
 
 /// The strip's boundary the user points at (hover, focus or tap), if any: the 3-D view shows the
@@ -292,6 +407,28 @@ mod tests {
         empty.begin_batch();
         empty.end_batch();
         assert_eq!(empty.undo(), None, "a batch without changes is no step");
+    }
+
+    #[test]
+    fn an_equal_value_keeps_the_shared_one() {
+        let a = Shared::new(vec![1, 2]);
+        assert!(Shared::or_same(Some(&a), vec![1, 2]) == a, "the same Arc: readers are not notified");
+        assert!(Shared::or_same(Some(&a), vec![1, 3]) != a);
+        assert_eq!(*Shared::or_same(None, vec![4]).0, vec![4]);
+    }
+
+    #[test]
+    fn tabs_have_ids_and_arrow_keys_wrap_around() {
+        for t in Tab::ALL {
+            assert_eq!(Tab::from_id(t.id()), Some(t));
+        }
+        assert_eq!(Tab::from_id("nope"), None);
+        assert_eq!(Tab::Intervals.after_key("ArrowRight"), Some(Tab::Planning));
+        assert_eq!(Tab::Intervals.after_key("ArrowLeft"), Some(Tab::ViewKey), "wraps to the last");
+        assert_eq!(Tab::ViewKey.after_key("ArrowRight"), Some(Tab::Intervals), "wraps to the first");
+        assert_eq!(Tab::Slice.after_key("Home"), Some(Tab::Intervals));
+        assert_eq!(Tab::Slice.after_key("End"), Some(Tab::ViewKey));
+        assert_eq!(Tab::Slice.after_key("Enter"), None);
     }
 
     #[test]

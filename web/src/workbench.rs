@@ -1,11 +1,12 @@
 //! The workbench: the stage (the 3-D view with the platform animated along a path, and the
-//! strip) and the results panels (tables, planning, exports, plots, slice map). It reads the
+//! strip) and the results in tabs (tables, planning, plots, slice map, lattice, exports). It reads the
 //! scenario and the verification the page already computed ([`PageState`]), and computes
 //! everything else through the core.
 
 use crate::results::{ResultTables, StripResult};
 use crate::logic::Tick;
-use crate::state::{Focus, Follow, PageState, Parsed, Planned, Shared, Verified};
+use crate::state::{Focus, Follow, PageState, Parsed, Planned, Shared, Tab, Verified};
+use crate::tabs::{TabList, TabPanel};
 use crate::logic::{self, fmt_num, StripModel};
 use crate::planning::Planning;
 use crate::plots::distance::DistancePlot;
@@ -108,10 +109,11 @@ fn followed<T>(
 }
 
 /// The workbench: the stage (3-D view, scrubber, strip) on the first screen and, outside embed
-/// mode, the results panels (tables, planning, exports, plots, slice map).
+/// mode, the results in tabs ([`crate::tabs`]; tables, planning, plots, slice map, lattice,
+/// exports, the view's key).
 #[component]
 pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
-    let PageState { parsed, verified, trajectory, planned, origin, source, history } = page;
+    let PageState { parsed, verified, trajectory, planned, origin, source, history, settings } = page;
     let scrub = RwSignal::new(0.0f64);
     let follow = RwSignal::new(Follow::Trajectory);
     let playing = RwSignal::new(false);
@@ -121,7 +123,9 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
     // a new scenario drops the planned path and rewinds (not while dragging: the platform stays)
     Effect::new(move |_| {
         parsed.track();
-        planned.set(None);
+        if planned.with_untracked(Option::is_some) {
+            planned.set(None);
+        }
         follow.set(Follow::Trajectory);
         if dragging.with_value(Option::is_none) {
             scrub.set(0.0);
@@ -164,19 +168,19 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         _ => None,
     });
     let traj_index = move |s: &Scenario| trajectory.get().min(s.trajectories.len().saturating_sub(1));
-    let trajectory_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |_| {
+    let trajectory_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |prev| {
         let parsed = parsed.get();
         let pieces = match (scenario_of(&parsed), strip.get(), motion()) {
             (_, Some(model), Some(p)) => p.0.motion.as_ref().map_or_else(Vec::new, |m| scene::trajectory_polylines(&m.trajectory, &model)),
             (Some(s), Some(model), None) if !s.trajectories.is_empty() => scene::trajectory_polylines(&s.trajectories[traj_index(s)], &model),
             _ => vec![],
         };
-        Shared::new(pieces)
+        Shared::or_same(prev, pieces)
     });
     // beside it: the planned path (unless it is the one drawn in its sections) and the lattice
     // planner's A* polyline
-    let path_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |_| {
-        let Some(p) = planned.get() else { return Shared::new(vec![]) };
+    let path_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |prev| {
+        let Some(p) = planned.get() else { return Shared::or_same(prev, vec![]) };
         let mut pieces = vec![];
         if motion().is_none() {
             pieces.push(Polyline { colour: PATH, poses: p.0.poses.clone() });
@@ -184,18 +188,18 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         if !p.0.polyline.is_empty() {
             pieces.push(Polyline { colour: crate::planning::POLYLINE, poses: p.0.polyline.clone() });
         }
-        Shared::new(pieces)
+        Shared::or_same(prev, pieces)
     });
     // the ray lattice built in its panel, drawn in the 3-D view too
     let lattice = RwSignal::new(None::<Shared<Result<crate::worker::protocol::LatticeResult, String>>>);
     let lattice_in_view = RwSignal::new(true);
     let lattice_infeasible = RwSignal::new(false);
-    let lattice_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |_| {
+    let lattice_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |prev| {
         let pieces = match (lattice.get(), lattice_in_view.get()) {
             (Some(l), true) => l.0.as_ref().as_ref().map_or_else(|_| vec![], |l| scene::lattice_polylines(l, lattice_infeasible.get())),
             _ => vec![],
         };
-        Shared::new(pieces)
+        Shared::or_same(prev, pieces)
     });
 
     // a boundary pointed at in the strip: the platform goes there, with its clearance tubes
@@ -548,42 +552,19 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
     if embed {
         return stage.into_any();
     }
+    let tab = Memo::new(move |_| settings.with(|s| s.tab));
+    let pick_tab = move |t: Tab| settings.update(|s| s.tab = t);
     view! {
         {stage}
         <section class="results" data-testid="results" aria-label="results">
-            <div class="panel" data-testid="panel-intervals">
+            <TabList open=tab on_pick=pick_tab />
+            <TabPanel of=Tab::Intervals open=tab>
                 <ResultTables parsed verified=shown />
-            </div>
-            <details class="panel" data-testid="panel-view-key">
-                <summary>"3-D view: colours and controls"</summary>
-                <p class="legend">
-                    "Path: " <span class="swatch feasible"></span> "feasible " <span class="swatch infeasible"></span> "infeasible "
-                    <span class="swatch" style="background: rgb(107,59,212)"></span> "planned (thick: platform origin; thin: a point on its z axis). "
-                    "Cables: " <span class="swatch" style="background: rgb(59,112,217)"></span> "tension margin ≥ ¼ of the bounds' span, "
-                    <span class="swatch" style="background: rgb(230,145,31)"></span> "margin near 0, "
-                    <span class="swatch" style="background: rgb(143,59,212)"></span> "tension out of bounds, "
-                    <span class="swatch infeasible"></span> "interfering or length out of bounds, "
-                    <span class="swatch" style="background: rgb(51,64,77)"></span> "no wrench set."
-                </p>
-                <p class="legend">"Drag to orbit, right-drag or shift-drag to pan, wheel or pinch to zoom; with the view focused, arrow keys orbit and + / − zoom."</p>
-            </details>
-            <div class="panel" data-testid="panel-planning">
-                <Planning parsed source planned />
-            </div>
-            <div class="panel" data-testid="panel-exports">
-                <h2>"Exports"</h2>
-                <p class="exports">
-                    <button data-testid="export-intervals-csv" on:click=export_intervals>"Intervals (CSV)"</button>
-                    <button data-testid="copy-intervals" on:click=copy_intervals>"Copy intervals"</button>
-                    <button data-testid="export-report-json" on:click=export_report>"Report (JSON, as the CLI prints)"</button>
-                    <button data-testid="export-path-csv" on:click=move |_| export_path(false)>"Path poses (CSV)"</button>
-                    <button data-testid="export-path-json" on:click=move |_| export_path(true)>"Path poses (JSON)"</button>
-                    <button data-testid="export-planned-scenario" on:click=export_plan disabled=move || planned.get().is_none_or(|p| p.0.motion.is_none())
-                        title="the scenario with the planned trajectory added, as cablenav plan --out writes it">"Scenario with the plan (JSON)"</button>
-                    <button data-testid="export-view-png" on:click=export_view>"3-D view (PNG)"</button>
-                </p>
-            </div>
-            <div class="panel wide" data-testid="panel-clearances">
+            </TabPanel>
+            <TabPanel of=Tab::Planning open=tab>
+                <Planning parsed source planned settings />
+            </TabPanel>
+            <TabPanel of=Tab::Clearances open=tab wide=true>
                 <h2>"Clearances along the path"</h2>
                 <DistancePlot
                     profile=Signal::derive(move || profile_data.get().map(|p| p.0.0.clone()))
@@ -593,19 +574,19 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
                         _ => vec![],
                     })
                 />
-            </div>
-            <div class="panel wide" data-testid="panel-tension">
+            </TabPanel>
+            <TabPanel of=Tab::Tension open=tab wide=true>
                 <h2>"Tension envelope"</h2>
                 <TensionPlot
                     envelope=Signal::derive(move || envelope.get().map(|e| e.0.0.clone()))
                     param=Signal::derive(move || envelope.get().map_or("t", |e| e.0.1))
                 />
-            </div>
-            <div class="panel wide" data-testid="panel-slice">
+            </TabPanel>
+            <TabPanel of=Tab::Slice open=tab wide=true>
                 <h2>"Slice map"</h2>
                 <SlicePanel parsed source overlay=Signal::derive(move || overlay.get()) />
-            </div>
-            <div class="panel wide" data-testid="panel-lattice">
+            </TabPanel>
+            <TabPanel of=Tab::Lattice open=tab wide=true>
                 <h2>"Ray lattice"</h2>
                 <LatticePanel parsed source lattice overlay=Signal::derive(move || overlay.get()) />
                 <p class="lattice-3d">
@@ -620,7 +601,33 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
                         " with the infeasible pieces in red"
                     </label>
                 </p>
-            </div>
+            </TabPanel>
+            <TabPanel of=Tab::Exports open=tab>
+                <h2>"Exports"</h2>
+                <p class="exports">
+                    <button data-testid="export-intervals-csv" on:click=export_intervals>"Intervals (CSV)"</button>
+                    <button data-testid="copy-intervals" on:click=copy_intervals>"Copy intervals"</button>
+                    <button data-testid="export-report-json" on:click=export_report>"Report (JSON, as the CLI prints)"</button>
+                    <button data-testid="export-path-csv" on:click=move |_| export_path(false)>"Path poses (CSV)"</button>
+                    <button data-testid="export-path-json" on:click=move |_| export_path(true)>"Path poses (JSON)"</button>
+                    <button data-testid="export-planned-scenario" on:click=export_plan disabled=move || planned.get().is_none_or(|p| p.0.motion.is_none())
+                        title="the scenario with the planned trajectory added, as cablenav plan --out writes it">"Scenario with the plan (JSON)"</button>
+                    <button data-testid="export-view-png" on:click=export_view>"3-D view (PNG)"</button>
+                </p>
+            </TabPanel>
+            <TabPanel of=Tab::ViewKey open=tab>
+                <h2>"3-D view: colours and controls"</h2>
+                <p class="legend">
+                    "Path: " <span class="swatch feasible"></span> "feasible " <span class="swatch infeasible"></span> "infeasible "
+                    <span class="swatch" style="background: rgb(107,59,212)"></span> "planned (thick: platform origin; thin: a point on its z axis). "
+                    "Cables: " <span class="swatch" style="background: rgb(59,112,217)"></span> "tension margin ≥ ¼ of the bounds' span, "
+                    <span class="swatch" style="background: rgb(230,145,31)"></span> "margin near 0, "
+                    <span class="swatch" style="background: rgb(143,59,212)"></span> "tension out of bounds, "
+                    <span class="swatch infeasible"></span> "interfering or length out of bounds, "
+                    <span class="swatch" style="background: rgb(51,64,77)"></span> "no wrench set."
+                </p>
+                <p class="legend">"Drag to orbit, right-drag or shift-drag to pan, wheel or pinch to zoom; with the view focused, arrow keys orbit and + / − zoom."</p>
+            </TabPanel>
         </section>
     }
     .into_any()

@@ -8,9 +8,10 @@ use crate::persist;
 
 /// The sharing panel.
 #[component]
-pub fn SharePanel(source: RwSignal<String>, origin: RwSignal<&'static str>) -> impl IntoView {
-    let link = Memo::new(move |_| format!("{}{}", persist::page_address(), persist::hash_for(&source.get(), origin.get())));
-    let snippet = Memo::new(move |_| persist::embed_snippet(&persist::page_address(), &persist::hash_for(&source.get(), origin.get())));
+pub fn SharePanel(source: RwSignal<String>, origin: RwSignal<&'static str>, settings: RwSignal<crate::state::Settings>) -> impl IntoView {
+    let hash = move || settings.with(|s| persist::share_hash(&source.get(), origin.get(), s));
+    let link = Memo::new(move |_| format!("{}{}", persist::page_address(), hash()));
+    let snippet = Memo::new(move |_| persist::embed_snippet(&persist::page_address(), &hash()));
     let message = RwSignal::new(None::<(bool, String)>);
     let load = move |text: String, what: String| {
         // The file's scenario replaces the text, whatever it holds (an invalid one shows the

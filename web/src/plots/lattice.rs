@@ -12,7 +12,7 @@ use super::Chart;
 use crate::logic::{fmt_exact, fmt_num};
 use crate::state::Shared;
 use crate::view3d::scene::Rgba;
-use crate::worker::host::{self, Running};
+use crate::worker::host::{self, FanOut};
 use crate::worker::jobs::{join_lattice, lattice_spec};
 use crate::worker::protocol::{Job, LatticeResult, RaySections, Reply};
 use cablenav::model::Coord;
@@ -125,13 +125,10 @@ pub fn LatticePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>
     let section = CrossSection::new();
     let steps = RwSignal::new(7usize);
     let progress = RwSignal::new(None::<(f64, String)>);
-    let running: StoredValue<Vec<Running>, LocalStorage> = StoredValue::new_local(Vec::new());
-    let generation = StoredValue::new(0u32);
+    let run = FanOut::new();
     let stop = move || {
-        generation.update_value(|g| *g += 1);
-        running.update_value(|r| r.iter().for_each(Running::cancel));
-        running.set_value(Vec::new());
         progress.set(None);
+        run.stop()
     };
     // a new scenario resets the choices, stops a build and drops the lattice
     Effect::new(move |_| {
@@ -143,8 +140,7 @@ pub fn LatticePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>
     });
     let start = move |_| {
         let (Some(s), Some(json)) = (scenario.get_untracked(), source.try_get_untracked()) else { return };
-        stop();
-        let this = generation.get_value();
+        let this = stop();
         let (pose, a, r, n) = (section.pose.get_untracked(), section.axes.get_untracked(), section.range.get_untracked(), steps.get_untracked());
         let axes: Vec<String> = a.iter().map(|c| c.name().to_string()).collect();
         // the request's checks first (the core's errors), before any worker starts
@@ -165,23 +161,20 @@ pub fn LatticePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>
             _ => Some(Err("the worker answered a lattice job with another job's reply".to_string())),
         };
         let on_progress = move |f: f64, parts: usize| {
-            if generation.get_value() == this {
+            if run.is_current(this) {
                 progress.set(Some((f.min(0.99), format!("{:.0} % of the rays, {parts} of {workers} blocks done ({workers} workers)", f * 100.0))));
             }
         };
         let on_done = move |parts: Result<Vec<Vec<RaySections>>, String>| {
-            if generation.get_value() != this {
-                return;
-            }
-            let result = parts.and_then(|p| join_lattice(&s, spec.clone(), &p.concat()));
-            lattice.set(Some(Shared::new(result)));
-            generation.update_value(|g| *g += 1);
-            progress.set(None);
-            running.update_value(|r| std::mem::take(r).into_iter().for_each(host::retire));
+            run.finish(this, || {
+                let result = parts.and_then(|p| join_lattice(&s, spec.clone(), &p.concat()));
+                lattice.set(Some(Shared::new(result)));
+                progress.set(None);
+            })
         };
         match host::start_all(&jobs, part, on_progress, on_done) {
             Ok(started) => {
-                running.set_value(started);
+                run.hold(started);
                 lattice.set(None);
                 progress.set(Some((0.0, format!("starting {workers} worker(s)…"))));
             }
@@ -201,7 +194,7 @@ pub fn LatticePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>
                     } />
             </label>
             <button data-testid="lattice-build" on:click=start disabled=busy>"Build lattice"</button>
-            <button data-testid="lattice-cancel" on:click=move |_| stop() disabled=move || !busy()>"Cancel"</button>
+            <button data-testid="lattice-cancel" on:click=move |_| { stop(); } disabled=move || !busy()>"Cancel"</button>
             <progress data-testid="lattice-progress" max="1" prop:value=move || progress.get().map_or(0.0, |p| p.0) aria-label="lattice progress"></progress>
             <span class="readout" data-testid="lattice-state" data-state=move || if busy() { "running" } else { "idle" } aria-live="polite">
                 {move || progress.get().map(|p| p.1)}

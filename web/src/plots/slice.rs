@@ -10,7 +10,7 @@ use crate::state::Shared;
 use crate::logic::fmt_num;
 use crate::view3d::scene::{self, Polyline};
 use cablenav::model::{Coord, Pose};
-use crate::worker::host::{self, Running};
+use crate::worker::host::{self, FanOut};
 use crate::worker::protocol::{Job, Reply};
 use cablenav::verify::slice::{Class, SliceMap};
 use cablenav::Scenario;
@@ -158,19 +158,15 @@ pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, 
     });
     // the map is classified in row blocks by several workers at once (crate::worker), then
     // joined here; a new request or Cancel terminates the running ones
-    let running: StoredValue<Vec<Running>, LocalStorage> = StoredValue::new_local(Vec::new());
+    let run = FanOut::new();
     let progress = RwSignal::new(None::<(usize, usize)>);
-    let generation = StoredValue::new(0u32);
     let stop = move || {
-        generation.update_value(|g| *g += 1);
-        running.update_value(|r| r.iter().for_each(Running::cancel));
-        running.set_value(Vec::new());
         progress.set(None);
+        run.stop()
     };
     let compute = move |_| {
         let Some(s) = scenario.get_untracked() else { return };
-        stop();
-        let this = generation.get_value();
+        let this = stop();
         let (pose_name, a, n, r) = (pose.get_untracked(), axes.get_untracked(), res.get_untracked(), range.get_untracked());
         // the whole map's checks first (same errors as the core's), before any worker starts
         if let Err(e) = cablenav::verify::slice::slice_rows(&s, &pose_name, a, n, r, 0..0) {
@@ -191,23 +187,20 @@ pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, 
         };
         let workers = blocks.len();
         let on_progress = move |_: f64, parts: usize| {
-            if generation.get_value() == this {
+            if run.is_current(this) {
                 progress.set(Some((parts, workers)));
             }
         };
         let on_done = move |parts: Result<Vec<Vec<Class>>, String>| {
-            if generation.get_value() != this {
-                return;
-            }
-            let result = parts.and_then(|p| cablenav::verify::slice::slice_from_classes(&s, &pose_name, a, n, r, p.concat()).map_err(|e| e.to_string()));
-            map.set(Some(Shared::new(result)));
-            generation.update_value(|g| *g += 1);
-            progress.set(None);
-            running.update_value(|r| std::mem::take(r).into_iter().for_each(host::retire));
+            run.finish(this, || {
+                let result = parts.and_then(|p| cablenav::verify::slice::slice_from_classes(&s, &pose_name, a, n, r, p.concat()).map_err(|e| e.to_string()));
+                map.set(Some(Shared::new(result)));
+                progress.set(None);
+            })
         };
         match host::start_all(&jobs, part, on_progress, on_done) {
             Ok(started) => {
-                running.set_value(started);
+                run.hold(started);
                 progress.set(Some((0, workers)));
             }
             Err(e) => map.set(Some(Shared::new(Err(e)))),
@@ -226,7 +219,7 @@ pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, 
                 </select>
             </label>
             <button data-testid="slice-compute" on:click=compute>"Compute slice"</button>
-            <button data-testid="slice-cancel" disabled=move || progress.get().is_none() on:click=move |_| stop()>"Cancel"</button>
+            <button data-testid="slice-cancel" disabled=move || progress.get().is_none() on:click=move |_| { stop(); }>"Cancel"</button>
             <span class="readout" data-testid="slice-progress" aria-live="polite">
                 {move || progress.get().map(|(done, all)| format!("{done} of {all} row blocks done ({all} workers)"))}
             </span>

@@ -3,13 +3,13 @@
 //! page never waits for a planner to notice a flag.
 
 use super::protocol::{decode_reply, encode_job, Job, Reply};
+use leptos::prelude::{GetValue, LocalStorage, SetValue, StoredValue, UpdateValue};
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 
 /// A job running in its worker; dropping it (or [`Running::cancel`]) terminates the worker.
 pub struct Running {
     worker: web_sys::Worker,
-    script_url: String,
     _onmessage: Closure<dyn FnMut(web_sys::MessageEvent)>,
     _onerror: Closure<dyn FnMut(web_sys::Event)>,
 }
@@ -24,7 +24,6 @@ impl Running {
 impl Drop for Running {
     fn drop(&mut self) {
         self.worker.terminate();
-        let _ = web_sys::Url::revoke_object_url(&self.script_url);
     }
 }
 
@@ -53,18 +52,36 @@ fn module_url() -> Result<String, String> {
     web_sys::Url::new_with_base(&rel, &base).map(|u| u.href()).map_err(|_| format!("bad URL {rel}"))
 }
 
-/// Starts `job` in a new worker; `on_reply` gets its replies (the last one final: not
-/// [`Reply::Progress`]). A worker that fails to start or crashes gives a [`Reply::Failed`].
-pub fn start(job: &Job, mut on_reply: impl FnMut(Reply) + 'static) -> Result<Running, String> {
+thread_local! {
+    /// The workers' script as a Blob URL, made once for the page (every worker starts from it).
+    static SCRIPT: std::cell::OnceCell<String> = const { std::cell::OnceCell::new() };
+}
+
+/// The workers' script: the page's module, started again from the page's compiled wasm module
+/// (posted first, so the worker neither fetches nor compiles it again); `main` finds no window
+/// and serves jobs. A Blob URL made at the first start and kept for the page's life, so a start
+/// costs the page no new Blob (it was ~5 ms of the main thread per start).
+fn worker_script() -> Result<String, String> {
+    if let Some(url) = SCRIPT.with(|s| s.get().cloned()) {
+        return Ok(url);
+    }
     let js = module_url()?;
-    // the page's module, started again from the page's compiled wasm module (posted first, so the
-    // worker neither fetches nor compiles it again): `main` finds no window and serves jobs
     let source = format!("import init from {js:?};\nself.onmessage = (e) => {{ self.onmessage = null; init({{ module_or_path: e.data }}); }};\n");
     let parts = js_sys::Array::of1(&JsValue::from_str(&source));
     let kind = web_sys::BlobPropertyBag::new();
     kind.set_type("text/javascript");
     let blob = web_sys::Blob::new_with_str_sequence_and_options(&parts, &kind).map_err(|e| format!("{e:?}"))?;
-    let script_url = web_sys::Url::create_object_url_with_blob(&blob).map_err(|e| format!("{e:?}"))?;
+    let url = web_sys::Url::create_object_url_with_blob(&blob).map_err(|e| format!("{e:?}"))?;
+    SCRIPT.with(|s| {
+        let _ = s.set(url.clone());
+    });
+    Ok(url)
+}
+
+/// Starts `job` in a new worker; `on_reply` gets its replies (the last one final: not
+/// [`Reply::Progress`]). A worker that fails to start or crashes gives a [`Reply::Failed`].
+pub fn start(job: &Job, mut on_reply: impl FnMut(Reply) + 'static) -> Result<Running, String> {
+    let script_url = worker_script()?;
     let options = web_sys::WorkerOptions::new();
     options.set_type(web_sys::WorkerType::Module);
     let worker = web_sys::Worker::new_with_options(&script_url, &options).map_err(|e| format!("cannot start a worker: {e:?}"))?;
@@ -94,7 +111,59 @@ pub fn start(job: &Job, mut on_reply: impl FnMut(Reply) + 'static) -> Result<Run
     worker.set_onmessage(Some(onmessage.as_ref().unchecked_ref()));
     worker.set_onerror(Some(onerror.as_ref().unchecked_ref()));
     worker.post_message(&wasm_bindgen::module()).map_err(|e| format!("cannot send the module to the worker: {e:?}"))?;
-    Ok(Running { worker, script_url, _onmessage: onmessage, _onerror: onerror })
+    Ok(Running { worker, _onmessage: onmessage, _onerror: onerror })
+}
+
+/// The page's hold on one fan-out run ([`start_all`]) at a time: its workers, and a generation
+/// that a new run, Cancel or the run's end moves on, so the replies of an older run are ignored.
+/// Copyable into the run's callbacks.
+#[derive(Clone, Copy)]
+pub struct FanOut {
+    running: StoredValue<Vec<Running>, LocalStorage>,
+    generation: StoredValue<u32>,
+}
+
+impl FanOut {
+    /// Nothing running.
+    pub fn new() -> FanOut {
+        FanOut { running: StoredValue::new_local(Vec::new()), generation: StoredValue::new(0) }
+    }
+
+    /// Stops the run going, if any: its workers are terminated and its late replies ignored.
+    /// Returns the generation of the next run.
+    pub fn stop(&self) -> u32 {
+        self.generation.update_value(|g| *g += 1);
+        self.running.update_value(|r| std::mem::take(r).iter().for_each(Running::cancel));
+        self.generation.get_value()
+    }
+
+    /// Whether run `this` is still the current one (not stopped, replaced or ended).
+    pub fn is_current(&self, this: u32) -> bool {
+        self.generation.get_value() == this
+    }
+
+    /// Keeps the workers [`start_all`] started for the current run.
+    pub fn hold(&self, started: Vec<Running>) {
+        self.running.set_value(started);
+    }
+
+    /// The end of run `this` (for `start_all`'s `done`): `finish` takes its result only if the
+    /// run is still current; then the run is over (later replies are ignored) and its workers are
+    /// retired after this event.
+    pub fn finish(&self, this: u32, finish: impl FnOnce()) {
+        if !self.is_current(this) {
+            return;
+        }
+        finish();
+        self.generation.update_value(|g| *g += 1);
+        self.running.update_value(|r| std::mem::take(r).into_iter().for_each(retire));
+    }
+}
+
+impl Default for FanOut {
+    fn default() -> Self {
+        FanOut::new()
+    }
 }
 
 /// Runs `jobs` at once, one worker each (work split into blocks), and joins their answers:

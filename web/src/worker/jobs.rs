@@ -39,11 +39,14 @@ pub fn kind_of(id: &str) -> Option<PlannerKind> {
     }
 }
 
-/// The planner `id` set up for query `query`, behind the core's common interface.
-pub fn planner(id: &str, s: &Scenario, query: &str, max_charts: usize) -> Result<Box<dyn PathPlanner>, String> {
+/// The planner `id` set up for query `query`, behind the core's common interface: the atlas with
+/// at most `max_charts` charts, the lattice with `steps` grid values per free coordinate (checked
+/// by the core, which refuses a count out of range as `cablenav plan --steps` does).
+pub fn planner(id: &str, s: &Scenario, query: &str, max_charts: usize, steps: usize) -> Result<Box<dyn PathPlanner>, String> {
     let kind = kind_of(id).ok_or_else(|| format!("the planner “{id}” is not available"))?;
     let mut options = PlannerOptions::new(kind);
     options.atlas.max_charts = max_charts;
+    options.lattice.steps = steps;
     choice::planner(s, query, &options).map_err(|e| e.to_string())
 }
 
@@ -122,7 +125,7 @@ pub fn fraction(p: &Progress, shown: f64) -> f64 {
 /// ms), then the final reply.
 pub fn run(job: Job, report: &mut dyn FnMut(Reply), now: fn() -> f64) {
     let last = match job {
-        Job::Plan { scenario, query, planner: id, max_charts } => plan(&scenario, &query, &id, max_charts, report, now),
+        Job::Plan { scenario, query, planner: id, max_charts, steps } => plan(&scenario, &query, &id, max_charts, steps, report, now),
         Job::Slice { scenario, pose, axes, res, range, rows } => slice_rows(&scenario, &pose, &axes, res, range, rows),
         Job::LatticeRays { scenario, pose, axes, ranges, steps, rays } => {
             lattice_rays(&scenario, &pose, &axes, ranges, steps, rays, report, now)
@@ -136,9 +139,9 @@ fn scenario(json: &str) -> Result<Scenario, String> {
     Scenario::from_json(json).map_err(|e| e.to_string())
 }
 
-fn plan(json: &str, query: &str, id: &str, max_charts: usize, report: &mut dyn FnMut(Reply), now: fn() -> f64) -> Result<Reply, String> {
+fn plan(json: &str, query: &str, id: &str, max_charts: usize, steps: usize, report: &mut dyn FnMut(Reply), now: fn() -> f64) -> Result<Reply, String> {
     let s = scenario(json)?;
-    let mut p = planner(id, &s, query, max_charts)?;
+    let mut p = planner(id, &s, query, max_charts, steps)?;
     let started = now();
     let mut shown = 0.0;
     let mut since = started;
@@ -279,7 +282,7 @@ mod tests {
     fn a_plan_job_finds_robocrane_q1_q2_and_ends_at_the_query() {
         let json = PRESETS[find("robocrane").unwrap()].json;
         let mut replies = vec![];
-        run(Job::Plan { scenario: json.into(), query: "q1-q2".into(), planner: "continuation".into(), max_charts: 20_000 }, &mut |r| replies.push(r), clock);
+        run(Job::Plan { scenario: json.into(), query: "q1-q2".into(), planner: "continuation".into(), max_charts: 20_000, steps: 7 }, &mut |r| replies.push(r), clock);
         let Some(Reply::Planned { status, summary, path, polyline, trajectory }) = replies.last() else { panic!("{replies:?}") };
         assert!(polyline.is_empty(), "the atlas has no A* polyline");
         assert!(trajectory.as_ref().is_some_and(|t| t.report.is_ok()), "the atlas' path as a trajectory, verified");
@@ -296,7 +299,7 @@ mod tests {
     fn a_lattice_plan_job_sends_the_smoothed_path_and_the_polyline() {
         let json = PRESETS[find("cdpr7-box").unwrap()].json;
         let mut replies = vec![];
-        run(Job::Plan { scenario: json.into(), query: "over-box".into(), planner: "ray-lattice".into(), max_charts: 1 }, &mut |r| replies.push(r), clock);
+        run(Job::Plan { scenario: json.into(), query: "over-box".into(), planner: "ray-lattice".into(), max_charts: 1, steps: 7 }, &mut |r| replies.push(r), clock);
         let Some(Reply::Planned { status, summary, path, polyline, trajectory }) = replies.last() else { panic!("{replies:?}") };
         assert_eq!(status, "found", "{summary}");
         // the planned trajectory, written into the scenario, verifies feasible on all of [0, 1]
@@ -312,6 +315,28 @@ mod tests {
         let s = Scenario::from_json(json).unwrap();
         let end = |w: &[u64; 7], name: &str| (super::super::protocol::pose_from_wire(w).position - s.pose(name).unwrap().position).norm();
         assert!(end(&path[0], "box-left") < 1e-12 && end(path.last().unwrap(), "box-right") < 1e-12);
+    }
+
+    #[test]
+    fn the_lattice_planners_steps_are_the_clis() {
+        let json = PRESETS[find("cdpr7-box").unwrap()].json;
+        let plan = |steps| {
+            let mut replies = vec![];
+            run(Job::Plan { scenario: json.into(), query: "over-box".into(), planner: "ray-lattice".into(), max_charts: 1, steps }, &mut |r| replies.push(r), clock);
+            replies.pop().unwrap()
+        };
+        // the core's refusal, word for word what `cablenav plan --planner lattice --steps 1` prints
+        let s = Scenario::from_json(json).unwrap();
+        let params = cablenav::plan::lattice::LatticeParams { steps: 1, ..Default::default() };
+        let core = cablenav::plan::lattice::LatticePlanner::new(&s, "over-box", params).err().unwrap().to_string();
+        assert_eq!(core, "--steps: x: needs 2 to 10000 grid values (both ends of the range count), got 1");
+        for bad in [0, 1, 10_001] {
+            let Reply::Failed { error } = plan(bad) else { panic!("{bad} steps planned") };
+            assert!(error.starts_with("--steps: x: needs 2 to 10000 grid values") && error.ends_with(&format!("got {bad}")), "{error}");
+        }
+        let Reply::Planned { status, summary, .. } = plan(9) else { panic!("9 steps") };
+        assert_eq!(status, "found", "{summary}");
+        assert!(summary.contains("x: 9 values over [0.2, 3.8]"), "{summary}");
     }
 
     #[test]
@@ -379,8 +404,8 @@ mod tests {
     fn bad_jobs_fail_with_a_reason() {
         let mut replies = vec![];
         let json = PRESETS[find("robocrane").unwrap()].json.to_string();
-        run(Job::Plan { scenario: json.clone(), query: "q1-q2".into(), planner: "nope".into(), max_charts: 1 }, &mut |r| replies.push(r), clock);
-        run(Job::Plan { scenario: "{".into(), query: "q".into(), planner: "continuation".into(), max_charts: 1 }, &mut |r| replies.push(r), clock);
+        run(Job::Plan { scenario: json.clone(), query: "q1-q2".into(), planner: "nope".into(), max_charts: 1, steps: 7 }, &mut |r| replies.push(r), clock);
+        run(Job::Plan { scenario: "{".into(), query: "q".into(), planner: "continuation".into(), max_charts: 1, steps: 7 }, &mut |r| replies.push(r), clock);
         run(Job::Slice { scenario: json.clone(), pose: "q1".into(), axes: ["x".into(), "w".into()], res: 4, range: [[0.0, 1.0]; 2], rows: [0, 4] }, &mut |r| replies.push(r), clock);
         let lattice = |pose: &str, steps, rays| Job::LatticeRays { scenario: json.clone(), pose: pose.into(), axes: vec!["x".into(), "y".into()], ranges: vec![[0.0, 1.0]; 2], steps, rays };
         run(lattice("q1", 0, [0, 1]), &mut |r| replies.push(r), clock);

@@ -18,8 +18,9 @@ pub const READY: &str = r#"{"ready":true}"#;
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Job {
     /// Plan query `query` of the scenario JSON `scenario` with planner `planner` (an id of
-    /// [`crate::planning::PLANNERS`]), at most `max_charts` charts (or the planner's own budget).
-    Plan { scenario: String, query: String, planner: String, max_charts: usize },
+    /// [`crate::planning::PLANNERS`]), at most `max_charts` charts (or the planner's own budget);
+    /// the lattice planner with `steps` grid values per free coordinate (`--steps`).
+    Plan { scenario: String, query: String, planner: String, max_charts: usize, steps: usize },
     /// The slice map over `axes` (coordinate names) of `range`, `res` cells a side, the other
     /// coordinates from pose `pose`; rows `rows[0]..rows[1]` of it (all: `[0, res]`).
     Slice {
@@ -367,7 +368,7 @@ mod tests {
 
     #[test]
     fn jobs_and_replies_round_trip_as_json() {
-        let job = Job::Plan { scenario: "{}".into(), query: "q1-q2".into(), planner: "continuation".into(), max_charts: 7 };
+        let job = Job::Plan { scenario: "{}".into(), query: "q1-q2".into(), planner: "continuation".into(), max_charts: 7, steps: 7 };
         let text = encode_job(3, &job);
         assert!(text.contains(r#""kind":"plan""#), "{text}");
         assert_eq!(decode_job(&text), Ok(Envelope { id: 3, body: job }));
