@@ -8,8 +8,7 @@
 
 use cablenav::command::{self, Request};
 use cablenav::model::Coord;
-use cablenav::plan::choice::PlannerKind;
-use cablenav::plan::lattice::LatticeParams;
+use cablenav::plan::choice::{self, PlannerKind};
 use cablenav::plan::PlanParams;
 use cablenav::{Error, Scenario};
 use wasm_bindgen::prelude::*;
@@ -321,10 +320,7 @@ pub fn plan(
     let d = PlanParams::default();
     let params = PlanParams { max_charts: max_charts.unwrap_or(d.max_charts), radius: radius.unwrap_or(d.radius), epsilon: epsilon.unwrap_or(d.epsilon), ..d };
     let request = PlannerKind::parse(planner.as_deref().unwrap_or("atlas")).and_then(|planner| {
-        if steps.is_some() && planner != PlannerKind::Lattice {
-            return Err(Error::new("steps", "is an option of the \"lattice\" planner"));
-        }
-        let lattice = LatticeParams { steps: steps.unwrap_or(LatticeParams::default().steps), ..LatticeParams::default() };
+        let lattice = choice::lattice_params(planner, steps, "the \"lattice\" planner")?;
         Ok(Request::Plan { query, params, planner, lattice })
     });
     call(scenario, request)

@@ -121,6 +121,8 @@ test('errors are ScenarioErrors naming the field', () => {
   throws(() => cablenav.plan(preset('robocrane.json'), 'q1-q2', 0), 'maxCharts');
   throws(() => cablenav.plan(good, 'q1-q2', undefined, undefined, undefined, 'rrt'), 'planner');
   throws(() => cablenav.plan(good, 'q1-q2', undefined, undefined, undefined, 'atlas', 5), 'steps');
+  // `steps` belongs to the lattice planner (the core's one check, in JavaScript's words)
+  assert.throws(() => cablenav.plan(good, 'q1-q2', undefined, undefined, undefined, undefined, 5), { message: 'steps: is an option of the "lattice" planner' });
   throws(() => cablenav.lattice(good, 'start', ['x', 'w'], [0, 1, 0, 1], 5), 'axes');
   throws(() => cablenav.lattice(good, 'start', ['x', 'y'], [0, 1, 0, 1], 1), 'steps');
   throws(() => cablenav.lattice(good, 'start', ['x', 'y'], [0, 1, 0, 1], 'many'), 'steps');

@@ -9,8 +9,7 @@
 
 use cablenav::command::{self, Request};
 use cablenav::model::Coord;
-use cablenav::plan::choice::PlannerKind;
-use cablenav::plan::lattice::LatticeParams;
+use cablenav::plan::choice::{self, PlannerKind};
 use cablenav::plan::PlanParams;
 use cablenav::{Error, Scenario};
 use pyo3::exceptions::{PyTypeError, PyValueError};
@@ -290,10 +289,7 @@ fn plan(py: Python<'_>, scenario: &Bound<'_, PyAny>, query: String, planner: &st
     let d = PlanParams::default();
     let params = PlanParams { max_charts: max_charts.unwrap_or(d.max_charts), radius: radius.unwrap_or(d.radius), epsilon: epsilon.unwrap_or(d.epsilon), ..d };
     let request = PlannerKind::parse(planner).and_then(|planner| {
-        if steps.is_some() && planner != PlannerKind::Lattice {
-            return Err(Error::new("--steps", "is an option of planner=\"lattice\""));
-        }
-        let lattice = LatticeParams { steps: steps.unwrap_or(LatticeParams::default().steps), ..LatticeParams::default() };
+        let lattice = choice::lattice_params(planner, steps, "planner=\"lattice\"")?;
         Ok(Request::Plan { query, params, planner, lattice })
     });
     call(py, scenario, request)

@@ -101,6 +101,10 @@ def test_errors_carry_the_field():
         with pytest.raises(cablenav.ScenarioError) as e:
             call()
         assert e.value.field == field, (field, e.value.field, str(e.value))
+    # `steps` belongs to the lattice planner (the core's one check, in Python's words)
+    with pytest.raises(cablenav.ScenarioError) as e:
+        cablenav.plan(scenario, "q1-q2", steps=5)
+    assert str(e.value) == 'steps: is an option of planner="lattice"'
     with pytest.raises(cablenav.ScenarioError) as e:
         cablenav.verify(ROOT / "no" / "such.json")
     assert e.value.path == str(ROOT / "no" / "such.json") and "cannot read" in e.value.reason

@@ -58,6 +58,19 @@ impl PlannerOptions {
     }
 }
 
+/// The lattice planner's parameters for a plan request that may give `steps`, the grid values
+/// per free coordinate ([`LatticeParams::default`]'s 7 when `None`): an option of the lattice
+/// planner only. With another planner, `steps` is an error at `--steps` (the Python and npm
+/// packages name it `steps`) saying that it "is an option of `lattice`", where `lattice` is how
+/// the caller's users choose the lattice planner (`--planner lattice` on the command line,
+/// `planner="lattice"` in Python). The one check of the CLI and both packages.
+pub fn lattice_params(kind: PlannerKind, steps: Option<usize>, lattice: &str) -> Result<LatticeParams> {
+    if steps.is_some() && kind != PlannerKind::Lattice {
+        return Err(Error::new("--steps", format!("is an option of {lattice}")));
+    }
+    Ok(LatticeParams { steps: steps.unwrap_or(LatticeParams::default().steps), ..LatticeParams::default() })
+}
+
 /// Progress of any planner.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Progress {
@@ -187,4 +200,18 @@ pub fn run(scenario: &Scenario, query: &str, options: &PlannerOptions, clock: &d
     let mut p = planner(scenario, query, options)?;
     while p.step(1000).done.is_none() {}
     p.result(clock() - started).ok_or_else(|| Error::new("plan", "the planner stopped without a result"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn steps_only_with_the_lattice_planner() {
+        let e = lattice_params(PlannerKind::Atlas, Some(9), "--planner lattice").unwrap_err();
+        assert_eq!((e.field.as_str(), e.reason.as_str()), ("--steps", "is an option of --planner lattice"));
+        assert_eq!(lattice_params(PlannerKind::Atlas, None, "-").unwrap(), LatticeParams::default());
+        assert_eq!(lattice_params(PlannerKind::Lattice, Some(9), "-").unwrap().steps, 9);
+        assert_eq!(lattice_params(PlannerKind::Lattice, None, "-").unwrap().steps, 7);
+    }
 }
