@@ -19,15 +19,19 @@ const CDPR7_BOX: &str = include_str!("../static/scenarios/cdpr7-box.json");
 const CDPR7_TREE: &str = include_str!("../static/scenarios/cdpr7-tree.json");
 const ROBOCRANE: &str = include_str!("../static/scenarios/robocrane.json");
 
+/// Six cables from ceiling anchors (z = 4 over the square [0, 4]²) to a platform 0.4 wide.
+fn ceiling_cables() -> Vec<Value> {
+    let tops = [[0, 0, 4], [4, 0, 4], [4, 4, 4], [0, 4, 4], [2, 0, 4], [2, 4, 4]];
+    let plats = [[-0.2, -0.2, 0.0], [0.2, -0.2, 0.0], [0.2, 0.2, 0.0], [-0.2, 0.2, 0.0], [0.0, -0.2, 0.0], [0.0, 0.2, 0.0]];
+    tops.iter().zip(plats).map(|(b, p)| json!({"base": b, "platform": p})).collect()
+}
+
 /// A robot hanging from six ceiling anchors over a wall standing on the floor (x ∈ [1.9, 2.1]):
 /// in the region below the wall's top, poses left and right of it are in different components.
 fn wall() -> String {
-    let tops = [[0, 0, 4], [4, 0, 4], [4, 4, 4], [0, 4, 4], [2, 0, 4], [2, 4, 4]];
-    let plats = [[-0.2, -0.2, 0.0], [0.2, -0.2, 0.0], [0.2, 0.2, 0.0], [-0.2, 0.2, 0.0], [0.0, -0.2, 0.0], [0.0, 0.2, 0.0]];
-    let cables: Vec<Value> = tops.iter().zip(plats).map(|(b, p)| json!({"base": b, "platform": p})).collect();
     json!({
         "format": "cablenav-scenario/1", "name": "wall",
-        "robot": {"cables": cables},
+        "robot": {"cables": ceiling_cables()},
         "clearance": {"cable_cable": 0, "cable_obstacle": 0.1},
         "obstacles": [{"name": "wall", "type": "box", "center": [2, 2, 0.5], "size": [0.2, 4, 1]}],
         "poses": {"left": {"position": [1, 2, 0.5], "quaternion": [1, 0, 0, 0]}, "right": {"position": [3, 2, 0.5], "quaternion": [1, 0, 0, 0]}},
@@ -163,12 +167,9 @@ fn components_match_a_brute_force_flood_fill() {
 /// feasible band across σ = ±π. `left` (x = 1.7, σ = 2.6) and `right` (x = 2.3, σ = −2.6) lie in it, on either side
 /// of the seam.
 fn seam() -> String {
-    let tops = [[0, 0, 4], [4, 0, 4], [4, 4, 4], [0, 4, 4], [2, 0, 4], [2, 4, 4]];
-    let plats = [[-0.2, -0.2, 0.0], [0.2, -0.2, 0.0], [0.2, 0.2, 0.0], [-0.2, 0.2, 0.0], [0.0, -0.2, 0.0], [0.0, 0.2, 0.0]];
-    let cables: Vec<Value> = tops.iter().zip(plats).map(|(b, p)| json!({"base": b, "platform": p})).collect();
     json!({
         "format": "cablenav-scenario/1", "name": "seam",
-        "robot": {"cables": cables, "length": {"min": [4.0, 4.0, 4.0, 4.0, 3.7, 3.7]}},
+        "robot": {"cables": ceiling_cables(), "length": {"min": [4.0, 4.0, 4.0, 4.0, 3.7, 3.7]}},
         "poses": {"left": {"position": [1.7, 2, 1], "tilt_torsion": [0, 0, 2.6]}, "right": {"position": [2.3, 2, 1], "tilt_torsion": [0, 0, -2.6]}},
         "queries": [{"name": "across", "start": "left", "goal": "right", "fixed": ["y", "z", "phi", "theta"], "region": {"x": [1.5, 2.5]}}]
     })
