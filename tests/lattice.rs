@@ -19,15 +19,19 @@ const CDPR7_BOX: &str = include_str!("../static/scenarios/cdpr7-box.json");
 const CDPR7_TREE: &str = include_str!("../static/scenarios/cdpr7-tree.json");
 const ROBOCRANE: &str = include_str!("../static/scenarios/robocrane.json");
 
+/// Six cables from ceiling anchors (z = 4 over the square [0, 4]²) to a platform 0.4 wide.
+fn ceiling_cables() -> Vec<Value> {
+    let tops = [[0, 0, 4], [4, 0, 4], [4, 4, 4], [0, 4, 4], [2, 0, 4], [2, 4, 4]];
+    let plats = [[-0.2, -0.2, 0.0], [0.2, -0.2, 0.0], [0.2, 0.2, 0.0], [-0.2, 0.2, 0.0], [0.0, -0.2, 0.0], [0.0, 0.2, 0.0]];
+    tops.iter().zip(plats).map(|(b, p)| json!({"base": b, "platform": p})).collect()
+}
+
 /// A robot hanging from six ceiling anchors over a wall standing on the floor (x ∈ [1.9, 2.1]):
 /// in the region below the wall's top, poses left and right of it are in different components.
 fn wall() -> String {
-    let tops = [[0, 0, 4], [4, 0, 4], [4, 4, 4], [0, 4, 4], [2, 0, 4], [2, 4, 4]];
-    let plats = [[-0.2, -0.2, 0.0], [0.2, -0.2, 0.0], [0.2, 0.2, 0.0], [-0.2, 0.2, 0.0], [0.0, -0.2, 0.0], [0.0, 0.2, 0.0]];
-    let cables: Vec<Value> = tops.iter().zip(plats).map(|(b, p)| json!({"base": b, "platform": p})).collect();
     json!({
         "format": "cablenav-scenario/1", "name": "wall",
-        "robot": {"cables": cables},
+        "robot": {"cables": ceiling_cables()},
         "clearance": {"cable_cable": 0, "cable_obstacle": 0.1},
         "obstacles": [{"name": "wall", "type": "box", "center": [2, 2, 0.5], "size": [0.2, 4, 1]}],
         "poses": {"left": {"position": [1, 2, 0.5], "quaternion": [1, 0, 0, 0]}, "right": {"position": [3, 2, 0.5], "quaternion": [1, 0, 0, 0]}},
@@ -156,6 +160,71 @@ fn components_match_a_brute_force_flood_fill() {
 }
 
 
+
+/// The `wall()` robot without the wall, at z = 1, with minimum cable lengths (4 for the corner
+/// cables, 3.7 for the middle ones) that, for x ∈ [1.5, 2.5], only torsions |σ| ≥ 2.3 meet (all
+/// of them from |σ| ≈ 2.55; the platform's anchors turned away from their cables' bases): one
+/// feasible band across σ = ±π. `left` (x = 1.7, σ = 2.6) and `right` (x = 2.3, σ = −2.6) lie in it, on either side
+/// of the seam.
+fn seam() -> String {
+    json!({
+        "format": "cablenav-scenario/1", "name": "seam",
+        "robot": {"cables": ceiling_cables(), "length": {"min": [4.0, 4.0, 4.0, 4.0, 3.7, 3.7]}},
+        "poses": {"left": {"position": [1.7, 2, 1], "tilt_torsion": [0, 0, 2.6]}, "right": {"position": [2.3, 2, 1], "tilt_torsion": [0, 0, -2.6]}},
+        "queries": [{"name": "across", "start": "left", "goal": "right", "fixed": ["y", "z", "phi", "theta"], "region": {"x": [1.5, 2.5]}}]
+    })
+    .to_string()
+}
+
+#[test]
+fn a_whole_turn_of_an_angle_axis_closes_the_lattice() {
+    let s = Scenario::from_json(&seam()).unwrap();
+    let spec = |sigma: [f64; 2]| LatticeSpec::new(vec![Coord::X, Coord::Sigma], vec![[1.5, 2.5], sigma], vec![7], [0.0, 2.0, 1.0, 0.0, 0.0, 0.0]).unwrap();
+    let pi = std::f64::consts::PI;
+    // σ ∈ [−π, π]: the band meets both ends of the range; its two halves are one component
+    let whole = Lattice::build(&s, spec([-pi, pi]));
+    assert!(whole.spec.wraps(1) && !whole.spec.wraps(0));
+    let g = whole.graph().unwrap();
+    assert_eq!(g.components, 1);
+    assert_eq!(g.disagreements, 0);
+    for i in 0..7 {
+        assert_eq!(whole.component_at(&[i, 0]), Some(0), "x index {i}, σ = −π");
+        assert_eq!(whole.component_at(&[i, 6]), Some(0), "x index {i}, σ = π");
+        assert_eq!(whole.component_at(&[i, 3]), None, "σ = 0 is infeasible");
+    }
+    // 7 σ-rays with two pieces each, 2 x-rays (σ = ±π) with one piece: 16 pieces; edges at the 14
+    // feasible grid points (2 rays each: 1 edge) and 7 across the seam
+    assert_eq!((g.piece_component.len(), g.edges), (16, 21));
+    // the point-wise grid at the same resolution closes too
+    assert_eq!(point_grid(&s, &whole.spec).components, 1);
+    // the same band in the middle of another whole turn: one component, no seam needed
+    assert_eq!(Lattice::build(&s, spec([0.0, 2.0 * pi])).graph().unwrap().components, 1);
+    // a range short of a whole turn does not close: the band's halves are apart
+    let short = Lattice::build(&s, spec([-pi, pi - 1e-3]));
+    assert!(!short.spec.wraps(1));
+    assert_eq!(short.graph().unwrap().components, 2);
+    assert_eq!(point_grid(&s, &short.spec).components, 2);
+}
+
+#[test]
+fn a_lattice_plan_crosses_the_seam_of_a_whole_turn() {
+    let s = Scenario::from_json(&seam()).unwrap();
+    let pi = std::f64::consts::PI;
+    let r = cablenav::plan::choice::run(&s, "across", &PlannerOptions::new(PlannerKind::Lattice), &|| 0.0).unwrap();
+    assert_eq!(r.status, PlanStatus::Found);
+    let cablenav::plan::choice::Details::Lattice(d) = &r.details else { panic!("a lattice report") };
+    assert_eq!(d.components, 1, "{d:?}");
+    // the polyline is continuous: past σ = π it goes on to σ = π + 0.68 (the goal's −2.6 + 2π)
+    let sigma: Vec<f64> = d.polyline.iter().map(|c| c[5]).collect();
+    assert!((sigma[0] - 2.6).abs() < 1e-12 && (sigma[sigma.len() - 1] - (2.0 * pi - 2.6)).abs() < 1e-12, "{sigma:?}");
+    assert!(sigma.windows(2).all(|w| (w[1] - w[0]).abs() <= 2.0 * pi / 6.0 + 1e-12), "{sigma:?}");
+    // σ = 0, the only way round without the seam, is infeasible; the trajectory verifies exactly
+    assert!(!feasible_at(&s, vec![2.0, 2.0, 1.0, 0.0, 0.0, 0.0]));
+    let traj = r.trajectory.expect("a trajectory");
+    let v = cablenav::verify::verify_trajectory(&s, &traj).unwrap();
+    assert_eq!(v.feasible, vec![[0.0, 1.0]], "{v:?}");
+    assert!(Pose::from_coords([2.0, 2.0, 1.0, 0.0, 0.0, pi]).rotation.angle_to(&traj.pose_at(0.5).rotation) < 1.0, "through σ = π");
+}
 
 #[test]
 fn stepping_is_bounded_and_gives_the_same_lattice() {

@@ -2,8 +2,7 @@
 //! `--help`, turned into a [`Request`] for the core.
 
 use cablenav::command::Request;
-use cablenav::plan::choice::PlannerKind;
-use cablenav::plan::lattice::LatticeParams;
+use cablenav::plan::choice::{self, PlannerKind};
 use cablenav::plan::PlanParams;
 use clap::{Parser, Subcommand};
 use clap_complete::Shell;
@@ -243,11 +242,8 @@ impl Command {
             }
             Command::Plan { scenario, query, planner, steps, out, max_charts, radius, min_radius, heuristic_weight, epsilon, json } => {
                 let planner = PlannerKind::parse(&planner)?;
-                if steps.is_some() && planner != PlannerKind::Lattice {
-                    return Err(cablenav::Error::new("--steps", "is an option of --planner lattice"));
-                }
+                let lattice = choice::lattice_params(planner, steps, "--planner lattice")?;
                 let params = PlanParams { max_charts, radius, min_radius, heuristic_weight, epsilon, ..PlanParams::default() };
-                let lattice = LatticeParams { steps: steps.unwrap_or(LatticeParams::default().steps), ..LatticeParams::default() };
                 Ok(Invocation { scenario, request: Request::Plan { query, params, planner, lattice }, json, png: None, out })
             }
             Command::Completions { .. } => Err(cablenav::Error::new("completions", "reads no scenario")),

@@ -226,4 +226,5 @@ fn a_wall_gives_no_path_with_the_resolution() {
     assert_eq!(e.field(), "--planner");
     let e = files.cli(&["plan", "robocrane.json", "--query", "q1-q2", "--steps", "9"]).unwrap_err();
     assert_eq!(e.field(), "--steps");
+    assert!(e.to_string().ends_with("--steps: is an option of --planner lattice"), "{e}");
 }

@@ -7,9 +7,7 @@
 //! The TypeScript interfaces of the reports are declared below and returned by name.
 
 use cablenav::command::{self, Request};
-use cablenav::plan::choice::PlannerKind;
-use cablenav::plan::lattice::LatticeParams;
-use cablenav::plan::PlanParams;
+use cablenav::plan::choice::{self, PlannerKind};
 use cablenav::{Error, Scenario};
 use wasm_bindgen::prelude::*;
 
@@ -301,10 +299,15 @@ fn lattice_request(pose: String, axes: &[String], ranges: &[f64], steps: &JsValu
 }
 
 /// A feasible path for one of the scenario's queries, re-verified exactly. `planner` is
-/// "atlas" (default; Henderson atlas + A* with `maxCharts`, `radius`, `epsilon`; 6 cables with a
-/// wrench set) or "lattice" (ray lattice with `steps` grid values per free coordinate, default
-/// 7, + A* + Bézier smoothing; any robot). Runs to the end: call it in a Web Worker on a page.
+/// "atlas" (default; Henderson atlas + A* with `maxCharts`, `radius`, `epsilon`, `minRadius` —
+/// the least chart radius the curvature adaptation gives, `minRadius >= radius` turns it off —
+/// and `heuristicWeight` — w in f = g + w·h, ≥ 1, 1 is A* —, as the CLI's `--max-charts`, …,
+/// `--heuristic-weight`; 6 cables with a wrench set) or "lattice" (ray lattice with `steps` grid
+/// values per free coordinate, default 7, + A* + Bézier smoothing; any robot). Unset
+/// parameters take the CLI's defaults; a bad one throws a `ScenarioError` naming it
+/// (`minRadius`). Runs to the end: call it in a Web Worker on a page.
 #[wasm_bindgen(unchecked_return_type = "PlanReport | LatticePlanReport")]
+#[allow(clippy::too_many_arguments)]
 pub fn plan(
     #[wasm_bindgen(unchecked_param_type = "ScenarioInput")] scenario: JsValue,
     query: String,
@@ -313,14 +316,12 @@ pub fn plan(
     epsilon: Option<f64>,
     #[wasm_bindgen(unchecked_param_type = "\"atlas\" | \"lattice\" | undefined")] planner: Option<String>,
     steps: Option<usize>,
+    #[wasm_bindgen(js_name = minRadius)] min_radius: Option<f64>,
+    #[wasm_bindgen(js_name = heuristicWeight)] heuristic_weight: Option<f64>,
 ) -> Result<JsValue, JsValue> {
-    let d = PlanParams::default();
-    let params = PlanParams { max_charts: max_charts.unwrap_or(d.max_charts), radius: radius.unwrap_or(d.radius), epsilon: epsilon.unwrap_or(d.epsilon), ..d };
+    let params = choice::AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon }.params();
     let request = PlannerKind::parse(planner.as_deref().unwrap_or("atlas")).and_then(|planner| {
-        if steps.is_some() && planner != PlannerKind::Lattice {
-            return Err(Error::new("steps", "is an option of the \"lattice\" planner"));
-        }
-        let lattice = LatticeParams { steps: steps.unwrap_or(LatticeParams::default().steps), ..LatticeParams::default() };
+        let lattice = choice::lattice_params(planner, steps, "the \"lattice\" planner")?;
         Ok(Request::Plan { query, params, planner, lattice })
     });
     call(scenario, request)

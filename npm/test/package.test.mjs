@@ -78,6 +78,40 @@ test('check, ray, envelope, slice and plan equal the CLI (to the last bits of li
   assert.equal(ours.status, 'found');
 });
 
+test("plan takes the CLI's atlas options minRadius and heuristicWeight", () => {
+  const robocrane = join(root, 'static', 'scenarios', 'robocrane.json');
+  const text = preset('robocrane.json');
+  const defaults = cablenav.plan(text, 'q1-q2');
+  const u = undefined;
+  for (const [name, option, ours] of [
+    ['min_radius', '--min-radius', cablenav.plan(text, 'q1-q2', u, u, u, u, u, 1)],
+    ['heuristic_weight', '--heuristic-weight', cablenav.plan(text, 'q1-q2', u, u, u, u, u, u, 1)],
+  ]) {
+    const theirs = cli('plan', robocrane, '--query', 'q1-q2', option, 1);
+    delete ours.seconds;
+    delete theirs.seconds;
+    close(ours, theirs);
+    assert.equal(ours.status, 'found');
+    assert.equal(ours.params[name], 1);
+    // it changes the search: the defaults (min_radius 0.1, heuristic_weight 1.5) take 13 charts
+    assert.notEqual(ours.charts, defaults.charts, name);
+  }
+  // refused by the core as the CLI refuses them, naming the argument
+  for (const [args, field, words] of [
+    [[u, u, u, u, u, -1], 'minRadius', 'positive finite'],
+    [[u, u, u, u, u, NaN], 'minRadius', 'positive finite'],
+    [[u, u, u, u, u, u, 0.5], 'heuristicWeight', '≥ 1'],
+    [[u, u, u, u, u, u, Infinity], 'heuristicWeight', '≥ 1'],
+  ]) {
+    assert.throws(() => cablenav.plan(text, 'q1-q2', ...args), (e) => {
+      assert.equal(e.name, 'ScenarioError');
+      assert.equal(e.field, field, e.message);
+      assert.ok(e.message.startsWith(`${field}: `) && e.reason.includes(words), e.message);
+      return true;
+    });
+  }
+});
+
 test('lattice and the lattice planner equal the CLI (to the last bits of libm)', () => {
   const box = join(root, 'static', 'scenarios', 'cdpr7-box.json');
   const ours = cablenav.lattice(preset('cdpr7-box.json'), 'start', ['x', 'y', 'z'], [0.2, 3.8, 1.1, 2.9, 0.3, 3.7], 5);
@@ -133,6 +167,8 @@ test('errors are ScenarioErrors naming the field', () => {
   throws(() => cablenav.plan(preset('robocrane.json'), 'q1-q2', 0), 'maxCharts');
   throws(() => cablenav.plan(good, 'q1-q2', undefined, undefined, undefined, 'rrt'), 'planner');
   throws(() => cablenav.plan(good, 'q1-q2', undefined, undefined, undefined, 'atlas', 5), 'steps');
+  // `steps` belongs to the lattice planner (the core's one check, in JavaScript's words)
+  assert.throws(() => cablenav.plan(good, 'q1-q2', undefined, undefined, undefined, undefined, 5), { message: 'steps: is an option of the "lattice" planner' });
   throws(() => cablenav.lattice(good, 'start', ['x', 'w'], [0, 1, 0, 1], 5), 'axes');
   throws(() => cablenav.lattice(good, 'start', ['x', 'y'], [0, 1, 0, 1], 1), 'steps');
   throws(() => cablenav.lattice(good, 'start', ['x', 'y'], [0, 1, 0, 1], 'many'), 'steps');
@@ -152,6 +188,7 @@ test('the TypeScript declarations type every function with its report', () => {
       assert.match(dts, new RegExp(`export function ${fn}\\(scenario: ScenarioInput[^)]*\\): ${report};`), `${target}: ${fn}`);
       for (const name of report.split(' \\| ')) assert.match(dts, new RegExp(`export interface ${name} \\{`), `${target}: ${name}`);
     }
+    assert.match(dts, /export function plan\([^)]*minRadius\?: number[^)]*heuristicWeight\?: number/, `${target}: plan's atlas options`);
   }
   assert.equal(cablenav.version(), JSON.parse(readFileSync(join(installed, 'package.json'), 'utf8')).version);
 });

@@ -8,9 +8,7 @@
 //! parameter) in `.field`.
 
 use cablenav::command::{self, Request};
-use cablenav::plan::choice::PlannerKind;
-use cablenav::plan::lattice::LatticeParams;
-use cablenav::plan::PlanParams;
+use cablenav::plan::choice::{self, PlannerKind};
 use cablenav::{Error, Scenario};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
@@ -261,24 +259,34 @@ fn lattice(py: Python<'_>, scenario: &Bound<'_, PyAny>, pose: String, axes: Vec<
 /// A feasible path for one of the scenario's queries, re-verified exactly.
 ///
 /// `planner="atlas"` (default; 6 cables with a wrench set): Henderson atlas + A*, with
-/// `max_charts`, `radius`, `epsilon`. `planner="lattice"` (any robot): ray lattice with `steps`
-/// grid values per free coordinate (default 7) + A* + Bézier smoothing, verified and repaired.
+/// `max_charts`, `radius`, `min_radius` (the least chart radius the curvature adaptation gives;
+/// `min_radius >= radius` turns it off), `heuristic_weight` (w in f = g + w·h, ≥ 1; 1 is A*) and
+/// `epsilon`, as `--max-charts`, `--radius`, `--min-radius`, `--heuristic-weight`, `--epsilon`.
+/// `planner="lattice"` (any robot): ray lattice with `steps` grid values per free coordinate
+/// (default 7) + A* + Bézier smoothing, verified and repaired.
 /// Returns the dict `cablenav plan SCENARIO --query QUERY [--planner lattice --steps N] --json`
 /// prints: for the atlas `status` ("found", "no_path" or "budget"), `path`, `verification`,
 /// `atlas`, `charts`, `seconds`; for the lattice `status` ("found", "no_path" or "unrepaired"),
 /// `message`, `polyline`, `waypoints`, `verification`, `seconds`, …. Unset parameters take the
-/// CLI's defaults.
+/// CLI's defaults; a bad one raises `ScenarioError` naming it (`min_radius`).
 #[pyfunction]
-#[pyo3(signature = (scenario, query, *, planner="atlas", steps=None, max_charts=None, radius=None, epsilon=None))]
+#[pyo3(signature = (scenario, query, *, planner="atlas", steps=None, max_charts=None, radius=None, min_radius=None, heuristic_weight=None, epsilon=None))]
 #[allow(clippy::too_many_arguments)]
-fn plan(py: Python<'_>, scenario: &Bound<'_, PyAny>, query: String, planner: &str, steps: Option<usize>, max_charts: Option<usize>, radius: Option<f64>, epsilon: Option<f64>) -> PyResult<Py<PyAny>> {
-    let d = PlanParams::default();
-    let params = PlanParams { max_charts: max_charts.unwrap_or(d.max_charts), radius: radius.unwrap_or(d.radius), epsilon: epsilon.unwrap_or(d.epsilon), ..d };
+fn plan(
+    py: Python<'_>,
+    scenario: &Bound<'_, PyAny>,
+    query: String,
+    planner: &str,
+    steps: Option<usize>,
+    max_charts: Option<usize>,
+    radius: Option<f64>,
+    min_radius: Option<f64>,
+    heuristic_weight: Option<f64>,
+    epsilon: Option<f64>,
+) -> PyResult<Py<PyAny>> {
+    let params = choice::AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon }.params();
     let request = PlannerKind::parse(planner).and_then(|planner| {
-        if steps.is_some() && planner != PlannerKind::Lattice {
-            return Err(Error::new("--steps", "is an option of planner=\"lattice\""));
-        }
-        let lattice = LatticeParams { steps: steps.unwrap_or(LatticeParams::default().steps), ..LatticeParams::default() };
+        let lattice = choice::lattice_params(planner, steps, "planner=\"lattice\"")?;
         Ok(Request::Plan { query, params, planner, lattice })
     });
     call(py, scenario, request)

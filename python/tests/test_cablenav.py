@@ -1,6 +1,7 @@
 """The Python package against the CLI's JSON, its errors, the GIL, stubs and docstrings."""
 
 import ast
+import inspect
 import json
 import threading
 from pathlib import Path
@@ -51,6 +52,36 @@ def test_envelope_slice_and_plan_equal_the_cli(cli):
     theirs = cli("plan", robocrane, "--query", "q1-q2", "--radius", 0.3, "--epsilon", 0.3)
     assert ours.pop("seconds") >= 0 and theirs.pop("seconds") >= 0  # wall-clock time differs
     assert ours == theirs and ours["status"] == "found"
+
+
+def test_plan_takes_the_clis_atlas_options(cli):
+    robocrane = ROOT / "static" / "scenarios" / "robocrane.json"
+    default = cablenav.plan(robocrane, "q1-q2")
+    for keyword, option, value in [("min_radius", "--min-radius", 1.0), ("heuristic_weight", "--heuristic-weight", 1.0)]:
+        ours = cablenav.plan(robocrane, "q1-q2", **{keyword: value})
+        theirs = cli("plan", robocrane, "--query", "q1-q2", option, value)
+        assert ours.pop("seconds") >= 0 and theirs.pop("seconds") >= 0  # wall-clock time differs
+        assert ours == theirs and ours["status"] == "found" and ours["params"][keyword] == value
+        # it changes the search: the default (min_radius 0.1, heuristic_weight 1.5) takes 13 charts
+        assert ours["charts"] != default["charts"], (keyword, ours["charts"])
+    # refused by the core as the CLI refuses them, naming the keyword
+    for keyword, value, words in [
+        ("min_radius", -1.0, "positive finite"),
+        ("min_radius", float("nan"), "positive finite"),
+        ("heuristic_weight", 0.5, "≥ 1"),
+        ("heuristic_weight", float("inf"), "≥ 1"),
+    ]:
+        with pytest.raises(cablenav.ScenarioError) as e:
+            cablenav.plan(robocrane, "q1-q2", **{keyword: value})
+        assert e.value.field == keyword and words in e.value.reason, str(e.value)
+        assert str(e.value).startswith(f"{robocrane}: {keyword}: ")
+
+
+def test_stubs_name_the_parameters_of_every_function():
+    stub = ast.parse((Path(cablenav.__file__).parent / "_cablenav.pyi").read_text())
+    for f in (n for n in stub.body if isinstance(n, ast.FunctionDef)):
+        stubbed = [a.arg for a in f.args.args + f.args.kwonlyargs]
+        assert stubbed == list(inspect.signature(getattr(cablenav, f.name)).parameters), f.name
 
 
 def test_lattice_and_the_lattice_planner_equal_the_cli(cli):
@@ -116,6 +147,10 @@ def test_errors_carry_the_field():
         with pytest.raises(cablenav.ScenarioError) as e:
             call()
         assert e.value.field == field, (field, e.value.field, str(e.value))
+    # `steps` belongs to the lattice planner (the core's one check, in Python's words)
+    with pytest.raises(cablenav.ScenarioError) as e:
+        cablenav.plan(scenario, "q1-q2", steps=5)
+    assert str(e.value) == 'steps: is an option of planner="lattice"'
     with pytest.raises(cablenav.ScenarioError) as e:
         cablenav.verify(ROOT / "no" / "such.json")
     assert e.value.path == str(ROOT / "no" / "such.json") and "cannot read" in e.value.reason

@@ -1,7 +1,8 @@
 //! The point-wise grid at a lattice's resolution (thesis Fig. 3.10(b), 3.12(d)): every grid point
 //! checked with the conditions at that pose, and the components of feasible points joined to
-//! their feasible grid neighbours along each axis — connectivity assumed between samples, which
-//! the ray lattice certifies instead.
+//! their feasible grid neighbours along each axis (and, on an angle axis over a whole turn, to
+//! their seam twins) — connectivity assumed between samples, which the ray lattice certifies
+//! instead.
 
 use super::{LatticeSpec, UnionFind};
 use crate::conditions::{cables_at_config, for_scenario};
@@ -20,7 +21,8 @@ pub struct PointGrid {
 }
 
 /// Checks every grid point of `spec` (already bounded by [`super::MAX_POINTS`]) and labels the
-/// components of the feasible ones, neighbours being one grid step apart along one axis.
+/// components of the feasible ones, neighbours being one grid step apart along one axis or seam
+/// twins ([`LatticeSpec::seam_twin`]).
 pub fn point_grid(s: &Scenario, spec: &LatticeSpec) -> PointGrid {
     let conditions = for_scenario(s);
     let points = spec.point_count() as usize;
@@ -32,10 +34,14 @@ pub fn point_grid(s: &Scenario, spec: &LatticeSpec) -> PointGrid {
         .collect();
     let mut uf = UnionFind::new(points);
     let mut stride = 1;
-    for &n in &spec.steps {
+    for (a, &n) in spec.steps.iter().enumerate() {
         for flat in 0..points {
             if (flat / stride) % n + 1 < n && feasible[flat] && feasible[flat + stride] {
                 uf.union(flat, flat + stride);
+            }
+            // across the seam of a whole turn: the first and last grid values are one pose
+            if spec.wraps(a) && (flat / stride) % n == 0 && feasible[flat] && feasible[flat + (n - 1) * stride] {
+                uf.union(flat, flat + (n - 1) * stride);
             }
         }
         stride *= n;

@@ -4,7 +4,8 @@
 //! intervals exactly, under every condition of the scenario (the verifier's own
 //! [`crate::verify::ray_sections`]); the graph whose nodes are the feasible ray pieces and whose
 //! edges join two pieces that both contain their rays' intersection point (a grid point); and its
-//! connected components. [`point_grid`] is the point-wise grid at the same resolution, for
+//! connected components. An angle axis over one whole turn closes on itself: the grid points at
+//! its two ends are the same pose and the pieces holding them are joined. [`point_grid`] is the point-wise grid at the same resolution, for
 //! comparison (thesis Fig. 3.12(d)).
 //!
 //! [`Lattice`] is built in bounded, resumable steps ([`Lattice::step`], one ray per unit of work),
@@ -20,6 +21,7 @@ use crate::conditions::{for_scenario, Condition};
 use crate::error::{Error, Result};
 use crate::model::Coord;
 use crate::scenario::Scenario;
+use crate::verify::slice::whole_turn;
 use crate::verify::{check_ray_range, ray_sections, Sections};
 use serde::Serialize;
 
@@ -106,6 +108,24 @@ impl LatticeSpec {
         } else {
             lo + (hi - lo) * k as f64 / last as f64
         }
+    }
+
+    /// Whether axis `a` closes on itself: an angle over one whole turn (e.g. φ over [−π, π]), whose
+    /// first and last grid values are the same orientation ([`whole_turn`]).
+    pub fn wraps(&self, a: usize) -> bool {
+        whole_turn(self.axes[a], self.ranges[a])
+    }
+
+    /// The grid point that is the same pose as `idx` across the seam of wrapping axis `a` (its
+    /// index 0 and its last index exchanged), if `a` wraps and `idx` lies on one end of it.
+    pub fn seam_twin(&self, idx: &[usize], a: usize) -> Option<Vec<usize>> {
+        let last = self.steps[a] - 1;
+        if !self.wraps(a) || (idx[a] != 0 && idx[a] != last) {
+            return None;
+        }
+        let mut twin = idx.to_vec();
+        twin[a] = last - idx[a];
+        Some(twin)
     }
 
     /// Grid spacing along axis `a`.
@@ -288,7 +308,7 @@ pub struct Graph {
     pub piece_component: Vec<usize>,
     /// Number of connected components.
     pub components: usize,
-    /// Edges: pairs of pieces joined at a grid point.
+    /// Edges: pairs of pieces joined at a grid point (or across the seam of a wrapping axis).
     pub edges: usize,
     /// Per grid point (flat index): whether every ray through it holds it in a feasible piece.
     pub point_feasible: Vec<bool>,
@@ -412,6 +432,18 @@ impl Lattice {
                 edges += 1;
             }
         }
+        // across the seam of a wrapping axis: a grid point at the range's start is the same pose as
+        // its twin at the end, so the pieces holding either are joined (one edge per twin pair)
+        for a in (0..k).filter(|&a| self.spec.wraps(a)) {
+            for flat in 0..points {
+                let idx = self.spec.point_indices(flat);
+                let Some(twin) = self.spec.seam_twin(&idx, a).filter(|_| idx[a] == 0) else { continue };
+                if let (Some(&(r, p)), Some(&(s, q))) = (self.pieces_at(&idx).first(), self.pieces_at(&twin).first()) {
+                    uf.union(piece_offset[r] + p, piece_offset[s] + q);
+                    edges += 1;
+                }
+            }
+        }
         let (piece_component, components) = uf.labels();
         Graph { piece_offset, piece_component, components, edges, point_feasible, disagreements }
     }
@@ -468,7 +500,8 @@ pub struct LatticeReport {
     /// Feasible ray pieces (the graph's nodes).
     pub pieces: usize,
     /// Joins between pieces at grid points (the graph's edges, a grid point with j feasible rays
-    /// counting j − 1).
+    /// counting j − 1; a pair of grid points joined across the seam of an angle axis over a
+    /// whole turn counting 1 more).
     pub edges: usize,
     /// Connected components of the graph.
     pub components: usize,

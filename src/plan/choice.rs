@@ -58,6 +58,52 @@ impl PlannerOptions {
     }
 }
 
+/// The atlas planner's options as the Python and npm packages take them, each `None` for
+/// [`PlanParams::default`]'s value (the CLI's defaults). Not checked here: the planner checks
+/// them ([`PlanParams::validate`]) and `command::run` names the option at fault as the CLI does
+/// (`--min-radius`, which the packages spell `min_radius` and `minRadius`).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct AtlasOptions {
+    /// Chart budget.
+    pub max_charts: Option<usize>,
+    /// Largest chart radius.
+    pub radius: Option<f64>,
+    /// Least chart radius the curvature adaptation gives.
+    pub min_radius: Option<f64>,
+    /// Weight w of the search's heuristic, f = g + w·h (1: A*).
+    pub heuristic_weight: Option<f64>,
+    /// Validity threshold ε.
+    pub epsilon: Option<f64>,
+}
+
+impl AtlasOptions {
+    /// The parameters: each given option, the default for the others.
+    pub fn params(&self) -> PlanParams {
+        let d = PlanParams::default();
+        PlanParams {
+            max_charts: self.max_charts.unwrap_or(d.max_charts),
+            radius: self.radius.unwrap_or(d.radius),
+            min_radius: self.min_radius.unwrap_or(d.min_radius),
+            heuristic_weight: self.heuristic_weight.unwrap_or(d.heuristic_weight),
+            epsilon: self.epsilon.unwrap_or(d.epsilon),
+            ..d
+        }
+    }
+}
+
+/// The lattice planner's parameters for a plan request that may give `steps`, the grid values
+/// per free coordinate ([`LatticeParams::default`]'s 7 when `None`): an option of the lattice
+/// planner only. With another planner, `steps` is an error at `--steps` (the Python and npm
+/// packages name it `steps`) saying that it "is an option of `lattice`", where `lattice` is how
+/// the caller's users choose the lattice planner (`--planner lattice` on the command line,
+/// `planner="lattice"` in Python). The one check of the CLI and both packages.
+pub fn lattice_params(kind: PlannerKind, steps: Option<usize>, lattice: &str) -> Result<LatticeParams> {
+    if steps.is_some() && kind != PlannerKind::Lattice {
+        return Err(Error::new("--steps", format!("is an option of {lattice}")));
+    }
+    Ok(LatticeParams { steps: steps.unwrap_or(LatticeParams::default().steps), ..LatticeParams::default() })
+}
+
 /// Progress of any planner.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Progress {
@@ -187,4 +233,27 @@ pub fn run(scenario: &Scenario, query: &str, options: &PlannerOptions, clock: &d
     let mut p = planner(scenario, query, options)?;
     while p.step(1000).done.is_none() {}
     p.result(clock() - started).ok_or_else(|| Error::new("plan", "the planner stopped without a result"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn steps_only_with_the_lattice_planner() {
+        let e = lattice_params(PlannerKind::Atlas, Some(9), "--planner lattice").unwrap_err();
+        assert_eq!((e.field.as_str(), e.reason.as_str()), ("--steps", "is an option of --planner lattice"));
+        assert_eq!(lattice_params(PlannerKind::Atlas, None, "-").unwrap(), LatticeParams::default());
+        assert_eq!(lattice_params(PlannerKind::Lattice, Some(9), "-").unwrap().steps, 9);
+        assert_eq!(lattice_params(PlannerKind::Lattice, None, "-").unwrap().steps, 7);
+    }
+
+    #[test]
+    fn atlas_options_fill_in_the_defaults() {
+        assert_eq!(AtlasOptions::default().params(), PlanParams::default());
+        let p = AtlasOptions { min_radius: Some(0.3), heuristic_weight: Some(1.0), ..AtlasOptions::default() }.params();
+        assert_eq!((p.min_radius, p.heuristic_weight, p.radius), (0.3, 1.0, PlanParams::default().radius));
+        let p = AtlasOptions { max_charts: Some(5), radius: Some(0.5), epsilon: Some(0.2), ..AtlasOptions::default() }.params();
+        assert_eq!((p.max_charts, p.radius, p.epsilon, p.min_radius), (5, 0.5, 0.2, PlanParams::default().min_radius));
+    }
 }

@@ -6,7 +6,9 @@
 //! piece is infeasible — split the control polygon at the waypoint nearest the infeasible section
 //! and smooth each half, down to single polyline edges, which lie on feasible rays (an edge along
 //! an angle whose slerp leaves the ray is halved along the ray). What still fails after
-//! [`LatticeParams::max_halvings`] halvings is reported, never hidden.
+//! [`LatticeParams::max_halvings`] halvings is reported, never hidden. On an angle axis over a
+//! whole turn the two ends of the range are one orientation: A* joins them (at cost 0), so a path
+//! may cross ±π, and the polyline goes on past the range's end rather than jumping by 2π.
 //!
 //! The planner sees the scenario only through the lattice's rays and the trajectory verifier: it
 //! never looks at a condition. [`LatticePlanner::step`] does a bounded amount of work per unit:
@@ -579,6 +581,32 @@ impl LatticePlanner {
                 }
             }
         }
+        out.extend(self.seam_twins(v).into_iter().map(|w| (w, 0.0)));
+        out
+    }
+
+    /// The vertices that are the same pose as `v` across the seam of an angle axis over a whole
+    /// turn: `v`'s value at one end of the range exchanged for the other end (grid points, and
+    /// special points whose twin the start's or goal's rays also made).
+    fn seam_twins(&self, v: usize) -> Vec<usize> {
+        let spec = &self.lattice.spec;
+        let wrapping = (0..spec.axes.len()).filter(|&a| spec.wraps(a));
+        if v < self.points() {
+            let idx = spec.point_indices(v);
+            return wrapping.filter_map(|a| spec.seam_twin(&idx, a)).map(|twin| spec.point_index(&twin)).collect();
+        }
+        let c = self.coords_of(v);
+        let keys = self.keys(&c);
+        let mut out = vec![];
+        for a in wrapping {
+            let Key::Grid(i) = keys[a] else { continue };
+            let last = spec.steps[a] - 1;
+            if i == 0 || i == last {
+                let mut twin = c;
+                twin[spec.axes[a].index()] = spec.value(a, last - i);
+                out.extend(self.specials.iter().position(|s| *s == twin).map(|j| self.points() + j));
+            }
+        }
         out
     }
 
@@ -599,7 +627,7 @@ impl LatticePlanner {
                 path.push(p);
             }
             path.reverse();
-            self.polyline = path.iter().map(|&w| self.coords_of(w)).collect();
+            self.polyline = self.unwrapped(&path);
             self.waypoints = turning_points(&self.polyline);
             self.runs = initial_runs(&self.waypoints);
             self.stage = Stage::Smooth { next: 0 };
@@ -615,6 +643,27 @@ impl LatticePlanner {
                 self.open.push(Open { f: gw + h, h, g: gw, v: w });
             }
         }
+    }
+
+    /// The coordinates of the A* path `path`, continuous across the seam of a wrapping angle
+    /// axis: a hop to the seam twin (the same pose) is dropped and the points after it keep going
+    /// past the range's end (φ = π + 0.1 rather than −π + 0.1), so that every edge and every
+    /// halving of it runs the short way along its ray.
+    fn unwrapped(&self, path: &[usize]) -> Vec<[f64; 6]> {
+        let mut shift = [0.0; 6];
+        let mut out: Vec<[f64; 6]> = Vec::with_capacity(path.len());
+        for (k, &w) in path.iter().enumerate() {
+            let c = self.coords_of(w);
+            if k > 0 && self.seam_twins(path[k - 1]).contains(&w) {
+                let before = self.coords_of(path[k - 1]);
+                for i in 0..6 {
+                    shift[i] += before[i] - c[i];
+                }
+                continue;
+            }
+            out.push(std::array::from_fn(|i| c[i] + shift[i]));
+        }
+        out
     }
 
     // ---- smoothing and repair ----

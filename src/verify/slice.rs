@@ -104,6 +104,13 @@ pub fn default_range(c: Coord) -> Option<[f64; 2]> {
     c.is_angle().then_some([-PI, PI])
 }
 
+/// Whether an axis along `c` over `range` closes on itself: `c` is an angle and the range is one
+/// whole turn (to 1e-9 of 2π), so its two ends are the same orientation. Slice maps and the ray
+/// lattice join their cells, pieces and grid points across that seam.
+pub fn whole_turn(c: Coord, range: [f64; 2]) -> bool {
+    c.is_angle() && (range[1] - range[0] - 2.0 * PI).abs() <= 1e-9 * 2.0 * PI
+}
+
 fn classify(s: &Scenario, conditions: &[Box<dyn Condition>], q: &[f64]) -> Class {
     let cables = cables_at_config(&s.robot, q);
     let violated = |kind: Kind| conditions.iter().filter(|c| c.kind() == kind).any(|c| c.check(&cables).violated);
@@ -200,7 +207,7 @@ pub fn slice_from_classes(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: 
         return Err(Error::new("classes", format!("expected {} cells, got {}", res * res, classes.len())));
     }
     map.classes = classes;
-    let wraps = [0, 1].map(|a| axes[a].is_angle() && (range[a][1] - range[a][0] - 2.0 * PI).abs() <= 1e-9 * 2.0 * PI);
+    let wraps = [0, 1].map(|a| whole_turn(axes[a], range[a]));
     label_components(&mut map, wraps);
     map.fraction_feasible = map.classes.iter().filter(|&&c| c == Class::Feasible).count() as f64 / (res * res) as f64;
     map.pose_components = poses_on_slice(s, &map, axes);

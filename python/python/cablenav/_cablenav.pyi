@@ -60,7 +60,10 @@ def plan(
     steps: Optional[int] = None,
     max_charts: Optional[int] = None,
     radius: Optional[float] = None,
+    min_radius: Optional[float] = None,
+    heuristic_weight: Optional[float] = None,
     epsilon: Optional[float] = None,
 ) -> Report:
-    """A feasible path for a query: ``planner`` "atlas" (Henderson atlas + A*) or "lattice" (ray lattice
-    with ``steps`` grid values per free coordinate + A* + Bézier), re-verified exactly."""
+    """A feasible path for a query: ``planner`` "atlas" (Henderson atlas + A*, with ``max_charts``,
+    ``radius``, ``min_radius``, ``heuristic_weight``, ``epsilon``) or "lattice" (ray lattice with
+    ``steps`` grid values per free coordinate + A* + Bézier), re-verified exactly."""
