@@ -50,10 +50,12 @@ pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import>
         format: FORMAT,
         name,
         robot: OutRobot {
+            links: None,
             cables: cables
                 .iter()
                 .map(|c| OutCable {
                     base: c.base,
+                    link: None,
                     platform: c.platform,
                     tension: per_cable.then_some(OutCableBounds { min: c.force_min, max: c.force_max }),
                 })
@@ -140,21 +142,28 @@ struct OutScenario<'a> {
     trajectories: Vec<OutTrajectory>,
 }
 
+/// The robot as written: its links (multi-link robots only), cables, tension bounds, diameter.
 #[derive(Serialize)]
-struct OutRobot {
-    cables: Vec<OutCable>,
+pub(super) struct OutRobot {
     #[serde(skip_serializing_if = "Option::is_none")]
-    tension: Option<OutBounds>,
+    pub(super) links: Option<Vec<super::caspr_links::OutLink>>,
+    pub(super) cables: Vec<OutCable>,
     #[serde(skip_serializing_if = "Option::is_none")]
-    diameter: Option<f64>,
+    pub(super) tension: Option<OutBounds>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) diameter: Option<f64>,
 }
 
+/// A cable as written: its base anchor, the link it pulls (multi-link robots only), its anchor
+/// there, its own tension bounds.
 #[derive(Serialize)]
-struct OutCable {
-    base: [f64; 3],
-    platform: [f64; 3],
+pub(super) struct OutCable {
+    pub(super) base: [f64; 3],
     #[serde(skip_serializing_if = "Option::is_none")]
-    tension: Option<OutCableBounds>,
+    pub(super) link: Option<String>,
+    pub(super) platform: [f64; 3],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) tension: Option<OutCableBounds>,
 }
 
 /// Robot-level tension bounds as written.

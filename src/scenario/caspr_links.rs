@@ -20,7 +20,7 @@ use roxmltree::Node;
 use serde::Serialize;
 use std::collections::BTreeMap;
 
-use super::caspr::{cable_set, child, child_numbers, children, document, line, parse_xml, properties, Import, OutBounds, OutCableBounds, Properties};
+use super::caspr::{cable_set, child, child_numbers, children, document, line, parse_xml, properties, Import, OutCable, OutCableBounds, OutRobot, Properties};
 use super::json::FORMAT_3;
 use crate::error::{Error, Result};
 
@@ -174,18 +174,9 @@ struct Out<'a> {
     configurations: BTreeMap<&'static str, BTreeMap<String, f64>>,
 }
 
+/// A link as written.
 #[derive(Serialize)]
-struct OutRobot {
-    links: Vec<OutLink>,
-    cables: Vec<OutCable>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    tension: Option<OutBounds>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    diameter: Option<f64>,
-}
-
-#[derive(Serialize)]
-struct OutLink {
+pub(super) struct OutLink {
     name: String,
     #[serde(skip_serializing_if = "Option::is_none")]
     parent: Option<String>,
@@ -210,15 +201,6 @@ struct OutBody {
     to: [f64; 3],
 }
 
-#[derive(Serialize)]
-struct OutCable {
-    base: [f64; 3],
-    link: String,
-    platform: [f64; 3],
-    #[serde(skip_serializing_if = "Option::is_none")]
-    tension: Option<OutCableBounds>,
-}
-
 /// Converts a CASPR multi-link bodies file and cables file into scenario JSON called `name`.
 pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import> {
     let links = links(bodies_xml)?;
@@ -231,7 +213,7 @@ pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import>
         format: FORMAT_3,
         name,
         robot: OutRobot {
-            links: links
+            links: Some(links
                 .iter()
                 .map(|l| OutLink {
                     name: l.name.clone(),
@@ -240,12 +222,12 @@ pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import>
                     joint: OutJoint { kind: l.kind, axis: l.axis, coordinates: l.coordinates.clone(), range: l.range.clone() },
                     body: OutBody { from: [0.0; 3], to: l.end },
                 })
-                .collect(),
+                .collect()),
             cables: cables
                 .iter()
                 .map(|c| OutCable {
                     base: c.base,
-                    link: link_name(c.link).unwrap_or_default(),
+                    link: link_name(c.link),
                     platform: c.anchor,
                     tension: per_cable.then_some(OutCableBounds { min: c.props[0], max: c.props[1] }),
                 })
