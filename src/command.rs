@@ -313,9 +313,14 @@ fn verify_text(r: &VerifyReport) -> String {
     out += ")\n";
     out += &format!("  feasible   t ∈ {}\n", intervals(&r.feasible));
     out += &format!("  infeasible t ∈ {}\n", intervals(&r.infeasible));
-    out += &format!("  feasible   τ ∈ {}\n", intervals(&r.feasible_tau));
+    // τ is the trajectory's own parameter; a multi-link robot's path has none besides t
+    let has_tau = r.feasible_tau != r.feasible || r.boundaries.iter().any(|b| b.tau != b.t);
+    if has_tau {
+        out += &format!("  feasible   τ ∈ {}\n", intervals(&r.feasible_tau));
+    }
     for b in &r.boundaries {
-        out += &format!("  boundary t = {:.9} (τ = {:.9}): {} → {}\n", b.t, b.tau, b.constraint, side(b.enters));
+        let tau = if has_tau { format!(" (τ = {:.9})", b.tau) } else { String::new() };
+        out += &format!("  boundary t = {:.9}{tau}: {} → {}\n", b.t, b.constraint, side(b.enters));
     }
     out += &format!("  uncertain  t ∈ {}\n", intervals(&r.uncertain));
     out + &notes(&r.warnings)

@@ -69,6 +69,8 @@ fn verify_takes_a_path_through_configurations() {
     assert_eq!(r["infeasible"].as_array().unwrap().len(), 1);
     let sampled = json(&["verify", "arm.json", "--trajectory", "across the gap", "--pointwise", "0.01", "--json"]);
     assert_eq!(sampled["method"], "pointwise");
+    let text = cli(&["verify", "arm.json"]).unwrap();
+    assert!(text.contains("boundary t = 0.445314004: cables 2-3 → infeasible") && !text.contains("τ"), "{text}");
     let all = json(&["verify", "arm.json", "--all", "--json"]);
     assert_eq!(all.as_array().unwrap().len(), 1);
 }
