@@ -9,6 +9,7 @@ use cablenav::conditions::{cables_at_config, for_scenario, Condition, Kind};
 use cablenav::lattice::{point_grid, Lattice, LatticeSpec};
 use cablenav::model::Coord;
 use cablenav::scenario::caspr::to_json;
+use cablenav::verify::profile::{cable_states, cable_states_at};
 use cablenav::verify::{check_config, ray_sections};
 use cablenav::Scenario;
 use serde_json::{json, Value};
@@ -298,6 +299,10 @@ fn one_free_link_equals_the_platform_robot_on_every_preset() {
             assert_eq!(x.violated, y.violated.iter().filter(|v| !v.contains("wrench")).cloned().collect::<Vec<_>>());
             let dist = |r: &cablenav::report::PoseReport| r.checks.iter().filter(|c| !c.constraint.contains("wrench")).map(|c| c.distance.unwrap_or(0.0)).collect::<Vec<_>>();
             assert!(dist(&x).iter().zip(dist(&y)).all(|(a, b)| close(*a, b)), "{} pose {name}", path.display());
+            // the drawn cable states: the same flags (the chain has no wrench set: no margins)
+            let flags = |v: Vec<cablenav::verify::profile::CableState>| v.into_iter().map(|c| (c.interfering, c.length_ok)).collect::<Vec<_>>();
+            assert_eq!(flags(cable_states(&platform, pose)), flags(cable_states_at(&chain, &q)), "{} pose {name}", path.display());
+            assert!(cable_states_at(&chain, &q).iter().all(|c| c.tension_margin.is_none()));
         }
     }
     assert!(compared >= 60, "{compared} rays compared");
@@ -386,6 +391,12 @@ fn the_path_across_the_gap_has_an_infeasible_section() {
     let [a, b] = r.infeasible[0];
     assert!(a > 0.4 && b < 0.6 && b - a > 0.05, "{a} {b}");
     assert!(r.uncertain.is_empty());
+    // the page draws cables 2 and 3 (0-based 1, 2) as interfering inside the gap, none outside
+    let along = cablenav::verify::along(&s, None).unwrap();
+    let interfering = |t: f64| cable_states_at(&s, &along.config_at(&s, t)).iter().enumerate().filter(|(_, c)| c.interfering).map(|(i, _)| i).collect::<Vec<_>>();
+    assert_eq!(interfering((a + b) / 2.0), [1, 2]);
+    assert_eq!(interfering(a / 2.0), Vec::<usize>::new());
+    assert_eq!(along.config_at(&s, 0.0), s.config("below").unwrap());
 }
 
 /// The α–β cross-section on the ray lattice with 10 steps, under the conditions of `kind`

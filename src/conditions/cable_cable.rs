@@ -27,6 +27,10 @@ impl Condition for CableCable {
         format!("cables {}-{}", self.i + 1, self.j + 1)
     }
 
+    fn cables(&self) -> Vec<usize> {
+        vec![self.i, self.j]
+    }
+
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let (ci, cj) = (&sweep.cables[self.i], &sweep.cables[self.j]);
         let undecided = ci.tube.undecided_near(&cj.tube, self.clearance);

@@ -24,6 +24,10 @@ impl Condition for CableLength {
         format!("cable {} length", self.cable + 1)
     }
 
+    fn cables(&self) -> Vec<usize> {
+        vec![self.cable]
+    }
+
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let Sweep { alg, cables, tol, .. } = sweep;
         let tol = *tol;

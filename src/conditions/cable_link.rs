@@ -36,6 +36,10 @@ impl Condition for CableLink {
         format!("cable {} - link {}", self.cable + 1, self.name)
     }
 
+    fn cables(&self) -> Vec<usize> {
+        vec![self.cable]
+    }
+
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let m = &sweep.links[self.link];
         let base = sweep.cables[self.cable].base;

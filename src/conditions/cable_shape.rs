@@ -96,6 +96,10 @@ impl Condition for CableShape {
         format!("cable {} - {}", self.cable + 1, self.name)
     }
 
+    fn cables(&self) -> Vec<usize> {
+        vec![self.cable]
+    }
+
     fn costly(&self) -> bool {
         match self.geom {
             Geom::Cylinder { .. } => true,

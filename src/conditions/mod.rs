@@ -272,6 +272,13 @@ pub trait Condition {
 
     /// The condition at one pose, given the cables there.
     fn check(&self, cables: &PoseCables) -> PoseCheck;
+
+    /// The cables (by index) the condition is about, so that a view can colour them: one for a
+    /// cable's length, tension, obstacle or link clearance, two for a pair of cables, none for a
+    /// condition on all cables together (wrench closure, static feasibility).
+    fn cables(&self) -> Vec<usize> {
+        Vec::new()
+    }
 }
 
 /// Every condition a scenario states: cable lengths (where bounded), cable–cable clearance for

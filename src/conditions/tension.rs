@@ -201,6 +201,10 @@ impl Condition for CableTension {
         format!("cable {} tension {side} bound", self.cable + 1)
     }
 
+    fn cables(&self) -> Vec<usize> {
+        vec![self.cable]
+    }
+
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let tol = sweep.tol;
         let polys = match &sweep.tension {

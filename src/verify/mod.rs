@@ -116,6 +116,16 @@ impl Along<'_> {
         }
     }
 
+    /// The configuration at t: a multi-link robot's joint coordinates, or the platform pose's six
+    /// coordinates (x, y, z, φ, θ, σ), as [`crate::conditions::cables_at_config`] takes them.
+    pub fn config_at(&self, s: &Scenario, t: f64) -> Vec<f64> {
+        match (self, &s.robot.chain) {
+            (Along::Joints(p), Some(chain)) => p.config_at(chain, t),
+            (Along::Joints(p), None) => p.through.first().cloned().unwrap_or_default(),
+            (Along::Trajectory(traj), _) => traj.pose_at(t).coords().to_vec(),
+        }
+    }
+
     /// τ of t (the trajectory's own parameter; t itself for a path).
     fn tau_of_t(&self, t: f64) -> f64 {
         match self {
@@ -147,7 +157,7 @@ pub fn along<'a>(s: &'a Scenario, name: Option<&str>) -> Result<Along<'a>> {
 }
 
 /// Every trajectory of the scenario, in file order (a multi-link robot's paths).
-fn all_along(s: &Scenario) -> Vec<Along<'_>> {
+pub fn all_along(s: &Scenario) -> Vec<Along<'_>> {
     match s.robot.chain {
         Some(_) => s.joint_paths.iter().map(Along::Joints).collect(),
         None => s.trajectories.iter().map(Along::Trajectory).collect(),

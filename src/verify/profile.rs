@@ -4,7 +4,7 @@
 //! of every cable at one pose (interference, length, tension margin), for drawing it.
 
 use super::wrench_at;
-use crate::conditions::{cables_at, CableCable, CableLength, CableShape, Condition};
+use crate::conditions::{self, cables_at, cables_at_config, for_scenario, Condition, PoseCables};
 use crate::error::{Error, Result};
 use crate::model::{Pose, Trajectory};
 use crate::scenario::Scenario;
@@ -17,7 +17,8 @@ pub const MAX_SAMPLES: usize = 100_000;
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Kind {
     CableCable,
-    CableObstacle,
+    /// A cable's clearance to an obstacle, or to a link of a multi-link robot.
+    CableBody,
     Length,
 }
 
@@ -28,33 +29,22 @@ struct Tagged {
     condition: Box<dyn Condition>,
 }
 
-/// The length and clearance conditions of `s`, tagged with their kind and cables (those of
-/// [`crate::conditions::for_scenario`], which does not say which cables a condition concerns;
-/// tensions are read from [`wrench_at`] instead).
+/// The length and clearance conditions of `s` ([`crate::conditions::for_scenario`]), tagged with
+/// their kind and cables; tensions are read from [`wrench_at`] instead.
 fn tagged_conditions(s: &Scenario) -> Vec<Tagged> {
-    let robot = &s.robot;
-    let m = robot.cables.len();
-    let mut out = Vec::new();
-    for (i, cable) in robot.cables.iter().enumerate() {
-        if cable.length.min > 0.0 || cable.length.max.is_finite() {
-            out.push(Tagged { kind: Kind::Length, cables: vec![i], condition: Box::new(CableLength { cable: i, bounds: cable.length }) });
-        }
-    }
-    for i in 0..m {
-        for j in (i + 1)..m {
-            if !robot.share_anchor(i, j) {
-                let condition = Box::new(CableCable { i, j, clearance: s.clearance.cable_cable });
-                out.push(Tagged { kind: Kind::CableCable, cables: vec![i, j], condition });
-            }
-        }
-    }
-    for obstacle in &s.obstacles {
-        for i in 0..m {
-            let condition = Box::new(CableShape::new(i, obstacle, s.clearance.cable_obstacle));
-            out.push(Tagged { kind: Kind::CableObstacle, cables: vec![i], condition });
-        }
-    }
-    out
+    for_scenario(s)
+        .into_iter()
+        .filter_map(|condition| {
+            let cables = condition.cables();
+            let kind = match (condition.kind(), cables.len()) {
+                (conditions::Kind::Length, _) => Kind::Length,
+                (conditions::Kind::Interference, 2) => Kind::CableCable,
+                (conditions::Kind::Interference, _) => Kind::CableBody,
+                (conditions::Kind::Tension, _) => return None,
+            };
+            Some(Tagged { kind, cables, condition })
+        })
+        .collect()
 }
 
 /// The least distance of one kind at one pose, and between what.
@@ -121,6 +111,9 @@ pub fn clearances_at(s: &Scenario, samples: &[(f64, Pose)]) -> Result<ClearanceP
     if samples.len() > MAX_SAMPLES {
         return Err(Error::new("samples", format!("at most {MAX_SAMPLES} samples, got {}", samples.len())));
     }
+    if s.robot.chain.is_some() {
+        return Err(Error::new("robot.links", "clearance profiles along poses are for platform robots; a multi-link robot's clearances are in its verification"));
+    }
     let conditions = tagged_conditions(s);
     let mut out = Vec::with_capacity(samples.len());
     for (t, pose) in samples {
@@ -133,7 +126,7 @@ pub fn clearances_at(s: &Scenario, samples: &[(f64, Pose)]) -> Result<ClearanceP
             }
             match (c.kind, r.distance) {
                 (Kind::CableCable, Some(d)) => least(&mut sample.cable_cable, d, || c.condition.label()),
-                (Kind::CableObstacle, Some(d)) => least(&mut sample.cable_obstacle, d, || c.condition.label()),
+                (Kind::CableBody, Some(d)) => least(&mut sample.cable_obstacle, d, || c.condition.label()),
                 _ => {}
             }
         }
@@ -142,7 +135,7 @@ pub fn clearances_at(s: &Scenario, samples: &[(f64, Pose)]) -> Result<ClearanceP
     let probe = samples.first().map(|(_, p)| cables_at(&s.robot, p));
     let membership_only = conditions
         .iter()
-        .filter(|c| c.kind == Kind::CableObstacle && probe.as_ref().is_some_and(|cables| c.condition.check(cables).distance.is_none()))
+        .filter(|c| c.kind == Kind::CableBody && probe.as_ref().is_some_and(|cables| c.condition.check(cables).distance.is_none()))
         .map(|c| c.condition.label())
         .collect();
     Ok(ClearanceProfile {
@@ -169,8 +162,20 @@ pub fn clearances_along(s: &Scenario, traj: &Trajectory, samples: usize) -> Resu
 
 /// The state of each cable of `s` at `pose`, in cable order.
 pub fn cable_states(s: &Scenario, pose: &Pose) -> Vec<CableState> {
-    let cables = cables_at(&s.robot, pose);
     let wrench = wrench_at(s, pose).filter(|w| !w.singular);
+    states_of(s, &cables_at(&s.robot, pose), wrench)
+}
+
+/// The state of each cable of `s` at configuration `q` (a multi-link robot's joint coordinates,
+/// or a platform pose's six coordinates), in cable order; a multi-link robot has no wrench set,
+/// so no tension margins.
+pub fn cable_states_at(s: &Scenario, q: &[f64]) -> Vec<CableState> {
+    let cables = cables_at_config(&s.robot, q);
+    let wrench = if s.robot.chain.is_none() { wrench_at(s, &cables.pose).filter(|w| !w.singular) } else { None };
+    states_of(s, &cables, wrench)
+}
+
+fn states_of(s: &Scenario, cables: &PoseCables, wrench: Option<crate::report::WrenchReport>) -> Vec<CableState> {
     let mut out: Vec<CableState> = s
         .robot
         .cables
@@ -186,11 +191,11 @@ pub fn cable_states(s: &Scenario, pose: &Pose) -> Vec<CableState> {
         })
         .collect();
     for c in tagged_conditions(s) {
-        if c.condition.check(&cables).violated {
+        if c.condition.check(cables).violated {
             for &i in &c.cables {
                 match c.kind {
                     Kind::Length => out[i].length_ok = false,
-                    Kind::CableCable | Kind::CableObstacle => out[i].interfering = true,
+                    Kind::CableCable | Kind::CableBody => out[i].interfering = true,
                 }
             }
         }
