@@ -19,6 +19,8 @@
 #   8b. tests/browser/e2e-lattice.mjs  the ray lattice panel and 3-D drawing against `cablenav lattice`,
 #                                      Cancel, lattice planning in a worker (cdpr7-box over-box,
 #                                      Robocrane q1-q2) against `cablenav verify`
+#   8c. tests/browser/e2e-multilink.mjs the 4-DoF arm: strip, 3-D view, joint sliders and the α–β
+#                                      slice map against `cablenav verify|check|slice`
 #   9. python/ (maturin, pytest)       the wheel built and installed into target/venv; pytest
 #                                      compares it with the CLI that step 1 built, runs the sweep
 #                                      example serially, on threads and on a Dask LocalCluster
@@ -67,6 +69,9 @@ node tests/browser/e2e-workbench.mjs target/page
 
 step "browser end-to-end test of the ray lattice and lattice planning"
 node tests/browser/e2e-lattice.mjs target/page
+
+step "browser end-to-end test of a multi-link robot (the 4-DoF arm)"
+node tests/browser/e2e-multilink.mjs target/page
 
 step "Python package: build the wheel, install it into target/venv, pytest"
 # The dev profile (opt-level 2) reuses step 1's build of the core; --force-reinstall replaces

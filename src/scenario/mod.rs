@@ -108,6 +108,22 @@ impl Scenario {
         Ok(Coord::Joint { index: index as u8, angle: chain.is_angle(index) })
     }
 
+    /// Every coordinate of a configuration, in order: x, y, z, φ, θ, σ for a platform robot, the
+    /// joint coordinates for a multi-link robot (named by [`Scenario::coord_name`]).
+    pub fn coords(&self) -> Vec<Coord> {
+        let n = self.robot.chain.as_ref().map_or(6, |c| c.dof());
+        (0..n).map(|k| self.coord_at(k)).collect()
+    }
+
+    /// The names of the configurations commands start from: a platform robot's poses, a
+    /// multi-link robot's configurations, in file order.
+    pub fn config_names(&self) -> Vec<String> {
+        match self.robot.chain {
+            Some(_) => self.configs.iter().map(|(n, _)| n.clone()).collect(),
+            None => self.poses.iter().map(|(n, _)| n.clone()).collect(),
+        }
+    }
+
     /// Coordinate number `k` of a configuration (0-based; x, y, z, φ, θ, σ for a platform robot).
     pub fn coord_at(&self, k: usize) -> Coord {
         match &self.robot.chain {

@@ -2,7 +2,8 @@
 // playwright-core, against the built page (scripts/build-page.sh):
 //   node tests/browser/e2e-workbench.mjs [PAGE_DIR]      (default: target/page)
 // - layout at 1366×768 and 390×844: the 3-D canvas and the strip inside the first viewport, the
-//   one-sentence explanation shown, no element wider than the viewport (screenshots saved);
+//   one-sentence explanation shown, no element wider than the viewport (screenshots saved); the
+//   same for the multi-link arm with its joint sliders;
 //   embed mode keeps the view and the strip only;
 // - dragging a via point of cdpr7-tree "quadratic" in the 3-D view by synthetic pointer events:
 //   the strip's sections at the end equal `cablenav verify` on the exported scenario, the editor's
@@ -86,6 +87,22 @@ for (const [w, h] of [[1366, 768], [390, 844]]) {
     for (const gone of ['[data-testid="results"]', '[data-testid="side-panel"]', '[data-testid="planning"]', 'table[data-testid="intervals"]'])
       if (await page.$(gone)) throw new Error(`embed mode shows ${gone}`);
     await page.screenshot({ path: join(artifacts, `layout-${w}x${h}-embed.png`) });
+    problems.assertNone();
+    await context.close();
+    return detail;
+  });
+}
+
+for (const [w, h] of [[1366, 768], [390, 844]]) {
+  await test(`layout of a multi-link robot (the 4-DoF arm, joint sliders under the view) at ${w}×${h}`, async () => {
+    const context = await browser.newContext({ viewport: { width: w, height: h } });
+    const problems = watchProblems(context);
+    const page = await context.newPage();
+    await page.goto(`${base}/#preset=bmarm-x4-2`, { waitUntil: 'load' });
+    await page.waitForSelector('section[data-testid="result"] svg[data-testid="strip"]', { timeout: TIMEOUT });
+    await page.waitForSelector('[data-testid="joint-sliders"]', { timeout: TIMEOUT });
+    const detail = await checkLayout(page, `arm ${w}×${h}`).catch(async (e) => { await page.screenshot({ path: join(artifacts, `layout-arm-${w}x${h}.png`), fullPage: true }); throw e; });
+    await page.screenshot({ path: join(artifacts, `layout-arm-${w}x${h}.png`) });
     problems.assertNone();
     await context.close();
     return detail;

@@ -33,9 +33,7 @@ pub fn App() -> impl IntoView {
     let verified: Memo<Verified> = Memo::new(move |_| {
         let parsed = parsed.get();
         Shared::new(match parsed.0.as_ref() {
-            Ok(s) if !s.trajectories.is_empty() => {
-                Some(logic::verify(s, trajectory.get().min(s.trajectories.len() - 1)))
-            }
+            Ok(s) => logic::trajectory_index(s, trajectory.get()).map(|i| logic::verify(s, i)),
             _ => None,
         })
     });

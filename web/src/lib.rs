@@ -1,7 +1,8 @@
 //! The cablenav web page (Leptos, client-side rendering). `state` holds the page's state types,
 //! `app` the page and its top bar, `editor` the scenario editor, `persist` sharing and
 //! autosave, `help` the help panel, `workbench` the analysis area (`view3d` the WebGL view,
-//! `plots` the SVG plots, `planning` the planning controls), `results` the verdict's strip and
+//! `plots` the SVG plots, `planning` the planning controls, `joints` a multi-link robot's joint
+//! sliders), `results` the verdict's strip and
 //! tables, `tabs` the results tabs, `worker` the Web Workers that run planning and slice maps; `logic` and
 //! `edit_logic` hold what they show as plain, natively tested functions. All maths is in the
 //! `cablenav` core crate.
@@ -10,6 +11,7 @@ pub mod app;
 pub mod edit_logic;
 pub mod editor;
 pub mod help;
+mod joints;
 pub mod logic;
 pub mod persist;
 mod planning;

@@ -66,32 +66,28 @@ pub struct StripModel {
     pub gaps: Vec<[f64; 2]>,
 }
 
-/// Parses scenario JSON with the core; the error is the core's "field: reason" text. A
-/// multi-link robot (format 3) is valid but not drawn or analysed by the page yet: that is said
-/// as the error, and the text stays as the user wrote it.
+/// Parses scenario JSON with the core; the error is the core's "field: reason" text.
 pub fn parse_scenario(text: &str) -> Result<Scenario, String> {
-    let s = Scenario::from_json(text).map_err(|e| e.to_string())?;
-    if s.robot.chain.is_some() {
-        return Err("robot.links: a valid multi-link robot, but the page shows platform robots only so far; \
-                    analyse it with the cablenav CLI (check, ray, lattice, slice, verify), the Python or the npm \
-                    package (docs/multilink.md)"
-            .to_string());
-    }
-    Ok(s)
+    Scenario::from_json(text).map_err(|e| e.to_string())
 }
 
-/// Verifies trajectory `index` of `scenario` with the core.
+/// Verifies trajectory `index` of `scenario` (a multi-link robot's path through configurations
+/// alike) with the core.
 pub fn verify(scenario: &Scenario, index: usize) -> Result<VerifyReport, String> {
-    let traj = scenario
-        .trajectories
+    let along = *cablenav::verify::all_along(scenario)
         .get(index)
         .ok_or_else(|| format!("trajectory #{index}: the scenario has no such trajectory"))?;
-    cablenav::verify::verify_trajectory(scenario, traj).map_err(|e| e.to_string())
+    cablenav::verify::verify_along(scenario, along).map_err(|e| e.to_string())
 }
 
-/// Names of the scenario's trajectories, in file order.
+/// Names of the scenario's trajectories (a multi-link robot's paths), in file order.
 pub fn trajectory_names(scenario: &Scenario) -> Vec<String> {
-    scenario.trajectories.iter().map(|t| t.name.clone()).collect()
+    cablenav::verify::all_along(scenario).iter().map(|a| a.name().to_string()).collect()
+}
+
+/// Trajectory `index` of the scenario, or its last one past the end (`None`: it has none).
+pub fn trajectory_index(scenario: &Scenario, index: usize) -> Option<usize> {
+    cablenav::verify::all_along(scenario).len().checked_sub(1).map(|last| index.min(last))
 }
 
 /// A number for people: up to 4 decimals, trailing zeros dropped ("0.25", "1", "0.3333").
@@ -262,8 +258,9 @@ mod tests {
     fn every_preset_parses_and_verifies_covering_0_1() {
         for p in crate::presets::PRESETS {
             let s = parse_scenario(p.json).unwrap_or_else(|e| panic!("{}: {e}", p.id));
-            assert!(!s.trajectories.is_empty(), "{} has no trajectory", p.id);
-            for i in 0..s.trajectories.len() {
+            let n = trajectory_names(&s).len();
+            assert!(n > 0, "{} has no trajectory", p.id);
+            for i in 0..n {
                 let r = verify(&s, i).unwrap_or_else(|e| panic!("{} #{i}: {e}", p.id));
                 let m = strip(&r);
                 assert!(!m.sections.is_empty(), "{} #{i}: no section", p.id);
@@ -279,10 +276,13 @@ mod tests {
     }
 
     #[test]
-    fn a_multi_link_robot_is_named_not_dropped() {
-        let arm = include_str!("../../static/multilink/bmarm-x4-2.json");
-        assert!(cablenav::Scenario::from_json(arm).is_ok());
-        let e = super::parse_scenario(arm).unwrap_err();
-        assert!(e.starts_with("robot.links: a valid multi-link robot") && e.contains("docs/multilink.md"), "{e}");
+    fn a_multi_link_robots_paths_are_verified() {
+        let arm = parse_scenario(include_str!("../../static/multilink/bmarm-x4-2.json")).unwrap();
+        assert_eq!(trajectory_names(&arm), ["across the gap"]);
+        let r = verify(&arm, 0).unwrap();
+        let m = strip(&r);
+        assert_eq!(m.sections.iter().map(|s| s.kind).collect::<Vec<_>>(), [Kind::Feasible, Kind::Infeasible, Kind::Feasible]);
+        assert!(m.ticks.iter().all(|t| t.constraint == "cables 2-3"));
+        assert!(verify(&arm, 1).is_err());
     }
 }

@@ -237,6 +237,9 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
         <p class="plan-status" data-testid="plan-status" data-state=move || ui.state.get().name().to_string() aria-live="polite">
             {move || match ui.state.get() {
                 RunState::Failed(e) => format!("The planner refused: {e}"),
+                RunState::Idle if parsed.get().0.as_ref().as_ref().is_ok_and(|s| s.robot.chain.is_some()) => {
+                    "Planning for multi-link robots is not available yet (queries are platform poses); verify paths through configurations in the strip.".into()
+                }
                 RunState::Idle if queries().is_empty() => "This scenario has no planning query.".into(),
                 _ => ui.detail.get(),
             }}

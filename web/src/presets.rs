@@ -1,4 +1,5 @@
-//! The scenario presets the page offers, embedded at compile time from `static/scenarios/`.
+//! The scenario presets the page offers, embedded at compile time from `static/scenarios/` and
+//! `static/multilink/`.
 
 /// One embedded scenario file.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -9,8 +10,9 @@ pub struct Preset {
     pub json: &'static str,
 }
 
-/// Every scenario file of `static/scenarios/` (see `build.rs`): the thesis presets `cdpr7`,
-/// `cdpr7-box`, `cdpr7-tree` first, then the others by name. The first is loaded on start.
+/// Every scenario file of `static/scenarios/` and `static/multilink/` (see `build.rs`): the thesis
+/// presets `cdpr7`, `cdpr7-box`, `cdpr7-tree` first, then the other platform robots by name, then
+/// the multi-link robots. The first is loaded on start.
 pub const PRESETS: &[Preset] = include!(concat!(env!("OUT_DIR"), "/presets.rs"));
 
 /// The name the picker shows for preset `id` (the id itself for a file without one).
@@ -21,6 +23,7 @@ pub fn label(id: &str) -> &str {
         "cdpr7-tree" => "7-cable + tree",
         "robocrane" => "Robocrane (NIST)",
         "blank" => "Blank (8-cable frame, to start from)",
+        "bmarm-x4-2" => "4-DoF arm, multi-link",
         other => other,
     }
 }
@@ -40,8 +43,9 @@ mod tests {
         assert_eq!(ids[..3], ["cdpr7", "cdpr7-box", "cdpr7-tree"]);
         assert_eq!(find("cdpr7-box"), Some(1));
         assert_eq!(find("nope"), None);
-        // the five presets of the page, each with its own label
-        for id in ["cdpr7", "cdpr7-box", "cdpr7-tree", "robocrane", "blank"] {
+        assert_eq!(ids.last(), Some(&"bmarm-x4-2"), "the multi-link robots last");
+        // the six presets of the page, each with its own label
+        for id in ["cdpr7", "cdpr7-box", "cdpr7-tree", "robocrane", "blank", "bmarm-x4-2"] {
             assert!(find(id).is_some(), "{id}");
             assert_ne!(label(id), id);
         }

@@ -34,7 +34,7 @@ pub fn StripResult(
             None => view! { <p class="empty">{format!("Scenario “{}” has no trajectory.", scenario.name)}</p> }.into_any(),
             Some(Err(e)) => view! { <ErrorText prefix="Verification" message=e.clone() /> }.into_any(),
             Some(Ok(report)) => {
-                let index = trajectory.get().min(scenario.trajectories.len().saturating_sub(1));
+                let index = logic::trajectory_index(scenario, trajectory.get()).unwrap_or(0);
                 view! {
                     <section
                         class="result"

@@ -8,13 +8,14 @@ use crate::logic::Tick;
 use crate::state::{Focus, Follow, PageState, Parsed, Planned, Shared, Tab, Verified};
 use crate::tabs::{TabList, TabPanel};
 use crate::logic::{self, fmt_num, StripModel};
+use crate::joints::JointSliders;
 use crate::planning::Planning;
 use crate::plots::distance::DistancePlot;
 use crate::plots::export;
 use crate::plots::lattice::LatticePanel;
 use crate::plots::slice::{Overlay, SlicePanel};
 use crate::plots::tension::TensionPlot;
-use crate::view3d::scene::{self, Polyline, SceneInput, PATH};
+use crate::view3d::scene::{self, Polyline, SceneInput, Shown, PATH};
 use crate::edit_logic::{self as el, handles, Grip, Handle};
 use crate::view3d::drag::Constraint;
 use crate::view3d::{HandleEvent, Handles, SceneView, View3d};
@@ -97,6 +98,35 @@ fn on_path<T>(parsed: &Parsed, planned: Option<&Shared<Planned>>, follow: Follow
     }
 }
 
+/// Configurations per unit of t when drawing a multi-link robot's path on a cross-section.
+const CONFIGS_PER_T: f64 = 120.0;
+
+/// A multi-link robot's path over a cross-section: its verified sections as coloured pieces of
+/// configurations, and its ends.
+fn joint_overlay(s: &Scenario, along: cablenav::verify::Along, model: &StripModel) -> Overlay {
+    let joint_pieces = model
+        .sections
+        .iter()
+        .map(|sec| {
+            let n = (((sec.t1 - sec.t0) * CONFIGS_PER_T).ceil() as usize).max(1);
+            let qs = (0..=n).map(|k| along.config_at(s, sec.t0 + (sec.t1 - sec.t0) * k as f64 / n as f64)).collect();
+            (scene::kind_colour(sec.kind), qs)
+        })
+        .collect();
+    Overlay { joint_pieces, joint_ends: [Some(along.config_at(s, 0.0)), Some(along.config_at(s, 1.0))], ..Overlay::default() }
+}
+
+/// Whether the parsed scenario is a multi-link robot.
+fn is_chain(parsed: &Parsed) -> bool {
+    scenario_of(parsed).is_some_and(|s| s.robot.chain.is_some())
+}
+
+/// A multi-link robot's path `index` (clamped to its paths), if it has any.
+fn joint_path(s: &Scenario, index: usize) -> Option<cablenav::verify::Along<'_>> {
+    let all = cablenav::verify::all_along(s);
+    logic::trajectory_index(s, index).filter(|_| s.robot.chain.is_some()).map(|i| all[i])
+}
+
 /// [`on_path`] reading (and so tracking) the signals it depends on.
 fn followed<T>(
     parsed: Memo<Parsed>,
@@ -134,6 +164,9 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
 
     // the draggable handles of the scenario and the selected trajectory (edit_logic::handles)
     let handle_list: Memo<Vec<Handle>> = Memo::new(move |_| {
+        if is_chain(&parsed.get()) {
+            return vec![]; // a multi-link robot is posed by its joint sliders
+        }
         source.with(|s| serde_json::from_str::<serde_json::Value>(s).ok()).map_or_else(Vec::new, |doc| handles(&doc, trajectory.get()))
     });
     let selected = RwSignal::new(None::<usize>);
@@ -171,8 +204,15 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
     let trajectory_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |prev| {
         let parsed = parsed.get();
         let pieces = match (scenario_of(&parsed), strip.get(), motion()) {
-            (_, Some(model), Some(p)) => p.0.motion.as_ref().map_or_else(Vec::new, |m| scene::trajectory_polylines(&m.trajectory, &model)),
-            (Some(s), Some(model), None) if !s.trajectories.is_empty() => scene::trajectory_polylines(&s.trajectories[traj_index(s)], &model),
+            (_, Some(model), Some(p)) => p.0.motion.as_ref().map_or_else(Vec::new, |m| scene::section_polylines(&model, |t| m.trajectory.pose_at(t))),
+            (Some(s), Some(model), None) => match (&s.robot.chain, joint_path(s, trajectory.get())) {
+                (Some(chain), Some(along)) => scene::section_polylines(&model, |t| scene::end_pose(chain, &along.config_at(s, t))),
+                _ if !s.trajectories.is_empty() => {
+                    let traj = &s.trajectories[traj_index(s)];
+                    scene::section_polylines(&model, |t| traj.pose_at(t))
+                }
+                _ => vec![],
+            },
             _ => vec![],
         };
         Shared::or_same(prev, pieces)
@@ -210,12 +250,38 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         let u = focused().map_or_else(|| scrub.get(), |t| t.t);
         followed(parsed, planned, follow, trajectory, |_, path| path.pose_at(u))
     });
+    // a multi-link robot: the configuration shown, from the joint sliders once they are moved, else
+    // along the selected path (the scrubber or a focused boundary)
+    let slid = RwSignal::new(None::<Vec<f64>>);
+    Effect::new(move |_| {
+        parsed.track();
+        scrub.track();
+        slid.set(None);
+    });
+    let shown_config: Memo<Option<Vec<f64>>> = Memo::new(move |_| {
+        let parsed = parsed.get();
+        let s = scenario_of(&parsed).filter(|s| s.robot.chain.is_some())?;
+        if let Some(q) = slid.get() {
+            return Some(q);
+        }
+        let u = focused().map_or_else(|| scrub.get(), |t| t.t);
+        match joint_path(s, trajectory.get()) {
+            Some(along) => Some(along.config_at(s, u.clamp(0.0, 1.0))),
+            None => s.config_names().first().and_then(|n| s.config(n).ok()),
+        }
+    });
 
     let scene_view: Memo<Option<Shared<SceneView>>> = Memo::new(move |_| {
         let parsed = parsed.get();
         let s = scenario_of(&parsed)?;
-        let pose = shown_pose.get();
-        let cables = pose.map(|p| profile::cable_states(s, &p)).unwrap_or_default();
+        let (shown, cables) = match (&s.robot.chain, shown_config.get()) {
+            (Some(chain), Some(q)) => (Some(Shown::config(chain, &q)), profile::cable_states_at(s, &q)),
+            (Some(_), None) => (None, vec![]),
+            (None, _) => {
+                let pose = shown_pose.get();
+                (pose.map(Shown::Platform), pose.map(|p| profile::cable_states(s, &p)).unwrap_or_default())
+            }
+        };
         let tubes = focused().map(|t| scene::clearance_tubes(s, &t.constraint)).unwrap_or_default();
         let pieces = trajectory_pieces.get();
         let paths = path_pieces.get();
@@ -227,7 +293,7 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         };
         let geometry = scene::build(&SceneInput {
             scenario: s,
-            pose,
+            shown,
             cables: &cables,
             trajectory: &pieces.0,
             paths: &paths.0,
@@ -262,6 +328,13 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
     let plots_generation = StoredValue::new(0u32);
     Effect::new(move |_| {
         if drag_active.get() {
+            return;
+        }
+        if is_chain(&parsed.get()) {
+            plots_run.update_value(|r| r.take().into_iter().for_each(|r| r.cancel()));
+            let e = "not drawn for multi-link robots yet: their clearances are certified in the strip and the intervals (docs/multilink.md)".to_string();
+            profile_data.set(Some(Shared::new((Err(e.clone()), String::new()))));
+            envelope.set(Some(Shared::new((Err("a multi-link robot has no wrench set: its wrench condition is joint-space wrench closure, in the strip".to_string()), "t"))));
             return;
         }
         let request = followed(parsed, planned, follow, trajectory, |_, path| {
@@ -305,17 +378,23 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
     let overlay = Memo::new(move |_| {
         let parsed = parsed.get();
         let Some(s) = scenario_of(&parsed) else { return Overlay::default() };
+        if let (Some(along), Some(model)) = (joint_path(s, trajectory.get()), strip.get()) {
+            return joint_overlay(s, along, &model);
+        }
+        if s.robot.chain.is_some() {
+            return Overlay::default();
+        }
         match (follow.get(), planned.get()) {
             (Follow::Planned, Some(p)) => {
                 let mut pieces = vec![Polyline { colour: PATH, poses: p.0.poses.clone() }];
                 if !p.0.polyline.is_empty() {
                     pieces.push(Polyline { colour: crate::planning::POLYLINE, poses: p.0.polyline.clone() });
                 }
-                Overlay { start: Some(p.0.start), goal: Some(p.0.goal), pieces }
+                Overlay { start: Some(p.0.start), goal: Some(p.0.goal), pieces, ..Overlay::default() }
             }
             _ => {
                 let t = s.trajectories.get(traj_index(s));
-                Overlay { start: t.map(|t| t.pose_at(0.0)), goal: t.map(|t| t.pose_at(1.0)), pieces: (*trajectory_pieces.get().0).clone() }
+                Overlay { start: t.map(|t| t.pose_at(0.0)), goal: t.map(|t| t.pose_at(1.0)), pieces: (*trajectory_pieces.get().0).clone(), ..Overlay::default() }
             }
         }
     });
@@ -404,6 +483,9 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
     };
 
     let readout = move || {
+        if let (Some(q), Ok(s)) = (shown_config.get(), parsed.get().0.as_ref()) {
+            return Some(s.coords().iter().zip(&q).map(|(c, v)| format!("{} {}", s.coord_name(*c), fmt_num(*v))).collect::<Vec<_>>().join(" · "));
+        }
         let pose = shown_pose.get()?;
         let c = pose.coords();
         Some(format!(
@@ -466,9 +548,12 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
     };
 
     let stage = view! {
-        <section class="stage" data-testid="stage" aria-label="3-D view and verdict">
+        <section class="stage" class:chain=move || is_chain(&parsed.get()) data-testid="stage" aria-label="3-D view and verdict">
             <View3d scene=scene_view handles=handles_prop />
-            <div class="drag-bar" data-testid="drag-bar">
+            {move || is_chain(&parsed.get()).then(|| view! {
+                <JointSliders parsed shown=shown_config set=Callback::new(move |q| slid.set(Some(q))) />
+            })}
+            <div class="drag-bar" data-testid="drag-bar" hidden=move || is_chain(&parsed.get())>
                 <label>
                     "Move "
                     <select data-testid="handle" on:change=move |ev| selected.set(event_target_value(&ev).parse::<usize>().ok())>

@@ -141,6 +141,10 @@ pub fn LatticePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>
     let start = move |_| {
         let (Some(s), Some(json)) = (scenario.get_untracked(), source.try_get_untracked()) else { return };
         let this = stop();
+        if s.robot.chain.is_some() {
+            let e = "the page builds ray lattices of platform robots so far; a multi-link robot's lattice: `cablenav lattice SCENARIO --pose CONFIG --axes alpha,beta` (or the slice map here)";
+            return lattice.set(Some(Shared::new(Err(e.to_string()))));
+        }
         let (pose, a, r, n) = (section.pose.get_untracked(), section.axes.get_untracked(), section.range.get_untracked(), steps.get_untracked());
         let axes: Vec<String> = a.iter().map(|c| c.name().to_string()).collect();
         // the request's checks first (the core's errors), before any worker starts

@@ -47,7 +47,7 @@ impl Default for CrossSection {
 pub fn SectionControls(section: CrossSection, scenario: Signal<Option<Scenario>>, prefix: &'static str, children: Children) -> impl IntoView {
     let CrossSection { pose, axes, range } = section;
     let set_axis = move |k: usize, name: String| {
-        if let (Some(c), Some(s)) = (Coord::parse(&name), scenario.get_untracked()) {
+        if let Some((s, c)) = scenario.get_untracked().and_then(|s| s.coord("axes", &name).ok().map(|c| (s, c))) {
             axes.update(|a| a[k] = c);
             range.update(|r| r[k] = default_range(&s, c));
         }
@@ -60,7 +60,10 @@ pub fn SectionControls(section: CrossSection, scenario: Signal<Option<Scenario>>
     let axis_select = move |k: usize| {
         view! {
             <select data-testid=format!("{prefix}-axis-{k}") on:change=move |ev| set_axis(k, event_target_value(&ev))>
-                {Coord::ALL.map(|c| view! { <option value=c.name() selected=move || axes.get()[k] == c>{c.name()}</option> })}
+                {move || scenario.get().map(|s| s.coords().into_iter().map(|c| {
+                    let (value, name) = (s.coord_name(c), s.coord_name(c));
+                    view! { <option value=value selected=move || axes.get()[k] == c>{name}</option> }
+                }).collect_view())}
             </select>
             " from "
             <input class="num" type="number" step="any" data-testid=format!("{prefix}-from-{k}") prop:value=move || fmt_num(range.get()[k][0])
@@ -73,10 +76,10 @@ pub fn SectionControls(section: CrossSection, scenario: Signal<Option<Scenario>>
     view! {
         <div class="slice-controls">
             <label>
-                "Other coordinates from pose "
+                {move || if scenario.get().is_some_and(|s| s.robot.chain.is_some()) { "Other coordinates from configuration " } else { "Other coordinates from pose " }}
                 <select data-testid=format!("{prefix}-pose") on:change=move |ev| pose.set(event_target_value(&ev))>
-                    {move || scenario.get().map(|s| s.poses.iter().map(|(n, _)| {
-                        let (value, key, text) = (n.clone(), n.clone(), n.clone());
+                    {move || scenario.get().map(|s| s.config_names().into_iter().map(|n| {
+                        let (value, key, text) = (n.clone(), n.clone(), n);
                         view! { <option value=value selected=move || pose.get() == key>{text}</option> }
                     }).collect_view())}
                 </select>

@@ -35,10 +35,19 @@ pub struct Overlay {
     pub goal: Option<Pose>,
     /// The path, in coloured pieces.
     pub pieces: Vec<Polyline>,
+    /// A multi-link robot's path instead: coloured pieces of configurations (joint coordinates).
+    pub joint_pieces: Vec<(scene::Rgba, Vec<Vec<f64>>)>,
+    /// A multi-link robot's path's start and goal configurations.
+    pub joint_ends: [Option<Vec<f64>>; 2],
 }
 
-/// The default slice axes: the first two coordinates a query leaves free, else x and y.
+/// The default slice axes: the first two coordinates a query leaves free, else x and y (a
+/// multi-link robot's first two joint coordinates).
 pub fn default_axes(s: &Scenario) -> [Coord; 2] {
+    if s.robot.chain.is_some() {
+        let c = s.coords();
+        return [c[0], c[c.len().min(2) - 1]];
+    }
     s.queries
         .first()
         .map(|q| Coord::ALL.into_iter().filter(|c| !q.fixed.contains(c)).collect::<Vec<_>>())
@@ -46,13 +55,20 @@ pub fn default_axes(s: &Scenario) -> [Coord; 2] {
         .map_or([Coord::X, Coord::Y], |free| [free[0], free[1]])
 }
 
-/// The default pose the other coordinates come from: the first query's start, else the first pose.
+/// The default pose the other coordinates come from: the first query's start, else the first pose
+/// (a multi-link robot's first configuration).
 pub fn default_pose(s: &Scenario) -> Option<String> {
-    s.queries.first().map(|q| q.start.clone()).or_else(|| s.poses.first().map(|(n, _)| n.clone()))
+    s.queries.first().map(|q| q.start.clone()).or_else(|| s.config_names().into_iter().next())
 }
 
-/// The default range of a coordinate: [−π, π] for angles, the scene's extent for positions.
+/// The default range of a coordinate: [−π, π] for angles, the scene's extent for positions; a
+/// joint coordinate's own range where it has one.
 pub fn default_range(s: &Scenario, c: Coord) -> [f64; 2] {
+    let joint = s.robot.chain.as_ref().filter(|_| matches!(c, Coord::Joint { .. })).and_then(|ch| ch.coords().nth(c.index()));
+    if let Some((_, _, jc)) = joint {
+        let [lo, hi] = jc.range;
+        return if lo.is_finite() && hi.is_finite() { [lo, hi] } else { [lo.max(-1.0), hi.min(1.0)] };
+    }
     if c.is_angle() {
         return [-PI, PI];
     }
@@ -90,6 +106,19 @@ pub fn slice_point(pose: &Pose, axes: [Coord; 2], range: [[f64; 2]; 2], prev: Op
     let diff = |a: f64, b: f64, axis: Coord| if axis.is_angle() { cablenav::model::pose::wrap_angle(a - b) } else { a - b };
     let dist = |p: &(f64, f64)| prev.map_or(0.0, |q| diff(p.0, q.0, axes[0]).hypot(diff(p.1, q.1, axes[1])));
     slice_copies(pose, axes, range).into_iter().min_by(|a, b| dist(a).total_cmp(&dist(b)))
+}
+
+/// A multi-link robot's configurations in map coordinates: the two axes' joint coordinates,
+/// `None` outside the map.
+pub fn config_points(configs: &[Vec<f64>], axes: [Coord; 2], range: [[f64; 2]; 2]) -> Vec<Option<(f64, f64)>> {
+    let inside = |v: f64, r: [f64; 2]| v >= r[0] - 1e-12 && v <= r[1] + 1e-12;
+    configs
+        .iter()
+        .map(|q| {
+            let p = (*q.get(axes[0].index())?, *q.get(axes[1].index())?);
+            (inside(p.0, range[0]) && inside(p.1, range[1])).then_some(p)
+        })
+        .collect()
 }
 
 /// A path's points in map coordinates, broken (`None`) where it leaves the map or jumps by more
@@ -226,15 +255,14 @@ pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, 
         </SectionControls>
         {move || map.get().map(|m| match m.0.as_ref() {
             Err(e) => view! { <p class="error">{format!("Slice: {e}")}</p> }.into_any(),
-            Ok(m) => view! { <SliceMapView map=m.clone() overlay /> }.into_any(),
+            Ok(m) => view! { <SliceMapView map=m.clone() axes=axes.get_untracked() overlay /> }.into_any(),
         })}
     }
 }
 
 /// The map image, its axes, and the overlay.
 #[component]
-fn SliceMapView(map: SliceMap, overlay: Signal<Overlay>) -> impl IntoView {
-    let axes = [Coord::parse(&map.axes[0]).unwrap_or(Coord::X), Coord::parse(&map.axes[1]).unwrap_or(Coord::Y)];
+fn SliceMapView(map: SliceMap, axes: [Coord; 2], overlay: Signal<Overlay>) -> impl IntoView {
     let range = map.range;
     let (x, y) = scales(range);
     let href = format!("data:image/png;base64,{}", base64(&map.png()));
@@ -250,6 +278,7 @@ fn SliceMapView(map: SliceMap, overlay: Signal<Overlay>) -> impl IntoView {
     let to_px = move |p: Option<(f64, f64)>| p.map(|(a, b)| (x.at(a), y.at(b)));
     // an orientation shows twice on a (φ, θ) map: every copy of the start and goal is marked
     let markers = move |pose: Option<Pose>| pose.map_or(vec![], |p| slice_copies(&p, axes, range).into_iter().map(|q| (x.at(q.0), y.at(q.1))).collect());
+    let joint_marker = move |q: &Option<Vec<f64>>| q.as_ref().and_then(|q| config_points(std::slice::from_ref(q), axes, range)[0]).map(|p| (x.at(p.0), y.at(p.1)));
     view! {
         <Chart id="slice" title width=W height=H>
             <image href=href x=LEFT y=TOP width=W - LEFT - RIGHT height=H - TOP - BOTTOM preserveAspectRatio="none" style="image-rendering: pixelated" />
@@ -265,19 +294,21 @@ fn SliceMapView(map: SliceMap, overlay: Signal<Overlay>) -> impl IntoView {
             {move || {
                 let o = overlay.get();
                 view! {
-                    {o.pieces.iter().map(|piece| {
-                        let pts: Vec<_> = path_points(&piece.poses, axes, range).into_iter().map(to_px).collect();
+                    {o.pieces.iter().map(|piece| (piece.colour, path_points(&piece.poses, axes, range)))
+                        .chain(o.joint_pieces.iter().map(|(colour, qs)| (*colour, config_points(qs, axes, range))))
+                        .map(|(colour, points)| {
+                        let pts: Vec<_> = points.into_iter().map(to_px).collect();
                         let d = polyline(&pts);
                         // a white casing keeps a green path visible over green cells
                         view! {
                             <path d=d.clone() fill="none" stroke="#ffffff" stroke-width="5.5" stroke-linecap="round" stroke-linejoin="round" />
-                            <path data-testid="slice-path" d=d fill="none" stroke=css(piece.colour) stroke-width="2.5" stroke-linecap="round" stroke-linejoin="round" />
+                            <path data-testid="slice-path" d=d fill="none" stroke=css(colour) stroke-width="2.5" stroke-linecap="round" stroke-linejoin="round" />
                         }
                     }).collect_view()}
-                    {markers(o.start).into_iter().map(|(cx, cy)| view! {
+                    {markers(o.start).into_iter().chain(joint_marker(&o.joint_ends[0])).map(|(cx, cy)| view! {
                         <circle data-testid="slice-start" cx=cx cy=cy r="6" fill="#ffffff" stroke="#1d2329" stroke-width="2"><title>"start"</title></circle>
                     }).collect_view()}
-                    {markers(o.goal).into_iter().map(|(cx, cy)| view! {
+                    {markers(o.goal).into_iter().chain(joint_marker(&o.joint_ends[1])).map(|(cx, cy)| view! {
                         <rect data-testid="slice-goal" x=cx - 6.0 y=cy - 6.0 width="12" height="12" fill="#1d2329" stroke="#ffffff" stroke-width="1.5"><title>"goal"</title></rect>
                     }).collect_view()}
                 }
@@ -299,6 +330,20 @@ mod tests {
     use super::*;
     use crate::presets::{find, PRESETS};
     use nalgebra::Vector3;
+
+    #[test]
+    fn a_multi_link_robots_section_is_over_its_joint_coordinates() {
+        let s = crate::logic::parse_scenario(PRESETS[find("bmarm-x4-2").unwrap()].json).unwrap();
+        let axes = default_axes(&s);
+        assert_eq!([s.coord_name(axes[0]), s.coord_name(axes[1])], ["alpha", "beta"]);
+        assert_eq!(default_range(&s, axes[0]), [-0.7854, 0.7854], "the joint's own range");
+        assert_eq!(default_pose(&s).as_deref(), Some(s.config_names()[0].as_str()));
+        // configurations land on their two coordinates; outside the map they are left out
+        let qs = vec![vec![0.1, -0.2, 0.0, 0.3], vec![0.9, 0.0, 0.0, 0.0]];
+        assert_eq!(config_points(&qs, axes, [[-0.5, 0.5]; 2]), [Some((0.1, -0.2)), None]);
+        let theta = s.coord("axes", "theta").unwrap();
+        assert_eq!(config_points(&qs, [theta, axes[1]], [[-0.5, 0.5]; 2]), [Some((0.3, -0.2)), Some((0.0, 0.0))]);
+    }
 
     #[test]
     fn row_blocks_cover_the_rows_once() {

@@ -5,7 +5,8 @@
 
 use super::tessellate::{self, dv, Tris};
 use crate::logic::{Kind, StripModel};
-use cablenav::model::{Pose, Trajectory};
+use cablenav::model::chain::Frame;
+use cablenav::model::{Chain, Pose};
 use cablenav::verify::profile::CableState;
 use cablenav::Scenario;
 use glam::DVec3;
@@ -115,18 +116,30 @@ pub struct Polyline {
 /// Poses per unit of t when sampling a section for drawing.
 const SAMPLES_PER_T: f64 = 240.0;
 
-/// The trajectory cut at the verifier's section ends, each piece sampled (ends included) and
+/// A path cut at the verifier's section ends, each piece sampled (ends included) by `pose_at` (the
+/// pose drawn at t: a trajectory's, or a multi-link robot's last link's, see [`end_pose`]) and
 /// coloured by its kind, so colour changes exactly where the report says.
-pub fn trajectory_polylines(traj: &Trajectory, model: &StripModel) -> Vec<Polyline> {
+pub fn section_polylines(model: &StripModel, pose_at: impl Fn(f64) -> Pose) -> Vec<Polyline> {
     model
         .sections
         .iter()
         .map(|s| {
             let n = (((s.t1 - s.t0) * SAMPLES_PER_T).ceil() as usize).max(1);
-            let poses = (0..=n).map(|k| traj.pose_at(s.t0 + (s.t1 - s.t0) * k as f64 / n as f64)).collect();
+            let poses = (0..=n).map(|k| pose_at(s.t0 + (s.t1 - s.t0) * k as f64 / n as f64)).collect();
             Polyline { colour: kind_colour(s.kind), poses }
         })
         .collect()
+}
+
+/// A link frame as a pose.
+fn frame_pose((p, r): &Frame) -> Pose {
+    Pose { position: *p, rotation: nalgebra::UnitQuaternion::from_matrix(r) }
+}
+
+/// The pose of a multi-link robot's last link at configuration `q`: what its paths trace (its
+/// joint, and the tip of its body as the tool point).
+pub fn end_pose(chain: &Chain, q: &[f64]) -> Pose {
+    chain.frames(q).last().map_or_else(|| Pose::from_coords([0.0; 6]), frame_pose)
 }
 
 /// Samples along an angle ray piece (position rays are straight: their two ends).
@@ -175,6 +188,19 @@ pub fn bounds(s: &Scenario) -> (DVec3, DVec3) {
             add(dv(&pose.transform(&c.platform)));
         }
     }
+    if let Some(chain) = &s.robot.chain {
+        for (_, q) in &s.configs {
+            let shown = Shown::Links(chain.frames(q));
+            for i in 0..s.robot.cables.len() {
+                add(dv(&shown.cable_end(s, i)));
+            }
+            for (link, f) in chain.links.iter().zip(chain.frames(q)) {
+                for b in &link.body {
+                    add(dv(&(f.0 + f.1 * b)));
+                }
+            }
+        }
+    }
     if !min.is_finite() || !max.is_finite() {
         return (DVec3::splat(-1.0), DVec3::splat(1.0));
     }
@@ -182,21 +208,50 @@ pub fn bounds(s: &Scenario) -> (DVec3, DVec3) {
 }
 
 /// The tool point whose trace shows a path's orientation: on the platform's z axis, as far from
-/// its origin as its farthest anchor (at least a tenth of the scene).
+/// its origin as its farthest anchor (at least a tenth of the scene); for a multi-link robot the
+/// tip of its last link's body.
 fn tool_point(s: &Scenario, extent: f64) -> Vector3<f64> {
+    if let Some(tip) = s.robot.chain.as_ref().and_then(|c| c.links.last()).map(|l| l.body[1]).filter(|b| b.norm() > 1e-9) {
+        return tip;
+    }
     let reach = s.robot.cables.iter().map(|c| c.platform.norm()).fold(0.0, f64::max);
     Vector3::new(0.0, 0.0, reach.max(extent * 0.1))
+}
+
+/// The robot as shown: a platform robot's pose, or a multi-link robot's link frames.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Shown {
+    /// The platform at this pose.
+    Platform(Pose),
+    /// Every link's frame (position, rotation), in link order.
+    Links(Vec<Frame>),
+}
+
+impl Shown {
+    /// A multi-link robot's links at configuration `q`.
+    pub fn config(chain: &Chain, q: &[f64]) -> Shown {
+        Shown::Links(chain.frames(q))
+    }
+
+    /// Where cable `i` of `s` meets the moving part (world frame).
+    pub fn cable_end(&self, s: &Scenario, i: usize) -> Vector3<f64> {
+        let c = &s.robot.cables[i];
+        match self {
+            Shown::Platform(pose) => pose.transform(&c.platform),
+            Shown::Links(f) => f.get(c.link).map_or(c.platform, |(p, r)| p + r * c.platform),
+        }
+    }
 }
 
 /// Everything to draw.
 pub struct SceneInput<'a> {
     /// The scenario.
     pub scenario: &'a Scenario,
-    /// The platform pose shown (cables and platform), if any.
-    pub pose: Option<Pose>,
-    /// The cables' states at `pose`, in cable order.
+    /// The robot shown (cables and platform or links), if any.
+    pub shown: Option<Shown>,
+    /// The cables' states at `shown`, in cable order.
     pub cables: &'a [CableState],
-    /// The trajectory's pieces (see [`trajectory_polylines`]).
+    /// The trajectory's pieces (see [`section_polylines`]).
     pub trajectory: &'a [Polyline],
     /// Paths drawn beside the trajectory: the planned path, the lattice planner's A* polyline.
     pub paths: &'a [Polyline],
@@ -265,18 +320,21 @@ pub fn build(input: &SceneInput) -> Geometry {
     }
     push_tris(&mut g.solid, &anchors, ANCHOR);
 
-    if let Some(pose) = input.pose {
+    if let Some(shown) = &input.shown {
         for (i, c) in s.robot.cables.iter().enumerate() {
             let colour = input.cables.get(i).map_or(CABLE, |st| cable_look(st).1);
             let mut t = Tris::default();
-            tessellate::tube(&mut t, dv(&c.base), dv(&pose.transform(&c.platform)), thin, 6);
+            tessellate::tube(&mut t, dv(&c.base), dv(&shown.cable_end(s, i)), thin, 6);
             push_tris(&mut g.solid, &t, colour);
         }
-        platform(&mut g, s, &pose, extent);
+        match shown {
+            Shown::Platform(pose) => platform(&mut g, s, pose, extent),
+            Shown::Links(frames) => links(&mut g, s, frames, extent),
+        }
         let mut tubes = Tris::default();
         for &(i, r) in input.tubes {
             if let Some(c) = s.robot.cables.get(i) {
-                tessellate::tube(&mut tubes, dv(&c.base), dv(&pose.transform(&c.platform)), r, 18);
+                tessellate::tube(&mut tubes, dv(&c.base), dv(&shown.cable_end(s, i)), r, 18);
             }
         }
         push_tris(&mut g.translucent, &tubes, TUBE);
@@ -359,6 +417,28 @@ fn platform(g: &mut Geometry, s: &Scenario, pose: &Pose, extent: f64) {
     }
 }
 
+/// A multi-link robot's links: each body a translucent tube of its collision radius (at least a
+/// thin one), each joint a dark cube with the link's frame axes.
+fn links(g: &mut Geometry, s: &Scenario, frames: &[Frame], extent: f64) {
+    let Some(chain) = &s.robot.chain else { return };
+    let (mut bodies, mut joints) = (Tris::default(), Tris::default());
+    let (min_r, j) = (extent * 0.006, extent * 0.012);
+    for (link, (p, r)) in chain.links.iter().zip(frames) {
+        let (a, b) = (dv(&(p + r * link.body[0])), dv(&(p + r * link.body[1])));
+        if (b - a).length() > 1e-12 {
+            tessellate::tube(&mut bodies, a, b, link.radius.max(min_r), 16);
+        }
+        let o = dv(p);
+        tessellate::cuboid(&mut joints, std::array::from_fn(|i| o + DVec3::new(bit(i, 0), bit(i, 1), bit(i, 2)) * j));
+        for (k, c) in AXES.iter().enumerate() {
+            let tip = p + r * Vector3::from_fn(|i, _| if i == k { extent * 0.05 } else { 0.0 });
+            line(&mut g.lines, o, dv(&tip), *c);
+        }
+    }
+    push_tris(&mut g.translucent, &bodies, PLATFORM);
+    push_tris(&mut g.solid, &joints, ANCHOR);
+}
+
 fn pick(i: usize, axis: usize, lo: &Vector3<f64>, hi: &Vector3<f64>) -> f64 {
     if i >> axis & 1 == 0 { lo[axis] } else { hi[axis] }
 }
@@ -407,7 +487,7 @@ mod tests {
         let traj = &s.trajectories[0];
         let report = logic::verify(&s, 0).unwrap();
         let model = logic::strip(&report);
-        let pieces = trajectory_polylines(traj, &model);
+        let pieces = section_polylines(&model, |t| traj.pose_at(t));
         assert_eq!(pieces.len(), model.sections.len());
         assert!(pieces.len() >= 2, "the tree preset has an infeasible section");
         for (p, sec) in pieces.iter().zip(&model.sections) {
@@ -422,10 +502,10 @@ mod tests {
         let s = scenario("cdpr7-tree");
         let traj = &s.trajectories[0];
         let report = logic::verify(&s, 0).unwrap();
-        let pieces = trajectory_polylines(traj, &logic::strip(&report));
+        let pieces = section_polylines(&logic::strip(&report), |t| traj.pose_at(t));
         let pose = traj.pose_at(0.3);
         let states = cable_states(&s, &pose);
-        let g = build(&SceneInput { scenario: &s, pose: Some(pose), cables: &states, trajectory: &pieces, paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] });
+        let g = build(&SceneInput { scenario: &s, shown: Some(Shown::Platform(pose)), cables: &states, trajectory: &pieces, paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] });
         assert_eq!(g.solid.len() % STRIDE, 0);
         assert_eq!(g.lines.len() % (2 * STRIDE), 0);
         // the platform box and the three obstacles, translucent
@@ -438,7 +518,7 @@ mod tests {
         assert!(solid.contains(&GREEN), "the feasible section");
         assert!(!solid.contains(&PATH), "no path given");
         // without a pose: no cables, no platform
-        let bare = build(&SceneInput { scenario: &s, pose: None, cables: &[], trajectory: &[], paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] });
+        let bare = build(&SceneInput { scenario: &s, shown: None, cables: &[], trajectory: &[], paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] });
         assert!(bare.solid.len() < g.solid.len());
         assert!(!colours(&bare.solid).contains(&RED));
     }
@@ -456,9 +536,41 @@ mod tests {
         assert_eq!(ray.len(), 2);
         assert_eq!((ray[0].colour, ray[1].colour), (lattice_red(), crate::plots::lattice::rgba(Some(0))));
         assert!((ray[1].poses[0].position.x - 2.0016).abs() < 1e-3 && ray[1].poses[0].position.y == 2.0);
-        let bare = build(&SceneInput { scenario: &s, pose: None, cables: &[], trajectory: &[], paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] });
-        let g = build(&SceneInput { scenario: &s, pose: None, cables: &[], trajectory: &[], paths: &[], lattice: &all, handles: &[], selected: None, axis: None, tubes: &[] });
+        let bare = build(&SceneInput { scenario: &s, shown: None, cables: &[], trajectory: &[], paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] });
+        let g = build(&SceneInput { scenario: &s, shown: None, cables: &[], trajectory: &[], paths: &[], lattice: &all, handles: &[], selected: None, axis: None, tubes: &[] });
         assert_eq!(g.lines.len() - bare.lines.len(), all.len() * 2 * STRIDE, "a line per position-ray piece");
+    }
+
+    #[test]
+    fn a_multi_link_robot_is_drawn_with_its_links() {
+        let s = scenario("bmarm-x4-2");
+        let chain = s.robot.chain.as_ref().unwrap();
+        let along = cablenav::verify::all_along(&s)[0];
+        let report = logic::verify(&s, 0).unwrap();
+        let model = logic::strip(&report);
+        let pieces = section_polylines(&model, |t| end_pose(chain, &along.config_at(&s, t)));
+        assert_eq!(pieces.iter().map(|p| p.colour).collect::<Vec<_>>(), [GREEN, RED, GREEN], "across the gap");
+        // in the gap (cables 2 and 3 too close) the two cables are drawn red
+        let gap = model.sections[1].t0 / 2.0 + model.sections[1].t1 / 2.0;
+        let q = along.config_at(&s, gap);
+        let states = cablenav::verify::profile::cable_states_at(&s, &q);
+        let shown = Shown::config(chain, &q);
+        // the lower arm's cables end on the lower arm, at its joint's height and above
+        let frames = chain.frames(&q);
+        for (i, c) in s.robot.cables.iter().enumerate() {
+            let end = shown.cable_end(&s, i);
+            assert!((end - (frames[c.link].0 + frames[c.link].1 * c.platform)).norm() < 1e-15);
+        }
+        let input = |shown| SceneInput { scenario: &s, shown, cables: &states, trajectory: &pieces, paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] };
+        let g = build(&input(Some(shown.clone())));
+        let red = colours(&g.solid).iter().filter(|c| **c == RED).count();
+        let bare = build(&input(None));
+        assert_eq!(red - colours(&bare.solid).iter().filter(|c| **c == RED).count(), 2 * 12 * 3, "two red cable tubes of 12 triangles");
+        // two link bodies, translucent
+        assert!(g.translucent.len() > bare.translucent.len());
+        // the scene's box holds every configuration's links
+        let (min, max) = bounds(&s);
+        assert!(max.z >= 1.19 && min.z <= 0.0, "{min} {max}");
     }
 
     fn lattice_red() -> Rgba {

@@ -253,7 +253,7 @@ pub fn join_lattice(s: &Scenario, spec: LatticeSpec, sections: &[RaySections]) -
 
 fn slice_rows(json: &str, pose: &str, axes: &[String; 2], res: usize, range: [[f64; 2]; 2], rows: [usize; 2]) -> Result<Reply, String> {
     let s = scenario(json)?;
-    let coord = |n: &str| Coord::parse(n).ok_or_else(|| format!("unknown coordinate “{n}”"));
+    let coord = |n: &str| s.coord("axes", n).map_err(|_| format!("unknown coordinate “{n}”"));
     let axes = [coord(&axes[0])?, coord(&axes[1])?];
     let classes = cablenav::verify::slice::slice_rows(&s, pose, axes, res, range, rows[0]..rows[1]).map_err(|e| e.to_string())?;
     Ok(Reply::Sliced { rows, classes })

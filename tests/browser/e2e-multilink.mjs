@@ -1,0 +1,120 @@
+// End-to-end test of a multi-link robot on the page (the thesis' 4-DoF arm, preset bmarm-x4-2), in
+// Debian's headless Chromium driven by playwright-core, against the built page
+// (scripts/build-page.sh):
+//   node tests/browser/e2e-multilink.mjs [PAGE_DIR]      (default: target/page)
+// - the preset loads: the strip of its path "across the gap" equals `cablenav verify` (the
+//   infeasible section where cables 2 and 3 pass closer than the clearance), the 3-D view draws
+//   the arm's links and cables, and the scrubber moves the arm along the path (cables 2 and 3
+//   drawn interfering inside the gap only);
+// - the joint sliders: a configuration picked from the list, then one coordinate typed, show the
+//   verdict of `cablenav check` at the same configuration, and the cables drawn as interfering are
+//   those of its violated conditions;
+// - the slice map over the joint coordinates α, β (the others from configuration fig312, the
+//   thesis' Fig. 3.12 cross-section) is computed by the workers and agrees with `cablenav slice`
+//   (fraction feasible and components), with the path drawn over it;
+// - the lattice and planning tabs say plainly what the page does not do for multi-link robots yet.
+// Screenshots in tests/browser/artifacts/. Ends with "N passed, M failed"; exits 1 on failure.
+
+import { join } from 'node:path';
+import { begin, cliJson, cliSections, cliVerify, openTab, stripSections, watchProblems } from './harness.mjs';
+
+const { root, artifacts, test, finish, base, browser, close } = await begin(import.meta.url, { watchdogMinutes: 8, scratch: 'cablenav-multilink-' });
+const TIMEOUT = 60_000;
+const ARM = 'static/multilink/bmarm-x4-2.json';
+
+const context = await browser.newContext({ viewport: { width: 1366, height: 900 } });
+const problems = watchProblems(context);
+const page = await context.newPage();
+await page.goto(`${base}/#preset=bmarm-x4-2`, { waitUntil: 'load' });
+await page.waitForSelector('section[data-testid="result"][data-origin="bmarm-x4-2"] svg[data-testid="strip"]', { timeout: TIMEOUT });
+
+const view = 'canvas[data-testid="view3d"]';
+const cables = async () => (await page.getAttribute(view, 'data-cables')).split(' ');
+const interfering = (looks) => looks.flatMap((l, i) => (l === 'interfering' ? [i + 1] : []));
+
+/** Moves the scrubber to t (0…1). */
+async function scrubTo(t) {
+  await page.fill('input[data-testid="scrubber"]', String(Math.round(t * 1000)));
+  await page.dispatchEvent('input[data-testid="scrubber"]', 'input');
+}
+
+await test('the arm\'s path: the strip equals `cablenav verify`, the view follows the scrubber', async () => {
+  const cli = cliVerify(root, ARM, 'across the gap');
+  const want = cliSections(cli);
+  const got = await stripSections(page);
+  if (JSON.stringify(got.map((s) => s.kind)) !== JSON.stringify(want.map((s) => s.kind))) throw new Error(`kinds ${JSON.stringify(got)} vs ${JSON.stringify(want)}`);
+  for (let i = 0; i < want.length; i++) {
+    if (Math.abs(got[i].t0 - want[i].t0) > 1e-12 || Math.abs(got[i].t1 - want[i].t1) > 1e-12) throw new Error(`section ${i}: ${JSON.stringify(got[i])} vs ${JSON.stringify(want[i])}`);
+  }
+  const gap = want.find((s) => s.kind === 'infeasible');
+  if (!gap) throw new Error('no infeasible section');
+  if ((await page.getAttribute(view, 'data-sections')).split(' ').length !== want.length) throw new Error('the 3-D path is not drawn in its sections');
+  await scrubTo(gap.t0 / 2);
+  await page.waitForFunction((sel) => document.querySelector(sel)?.dataset.cables.split(' ').every((c) => c !== 'interfering'), view, { timeout: TIMEOUT });
+  await scrubTo((gap.t0 + gap.t1) / 2);
+  await page.waitForFunction((sel) => document.querySelector(sel)?.dataset.cables.includes('interfering'), view, { timeout: TIMEOUT });
+  const inside = interfering(await cables());
+  if (JSON.stringify(inside) !== '[2,3]') throw new Error(`inside the gap cables ${inside} drawn interfering, expected 2 and 3`);
+  const readout = await page.textContent('[data-testid="pose-readout"]');
+  if (!/alpha .* beta .* gamma .* theta/.test(readout)) throw new Error(`readout without the joint coordinates: ${readout}`);
+  await (await page.$('[data-testid="stage"]')).screenshot({ path: join(artifacts, 'multilink-stage.png') });
+  return `${want.length} sections, gap t ∈ [${gap.t0.toFixed(4)}, ${gap.t1.toFixed(4)}], cables ${inside} red inside it`;
+});
+
+await test('the joint sliders: a configuration and a typed value give `cablenav check`\'s verdict', async () => {
+  const sliders = await page.$$('[data-testid="joint-sliders"] label.joint');
+  if (sliders.length !== 4) throw new Error(`${sliders.length} joint sliders, expected 4 (alpha, beta, gamma, theta)`);
+  await page.selectOption('select[data-testid="joint-config"]', 'below');
+  await page.waitForSelector('[data-testid="joint-verdict"][data-feasible="true"]', { timeout: TIMEOUT });
+  const below = cliJson(root, ['check', ARM, '--pose', 'below']);
+  if (!below.feasible) throw new Error('the CLI says "below" is infeasible');
+  if (interfering(await cables()).length) throw new Error('cables drawn interfering at a feasible configuration');
+  // β = 0 from "below" is configuration fig312 (α = 0, γ = −π/12, θ = π/12): inside the gap
+  await page.fill('[data-testid="joint-beta"] input.num', '0');
+  await page.dispatchEvent('[data-testid="joint-beta"] input.num', 'change');
+  await page.waitForSelector('[data-testid="joint-verdict"][data-feasible="false"]', { timeout: TIMEOUT });
+  const fig = cliJson(root, ['check', ARM, '--pose', 'fig312']);
+  const verdict = await page.textContent('[data-testid="joint-verdict"]');
+  if (fig.feasible || verdict !== `infeasible: ${fig.violated.join(', ')}`) throw new Error(`page "${verdict}" vs CLI ${JSON.stringify(fig.violated)}`);
+  const red = interfering(await cables());
+  const named = [...new Set(fig.violated.flatMap((v) => (v.match(/\d+/g) ?? []).map(Number)))].sort((a, b) => a - b);
+  if (JSON.stringify(red) !== JSON.stringify(named)) throw new Error(`cables ${red} drawn interfering, the violated conditions name ${named}`);
+  await (await page.$('[data-testid="stage"]')).screenshot({ path: join(artifacts, 'multilink-sliders.png') });
+  return `below feasible; β = 0: ${verdict}`;
+});
+
+await test('the α–β slice map at fig312 (Fig. 3.12) agrees with `cablenav slice`, the path drawn over it', async () => {
+  await openTab(page, 'slice');
+  await page.selectOption('select[data-testid="slice-pose"]', 'fig312');
+  await page.selectOption('select[data-testid="slice-axis-0"]', 'alpha');
+  await page.selectOption('select[data-testid="slice-axis-1"]', 'beta');
+  const from = await page.inputValue('input[data-testid="slice-from-0"]');
+  if (from !== '-0.7854') throw new Error(`alpha's default range starts at ${from}, not its joint range's -0.7854`);
+  await page.click('[data-testid="slice-compute"]');
+  await page.waitForSelector('[data-testid="chart-slice"] image', { timeout: TIMEOUT });
+  const title = await page.textContent('[data-testid="chart-slice"] figcaption span');
+  const m = title.match(/Slice over alpha × beta \((\d+)×\d+ cells; ([\d.]+)% feasible, (\d+) component/);
+  if (!m) throw new Error(`title: ${title}`);
+  const cli = cliJson(root, ['slice', ARM, '--pose', 'fig312', '--axes', 'alpha,beta', '--res', m[1], '--range', '-0.7854', '0.7854', '-0.7854', '0.7854']);
+  if ((cli.fraction_feasible * 100).toFixed(1) !== m[2] || String(cli.components) !== m[3]) throw new Error(`page ${m[2]} % / ${m[3]} components, CLI ${cli.fraction_feasible * 100} % / ${cli.components}`);
+  for (const mark of ['slice-start', 'slice-goal', 'slice-path']) if (!(await page.$(`[data-testid="chart-slice"] [data-testid="${mark}"]`))) throw new Error(`no ${mark} on the map`);
+  await (await page.$('[data-testid="chart-slice"]')).screenshot({ path: join(artifacts, 'multilink-slice-alpha-beta.png') });
+  return `${m[1]}×${m[1]} cells, ${m[2]} % feasible, ${m[3]} component(s), as the CLI`;
+});
+
+await test('the lattice and planning tabs say what is not available for multi-link robots', async () => {
+  await openTab(page, 'lattice');
+  await page.click('[data-testid="lattice-build"]');
+  await page.waitForFunction(() => document.querySelector('[data-testid="panel-lattice"]')?.textContent.includes('platform robots so far'), null, { timeout: TIMEOUT });
+  await openTab(page, 'planning');
+  const text = await page.textContent('[data-testid="panel-planning"]');
+  if (!text.includes('Planning for multi-link robots is not available yet')) throw new Error(`planning tab: ${text.slice(0, 200)}`);
+  return 'both say so';
+});
+
+await test('no console errors, page errors or failed requests', async () => {
+  if (problems.length) throw new Error(problems.join('\n'));
+});
+
+await close();
+finish();
