@@ -19,8 +19,8 @@
 #   8b. tests/browser/e2e-lattice.mjs  the ray lattice panel and 3-D drawing against `cablenav lattice`,
 #                                      Cancel, lattice planning in a worker (cdpr7-box over-box,
 #                                      Robocrane q1-q2) against `cablenav verify`
-#   8c. tests/browser/e2e-multilink.mjs the 4-DoF arm: strip, 3-D view, joint sliders and the α–β
-#                                      slice map against `cablenav verify|check|slice`
+#   8c. tests/browser/e2e-multilink.mjs the 4-DoF arm: strip, 3-D view, joint sliders, the α–β
+#                                      slice map and ray lattice against `cablenav verify|check|slice|lattice`
 #   9. python/ (maturin, pytest)       the wheel built and installed into target/venv; pytest
 #                                      compares it with the CLI that step 1 built, runs the sweep
 #                                      example serially, on threads and on a Dask LocalCluster

@@ -235,8 +235,9 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
     let lattice_in_view = RwSignal::new(true);
     let lattice_infeasible = RwSignal::new(false);
     let lattice_pieces: Memo<Shared<Vec<Polyline>>> = Memo::new(move |prev| {
-        let pieces = match (lattice.get(), lattice_in_view.get()) {
-            (Some(l), true) => l.0.as_ref().as_ref().map_or_else(|_| vec![], |l| scene::lattice_polylines(l, lattice_infeasible.get())),
+        let parsed = parsed.get();
+        let pieces = match (lattice.get(), lattice_in_view.get(), scenario_of(&parsed)) {
+            (Some(l), true, Some(s)) => l.0.as_ref().as_ref().map_or_else(|_| vec![], |l| scene::lattice_polylines(s, l, lattice_infeasible.get())),
             _ => vec![],
         };
         Shared::or_same(prev, pieces)

@@ -6,7 +6,7 @@
 
 use super::geom::{polyline, ticks, Scale};
 use super::section::{CrossSection, SectionControls};
-use super::slice::{path_points, row_blocks, slice_copies, Overlay};
+use super::slice::{config_points, path_points, row_blocks, slice_copies, Overlay};
 use super::strip::css;
 use super::Chart;
 use crate::logic::{fmt_exact, fmt_num};
@@ -44,15 +44,17 @@ pub fn rgba(component: Option<usize>) -> Rgba {
     [byte(0), byte(1), byte(2), 1.0]
 }
 
-/// One stretch of one ray in all six coordinates: the ray's coordinates `at`, its varied
+/// One stretch of one ray in every coordinate: the ray's configuration `at`, its varied
 /// coordinate running from `from` to `to`, feasible in `component` or not (`None`: infeasible or
 /// uncertain).
 #[derive(Debug, Clone, PartialEq)]
 pub struct RayPiece {
-    /// The varied coordinate.
-    pub vary: Coord,
+    /// The varied coordinate's index in the configuration.
+    pub vary: usize,
+    /// Whether it is an angle.
+    pub angle: bool,
     /// The other coordinates (the varied one's entry is unused).
-    pub at: [f64; 6],
+    pub at: Vec<f64>,
     /// Where the stretch starts, in the varied coordinate.
     pub from: f64,
     /// Where it ends.
@@ -66,9 +68,9 @@ pub struct RayPiece {
 pub fn ray_pieces(r: &LatticeResult) -> Vec<RayPiece> {
     let mut out = vec![];
     for ray in &r.rays {
-        let (Some(vary), Some(a)) = (Coord::parse(&ray.vary), r.axes.iter().position(|n| *n == ray.vary)) else { continue };
-        let [lo, hi] = r.ranges[a];
-        let piece = |from: f64, to: f64, component: Option<usize>| RayPiece { vary, at: ray.at, from, to, component };
+        let Some(a) = r.axes.iter().position(|n| *n == ray.vary) else { continue };
+        let (vary, angle, [lo, hi]) = (r.axis_index[a], r.axis_angle[a], r.ranges[a]);
+        let piece = |from: f64, to: f64, component: Option<usize>| RayPiece { vary, angle, at: ray.at.clone(), from, to, component };
         let mut cursor = lo;
         for (iv, &c) in ray.feasible.iter().zip(&ray.components) {
             if iv[0] > cursor {
@@ -100,15 +102,14 @@ pub struct Stretch {
 /// Every ray of a 2-D lattice as stretches over its two axes: the feasible pieces in their
 /// component's colour and the gaps between them (infeasible or uncertain) in red.
 pub fn stretches(r: &LatticeResult) -> Vec<Stretch> {
-    let axes: Vec<Option<Coord>> = r.axes.iter().map(|n| Coord::parse(n)).collect();
-    let (Some(Some(a)), Some(Some(b))) = (axes.first(), axes.get(1)) else { return vec![] };
+    let (Some(&a), Some(&b)) = (r.axis_index.first(), r.axis_index.get(1)) else { return vec![] };
     ray_pieces(r)
         .into_iter()
         .map(|p| {
             let at = |v: f64| {
-                let mut c = p.at;
-                c[p.vary.index()] = v;
-                (c[a.index()], c[b.index()])
+                let mut c = p.at.clone();
+                c[p.vary] = v;
+                (c[a], c[b])
             };
             Stretch { from: at(p.from), to: at(p.to), colour: colour(p.component), component: p.component }
         })
@@ -141,12 +142,8 @@ pub fn LatticePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>
     let start = move |_| {
         let (Some(s), Some(json)) = (scenario.get_untracked(), source.try_get_untracked()) else { return };
         let this = stop();
-        if s.robot.chain.is_some() {
-            let e = "the page builds ray lattices of platform robots so far; a multi-link robot's lattice: `cablenav lattice SCENARIO --pose CONFIG --axes alpha,beta` (or the slice map here)";
-            return lattice.set(Some(Shared::new(Err(e.to_string()))));
-        }
         let (pose, a, r, n) = (section.pose.get_untracked(), section.axes.get_untracked(), section.range.get_untracked(), steps.get_untracked());
-        let axes: Vec<String> = a.iter().map(|c| c.name().to_string()).collect();
+        let axes: Vec<String> = a.iter().map(|&c| s.coord_name(c)).collect();
         // the request's checks first (the core's errors), before any worker starts
         let spec = match lattice_spec(&s, &pose, &axes, r.to_vec(), n) {
             Ok(spec) => spec,
@@ -206,15 +203,14 @@ pub fn LatticePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>
         </SectionControls>
         {move || lattice.get().map(|r| match r.0.as_ref() {
             Err(e) => view! { <p class="error" data-testid="lattice-error">{format!("Lattice: {e}")}</p> }.into_any(),
-            Ok(r) => view! { <LatticeView report=r.clone() overlay /> }.into_any(),
+            Ok(r) => view! { <LatticeView report=r.clone() axes=section.axes.get_untracked() overlay /> }.into_any(),
         })}
     }
 }
 
 /// The rays, the axes and the overlay.
 #[component]
-fn LatticeView(report: LatticeResult, overlay: Signal<Overlay>) -> impl IntoView {
-    let axes = [Coord::parse(&report.axes[0]).unwrap_or(Coord::X), Coord::parse(&report.axes[1]).unwrap_or(Coord::Y)];
+fn LatticeView(report: LatticeResult, axes: [Coord; 2], overlay: Signal<Overlay>) -> impl IntoView {
     let range = [report.ranges[0], report.ranges[1]];
     let x = Scale::new(range[0][0], range[0][1], LEFT, W - RIGHT);
     let y = Scale::new(range[1][0], range[1][1], H - BOTTOM, TOP);
@@ -225,6 +221,7 @@ fn LatticeView(report: LatticeResult, overlay: Signal<Overlay>) -> impl IntoView
     let lines = stretches(&report);
     let to_px = move |p: Option<(f64, f64)>| p.map(|(a, b)| (x.at(a), y.at(b)));
     let markers = move |pose: Option<cablenav::model::Pose>| pose.map_or(vec![], |p| slice_copies(&p, axes, range).into_iter().map(|q| (x.at(q.0), y.at(q.1))).collect());
+    let joint_marker = move |q: &Option<Vec<f64>>| q.as_ref().and_then(|q| config_points(std::slice::from_ref(q), axes, range)[0]).map(|p| (x.at(p.0), y.at(p.1)));
     view! {
         <Chart id="lattice" title width=W height=H>
             <rect x=LEFT y=TOP width=W - LEFT - RIGHT height=H - TOP - BOTTOM fill="#ffffff" stroke="#5b6670" />
@@ -245,12 +242,14 @@ fn LatticeView(report: LatticeResult, overlay: Signal<Overlay>) -> impl IntoView
             {move || {
                 let o = overlay.get();
                 view! {
-                    {o.pieces.iter().map(|piece| {
-                        let d = polyline(&path_points(&piece.poses, axes, range).into_iter().map(to_px).collect::<Vec<_>>());
-                        view! { <path data-testid="lattice-path" d=d fill="none" stroke=css(piece.colour) stroke-width="2" stroke-dasharray="5 3" /> }
+                    {o.pieces.iter().map(|piece| (piece.colour, path_points(&piece.poses, axes, range)))
+                        .chain(o.joint_pieces.iter().map(|(colour, qs)| (*colour, config_points(qs, axes, range))))
+                        .map(|(colour, points)| {
+                        let d = polyline(&points.into_iter().map(to_px).collect::<Vec<_>>());
+                        view! { <path data-testid="lattice-path" d=d fill="none" stroke=css(colour) stroke-width="2" stroke-dasharray="5 3" /> }
                     }).collect_view()}
-                    {markers(o.start).into_iter().map(|(cx, cy)| view! { <circle cx=cx cy=cy r="6" fill="#ffffff" stroke="#1d2329" stroke-width="2"><title>"start"</title></circle> }).collect_view()}
-                    {markers(o.goal).into_iter().map(|(cx, cy)| view! { <rect x=cx - 6.0 y=cy - 6.0 width="12" height="12" fill="#1d2329"><title>"goal"</title></rect> }).collect_view()}
+                    {markers(o.start).into_iter().chain(joint_marker(&o.joint_ends[0])).map(|(cx, cy)| view! { <circle cx=cx cy=cy r="6" fill="#ffffff" stroke="#1d2329" stroke-width="2"><title>"start"</title></circle> }).collect_view()}
+                    {markers(o.goal).into_iter().chain(joint_marker(&o.joint_ends[1])).map(|(cx, cy)| view! { <rect x=cx - 6.0 y=cy - 6.0 width="12" height="12" fill="#1d2329"><title>"goal"</title></rect> }).collect_view()}
                 }
             }}
         </Chart>
@@ -271,7 +270,26 @@ mod tests {
     fn box_lattice() -> LatticeResult {
         let s = crate::logic::parse_scenario(PRESETS[find("cdpr7-box").unwrap()].json).unwrap();
         let spec = LatticeSpec::new(vec![Coord::X, Coord::Z], vec![[0.2, 3.8], [0.3, 3.7]], vec![7], s.pose("fig310").unwrap().coords()).unwrap();
-        LatticeResult::from(&Lattice::build(&s, spec).report().unwrap())
+        LatticeResult::of(&s, &Lattice::build(&s, spec).report().unwrap())
+    }
+
+    /// The thesis' Fig. 3.12: the arm's α–β cross-section at γ = −π/12, θ = π/12 with 10 steps:
+    /// two components on the rays (tests/chain.rs has the core's side).
+    #[test]
+    fn a_multi_link_robots_lattice_is_over_its_joint_coordinates() {
+        let s = crate::logic::parse_scenario(PRESETS[find("bmarm-x4-2").unwrap()].json).unwrap();
+        let q = std::f64::consts::FRAC_PI_4;
+        let spec = crate::worker::jobs::lattice_spec(&s, "fig312", &["alpha".into(), "beta".into()], vec![[-q, q]; 2], 10).unwrap();
+        let r = LatticeResult::of(&s, &Lattice::build(&s, spec).report().unwrap());
+        assert_eq!((r.axis_index.as_slice(), r.axis_angle.as_slice()), ([0, 1].as_slice(), [true, true].as_slice()));
+        assert_eq!((r.components, r.feasible_points), (2, 77));
+        let pieces = ray_pieces(&r);
+        assert!(pieces.iter().all(|p| p.at.len() == 4 && p.at[2] == s.config("fig312").unwrap()[2]), "γ and θ from fig312");
+        let st = stretches(&r);
+        assert!(st.iter().all(|x| [x.from.0, x.to.0, x.from.1, x.to.1].iter().all(|v| v.abs() <= q + 1e-12)));
+        // in 3-D: the last link's poses along each piece
+        let drawn = crate::view3d::scene::lattice_polylines(&s, &r, true);
+        assert_eq!(drawn.len(), pieces.len());
     }
 
     #[test]

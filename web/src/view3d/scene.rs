@@ -147,19 +147,23 @@ const ANGLE_SAMPLES: usize = 16;
 
 /// A ray lattice's pieces as coloured poses (see [`crate::plots::lattice::ray_pieces`]): feasible
 /// pieces in their component's colour, as in the cross-section panel; the infeasible ones in red
-/// when `infeasible`, else left out.
-pub fn lattice_polylines(l: &crate::worker::protocol::LatticeResult, infeasible: bool) -> Vec<Polyline> {
+/// when `infeasible`, else left out. A multi-link robot's pieces are its last link's poses
+/// ([`end_pose`]).
+pub fn lattice_polylines(s: &Scenario, l: &crate::worker::protocol::LatticeResult, infeasible: bool) -> Vec<Polyline> {
     use crate::plots::lattice::{ray_pieces, rgba};
     ray_pieces(l)
         .into_iter()
         .filter(|p| infeasible || p.component.is_some())
         .map(|p| {
-            let n = if p.vary.is_angle() { ANGLE_SAMPLES } else { 1 };
+            let n = if p.angle { ANGLE_SAMPLES } else { 1 };
             let poses = (0..=n)
                 .map(|k| {
-                    let mut c = p.at;
-                    c[p.vary.index()] = p.from + (p.to - p.from) * k as f64 / n as f64;
-                    Pose::from_coords(c)
+                    let mut c = p.at.clone();
+                    c[p.vary] = p.from + (p.to - p.from) * k as f64 / n as f64;
+                    match &s.robot.chain {
+                        Some(chain) => end_pose(chain, &c),
+                        None => Pose::from_slice(&c),
+                    }
                 })
                 .collect();
             Polyline { colour: rgba(p.component), poses }
@@ -527,9 +531,9 @@ mod tests {
     fn the_lattice_is_drawn_in_the_panels_colours() {
         let s = scenario("cdpr7-box");
         let spec = cablenav::lattice::LatticeSpec::new(vec![cablenav::model::Coord::X, cablenav::model::Coord::Z], vec![[0.2, 3.8], [0.3, 3.7]], vec![7], s.pose("fig310").unwrap().coords()).unwrap();
-        let l = crate::worker::protocol::LatticeResult::from(&cablenav::lattice::Lattice::build(&s, spec).report().unwrap());
-        let all = lattice_polylines(&l, true);
-        let feasible = lattice_polylines(&l, false);
+        let l = crate::worker::protocol::LatticeResult::of(&s, &cablenav::lattice::Lattice::build(&s, spec).report().unwrap());
+        let all = lattice_polylines(&s, &l, true);
+        let feasible = lattice_polylines(&s, &l, false);
         assert!(feasible.len() < all.len() && feasible.iter().all(|p| p.colour != lattice_red()));
         // the x-ray at z = 0.8667: red from x = 0.2, then green from x ≈ 2.0016, at y = 2
         let ray: Vec<&Polyline> = all.iter().filter(|p| (p.poses[0].position.z - 0.8666666666666667).abs() < 1e-12 && p.poses[0].position.x != p.poses[1].position.x).collect();

@@ -4,7 +4,7 @@
 use super::protocol::{pose_to_wire, Job, LatticeResult, PlannedTrajectory, RaySections, Reply, WireReport};
 use cablenav::lattice::{Lattice, LatticeSpec};
 use crate::logic::fmt_num;
-use cablenav::model::{Coord, Pose};
+use cablenav::model::Pose;
 use cablenav::plan::choice::{self, Details, PathPlanner, PlanResult, PlannerKind, PlannerOptions, Progress};
 use cablenav::plan::{PathPose, PlanStatus};
 use nalgebra::{Quaternion, UnitQuaternion};
@@ -195,8 +195,8 @@ fn profiles(json: &str, name: &str, samples: &[(f64, [u64; 7])]) -> Result<Reply
 /// The checked lattice request of a [`Job::LatticeRays`] (the page checks it before starting
 /// workers; each worker checks it again).
 pub fn lattice_spec(s: &Scenario, pose: &str, axes: &[String], ranges: Vec<[f64; 2]>, steps: usize) -> Result<LatticeSpec, String> {
-    let coords = axes.iter().map(|n| Coord::parse(n).ok_or_else(|| format!("unknown coordinate “{n}”"))).collect::<Result<Vec<_>, _>>()?;
-    let at = s.pose(pose).map_err(|e| e.to_string())?.coords();
+    let coords = axes.iter().map(|n| s.coord("axes", n).map_err(|_| format!("unknown coordinate “{n}”"))).collect::<Result<Vec<_>, _>>()?;
+    let at = s.config(pose).map_err(|e| e.to_string())?;
     LatticeSpec::new(coords, ranges, vec![steps], at).map_err(|e| e.to_string())
 }
 
@@ -248,7 +248,7 @@ pub fn join_lattice(s: &Scenario, spec: LatticeSpec, sections: &[RaySections]) -
         .collect();
     // every ray is there: this step computes none and builds the graph
     l.step(1);
-    l.report().map(|r| LatticeResult::from(&r)).ok_or_else(|| "the lattice's graph was not built".to_string())
+    l.report().map(|r| LatticeResult::of(s, &r)).ok_or_else(|| "the lattice's graph was not built".to_string())
 }
 
 fn slice_rows(json: &str, pose: &str, axes: &[String; 2], res: usize, range: [[f64; 2]; 2], rows: [usize; 2]) -> Result<Reply, String> {
@@ -359,7 +359,7 @@ mod tests {
         let spec = lattice_spec(&s, "fig310", &axes, ranges.clone(), 7).unwrap();
         let joined = join_lattice(&s, spec.clone(), &sections).unwrap();
         let core = Lattice::build(&s, spec.clone()).report().unwrap();
-        assert_eq!(joined, LatticeResult::from(&core), "the same rays, bit for bit, and the same graph");
+        assert_eq!(joined, LatticeResult::of(&s, &core), "the same rays, bit for bit, and the same graph");
         assert_eq!((joined.rays.len(), joined.components), (14, core.components));
         // the x-ray at z = 0.8667 starts at x ≈ 2.002 (thesis Fig. 3.10)
         let ray = joined.rays.iter().find(|r| r.vary == "x" && (r.at[2] - (0.3 + 3.4 / 6.0)).abs() < 1e-12).unwrap();

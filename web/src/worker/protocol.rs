@@ -7,6 +7,7 @@ use cablenav::model::Pose;
 use cablenav::report::{Boundary, Side, TensionEnvelope, VerifyReport};
 use cablenav::verify::profile::{ClearanceProfile, ClearanceSample, Closest};
 use cablenav::verify::slice::Class;
+use cablenav::Scenario;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 use serde::{Deserialize, Serialize};
 
@@ -231,12 +232,17 @@ impl From<WireClearances> for ClearanceProfile {
 pub struct LatticeResult {
     /// The chosen coordinates' names.
     pub axes: Vec<String>,
+    /// Their indices in a configuration (x, y, z, φ, θ, σ for a platform robot; a multi-link
+    /// robot's joint coordinates in order).
+    pub axis_index: Vec<usize>,
+    /// Which of them are angles.
+    pub axis_angle: Vec<bool>,
     /// Their ranges.
     pub ranges: Vec<[f64; 2]>,
     /// Their numbers of grid values.
     pub steps: Vec<usize>,
-    /// The six coordinates the others are held at (x, y, z, φ, θ, σ).
-    pub fixed: [f64; 6],
+    /// The configuration the other coordinates are held at.
+    pub fixed: Vec<f64>,
     /// Every ray.
     pub rays: Vec<LatticeRay>,
     /// Feasible ray pieces (the graph's nodes).
@@ -256,44 +262,45 @@ pub struct LatticeResult {
 pub struct LatticeRay {
     /// The varied coordinate's name.
     pub vary: String,
-    /// All six coordinates of the ray's start (the varied one at its range's start).
-    pub at: [f64; 6],
+    /// The whole configuration at the ray's start (the varied coordinate at its range's start).
+    pub at: Vec<f64>,
     /// Feasible intervals of the varied coordinate.
     pub feasible: Vec<[f64; 2]>,
     /// The component of each feasible interval.
     pub components: Vec<usize>,
 }
 
-/// The six pose coordinates of a platform robot's lattice (the page draws platform robots).
-fn six(c: &[f64]) -> [f64; 6] {
-    std::array::from_fn(|i| c.get(i).copied().unwrap_or(0.0))
-}
-
-impl From<&LatticeReport> for LatticeResult {
-    fn from(r: &LatticeReport) -> LatticeResult {
+impl LatticeResult {
+    /// The page's copy of the core's lattice report on scenario `s` (which names its coordinates:
+    /// x … σ, or a multi-link robot's joint coordinates).
+    pub fn of(s: &Scenario, r: &LatticeReport) -> LatticeResult {
+        let index = |name: &str| s.coord("axes", name).ok().map(|c| c.index());
         let rays = r
             .rays
             .iter()
             .zip(&r.piece_components)
             .map(|(ray, comps)| {
-                let mut at = six(&r.fixed);
+                let mut at = r.fixed.clone();
                 for (name, v) in &ray.fixed {
-                    if let Some(c) = cablenav::model::Coord::parse(name) {
-                        at[c.index()] = *v;
+                    if let Some(slot) = index(name).and_then(|i| at.get_mut(i)) {
+                        *slot = *v;
                     }
                 }
                 let a = r.axes.iter().position(|n| *n == ray.vary).unwrap_or(0);
-                if let Some(c) = cablenav::model::Coord::parse(&ray.vary) {
-                    at[c.index()] = r.ranges[a][0];
+                if let Some(slot) = index(&ray.vary).and_then(|i| at.get_mut(i)) {
+                    *slot = r.ranges[a][0];
                 }
                 LatticeRay { vary: ray.vary.to_string(), at, feasible: ray.feasible.clone(), components: comps.clone() }
             })
             .collect();
+        let coords: Vec<Option<cablenav::model::Coord>> = r.axes.iter().map(|n| s.coord("axes", n).ok()).collect();
         LatticeResult {
-            axes: r.axes.iter().map(|a| a.to_string()).collect(),
+            axes: r.axes.clone(),
+            axis_index: coords.iter().map(|c| c.map_or(0, |c| c.index())).collect(),
+            axis_angle: coords.iter().map(|c| c.is_some_and(|c| c.is_angle())).collect(),
             ranges: r.ranges.clone(),
             steps: r.steps.clone(),
-            fixed: six(&r.fixed),
+            fixed: r.fixed.clone(),
             rays,
             pieces: r.pieces,
             components: r.components,
