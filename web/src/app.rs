@@ -24,10 +24,11 @@ pub fn App() -> impl IntoView {
     let origin = RwSignal::new(boot.origin);
     // The open results tab and the planning choices, kept in the address with the scenario.
     let settings = RwSignal::new(boot.settings);
-    crate::persist::keep(source, origin, preset, settings, embed);
     // The path the planner found for the current scenario, if any.
     let planned = RwSignal::new(None);
     let history = Undo::new(source, origin, preset);
+    provide_context(crate::state::Quiet(history.batching.into()));
+    crate::persist::keep(source, origin, preset, settings, embed);
 
     let parsed: Memo<Parsed> = Memo::new(move |_| Shared::new(logic::parse_scenario(&source.get())));
     let verified: Memo<Verified> = Memo::new(move |_| {

@@ -235,7 +235,11 @@ pub fn keep(source: RwSignal<String>, origin: RwSignal<&'static str>, preset: Rw
         return;
     }
     let autosave = !in_frame();
+    let quiet = crate::state::Quiet::watch();
     Effect::new(move |_| {
+        if quiet() {
+            return; // written when the drag ends
+        }
         let (text, from) = (source.get(), origin.get());
         let hash = settings.with(|s| share_hash(&text, from, s));
         if let Some(w) = window() {

@@ -283,6 +283,9 @@ pub struct Undo {
     history: StoredValue<History>,
     /// Steps to undo and to redo, for the buttons.
     pub depth: RwSignal<(usize, usize)>,
+    /// A batch is open (a drag in progress): what need not follow every step of it waits for its
+    /// end (see [`Quiet`]).
+    pub batching: RwSignal<bool>,
     /// The page's scenario JSON.
     pub source: RwSignal<String>,
     origin: RwSignal<&'static str>,
@@ -293,7 +296,7 @@ impl Undo {
     /// Starts recording every change of `source`/`origin` as a step.
     pub fn new(source: RwSignal<String>, origin: RwSignal<&'static str>, preset: RwSignal<usize>) -> Undo {
         let first = Snapshot { source: source.get_untracked(), origin: origin.get_untracked() };
-        let u = Undo { history: StoredValue::new(History::new(first)), depth: RwSignal::new((0, 0)), source, origin, preset };
+        let u = Undo { history: StoredValue::new(History::new(first)), depth: RwSignal::new((0, 0)), batching: RwSignal::new(false), source, origin, preset };
         Effect::new(move |_| {
             let now = Snapshot { source: source.get(), origin: origin.get() };
             u.history.update_value(|h| h.record(now));
@@ -332,11 +335,29 @@ impl Undo {
     /// Until [`Undo::end_batch`], changes are one step (a drag).
     pub fn begin_batch(&self) {
         self.history.update_value(History::begin_batch);
+        self.batching.set(true);
     }
 
     /// Ends a batch.
     pub fn end_batch(&self) {
         self.history.update_value(History::end_batch);
+        self.batching.set(false);
+    }
+}
+
+/// While true (a drag in progress), the parts of the page that need not follow every step of an
+/// edit wait for its end: the editor's form (which re-reads the whole scenario), the address and
+/// the autosave. The strip, the 3-D view and the verification follow every step. Provided as a
+/// context by the page; absent (never quiet) where the editor is mounted alone.
+#[derive(Debug, Clone, Copy)]
+pub struct Quiet(pub Signal<bool>);
+
+impl Quiet {
+    /// The context's test, looked up once where this is called (a component's setup) and read
+    /// (tracked) each time it is called: always false without a [`Quiet`] context.
+    pub fn watch() -> impl Fn() -> bool + Copy + 'static {
+        let q = use_context::<Quiet>();
+        move || q.is_some_and(|q| q.0.get())
     }
 }
 

@@ -36,13 +36,22 @@ impl Ed {
     /// elsewhere (a preset, the JSON box, an import).
     pub fn new(source: RwSignal<String>, origin: RwSignal<&'static str>) -> Ed {
         let doc = RwSignal::new(serde_json::from_str(&source.get_untracked()).ok());
+        // during a drag the form waits for its end (crate::state::Quiet): every field re-reads
+        // the tree, too much for every pointer move
+        let quiet = crate::state::Quiet::watch();
         Effect::new(move |_| {
+            if quiet() {
+                return;
+            }
             let parsed: Option<Value> = source.with(|s| serde_json::from_str(s).ok());
             if doc.with_untracked(|d| *d != parsed) {
                 doc.set(parsed);
             }
         });
-        let checked = Memo::new(move |_| source.with(|s| Scenario::from_json(s)));
+        let checked = Memo::new(move |prev: Option<&Result<Scenario, cablenav::Error>>| match prev {
+            Some(p) if quiet() => p.clone(),
+            _ => source.with(|s| Scenario::from_json(s)),
+        });
         Ed { doc, source, origin, checked }
     }
 

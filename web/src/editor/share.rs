@@ -9,9 +9,14 @@ use crate::persist;
 /// The sharing panel.
 #[component]
 pub fn SharePanel(source: RwSignal<String>, origin: RwSignal<&'static str>, settings: RwSignal<crate::state::Settings>) -> impl IntoView {
-    let hash = move || settings.with(|s| persist::share_hash(&source.get(), origin.get(), s));
-    let link = Memo::new(move |_| format!("{}{}", persist::page_address(), hash()));
-    let snippet = Memo::new(move |_| persist::embed_snippet(&persist::page_address(), &hash()));
+    // one link per edit, made once, and during a drag at its end (crate::state::Quiet)
+    let quiet = crate::state::Quiet::watch();
+    let hash = Memo::new(move |prev: Option<&String>| match prev {
+        Some(h) if quiet() => h.clone(),
+        _ => settings.with(|s| persist::share_hash(&source.get(), origin.get(), s)),
+    });
+    let link = Memo::new(move |_| format!("{}{}", persist::page_address(), hash.get()));
+    let snippet = Memo::new(move |_| persist::embed_snippet(&persist::page_address(), &hash.get()));
     let message = RwSignal::new(None::<(bool, String)>);
     let load = move |text: String, what: String| {
         // The file's scenario replaces the text, whatever it holds (an invalid one shows the
