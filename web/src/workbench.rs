@@ -19,7 +19,7 @@ use crate::view3d::scene::{self, Polyline, SceneInput, Shown, PATH};
 use crate::edit_logic::{self as el, handles, Grip, Handle};
 use crate::view3d::drag::Constraint;
 use crate::view3d::{HandleEvent, Handles, SceneView, View3d};
-use crate::worker::host::{self, Running};
+use crate::worker::host;
 use crate::worker::protocol::{pose_to_wire, Job, Reply};
 use cablenav::report::TensionEnvelope;
 use cablenav::verify::profile::ClearanceProfile;
@@ -272,9 +272,14 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         }
     });
 
+    // the backdrop (grid, anchors, obstacles) is rebuilt only when what it shows changes
+    let backdrop_key = Memo::new(move |_| scenario_of(&parsed.get()).map(scene::BackdropKey::of));
+    let backdrop = Memo::new(move |_| backdrop_key.get().map(|k| Shared::new(scene::backdrop(&k))));
     let scene_view: Memo<Option<Shared<SceneView>>> = Memo::new(move |_| {
         let parsed = parsed.get();
         let s = scenario_of(&parsed)?;
+        let backdrop = backdrop.get()?;
+        let bounds = backdrop.0.bounds;
         let (shown, cables) = match (&s.robot.chain, shown_config.get()) {
             (Some(chain), Some(q)) => (Some(Shown::config(chain, &q)), profile::cable_states_at(s, &q)),
             (Some(_), None) => (None, vec![]),
@@ -303,14 +308,15 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
             selected: selected.get(),
             axis,
             tubes: &tubes,
-        });
+        }, bounds);
         let sections = strip
             .get()
             .map(|m| m.sections.iter().map(|x| format!("{}:{}:{}", x.kind.as_str(), logic::fmt_exact(x.t0), logic::fmt_exact(x.t1))).collect::<Vec<_>>().join(" "))
             .unwrap_or_default();
         Some(Shared::new(SceneView {
+            backdrop,
             geometry,
-            bounds: scene::bounds(s),
+            bounds,
             sections,
             cables: cables.iter().map(|c| scene::cable_look(c).0).collect::<Vec<_>>().join(" "),
             path_poses: planned.get().map_or(0, |p| p.0.poses.len()),
@@ -320,19 +326,18 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         }))
     });
 
-    // the plots along the path (clearances, tension envelope) are computed in a Web Worker: a new
-    // path starts a job and drops the previous one; they follow a drag at its end (the strip and
-    // the view follow every move)
+    // the plots along the path (clearances, tension envelope) are computed in one resident Web
+    // Worker: a new path sends a job that supersedes the previous one; they follow a drag at its
+    // end (the strip and the view follow every move)
     let profile_data = RwSignal::new(None::<Shared<(Result<ClearanceProfile, String>, String)>>);
     let envelope = RwSignal::new(None::<Shared<(Result<TensionEnvelope, String>, &'static str)>>);
-    let plots_run: StoredValue<Option<Running>, LocalStorage> = StoredValue::new_local(None);
-    let plots_generation = StoredValue::new(0u32);
+    let plots_worker: StoredValue<host::Resident, LocalStorage> = StoredValue::new_local(host::Resident::new());
     Effect::new(move |_| {
         if drag_active.get() {
             return;
         }
         if is_chain(&parsed.get()) {
-            plots_run.update_value(|r| r.take().into_iter().for_each(|r| r.cancel()));
+            plots_worker.with_value(host::Resident::forget);
             let e = "not drawn for multi-link robots yet: their clearances are certified in the strip and the intervals (docs/multilink.md)".to_string();
             profile_data.set(Some(Shared::new((Err(e.clone()), String::new()))));
             envelope.set(Some(Shared::new((Err("a multi-link robot has no wrench set: its wrench condition is joint-space wrench closure, in the strip".to_string()), "t"))));
@@ -342,19 +347,15 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
             let samples = path.samples(PLOT_SAMPLES).iter().map(|(t, p)| (*t, pose_to_wire(p))).collect();
             Some((path.name(), path.param(), samples))
         });
-        plots_generation.update_value(|g| *g += 1);
-        plots_run.update_value(|r| r.take().into_iter().for_each(|r| r.cancel()));
         let Some((name, param, samples)) = request else {
+            plots_worker.with_value(host::Resident::forget);
             profile_data.set(None);
             envelope.set(None);
             return;
         };
         let Some(json) = source.try_get_untracked() else { return };
-        let (this, label) = (plots_generation.get_value(), format!("{name}; x: {param}"));
+        let label = format!("{name}; x: {param}");
         let on_reply = move |reply: Reply| {
-            if plots_generation.get_value() != this {
-                return;
-            }
             let (clearances, tension) = match reply {
                 Reply::Progress { .. } => return,
                 Reply::Profiles { clearances, tension } => (clearances.map(Into::into), tension.map(Into::into)),
@@ -366,10 +367,9 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
             };
             profile_data.set(Some(Shared::new((clearances, label.clone()))));
             envelope.set(Some(Shared::new((tension, param))));
-            plots_run.update_value(|r| r.take().into_iter().for_each(host::retire));
         };
-        match host::start(&Job::Profiles { scenario: json, name: name.clone(), samples }, on_reply) {
-            Ok(w) => plots_run.set_value(Some(w)),
+        match plots_worker.with_value(|w| w.send(&Job::Profiles { scenario: json, name: name.clone(), samples }, on_reply)) {
+            Ok(()) => {}
             Err(e) => {
                 profile_data.set(Some(Shared::new((Err(e.clone()), format!("{name}; x: {param}")))));
                 envelope.set(Some(Shared::new((Err(e), param))));

@@ -43,14 +43,24 @@ struct Pass {
     count: i32,
 }
 
+/// One layer of geometry: its three passes.
+struct Layer {
+    solid: Pass,
+    lines: Pass,
+    translucent: Pass,
+}
+
+/// The backdrop's layer (uploaded when the scenario's static parts change).
+pub const BACKDROP: usize = 0;
+/// The moving parts' layer (uploaded at every change of what is shown).
+pub const MOVING: usize = 1;
+
 /// The renderer of one canvas.
 pub struct Renderer {
     gl: Gl,
     program: WebGlProgram,
     mvp: WebGlUniformLocation,
-    solid: Pass,
-    lines: Pass,
-    translucent: Pass,
+    layers: [Layer; 2],
 }
 
 fn compile(gl: &Gl, kind: u32, src: &str) -> Result<web_sys::WebGlShader, String> {
@@ -99,14 +109,16 @@ impl Renderer {
             return Err(gl.get_program_info_log(&program).unwrap_or_default());
         }
         let mvp = gl.get_uniform_location(&program, "u_mvp").ok_or("no u_mvp")?;
-        let (solid, lines, translucent) = (pass(&gl)?, pass(&gl)?, pass(&gl)?);
-        Ok(Renderer { gl, program, mvp, solid, lines, translucent })
+        let layer = |gl: &Gl| -> Result<Layer, String> { Ok(Layer { solid: pass(gl)?, lines: pass(gl)?, translucent: pass(gl)? }) };
+        let layers = [layer(&gl)?, layer(&gl)?];
+        Ok(Renderer { gl, program, mvp, layers })
     }
 
-    /// Replaces the geometry.
-    pub fn upload(&mut self, g: &Geometry) {
+    /// Replaces the geometry of layer `layer` ([`BACKDROP`] or [`MOVING`]).
+    pub fn upload(&mut self, layer: usize, g: &Geometry) {
         let gl = &self.gl;
-        for (p, data) in [(&mut self.solid, &g.solid), (&mut self.lines, &g.lines), (&mut self.translucent, &g.translucent)] {
+        let Some(l) = self.layers.get_mut(layer) else { return };
+        for (p, data) in [(&mut l.solid, &g.solid), (&mut l.lines, &g.lines), (&mut l.translucent, &g.translucent)] {
             gl.bind_buffer(Gl::ARRAY_BUFFER, Some(&p.buffer));
             // a copy into a JS Float32Array: no view into wasm memory outlives this call
             let array = js_sys::Float32Array::from(data.as_slice());
@@ -115,7 +127,8 @@ impl Renderer {
         }
     }
 
-    /// Draws the geometry with `view_projection` into a `width` × `height` pixel canvas.
+    /// Draws both layers with `view_projection` into a `width` × `height` pixel canvas: the opaque
+    /// triangles and lines first, the translucent triangles last.
     pub fn draw(&self, view_projection: Mat4, width: i32, height: i32) {
         let gl = &self.gl;
         gl.viewport(0, 0, width, height);
@@ -126,12 +139,16 @@ impl Renderer {
         gl.uniform_matrix4fv_with_f32_array(Some(&self.mvp), false, &view_projection.to_cols_array());
         gl.disable(Gl::BLEND);
         gl.depth_mask(true);
-        self.draw_pass(&self.solid, Gl::TRIANGLES);
-        self.draw_pass(&self.lines, Gl::LINES);
+        for l in &self.layers {
+            self.draw_pass(&l.solid, Gl::TRIANGLES);
+            self.draw_pass(&l.lines, Gl::LINES);
+        }
         gl.enable(Gl::BLEND);
         gl.blend_func(Gl::SRC_ALPHA, Gl::ONE_MINUS_SRC_ALPHA);
         gl.depth_mask(false);
-        self.draw_pass(&self.translucent, Gl::TRIANGLES);
+        for l in &self.layers {
+            self.draw_pass(&l.translucent, Gl::TRIANGLES);
+        }
         gl.depth_mask(true);
     }
 

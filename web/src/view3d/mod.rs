@@ -19,7 +19,9 @@ use std::rc::Rc;
 /// Everything the view shows, computed off the DOM.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SceneView {
-    /// The vertex data.
+    /// What does not move (uploaded only when it is not the one drawn already).
+    pub backdrop: crate::state::Shared<scene::Backdrop>,
+    /// The vertex data of what moves.
     pub geometry: scene::Geometry,
     /// The box to fit the camera to when the scenario changes.
     pub bounds: (DVec3, DVec3),
@@ -40,6 +42,8 @@ pub struct SceneView {
 /// The canvas's mutable state, shared by its event handlers.
 struct ViewState {
     renderer: Option<gl::Renderer>,
+    /// The backdrop in the renderer.
+    backdrop: Option<crate::state::Shared<scene::Backdrop>>,
     camera: Camera,
     pointers: Pointers,
     fitted: Option<(DVec3, DVec3)>,
@@ -146,6 +150,7 @@ pub fn View3d(scene: Memo<Option<Shared<SceneView>>>, handles: Handles) -> impl 
     let error = RwSignal::new(None::<String>);
     let state: State = Rc::new(RefCell::new(ViewState {
         renderer: None,
+        backdrop: None,
         camera: Camera::default(),
         pointers: Pointers::default(),
         fitted: None,
@@ -168,8 +173,14 @@ pub fn View3d(scene: Memo<Option<Shared<SceneView>>>, handles: Handles) -> impl 
             }
         }
         if let Some(view) = view {
+            if s.backdrop.as_ref() != Some(&view.0.backdrop) {
+                if let Some(r) = s.renderer.as_mut() {
+                    r.upload(gl::BACKDROP, &view.0.backdrop.0.geometry);
+                    s.backdrop = Some(view.0.backdrop.clone());
+                }
+            }
             if let Some(r) = s.renderer.as_mut() {
-                r.upload(&view.0.geometry);
+                r.upload(gl::MOVING, &view.0.geometry);
             }
             if s.fitted != Some(view.0.bounds) {
                 s.fitted = Some(view.0.bounds);

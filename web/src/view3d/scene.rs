@@ -171,40 +171,51 @@ pub fn lattice_polylines(s: &Scenario, l: &crate::worker::protocol::LatticeResul
         .collect()
 }
 
-/// The box the scene occupies: base anchors, obstacles, and every named pose's platform.
-pub fn bounds(s: &Scenario) -> (DVec3, DVec3) {
-    let mut min = DVec3::splat(f64::INFINITY);
-    let mut max = DVec3::splat(f64::NEG_INFINITY);
-    let mut add = |p: DVec3| {
-        min = min.min(p);
-        max = max.max(p);
-    };
-    for c in &s.robot.cables {
-        add(dv(&c.base));
-    }
-    for o in &s.obstacles {
-        for p in tessellate::shape(&o.shape).positions {
-            add(p);
+/// What the [`Backdrop`] and the scene's box depend on: the obstacles, the base anchors and the
+/// points the robot reaches at every named pose or configuration (cable ends, link bodies).
+/// Cheap to make and compare, so that a change elsewhere (a trajectory's via point) rebuilds
+/// nothing of the backdrop.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BackdropKey {
+    obstacles: Vec<cablenav::shape::Obstacle>,
+    bases: Vec<DVec3>,
+    reached: Vec<DVec3>,
+}
+
+impl BackdropKey {
+    /// The key of scenario `s`.
+    pub fn of(s: &Scenario) -> BackdropKey {
+        let mut reached = vec![];
+        for (_, pose) in &s.poses {
+            let shown = Shown::Platform(*pose);
+            reached.extend((0..s.robot.cables.len()).map(|i| dv(&shown.cable_end(s, i))));
         }
-    }
-    for (_, pose) in &s.poses {
-        for c in &s.robot.cables {
-            add(dv(&pose.transform(&c.platform)));
-        }
-    }
-    if let Some(chain) = &s.robot.chain {
-        for (_, q) in &s.configs {
-            let shown = Shown::Links(chain.frames(q));
-            for i in 0..s.robot.cables.len() {
-                add(dv(&shown.cable_end(s, i)));
-            }
-            for (link, f) in chain.links.iter().zip(chain.frames(q)) {
-                for b in &link.body {
-                    add(dv(&(f.0 + f.1 * b)));
+        if let Some(chain) = &s.robot.chain {
+            for (_, q) in &s.configs {
+                let frames = chain.frames(q);
+                for (link, f) in chain.links.iter().zip(&frames) {
+                    reached.extend(link.body.iter().map(|b| dv(&(f.0 + f.1 * b))));
                 }
+                let shown = Shown::Links(frames);
+                reached.extend((0..s.robot.cables.len()).map(|i| dv(&shown.cable_end(s, i))));
             }
         }
+        BackdropKey { obstacles: s.obstacles.clone(), bases: s.robot.cables.iter().map(|c| dv(&c.base)).collect(), reached }
     }
+}
+
+/// The box the scene occupies: base anchors, obstacles, and the robot at every named pose or
+/// configuration.
+pub fn bounds(s: &Scenario) -> (DVec3, DVec3) {
+    let key = BackdropKey::of(s);
+    let shapes: Vec<Tris> = key.obstacles.iter().map(|o| tessellate::shape(&o.shape)).collect();
+    box_of(&key, &shapes)
+}
+
+/// The box of a key's points and the obstacles' tessellations `shapes`.
+fn box_of(key: &BackdropKey, shapes: &[Tris]) -> (DVec3, DVec3) {
+    let points = key.bases.iter().chain(&key.reached).chain(shapes.iter().flat_map(|t| &t.positions));
+    let (min, max) = points.fold((DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
     if !min.is_finite() || !max.is_finite() {
         return (DVec3::splat(-1.0), DVec3::splat(1.0));
     }
@@ -291,16 +302,32 @@ pub fn clearance_tubes(s: &Scenario, constraint: &str) -> Vec<(usize, f64)> {
     }
 }
 
-/// Builds the vertex data of a scene.
-pub fn build(input: &SceneInput) -> Geometry {
-    let s = input.scenario;
+/// What does not move while a path, a pose or a plan changes: the ground grid, the world frame,
+/// the base anchors and the obstacles (drawn once per scenario change that touches them, not at
+/// every drag step or planned path), and the box the scene occupies.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Backdrop {
+    /// Its vertex data.
+    pub geometry: Geometry,
+    /// The scene's box ([`bounds`]).
+    pub bounds: (DVec3, DVec3),
+}
+
+/// The scene's size and the thin line radius it implies.
+fn sizes(bounds: (DVec3, DVec3)) -> (f64, f64) {
+    let extent = (bounds.1 - bounds.0).length().max(1e-3);
+    (extent, extent * 0.0025)
+}
+
+/// Builds the backdrop of a scenario from its key (see [`Backdrop`]).
+pub fn backdrop(key: &BackdropKey) -> Backdrop {
     let mut g = Geometry::default();
-    let (min, max) = bounds(s);
-    let extent = (max - min).length().max(1e-3);
-    let thin = extent * 0.0025;
+    let shapes: Vec<Tris> = key.obstacles.iter().map(|o| tessellate::shape(&o.shape)).collect();
+    let (min, max) = box_of(key, &shapes);
+    let (extent, thin) = sizes((min, max));
 
     // ground grid at the lowest base anchor, over the anchors' footprint, 10 lines each way
-    let floor = s.robot.cables.iter().map(|c| c.base.z).fold(f64::INFINITY, f64::min).min(min.z);
+    let floor = key.bases.iter().map(|b| b.z).fold(f64::INFINITY, f64::min).min(min.z);
     for k in 0..=10 {
         let f = k as f64 / 10.0;
         let x = min.x + (max.x - min.x) * f;
@@ -318,11 +345,22 @@ pub fn build(input: &SceneInput) -> Geometry {
     // base anchors
     let a = extent * 0.008;
     let mut anchors = Tris::default();
-    for c in &s.robot.cables {
-        let b = dv(&c.base);
-        tessellate::cuboid(&mut anchors, std::array::from_fn(|i| b + DVec3::new(bit(i, 0), bit(i, 1), bit(i, 2)) * a));
+    for b in &key.bases {
+        tessellate::cuboid(&mut anchors, std::array::from_fn(|i| *b + DVec3::new(bit(i, 0), bit(i, 1), bit(i, 2)) * a));
     }
     push_tris(&mut g.solid, &anchors, ANCHOR);
+    for (k, t) in shapes.iter().enumerate() {
+        push_tris(&mut g.translucent, t, OBSTACLES[k % OBSTACLES.len()]);
+    }
+    Backdrop { geometry: g, bounds: (min, max) }
+}
+
+/// Builds the vertex data of what moves in a scene (drawn over its [`Backdrop`], whose box
+/// `bounds` sizes it): the robot shown, the paths, the lattice and the handles.
+pub fn build(input: &SceneInput, bounds: (DVec3, DVec3)) -> Geometry {
+    let s = input.scenario;
+    let mut g = Geometry::default();
+    let (extent, thin) = sizes(bounds);
 
     if let Some(shown) = &input.shown {
         for (i, c) in s.robot.cables.iter().enumerate() {
@@ -367,10 +405,6 @@ pub fn build(input: &SceneInput) -> Geometry {
         for w in trace.windows(2) {
             line(&mut g.lines, w[0], w[1], piece.colour);
         }
-    }
-
-    for (k, o) in s.obstacles.iter().enumerate() {
-        push_tris(&mut g.translucent, &tessellate::shape(&o.shape), OBSTACLES[k % OBSTACLES.len()]);
     }
 
     // handles: small cubes, the selected one larger and orange, with its drag axis as a line
@@ -509,12 +543,15 @@ mod tests {
         let pieces = section_polylines(&logic::strip(&report), |t| traj.pose_at(t));
         let pose = traj.pose_at(0.3);
         let states = cable_states(&s, &pose);
-        let g = build(&SceneInput { scenario: &s, shown: Some(Shown::Platform(pose)), cables: &states, trajectory: &pieces, paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] });
+        let g = build(&SceneInput { scenario: &s, shown: Some(Shown::Platform(pose)), cables: &states, trajectory: &pieces, paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] }, bounds(&s));
         assert_eq!(g.solid.len() % STRIDE, 0);
         assert_eq!(g.lines.len() % (2 * STRIDE), 0);
-        // the platform box and the three obstacles, translucent
-        let expect: usize = 12 + s.obstacles.iter().map(|o| tessellate::shape(&o.shape).len()).sum::<usize>();
-        assert_eq!(g.translucent.len(), expect * 3 * STRIDE);
+        // the platform box translucent; the three obstacles in the backdrop, translucent too
+        assert_eq!(g.translucent.len(), 12 * 3 * STRIDE);
+        let b = backdrop(&BackdropKey::of(&s));
+        let expect: usize = s.obstacles.iter().map(|o| tessellate::shape(&o.shape).len()).sum::<usize>();
+        assert_eq!(b.geometry.translucent.len(), expect * 3 * STRIDE);
+        assert_eq!(b.bounds, bounds(&s));
         let solid = colours(&g.solid);
         // cable 3 meets the crown at t = 0.3: drawn red, 12 triangles of its tube
         assert!(states[2].interfering);
@@ -522,7 +559,7 @@ mod tests {
         assert!(solid.contains(&GREEN), "the feasible section");
         assert!(!solid.contains(&PATH), "no path given");
         // without a pose: no cables, no platform
-        let bare = build(&SceneInput { scenario: &s, shown: None, cables: &[], trajectory: &[], paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] });
+        let bare = build(&SceneInput { scenario: &s, shown: None, cables: &[], trajectory: &[], paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] }, bounds(&s));
         assert!(bare.solid.len() < g.solid.len());
         assert!(!colours(&bare.solid).contains(&RED));
     }
@@ -540,8 +577,8 @@ mod tests {
         assert_eq!(ray.len(), 2);
         assert_eq!((ray[0].colour, ray[1].colour), (lattice_red(), crate::plots::lattice::rgba(Some(0))));
         assert!((ray[1].poses[0].position.x - 2.0016).abs() < 1e-3 && ray[1].poses[0].position.y == 2.0);
-        let bare = build(&SceneInput { scenario: &s, shown: None, cables: &[], trajectory: &[], paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] });
-        let g = build(&SceneInput { scenario: &s, shown: None, cables: &[], trajectory: &[], paths: &[], lattice: &all, handles: &[], selected: None, axis: None, tubes: &[] });
+        let bare = build(&SceneInput { scenario: &s, shown: None, cables: &[], trajectory: &[], paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] }, bounds(&s));
+        let g = build(&SceneInput { scenario: &s, shown: None, cables: &[], trajectory: &[], paths: &[], lattice: &all, handles: &[], selected: None, axis: None, tubes: &[] }, bounds(&s));
         assert_eq!(g.lines.len() - bare.lines.len(), all.len() * 2 * STRIDE, "a line per position-ray piece");
     }
 
@@ -566,9 +603,9 @@ mod tests {
             assert!((end - (frames[c.link].0 + frames[c.link].1 * c.platform)).norm() < 1e-15);
         }
         let input = |shown| SceneInput { scenario: &s, shown, cables: &states, trajectory: &pieces, paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] };
-        let g = build(&input(Some(shown.clone())));
+        let g = build(&input(Some(shown.clone())), bounds(&s));
         let red = colours(&g.solid).iter().filter(|c| **c == RED).count();
-        let bare = build(&input(None));
+        let bare = build(&input(None), bounds(&s));
         assert_eq!(red - colours(&bare.solid).iter().filter(|c| **c == RED).count(), 2 * 12 * 3, "two red cable tubes of 12 triangles");
         // two link bodies, translucent
         assert!(g.translucent.len() > bare.translucent.len());
@@ -579,6 +616,25 @@ mod tests {
 
     fn lattice_red() -> Rgba {
         crate::plots::lattice::rgba(None)
+    }
+
+    #[test]
+    fn the_backdrop_follows_its_key_only() {
+        let s = scenario("cdpr7-tree");
+        let mut moved = s.clone();
+        // a trajectory's change leaves the key (and so the backdrop) as it was
+        moved.trajectories.pop();
+        assert_eq!(BackdropKey::of(&s), BackdropKey::of(&moved));
+        // an obstacle's, an anchor's or a pose's does not
+        let mut o = s.clone();
+        o.obstacles.pop();
+        assert_ne!(BackdropKey::of(&s), BackdropKey::of(&o));
+        let mut a = s.clone();
+        a.robot.cables[0].base.x += 0.1;
+        assert_ne!(BackdropKey::of(&s), BackdropKey::of(&a));
+        let mut p = s.clone();
+        p.poses[0].1.position.z += 0.1;
+        assert_ne!(BackdropKey::of(&s), BackdropKey::of(&p));
     }
 
     #[test]
