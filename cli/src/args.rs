@@ -170,21 +170,21 @@ pub enum Command {
         /// to FILE, so that `cablenav verify FILE --trajectory NAME` checks it
         #[arg(long, value_name = "FILE")]
         out: Option<String>,
-        /// Chart budget: the planner stops with `budget` after this many charts
-        #[arg(long, value_name = "N", default_value_t = PlanParams::default().max_charts)]
-        max_charts: usize,
-        /// Largest chart radius r (the start chart's)
-        #[arg(long, value_name = "R", value_parser = finite, allow_negative_numbers = true, default_value_t = PlanParams::default().radius)]
-        radius: f64,
-        /// Smallest chart radius the curvature adaptation gives (≥ --radius: every chart has radius r)
-        #[arg(long, value_name = "R", value_parser = finite, allow_negative_numbers = true, default_value_t = PlanParams::default().min_radius)]
-        min_radius: f64,
-        /// Weight w of the search's heuristic, f = g + w·h (1: A*)
-        #[arg(long, value_name = "W", value_parser = finite, allow_negative_numbers = true, default_value_t = PlanParams::default().heuristic_weight)]
-        heuristic_weight: f64,
-        /// Chart validity threshold ε (distance to the parent's tangent space)
-        #[arg(long, value_name = "E", value_parser = finite, allow_negative_numbers = true, default_value_t = PlanParams::default().epsilon)]
-        epsilon: f64,
+        /// Atlas planner: chart budget (it stops with `budget` after this many charts)
+        #[arg(long, value_name = "N", help = format!("Atlas planner: chart budget (it stops with `budget` after this many charts) [default: {}]", PlanParams::default().max_charts))]
+        max_charts: Option<usize>,
+        /// Atlas planner: largest chart radius r (the start chart's)
+        #[arg(long, value_name = "R", value_parser = finite, allow_negative_numbers = true, help = format!("Atlas planner: largest chart radius r (the start chart's) [default: {}]", PlanParams::default().radius))]
+        radius: Option<f64>,
+        /// Atlas planner: smallest chart radius the curvature adaptation gives
+        #[arg(long, value_name = "R", value_parser = finite, allow_negative_numbers = true, help = format!("Atlas planner: smallest chart radius the curvature adaptation gives (≥ --radius: every chart has radius r) [default: {}]", PlanParams::default().min_radius))]
+        min_radius: Option<f64>,
+        /// Atlas planner: weight w of the search's heuristic
+        #[arg(long, value_name = "W", value_parser = finite, allow_negative_numbers = true, help = format!("Atlas planner: weight w of the search's heuristic, f = g + w·h (1: A*) [default: {}]", PlanParams::default().heuristic_weight))]
+        heuristic_weight: Option<f64>,
+        /// Atlas planner: chart validity threshold ε
+        #[arg(long, value_name = "E", value_parser = finite, allow_negative_numbers = true, help = format!("Atlas planner: chart validity threshold ε (distance to the parent's tangent space) [default: {}]", PlanParams::default().epsilon))]
+        epsilon: Option<f64>,
         /// Print the report as JSON
         #[arg(long)]
         json: bool,
@@ -243,7 +243,8 @@ impl Command {
             Command::Plan { scenario, query, planner, steps, out, max_charts, radius, min_radius, heuristic_weight, epsilon, json } => {
                 let planner = PlannerKind::parse(&planner)?;
                 let lattice = choice::lattice_params(planner, steps, "--planner lattice")?;
-                let params = PlanParams { max_charts, radius, min_radius, heuristic_weight, epsilon, ..PlanParams::default() };
+                let atlas = choice::AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon };
+                let params = choice::atlas_params(planner, &atlas, "--planner atlas")?;
                 Ok(Invocation { scenario, request: Request::Plan { query, params, planner, lattice }, json, png: None, out })
             }
             Command::Completions { .. } => Err(cablenav::Error::new("completions", "reads no scenario")),

@@ -227,4 +227,7 @@ fn a_wall_gives_no_path_with_the_resolution() {
     let e = files.cli(&["plan", "robocrane.json", "--query", "q1-q2", "--steps", "9"]).unwrap_err();
     assert_eq!(e.field(), "--steps");
     assert!(e.to_string().ends_with("--steps: is an option of --planner lattice"), "{e}");
+    // the atlas options belong to the atlas planner: refused with the lattice planner, not ignored
+    let e = files.cli(&["plan", "robocrane.json", "--query", "q1-q2", "--planner", "lattice", "--max-charts", "9"]).unwrap_err();
+    assert!(e.to_string().ends_with("--max-charts: is an option of --planner atlas"), "{e}");
 }

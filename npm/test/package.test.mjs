@@ -169,6 +169,9 @@ test('errors are ScenarioErrors naming the field', () => {
   throws(() => cablenav.plan(good, 'q1-q2', undefined, undefined, undefined, 'atlas', 5), 'steps');
   // `steps` belongs to the lattice planner (the core's one check, in JavaScript's words)
   assert.throws(() => cablenav.plan(good, 'q1-q2', undefined, undefined, undefined, undefined, 5), { message: 'steps: is an option of the "lattice" planner' });
+  // and the atlas options to the atlas planner: refused with the lattice planner, not ignored
+  assert.throws(() => cablenav.plan(good, 'q1-q2', 100, undefined, undefined, 'lattice'), { message: 'maxCharts: is an option of the "atlas" planner' });
+  throws(() => cablenav.plan(good, 'q1-q2', undefined, undefined, undefined, 'lattice', undefined, undefined, 2), 'heuristicWeight');
   throws(() => cablenav.lattice(good, 'start', ['x', 'w'], [0, 1, 0, 1], 5), 'axes');
   throws(() => cablenav.lattice(good, 'start', ['x', 'y'], [0, 1, 0, 1], 1), 'steps');
   throws(() => cablenav.lattice(good, 'start', ['x', 'y'], [0, 1, 0, 1], 'many'), 'steps');

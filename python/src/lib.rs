@@ -284,9 +284,10 @@ fn plan(
     heuristic_weight: Option<f64>,
     epsilon: Option<f64>,
 ) -> PyResult<Py<PyAny>> {
-    let params = choice::AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon }.params();
+    let atlas = choice::AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon };
     let request = PlannerKind::parse(planner).and_then(|planner| {
         let lattice = choice::lattice_params(planner, steps, "planner=\"lattice\"")?;
+        let params = choice::atlas_params(planner, &atlas, "planner=\"atlas\"")?;
         Ok(Request::Plan { query, params, planner, lattice })
     });
     call(py, scenario, request)

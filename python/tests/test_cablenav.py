@@ -151,6 +151,10 @@ def test_errors_carry_the_field():
     with pytest.raises(cablenav.ScenarioError) as e:
         cablenav.plan(scenario, "q1-q2", steps=5)
     assert str(e.value) == 'steps: is an option of planner="lattice"'
+    # and the atlas options to the atlas planner: refused with the lattice planner, not ignored
+    with pytest.raises(cablenav.ScenarioError) as e:
+        cablenav.plan(scenario, "q1-q2", planner="lattice", min_radius=0.2)
+    assert str(e.value) == 'min_radius: is an option of planner="atlas"'
     with pytest.raises(cablenav.ScenarioError) as e:
         cablenav.verify(ROOT / "no" / "such.json")
     assert e.value.path == str(ROOT / "no" / "such.json") and "cannot read" in e.value.reason

@@ -104,6 +104,28 @@ pub fn lattice_params(kind: PlannerKind, steps: Option<usize>, lattice: &str) ->
     Ok(LatticeParams { steps: steps.unwrap_or(LatticeParams::default().steps), ..LatticeParams::default() })
 }
 
+/// The atlas planner's parameters for a plan request with planner `kind`: the given `options`
+/// over the defaults. With another planner, any given atlas option is an error at its option
+/// (`--max-charts`, `--radius`, `--min-radius`, `--heuristic-weight`, `--epsilon`; the packages
+/// rename them to their parameters) saying that it "is an option of `atlas`", where `atlas` is how
+/// the caller's users choose the atlas planner: an option that would be ignored is refused, as
+/// [`lattice_params`] refuses `steps`. The one check of the CLI and both packages.
+pub fn atlas_params(kind: PlannerKind, options: &AtlasOptions, atlas: &str) -> Result<PlanParams> {
+    if kind != PlannerKind::Atlas {
+        let given = [
+            ("--max-charts", options.max_charts.is_some()),
+            ("--radius", options.radius.is_some()),
+            ("--min-radius", options.min_radius.is_some()),
+            ("--heuristic-weight", options.heuristic_weight.is_some()),
+            ("--epsilon", options.epsilon.is_some()),
+        ];
+        if let Some((flag, _)) = given.iter().find(|(_, g)| *g) {
+            return Err(Error::new(*flag, format!("is an option of {atlas}")));
+        }
+    }
+    Ok(options.params())
+}
+
 /// Progress of any planner.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Progress {
@@ -254,6 +276,12 @@ mod tests {
         let p = AtlasOptions { min_radius: Some(0.3), heuristic_weight: Some(1.0), ..AtlasOptions::default() }.params();
         assert_eq!((p.min_radius, p.heuristic_weight, p.radius), (0.3, 1.0, PlanParams::default().radius));
         let p = AtlasOptions { max_charts: Some(5), radius: Some(0.5), epsilon: Some(0.2), ..AtlasOptions::default() }.params();
+        // with the lattice planner an atlas option is refused, not ignored
+        let o = AtlasOptions { heuristic_weight: Some(2.0), ..AtlasOptions::default() };
+        let e = atlas_params(PlannerKind::Lattice, &o, "--planner atlas").unwrap_err();
+        assert_eq!((e.field.as_str(), e.reason.as_str()), ("--heuristic-weight", "is an option of --planner atlas"));
+        assert_eq!(atlas_params(PlannerKind::Lattice, &AtlasOptions::default(), "x").unwrap(), PlanParams::default());
+        assert_eq!(atlas_params(PlannerKind::Atlas, &o, "x").unwrap(), o.params());
         assert_eq!((p.max_charts, p.radius, p.epsilon, p.min_radius), (5, 0.5, 0.2, PlanParams::default().min_radius));
     }
 }
