@@ -64,8 +64,8 @@ pub fn chain(raw: &[RawLink]) -> Result<Chain> {
     // parents before children: repeatedly take, in file order, the links whose parent is placed
     let mut order: Vec<usize> = Vec::with_capacity(raw.len());
     while order.len() < raw.len() {
-        for k in 0..raw.len() {
-            if !order.contains(&k) && parent[k].is_none_or(|p| order.contains(&p)) {
+        for (k, p) in parent.iter().enumerate() {
+            if !order.contains(&k) && p.is_none_or(|p| order.contains(&p)) {
                 order.push(k);
             }
         }
