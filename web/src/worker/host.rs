@@ -135,8 +135,12 @@ struct ResidentInner {
     /// The newest job's number: only its replies are passed on.
     current: u32,
     on_reply: Option<Box<dyn FnMut(Reply)>>,
-    handlers: Option<(Closure<dyn FnMut(web_sys::MessageEvent)>, Closure<dyn FnMut(web_sys::Event)>)>,
+    /// The worker's message and error handlers, kept alive with it.
+    handlers: Option<Handlers>,
 }
+
+/// A worker's `onmessage` and `onerror` closures.
+type Handlers = (Closure<dyn FnMut(web_sys::MessageEvent)>, Closure<dyn FnMut(web_sys::Event)>);
 
 impl Drop for ResidentInner {
     fn drop(&mut self) {

@@ -193,12 +193,16 @@ impl From<WireEnvelope> for TensionEnvelope {
     }
 }
 
+/// One clearance sample on the wire: t, the least cable–cable and cable–obstacle distances with
+/// what they are between, and the conditions violated.
+type WireSample = (f64, Option<(f64, String)>, Option<(f64, String)>, Vec<String>);
+
 /// A [`ClearanceProfile`] for the plot (numbers as JSON decimals: within an ulp). Each sample:
 /// t, the least cable–cable and cable–obstacle distances with what they are between, and the
 /// conditions violated.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct WireClearances {
-    samples: Vec<(f64, Option<(f64, String)>, Option<(f64, String)>, Vec<String>)>,
+    samples: Vec<WireSample>,
     clearances: [f64; 2],
     membership_only: Vec<String>,
 }
