@@ -280,3 +280,40 @@ async fn the_page_autosaves_and_puts_the_scenario_in_the_hash() {
     drop(handle);
     storage.remove_item(cablenav_web::persist::STORAGE_KEY).unwrap();
 }
+
+#[wasm_bindgen_test]
+async fn a_multi_link_robot_is_edited_link_by_link() {
+    let m = mount_editor("bmarm-x4-2").await;
+    // links with their joints; no wrench set or poses, but configurations and paths
+    assert_eq!(m.all("[data-testid=\"link\"]"), 2);
+    assert_eq!(m.all("[data-testid=\"link-coordinate\"]"), 4, "alpha, beta, gamma and theta");
+    assert_eq!(m.all("[data-testid=\"configuration\"]"), 4);
+    assert_eq!(m.all("[data-testid=\"path\"]"), 1);
+    assert!(m.root.query_selector("[data-testid=\"multilink-note\"]").unwrap().is_some());
+    assert_eq!(m.input("robot.links[1].name").value(), "Lower Arm");
+    // a joint range and a configuration value are written where the core reads them
+    m.type_into("robot.links[0].joint.range[1][1]", "0.9").await;
+    assert_eq!(m.json()["robot"]["links"][0]["joint"]["range"][1][1], 0.9);
+    m.type_into("configurations.fig312.beta", "0.3").await;
+    assert_eq!(m.json()["configurations"]["fig312"]["beta"], 0.3);
+    assert_eq!(m.q("[data-testid=\"editor-status\"]").class_name(), "status ok");
+    // renaming a link renames the cables that pull it
+    let pulled = |v: &Value, name: &str| v["robot"]["cables"].as_array().unwrap().iter().filter(|c| c["link"] == name).count();
+    let before = pulled(&m.json(), "Lower Arm");
+    assert!(before > 0);
+    m.type_into("robot.links[1].name", "Forearm").await;
+    assert_eq!((pulled(&m.json(), "Forearm"), pulled(&m.json(), "Lower Arm")), (before, 0));
+    assert!(cablenav::Scenario::from_json(&m.source.get_untracked()).is_ok());
+    // a joint type changed: the coordinates follow, in every configuration too
+    m.choose("[data-testid=\"link-1-joint\"]", "prismatic").await;
+    assert_eq!(m.json()["robot"]["links"][1]["joint"]["coordinates"], serde_json::json!(["d"]));
+    assert_eq!(m.json()["configurations"]["above"]["d"], 0);
+    assert_eq!(m.q("[data-testid=\"editor-status\"]").class_name(), "status ok");
+    // a path grows by a step picked from the configurations
+    m.choose("[data-testid=\"path-0-add-step\"]", "initial").await;
+    assert_eq!(m.json()["trajectories"][0]["through"], serde_json::json!(["below", "above", "initial"]));
+    assert_eq!(m.all("[data-testid=\"path-step\"]"), 3);
+    // the cable table says which link each cable pulls
+    let link: HtmlSelectElement = m.q("[data-field=\"robot.cables[4].link\"]").dyn_into().unwrap();
+    assert_eq!(link.value(), "Forearm");
+}

@@ -2,13 +2,15 @@
 //! Leptos here, so all of it is unit-tested natively), one file per part as in `editor/`:
 //! [`path`] (paths into the tree and the core's error field they correspond to), [`numbers`]
 //! (reading and writing numbers), and the per-part edits [`robot`] (cables, with per-cable
-//! arrays kept in step), [`obstacles`], [`poses`], [`trajectories`], [`wrench`] and [`caspr`]
+//! arrays kept in step), [`links`] (a multi-link robot's links, joints, configurations and paths),
+//! [`obstacles`], [`poses`], [`trajectories`], [`wrench`] and [`caspr`]
 //! (templates for new items, conversions done by the core), and [`handles`] (the points the 3-D
 //! view drags). Everything is re-exported here, so
 //! callers write `edit_logic::add_cable`.
 
 pub mod caspr;
 pub mod handles;
+pub mod links;
 pub mod numbers;
 pub mod obstacles;
 pub mod path;
@@ -19,6 +21,7 @@ pub mod wrench;
 
 pub use caspr::*;
 pub use handles::*;
+pub use links::*;
 pub use numbers::*;
 pub use obstacles::*;
 pub use path::*;

@@ -309,6 +309,48 @@ pub fn TextField(ed: Ed, path: Path, #[prop(into)] label: String) -> impl IntoVi
     }
 }
 
+/// A name that other parts refer to (a pose, a link, a joint coordinate, a configuration):
+/// each keystroke renames it through `rename` (which renames the references too); a refused
+/// name (empty, taken) stays in the field with the message `rename` gives.
+#[component]
+pub fn NameField<F>(
+    ed: Ed,
+    /// The current name (tracked).
+    name: Memo<String>,
+    /// Renames in the tree; `Err` is the message for the field.
+    rename: F,
+    #[prop(into)] label: String,
+    /// The core's name of the field (`data-field`).
+    #[prop(into)]
+    field: String,
+) -> impl IntoView
+where
+    F: Fn(&mut Value, &str) -> Result<(), String> + Copy + Send + Sync + 'static,
+{
+    let text = RwSignal::new(name.get_untracked());
+    let local = RwSignal::new(None::<String>);
+    Effect::new(move |_| {
+        let n = name.get();
+        if local.with_untracked(Option::is_none) {
+            text.set(n);
+        }
+    });
+    let on_input = move |ev| {
+        let typed = event_target_value(&ev);
+        text.set(typed.clone());
+        let mut result = Ok(());
+        ed.edit(|d| result = rename(d, &typed));
+        local.set(result.err());
+    };
+    view! {
+        <label class="field text" class:invalid=move || local.with(Option::is_some)>
+            <span class="label">{label}</span>
+            <input type="text" data-field=field prop:value=move || text.get() on:input=on_input />
+            <FieldMessage local core=Signal::derive(|| None::<String>) />
+        </label>
+    }
+}
+
 /// A `<select>` over `options` (value, text) showing `current`, calling `on_pick`.
 #[component]
 pub fn Choice(

@@ -4,7 +4,9 @@
 //! is not written; a value the core rejects is written, and the core's error is shown at the
 //! field it names. One module per part of the editor.
 
+pub mod configs;
 pub mod fields;
+pub mod links;
 pub mod obstacles;
 pub mod poses;
 pub mod robot;
@@ -108,11 +110,13 @@ impl Ed {
     }
 }
 
-/// The whole editor: robot, wrench, obstacles, poses, trajectories.
+/// The whole editor: robot, then wrench, obstacles, poses, trajectories (a multi-link robot:
+/// links, obstacles, configurations, paths).
 #[component]
 pub fn ScenarioEditor(source: RwSignal<String>, origin: RwSignal<&'static str>) -> impl IntoView {
     let ed = Ed::new(source, origin);
     let is_json = move || ed.doc.with(Option::is_some);
+    let chain = Memo::new(move |_| ed.read(el::is_multi_link).unwrap_or(false));
     view! {
         <section class="scenario-editor" data-testid="scenario-editor" aria-label="scenario editor">
             <h2>"Edit the scenario"</h2>
@@ -129,24 +133,61 @@ pub fn ScenarioEditor(source: RwSignal<String>, origin: RwSignal<&'static str>) 
                     <summary>"Robot: cables and bounds"</summary>
                     <robot::RobotEditor ed />
                 </details>
-                <details>
-                    <summary>"Wrench set"</summary>
-                    <wrench::WrenchEditor ed />
-                </details>
-                <details>
-                    <summary>"Obstacles"</summary>
-                    <obstacles::ObstacleEditor ed />
-                </details>
-                <details>
-                    <summary>"Poses"</summary>
-                    <poses::PoseEditor ed />
-                </details>
-                <details>
-                    <summary>"Trajectories"</summary>
-                    <trajectories::TrajectoryEditor ed />
-                </details>
+                <Show when=move || chain.get() fallback=move || view! { <PlatformParts ed /> }>
+                    <MultiLinkParts ed />
+                </Show>
             </Show>
         </section>
+    }
+}
+
+/// A platform robot's parts: wrench set, obstacles, poses, trajectories.
+#[component]
+fn PlatformParts(ed: Ed) -> impl IntoView {
+    view! {
+        <details>
+            <summary>"Wrench set"</summary>
+            <wrench::WrenchEditor ed />
+        </details>
+        <details>
+            <summary>"Obstacles"</summary>
+            <obstacles::ObstacleEditor ed />
+        </details>
+        <details>
+            <summary>"Poses"</summary>
+            <poses::PoseEditor ed />
+        </details>
+        <details>
+            <summary>"Trajectories"</summary>
+            <trajectories::TrajectoryEditor ed />
+        </details>
+    }
+}
+
+/// A multi-link robot's parts (format 3): links, obstacles, configurations, paths. It has no
+/// wrench set or poses (its wrench condition is joint-space wrench closure, always checked).
+#[component]
+fn MultiLinkParts(ed: Ed) -> impl IntoView {
+    view! {
+        <details open>
+            <summary>"Links and joints"</summary>
+            <links::LinksEditor ed />
+        </details>
+        <details>
+            <summary>"Obstacles"</summary>
+            <obstacles::ObstacleEditor ed />
+        </details>
+        <details>
+            <summary>"Configurations"</summary>
+            <configs::ConfigurationsEditor ed />
+        </details>
+        <details>
+            <summary>"Paths through configurations"</summary>
+            <configs::PathsEditor ed />
+        </details>
+        <p class="hint" data-testid="multilink-note">
+            "A multi-link robot has no wrench set or poses: its wrench condition is joint-space wrench closure,              always checked; it is posed by configurations (docs/multilink.md)."
+        </p>
     }
 }
 

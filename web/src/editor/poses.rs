@@ -4,7 +4,7 @@
 use leptos::prelude::*;
 use std::f64::consts::PI;
 
-use super::fields::{options, Choice, FieldMessage, NumField};
+use super::fields::{options, Choice, FieldMessage, NameField, NumField};
 use super::Ed;
 use crate::edit_logic::{self as el, Path, ORIENTATIONS};
 
@@ -97,7 +97,7 @@ fn PoseItem(ed: Ed, i: usize) -> impl IntoView {
     view! {
         <fieldset class="pose" data-testid="pose" class:invalid=move || pose_error.with(Option::is_some)>
             <legend>{move || format!("Pose “{}”", name.get())}</legend>
-            <PoseName ed i name />
+            <NameField ed name rename=move |d: &mut serde_json::Value, new: &str| el::rename_pose(d, i, new) label="Name" field=format!("poses[{i}].name") />
             <fieldset class="position"><legend>"Position (m)"</legend>{position}</fieldset>
             <Choice
                 label="Orientation as"
@@ -117,33 +117,6 @@ fn PoseItem(ed: Ed, i: usize) -> impl IntoView {
                 {move || format!("Delete pose “{}”", name.get())}
             </button>
         </fieldset>
-    }
-}
-
-/// The pose's name; renaming also renames the trajectories' and queries' references to it.
-#[component]
-fn PoseName(ed: Ed, i: usize, name: Memo<String>) -> impl IntoView {
-    let text = RwSignal::new(name.get_untracked());
-    let local = RwSignal::new(None::<String>);
-    Effect::new(move |_| {
-        let n = name.get();
-        if local.with_untracked(Option::is_none) {
-            text.set(n);
-        }
-    });
-    let on_input = move |ev| {
-        let typed = event_target_value(&ev);
-        text.set(typed.clone());
-        let mut result = Ok(());
-        ed.edit(|d| result = el::rename_pose(d, i, &typed));
-        local.set(result.err());
-    };
-    view! {
-        <label class="field text" class:invalid=move || local.with(Option::is_some)>
-            <span class="label">"Name"</span>
-            <input type="text" data-field=format!("poses[{i}].name") prop:value=move || text.get() on:input=on_input />
-            <FieldMessage local core=Signal::derive(|| None::<String>) />
-        </label>
     }
 }
 

@@ -16,17 +16,25 @@ pub fn RobotEditor(ed: Ed) -> impl IntoView {
         let cables = cables.clone();
         move || ed.error_at(&cables, false)
     });
+    let chain = Memo::new(move |_| ed.read(el::is_multi_link).unwrap_or(false));
     view! {
         <TextField ed path=Path::of(&["name"]) label="Scenario name" />
         <table class="cables" data-testid="cable-table">
             <caption>
-                "Cables: base anchor aᵢ (world frame) and platform anchor bᵢ (platform frame), in metres"
+                {move || if chain.get() {
+                    "Cables: base anchor aᵢ (world frame), the link pulled and the point bᵢ on it (that link's frame), in metres"
+                } else {
+                    "Cables: base anchor aᵢ (world frame) and platform anchor bᵢ (platform frame), in metres"
+                }}
             </caption>
             <thead>
                 <tr>
                     <th scope="col">"#"</th>
                     <th scope="col">"base x"</th><th scope="col">"base y"</th><th scope="col">"base z"</th>
-                    <th scope="col">"platform x"</th><th scope="col">"platform y"</th><th scope="col">"platform z"</th>
+                    {move || chain.get().then(|| view! { <th scope="col">"link"</th> })}
+                    <th scope="col">{move || if chain.get() { "on link x" } else { "platform x" }}</th>
+                    <th scope="col">{move || if chain.get() { "on link y" } else { "platform y" }}</th>
+                    <th scope="col">{move || if chain.get() { "on link z" } else { "platform z" }}</th>
                     <th scope="col"><span class="sr-only">"remove"</span></th>
                 </tr>
             </thead>
@@ -47,6 +55,9 @@ pub fn RobotEditor(ed: Ed) -> impl IntoView {
             <NumField ed path=Path::of(&["robot", "diameter"]) label="Cable diameter" unit="m" optional=true />
             <NumField ed path=Path::of(&["clearance", "cable_cable"]) label="Clearance cable–cable" unit="m" optional=true />
             <NumField ed path=Path::of(&["clearance", "cable_obstacle"]) label="Clearance cable–obstacle" unit="m" optional=true />
+            {move || chain.get().then(|| view! {
+                <NumField ed path=Path::of(&["clearance", "cable_link"]) label="Clearance cable–link" unit="m" optional=true />
+            })}
         </div>
     }
 }
@@ -78,6 +89,35 @@ fn CableRow(ed: Ed, i: usize) -> impl IntoView {
         let cable = cable.clone();
         move || ed.error_at(&cable, false)
     });
+    // a multi-link robot's cable names the link it pulls
+    let link_cell = {
+        let path = cable.k("link");
+        move || {
+            ed.read(el::is_multi_link).unwrap_or(false).then(|| {
+                let names = ed.read(el::link_names).unwrap_or_default();
+                let p2 = path.clone();
+                let current = Memo::new({
+                    let p1 = path.clone();
+                    move |_| ed.text(&p1).unwrap_or_default()
+                });
+                view! {
+                    <td>
+                        <select aria-label=format!("cable {} link", i + 1) data-field=format!("robot.cables[{i}].link")
+                            prop:value=move || current.get()
+                            on:change=move |ev| {
+                                let v = event_target_value(&ev);
+                                ed.edit(|d| { el::set(d, &p2, serde_json::json!(v)); })
+                            }>
+                            {names.into_iter().map(|n| {
+                                let (v, sel) = (n.clone(), n.clone());
+                                view! { <option value=v selected=move || current.get() == sel>{n}</option> }
+                            }).collect_view()}
+                        </select>
+                    </td>
+                }
+            })
+        }
+    };
     let cell = move |end: &'static str, axis: usize| {
         let name = ["x", "y", "z"][axis];
         view! {
@@ -90,6 +130,7 @@ fn CableRow(ed: Ed, i: usize) -> impl IntoView {
         <tr data-testid="cable-row" class:invalid=move || row_error.with(Option::is_some)>
             <th scope="row">{i + 1}</th>
             {cell("base", 0)}{cell("base", 1)}{cell("base", 2)}
+            {link_cell}
             {cell("platform", 0)}{cell("platform", 1)}{cell("platform", 2)}
             <td>
                 <button
