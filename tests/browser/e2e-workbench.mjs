@@ -259,7 +259,7 @@ await test('dragging a via point of cdpr7-tree "quadratic" re-verifies as the CL
   await page.screenshot({ path: join(artifacts, 'drag-cdpr7-tree.png') });
   problems.assertNone();
   return `${JSON.stringify(sectionsBefore.map((s) => s.kind[0]).join(''))} → ${want.map((s) => `${s.kind[0]}[${s.t0.toFixed(3)},${s.t1.toFixed(3)}]`).join(' ')}; `
-    + `per update (edit + exact re-verification + scene, wasm): median ${u.median.toFixed(2)} ms, worst ${u.worst.toFixed(2)} ms over ${u.n}; frames while dragging: median ${f.median.toFixed(1)} ms, worst ${f.worst.toFixed(1)} ms over ${f.n}, ${f.dropped} over 25 ms (a dropped frame at 60 Hz; recorded, not asserted): ${frames.map((x) => x.toFixed(0)).join(' ')}`;
+    + `per update on the main thread (edit + scene; the exact verification runs in a worker), wasm: median ${u.median.toFixed(2)} ms, worst ${u.worst.toFixed(2)} ms over ${u.n}; frames while dragging: median ${f.median.toFixed(1)} ms, worst ${f.worst.toFixed(1)} ms over ${f.n}, ${f.dropped} over 25 ms (a dropped frame at 60 Hz; recorded, not asserted): ${frames.map((x) => x.toFixed(0)).join(' ')}`;
 });
 
 await test('undo restores the previous scenario exactly; redo and Reset too', async () => {

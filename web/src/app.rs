@@ -31,7 +31,15 @@ pub fn App() -> impl IntoView {
     crate::persist::keep(source, origin, preset, settings, embed);
 
     let parsed: Memo<Parsed> = Memo::new(move |_| Shared::new(logic::parse_scenario(&source.get())));
-    let verified: Memo<Verified> = Memo::new(move |_| {
+    // during a drag the trajectory is verified in a worker (crate::live) and its reports shown as
+    // they come; at the drag's end (and for any other edit) here
+    let live = crate::live::Live::new(source, trajectory, history.batching);
+    let verified: Memo<Verified> = Memo::new(move |prev: Option<&Verified>| {
+        if history.batching.get() {
+            if let Some(v) = live.report.get().or_else(|| prev.cloned()) {
+                return v;
+            }
+        }
         let parsed = parsed.get();
         Shared::new(match parsed.0.as_ref() {
             Ok(s) => logic::trajectory_index(s, trajectory.get()).map(|i| logic::verify(s, i)),
@@ -55,7 +63,7 @@ pub fn App() -> impl IntoView {
     }
 
     let note = boot.note.map(|n| view! { <p class="error" role="alert">{n}</p> });
-    let page = PageState { parsed, verified, trajectory, planned, source, origin, history, settings };
+    let page = PageState { parsed, verified, live_ms: live.ms, trajectory, planned, source, origin, history, settings };
     view! {
         <header class="topbar" class:embed=embed>
             <div class="title">

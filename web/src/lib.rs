@@ -2,7 +2,7 @@
 //! `app` the page and its top bar, `editor` the scenario editor, `persist` sharing and
 //! autosave, `help` the help panel, `workbench` the analysis area (`view3d` the WebGL view,
 //! `plots` the SVG plots, `planning` the planning controls, `joints` a multi-link robot's joint
-//! sliders), `results` the verdict's strip and
+//! sliders, `live` the verification during a drag), `results` the verdict's strip and
 //! tables, `tabs` the results tabs, `worker` the Web Workers that run planning and slice maps; `logic` and
 //! `edit_logic` hold what they show as plain, natively tested functions. All maths is in the
 //! `cablenav` core crate.
@@ -12,6 +12,7 @@ pub mod edit_logic;
 pub mod editor;
 pub mod help;
 mod joints;
+mod live;
 pub mod logic;
 pub mod persist;
 mod planning;

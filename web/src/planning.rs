@@ -96,7 +96,7 @@ fn apply(reply: Reply, query: &str, ui: Ui) -> bool {
             ui.state.set(RunState::Failed(error));
             true
         }
-        Reply::Sliced { .. } | Reply::LatticeRays { .. } | Reply::Profiles { .. } => {
+        Reply::Sliced { .. } | Reply::LatticeRays { .. } | Reply::Profiles { .. } | Reply::Verified { .. } => {
             ui.state.set(RunState::Failed("the worker answered a planning job with another job's reply".into()));
             true
         }

@@ -369,6 +369,8 @@ pub struct PageState {
     pub parsed: Memo<Parsed>,
     /// The selected trajectory's verification.
     pub verified: Memo<Verified>,
+    /// During a drag, how long the worker took for the latest verification (ms).
+    pub live_ms: RwSignal<Option<f64>>,
     /// The selected trajectory's index.
     pub trajectory: RwSignal<usize>,
     /// The path the planner found for the current scenario, if any.

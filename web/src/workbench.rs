@@ -143,7 +143,7 @@ fn followed<T>(
 /// exports, the view's key).
 #[component]
 pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
-    let PageState { parsed, verified, trajectory, planned, origin, source, history, settings } = page;
+    let PageState { parsed, verified, live_ms, trajectory, planned, origin, source, history, settings } = page;
     let scrub = RwSignal::new(0.0f64);
     let follow = RwSignal::new(Follow::Trajectory);
     let playing = RwSignal::new(false);
@@ -457,7 +457,8 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
             if let Some(text) = text {
                 source.set(text);
                 origin.set("edited");
-                // verify and rebuild the scene now, to time one whole update
+                // rebuild the scene now, to time the main thread's whole update (the exact
+                // verification runs in a worker meanwhile: crate::live)
                 verified.with_untracked(|_| ());
                 scene_view.with_untracked(|_| ());
                 update_ms.set(Some(now_ms() - started));
@@ -592,12 +593,14 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
                         } />
                     " m"
                 </label>
-                <span class="readout" data-testid="handle-readout" data-update-ms=move || update_ms.get().map(|t| format!("{t:.3}")).unwrap_or_default()>
+                <span class="readout" data-testid="handle-readout" data-update-ms=move || update_ms.get().map(|t| format!("{t:.3}")).unwrap_or_default()
+                    data-verify-ms=move || live_ms.get().map(|t| format!("{t:.3}")).unwrap_or_default()>
                     {move || {
                         let at = selected.get().and_then(|i| handle_list.with(|h| h.get(i).map(|h| h.at)));
                         let pos = at.map(|p| format!("at x {} y {} z {} m", fmt_num(p[0]), fmt_num(p[1]), fmt_num(p[2]))).unwrap_or_default();
-                        let t = update_ms.get().map(|t| format!(" · last update {t:.1} ms (edit, exact re-verification, scene)")).unwrap_or_default();
-                        format!("{pos}{t}")
+                        let t = update_ms.get().map(|t| format!(" · last update {t:.1} ms (edit and scene)")).unwrap_or_default();
+                        let v = live_ms.get().map(|t| format!(", exact verification {t:.1} ms in a worker")).unwrap_or_default();
+                        format!("{pos}{t}{v}")
                     }}
                 </span>
             </div>

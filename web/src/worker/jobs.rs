@@ -131,8 +131,19 @@ pub fn run(job: Job, report: &mut dyn FnMut(Reply), now: fn() -> f64) {
             lattice_rays(&scenario, &pose, &axes, ranges, steps, rays, report, now)
         }
         Job::Profiles { scenario, name, samples } => profiles(&scenario, &name, &samples),
+        Job::Verify { scenario, index } => Ok(verify(&scenario, index, now)),
     };
     report(last.unwrap_or_else(|error| Reply::Failed { error }));
+}
+
+/// Trajectory `index` (clamped) of the scenario, verified exactly, timed by `now`.
+fn verify(json: &str, index: usize, now: fn() -> f64) -> Reply {
+    let started = now();
+    let report = scenario(json).and_then(|s| {
+        let i = crate::logic::trajectory_index(&s, index).ok_or("the scenario has no trajectory")?;
+        crate::logic::verify(&s, i)
+    });
+    Reply::Verified { report: report.as_ref().map(WireReport::from).map_err(Clone::clone), ms: now() - started }
 }
 
 fn scenario(json: &str) -> Result<Scenario, String> {
@@ -337,6 +348,24 @@ mod tests {
         let Reply::Planned { status, summary, .. } = plan(9) else { panic!("9 steps") };
         assert_eq!(status, "found", "{summary}");
         assert!(summary.contains("x: 9 values over [0.2, 3.8]"), "{summary}");
+    }
+
+    #[test]
+    fn a_verify_job_gives_the_pages_own_report_bit_for_bit() {
+        let json = PRESETS[find("cdpr7-tree").unwrap()].json;
+        let s = Scenario::from_json(json).unwrap();
+        for (index, want) in [(1, 1), (9, 1), (0, 0)] {
+            let mut replies = vec![];
+            run(Job::Verify { scenario: json.into(), index }, &mut |r| replies.push(r), clock);
+            // through JSON, as the page gets it
+            let text = super::super::protocol::encode_reply(1, replies.last().unwrap());
+            let Some(Ok(envelope)) = super::super::protocol::decode_reply(&text) else { panic!("{text}") };
+            let Reply::Verified { report: Ok(r), .. } = envelope.body else { panic!("{text}") };
+            assert_eq!(r.report(), crate::logic::verify(&s, want).unwrap(), "index {index}: clamped to the last");
+        }
+        let mut replies = vec![];
+        run(Job::Verify { scenario: "{".into(), index: 0 }, &mut |r| replies.push(r), clock);
+        assert!(matches!(&replies[0], Reply::Verified { report: Err(_), .. }), "{replies:?}");
     }
 
     #[test]

@@ -41,6 +41,9 @@ pub enum Job {
     /// The plots along the path `name` at the samples `(t, pose)` (see [`pose_to_wire`]): its
     /// clearances and its tension envelope.
     Profiles { scenario: String, name: String, samples: Vec<(f64, [u64; 7])> },
+    /// The exact verification of trajectory `index` (clamped to the scenario's) of the scenario
+    /// (a drag's live verification, [`crate::live`]).
+    Verify { scenario: String, index: usize },
 }
 
 /// What a worker answers.
@@ -58,6 +61,8 @@ pub enum Reply {
     LatticeRays { rays: [usize; 2], sections: Vec<RaySections> },
     /// The clearances and the tension envelope along a path (each, or why not).
     Profiles { clearances: Result<WireClearances, String>, tension: Result<WireEnvelope, String> },
+    /// A trajectory's exact verification (or why not) and the worker's time for it (ms).
+    Verified { report: Result<WireReport, String>, ms: f64 },
     /// A slice map's rows `rows[0]..rows[1]`: their cells' classes, row-major.
     Sliced { rows: [usize; 2], classes: Vec<Class> },
     /// The job could not run; why.
