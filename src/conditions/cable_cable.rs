@@ -3,7 +3,7 @@
 
 use super::algebra::{hvec_const, HVec};
 use super::primitives::segment_segment;
-use super::{on_undecided, Condition, Kind, PoseCables, PoseCheck, Sweep};
+use super::{on_undecided, Condition, Cost, Kind, PoseCables, PoseCheck, Sweep};
 use crate::poly::Partition;
 use crate::query::segment_segment_dist;
 
@@ -31,9 +31,13 @@ impl Condition for CableCable {
         vec![self.i, self.j]
     }
 
+    fn cost(&self) -> Cost {
+        Cost::Moving
+    }
+
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let (ci, cj) = (&sweep.cables[self.i], &sweep.cables[self.j]);
-        let undecided = ci.tube.undecided_near(&cj.tube, self.clearance);
+        let undecided = ci.tube.undecided_near(&cj.tube, self.clearance, &sweep.settled);
         let r: HVec = hvec_const(&(cj.base - ci.base));
         on_undecided(sweep, &undecided, &[self.i, self.j], |alg, _, s, tol, _| segment_segment(alg, &r, s[0], s[1], self.clearance, tol))
     }

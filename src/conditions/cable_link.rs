@@ -5,7 +5,7 @@
 
 use super::algebra::{HVec, H};
 use super::primitives::{point_segment, segment_segment};
-use super::{on_undecided, Condition, Kind, PoseCables, PoseCheck, Sweep};
+use super::{on_undecided, Condition, Cost, Kind, PoseCables, PoseCheck, Sweep};
 use crate::poly::{Bern, Partition};
 use crate::query::{point_segment_dist2, segment_segment_dist};
 use nalgebra::Vector3;
@@ -38,6 +38,10 @@ impl Condition for CableLink {
 
     fn cables(&self) -> Vec<usize> {
         vec![self.cable]
+    }
+
+    fn cost(&self) -> Cost {
+        Cost::Moving
     }
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {

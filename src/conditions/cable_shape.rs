@@ -7,7 +7,7 @@ use super::algebra::{hvec_const, HVec};
 use super::offset::{cone_near, cylinder_near, ellipsoid_clear};
 use super::primitives::{point_segment, segment_cone, segment_face, segment_segment, ConeSolid};
 use super::tube::Bound;
-use super::{on_undecided, Condition, Kind, PoseCables, PoseCheck, Sweep};
+use super::{on_undecided, Condition, Cost, Kind, PoseCables, PoseCheck, Sweep};
 use crate::poly::{Partition, Truth};
 use crate::query::{
     point_cone_dist, point_cylinder_dist, point_segment_dist2, segment_crosses_triangle, segment_meets_cone, segment_min_convex,
@@ -100,17 +100,17 @@ impl Condition for CableShape {
         vec![self.cable]
     }
 
-    fn costly(&self) -> bool {
+    fn cost(&self) -> Cost {
         match self.geom {
-            Geom::Cylinder { .. } => true,
-            Geom::Cone { .. } | Geom::Ellipsoid { .. } => self.clearance > 0.0,
-            Geom::Mesh { .. } | Geom::Sphere { .. } => false,
+            Geom::Cylinder { .. } => Cost::Search,
+            Geom::Cone { .. } | Geom::Ellipsoid { .. } if self.clearance > 0.0 => Cost::Search,
+            Geom::Cone { .. } | Geom::Ellipsoid { .. } | Geom::Mesh { .. } | Geom::Sphere { .. } => Cost::Fixed,
         }
     }
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let cable = &sweep.cables[self.cable];
-        let undecided = cable.tube.undecided_in(&self.bound);
+        let undecided = cable.tube.undecided_in(&self.bound, &sweep.settled);
         let a = cable.base;
         let c = self.clearance;
         // which mesh edges and faces the tube of the whole motion cannot clear

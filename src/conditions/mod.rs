@@ -71,8 +71,8 @@ pub struct Sweep {
     pub facets: Option<Rc<FacetPolys>>,
     /// Ordered, disjoint λ-intervals where other conditions are already certainly violated (set
     /// by the caller, kept clear of their ends by a margin): a condition may leave itself
-    /// undecided (`Unknown`) there instead of doing exact work whose answer cannot change the
-    /// union, nor the constraints active at its boundaries.
+    /// undecided (`Unknown`) there, without pruning or exact work, since its answer cannot change
+    /// the union, nor the constraints active at its boundaries.
     pub settled: Vec<(f64, f64)>,
 }
 
@@ -252,6 +252,20 @@ pub enum Kind {
     Interference,
 }
 
+/// How much exact work a condition's violation set takes along a motion, cheapest first.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Cost {
+    /// The signs of a few polynomials in λ (cable lengths, tensions, wrench closure).
+    Signs,
+    /// One moving cable against a fixed solid: distances in λ and a point of the cable.
+    Fixed,
+    /// Two moving things (two cables, a cable and a link): products of both motions, higher
+    /// degrees.
+    Moving,
+    /// A search in two variables (cylinders; cones and ellipsoids with a clearance).
+    Search,
+}
+
 /// One feasibility condition.
 pub trait Condition {
     /// How reports name it: `"cables 2-5"`, `"cable 3 - box"`, `"cable 4 length"`.
@@ -263,11 +277,11 @@ pub trait Condition {
     /// The set of λ ∈ [0, 1] where the condition is violated along the sweep's motion.
     fn violation(&self, sweep: &mut Sweep) -> Partition;
 
-    /// Whether [`Condition::violation`] is costly (a search in two variables): the verifier
-    /// evaluates such conditions after the others, so that these may leave the parts of the
-    /// motion the others already settled.
-    fn costly(&self) -> bool {
-        false
+    /// How much exact work [`Condition::violation`] takes: the verifier evaluates the cheaper
+    /// conditions first, so that the costlier ones may leave the parts of the motion already
+    /// settled ([`Sweep::settled`]).
+    fn cost(&self) -> Cost {
+        Cost::Signs
     }
 
     /// The condition at one pose, given the cables there.

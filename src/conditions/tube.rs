@@ -94,16 +94,24 @@ fn hull_ball(c: &[f64], err: &[f64; 4], len: usize) -> Option<Ball> {
     if !(w_min > 2.0 * err[3]) {
         return None;
     }
-    let point = |j: usize| V::new(x[j], x[len + j], x[2 * len + j]) / w[j];
+    // the control points X̂_j / w_j, through the reciprocals (the rounding is far inside `slack`)
+    let mut inv = [0.0; 16];
+    for (i, wj) in inv.iter_mut().zip(w) {
+        *i = 1.0 / wj;
+    }
+    let point = |j: usize| {
+        let i = if j < inv.len() { inv[j] } else { 1.0 / w[j] };
+        V::new(x[j] * i, x[len + j] * i, x[2 * len + j] * i)
+    };
     let centre = (0..len).map(point).sum::<V>() / len as f64;
-    let (mut r, mut mag) = (0.0f64, 0.0f64);
+    let (mut r2, mut mag) = (0.0f64, 0.0f64);
     for j in 0..len {
         let p = point(j);
-        r = r.max((p - centre).norm());
+        r2 = r2.max((p - centre).norm_squared());
         mag = mag.max(p.abs().max());
     }
     let e = (err[0].max(err[1]).max(err[2]) + mag * err[3]) / (w_min - err[3]);
-    Some((centre, r + e + slack(mag)))
+    Some((centre, r2.sqrt() + e + slack(mag)))
 }
 
 /// The λ-interval of dyadic node `k` (heap order).
@@ -197,15 +205,21 @@ impl Tube {
     }
 
     /// The λ-intervals (ordered, disjoint, unions of dyadic pieces down to width 2^−DEPTH) where
-    /// the pruning cannot decide. `margin` gives, for the balls of this tube and of `other` (if
+    /// the pruning cannot decide; a piece inside one of the ordered, disjoint intervals `spare`
+    /// (where the answer is not needed) is left undecided without a test. `margin` gives, for the balls of this tube and of `other` (if
     /// given) on one piece, how far the fixed segments through the balls' centres stay beyond
     /// the gap, and the sum of the radii: the piece is decided when the margin exceeds the radii;
     /// it is halved (smaller balls) only while the margin is positive, since where the centres'
     /// segments themselves come within the gap no refinement can decide.
-    fn undecided(&self, other: Option<&Tube>, margin: &dyn Fn(&Ball, Option<&Ball>) -> (f64, f64)) -> Vec<(f64, f64)> {
+    fn undecided(&self, other: Option<&Tube>, spare: &[(f64, f64)], margin: &dyn Fn(&Ball, Option<&Ball>) -> (f64, f64)) -> Vec<(f64, f64)> {
         let mut out = Vec::new();
         let mut stack = vec![1usize];
         while let Some(k) = stack.pop() {
+            let (a, b) = node_interval(k);
+            if spare.iter().any(|&(c, d)| c <= a && b <= d) {
+                push_interval(&mut out, (a, b));
+                continue;
+            }
             let mine = self.ball_of(k);
             let theirs = other.map(|t| t.ball_of(k));
             let (m, radii) = match (mine, theirs) {
@@ -228,9 +242,9 @@ impl Tube {
     }
 
     /// Where the cable may come within `gap` of the other cable: the λ-intervals the balls could
-    /// not clear (empty when the two stay farther apart throughout).
-    pub fn undecided_near(&self, other: &Tube, gap: f64) -> Vec<(f64, f64)> {
-        self.undecided(Some(other), &|(c, r), theirs| {
+    /// not clear (empty when the two stay farther apart throughout), or that lie inside `spare`.
+    pub fn undecided_near(&self, other: &Tube, gap: f64, spare: &[(f64, f64)]) -> Vec<(f64, f64)> {
+        self.undecided(Some(other), spare, &|(c, r), theirs| {
             let (d, q) = theirs.expect("a ball of the other tube");
             let dist = segment_segment_dist(&self.base, &(c - self.base), &other.base, &(d - other.base));
             (dist - gap - slack(c.abs().max() + d.abs().max()), r + q)
@@ -238,18 +252,13 @@ impl Tube {
     }
 
     /// Where the cable may enter `bound` (already grown by the clearance): the λ-intervals the
-    /// balls could not clear.
-    pub fn undecided_in(&self, bound: &Bound) -> Vec<(f64, f64)> {
-        self.undecided(None, &|(c, r), _| (bound.distance_from(&self.base, &(c - self.base)) - slack(c.abs().max()), *r))
-    }
-
-    /// Whether the cable stays farther than `gap` from the other cable throughout.
-    pub fn clear_of_tube(&self, other: &Tube, gap: f64) -> bool {
-        self.undecided_near(other, gap).is_empty()
+    /// balls could not clear, or that lie inside `spare`.
+    pub fn undecided_in(&self, bound: &Bound, spare: &[(f64, f64)]) -> Vec<(f64, f64)> {
+        self.undecided(None, spare, &|(c, r), _| (bound.distance_from(&self.base, &(c - self.base)) - slack(c.abs().max()), *r))
     }
 
     /// Whether the cable stays outside `bound` (already grown by the clearance) throughout.
     pub fn clear_of(&self, bound: &Bound) -> bool {
-        self.undecided_in(bound).is_empty()
+        self.undecided_in(bound, &[]).is_empty()
     }
 }

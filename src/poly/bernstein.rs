@@ -6,7 +6,25 @@
 //! error of p(x) for every x in [0, 1], and every operation below (all of them convex or
 //! positively-weighted combinations) adds a small, explicitly bounded rounding term.
 
+use smallvec::{smallvec, SmallVec};
 use std::sync::OnceLock;
+
+/// Bernstein coefficients: up to [`INLINE`] of them stored in place (every polynomial of the
+/// presets' verifications), more on the heap.
+pub type Coeffs = SmallVec<[f64; INLINE]>;
+
+/// n zero coefficients.
+fn zeros(n: usize) -> Coeffs {
+    if n <= INLINE {
+        Coeffs::from_buf_and_len([0.0; INLINE], n)
+    } else {
+        smallvec![0.0; n]
+    }
+}
+
+/// Coefficients kept without allocating: degree 24, the products of two cable vectors' cross
+/// products along a quadratic trajectory with a slerp.
+pub const INLINE: usize = 25;
 
 /// Unit roundoff of f64.
 const U: f64 = f64::EPSILON * 0.5;
@@ -45,7 +63,7 @@ pub fn binomial(n: usize, k: usize) -> f64 {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Bern {
     /// Bernstein coefficients c_0 … c_n (never empty).
-    pub c: Vec<f64>,
+    pub c: Coeffs,
     /// Bound on the absolute error of every coefficient.
     pub err: f64,
 }
@@ -57,12 +75,12 @@ fn max_abs(c: &[f64]) -> f64 {
 impl Bern {
     /// The constant `a`, exact.
     pub fn constant(a: f64) -> Bern {
-        Bern { c: vec![a], err: 0.0 }
+        Bern { c: smallvec![a], err: 0.0 }
     }
 
     /// Exact Bernstein coefficients, taken as given.
     pub fn from_bernstein(c: Vec<f64>) -> Bern {
-        let c = if c.is_empty() { vec![0.0] } else { c };
+        let c = if c.is_empty() { smallvec![0.0] } else { Coeffs::from_vec(c) };
         Bern { c, err: 0.0 }
     }
 
@@ -73,7 +91,7 @@ impl Bern {
             return Bern::constant(0.0);
         }
         let n = a.len() - 1;
-        let mut c = vec![0.0; n + 1];
+        let mut c = zeros(n + 1);
         let mut bound = 0.0f64;
         for (k, ck) in c.iter_mut().enumerate() {
             let mut s = 0.0;
@@ -105,7 +123,7 @@ impl Bern {
         if n <= m {
             return self.clone();
         }
-        let mut c = vec![0.0; n + 1];
+        let mut c = zeros(n + 1);
         elevate_into(&self.c, &mut c);
         Bern { c, err: self.err + (m + 4) as f64 * U * self.max_abs() }
     }
@@ -114,7 +132,7 @@ impl Bern {
         let (m, k) = (self.degree(), other.degree());
         let n = m.max(k);
         // Both operands at degree n, the lower one elevated straight into the output buffer.
-        let mut c = vec![0.0; n + 1];
+        let mut c = zeros(n + 1);
         let mut err = self.err + other.err;
         if m < n {
             elevate_into(&self.c, &mut c);
@@ -149,7 +167,8 @@ impl Bern {
 
     /// self · k for a constant k (taken as exact).
     pub fn scale(&self, k: f64) -> Bern {
-        let c: Vec<f64> = self.c.iter().map(|x| x * k).collect();
+        let mut c = self.c.clone();
+        c.iter_mut().for_each(|x| *x *= k);
         Bern { err: self.err * k.abs() + U * max_abs(&c), c }
     }
 
@@ -162,12 +181,13 @@ impl Bern {
         if n == 0 {
             return self.scale_with_err(other.c[0], other.err);
         }
-        let mut c = vec![0.0; m + n + 1];
+        let mut coeffs = zeros(m + n + 1);
+        let c: &mut [f64] = &mut coeffs;
         if m + n <= MAX_DEGREE {
             let (bm, bn, inv) = (&pascal()[m], &pascal()[n], &inverse_pascal()[m + n]);
             for (i, (x, bi)) in self.c.iter().zip(bm).enumerate() {
                 let ai = x * bi;
-                for ((ck, y), bj) in c[i..].iter_mut().zip(&other.c).zip(bn) {
+                for ((ck, y), bj) in c[i..].iter_mut().zip(&other.c[..]).zip(bn) {
                     *ck += ai * (y * bj);
                 }
             }
@@ -178,7 +198,7 @@ impl Bern {
             let (bm, bn, bmn) = (pascal_row(m), pascal_row(n), pascal_row(m + n));
             for (i, (x, bi)) in self.c.iter().zip(&bm).enumerate() {
                 let ai = x * bi;
-                for ((ck, y), bj) in c[i..].iter_mut().zip(&other.c).zip(&bn) {
+                for ((ck, y), bj) in c[i..].iter_mut().zip(&other.c[..]).zip(&bn) {
                     *ck += ai * (y * bj);
                 }
             }
@@ -188,7 +208,7 @@ impl Bern {
         }
         let (ma, mb) = (self.max_abs(), other.max_abs());
         let err = self.err * mb + other.err * ma + self.err * other.err + (m.min(n) + 6) as f64 * U * ma * mb;
-        Bern { c, err }
+        Bern { c: coeffs, err }
     }
 
     fn scale_with_err(&self, k: f64, k_err: f64) -> Bern {
@@ -204,11 +224,11 @@ impl Bern {
         let n = self.degree();
         let row = &pascal_row_ref(n);
         let (r, scale, forward) = if x <= 0.5 { (x / (1.0 - x), (1.0 - x).powi(n as i32), false) } else { ((1.0 - x) / x, x.powi(n as i32), true) };
-        let mut acc = 0.0;
+        let (mut acc, c) = (0.0, &self.c[..]);
         for k in 0..=n {
             // highest power first: c_n (or c_0 when running backwards)
             let j = if forward { k } else { n - k };
-            acc = acc * r + self.c[j] * row.get(j).copied().unwrap_or_else(|| binomial(n, j));
+            acc = acc * r + c[j] * row.get(j).copied().unwrap_or_else(|| binomial(n, j));
         }
         (acc * scale, self.err + (5 * n + 5) as f64 * U * self.max_abs())
     }
@@ -219,13 +239,15 @@ impl Bern {
         // de Casteljau in place in `right`: after level l, right[k] (k ≤ n − l) holds the level-l
         // point k; its first entry is the left half's coefficient l, and right[n − l] is final.
         let mut right = self.c.clone();
-        let mut left = Vec::with_capacity(n + 1);
-        left.push(right[0]);
-        for level in 1..=n {
+        let mut left = zeros(n + 1);
+        // on plain slices: no inline-or-heap check per access
+        let (l, r): (&mut [f64], &mut [f64]) = (&mut left, &mut right);
+        l[0] = r[0];
+        for (level, out) in l.iter_mut().enumerate().skip(1) {
             for k in 0..=(n - level) {
-                right[k] = right[k] * (1.0 - x) + right[k + 1] * x;
+                r[k] = r[k] * (1.0 - x) + r[k + 1] * x;
             }
-            left.push(right[0]);
+            *out = r[0];
         }
         let err = self.err + (2 * n + 2) as f64 * U * self.max_abs();
         (Bern { c: left, err }, Bern { c: right, err })
