@@ -44,9 +44,13 @@ for (const [index, name] of names) {
     const v = await page.getAttribute('[data-testid="handle-readout"]', 'data-verify-ms');
     if (v) verifies.push(Number(v));
   }
+  // the frames while the pointer moves, then (recording on) the release: the page verifies the
+  // final scenario itself and the form, link, address and autosave follow
+  const frames = (await page.evaluate(() => { const f = window.__f; window.__f = []; return f; })).slice(1);
   await page.mouse.up();
-  const frames = (await page.evaluate(() => { window.__on = false; return window.__f; })).slice(1);
-  rows.push({ name, updates, verifies, frames });
+  await page.waitForTimeout(500);
+  const release = await page.evaluate(() => { window.__on = false; return Math.max(...window.__f); });
+  rows.push({ name, updates, verifies, frames, release });
   await page.click('[data-testid="reset-preset"]');
   await page.waitForSelector('section[data-testid="result"][data-origin="cdpr7-tree"]');
 }
@@ -85,11 +89,13 @@ editor's form, the share link, the address and the autosave follow at the end of
 (\`Quiet\` in web/src/state.rs), when the page verifies the final scenario itself. Machine: ${cpus().length} × ${cpus()[0]?.model ?? '?'}, load average
 ${loadavg()[0].toFixed(1)} while measuring (frame times include software WebGL, SwiftShader).
 
-| trajectory | update median | update p90 | update worst | exact verification in the worker: median, p90, worst | frames median | frames p90 | frames over 25 ms (dropped at 60 Hz) | target ≤ ${TARGET_MS} ms per update (median) |
-|---|---|---|---|---|---|---|---|---|
-${rows.map((r) => `| cdpr7-tree "${r.name}" | ${fmt(q(r.updates, 0.5))} ms | ${fmt(q(r.updates, 0.9))} ms | ${fmt(Math.max(...r.updates))} ms | ${r.verifies.length ? `${fmt(q(r.verifies, 0.5))}, ${fmt(q(r.verifies, 0.9))}, ${fmt(Math.max(...r.verifies))} ms` : '—'} | ${fmt(q(r.frames, 0.5))} ms | ${fmt(q(r.frames, 0.9))} ms | ${r.frames.filter((f) => f > 25).length} of ${r.frames.length} | ${q(r.updates, 0.5) <= TARGET_MS ? 'met' : '**missed**'} |`).join('\n')}
-${[['orbiting the view (same pointer moves; redraw only)', orbit], ['no input (2 s)', still]].map(([what, f]) => `| ${what} | — | — | — | — | ${fmt(q(f, 0.5))} ms | ${fmt(q(f, 0.9))} ms | ${f.filter((x) => x > 25).length} of ${f.length} | — |`).join('\n')}
+| trajectory | update median | update p90 | update worst | exact verification in the worker: median, p90, worst | frames median | frames p90 | frames over 25 ms (dropped at 60 Hz) | longest frame at the release | target ≤ ${TARGET_MS} ms per update (median) |
+|---|---|---|---|---|---|---|---|---|---|
+${rows.map((r) => `| cdpr7-tree "${r.name}" | ${fmt(q(r.updates, 0.5))} ms | ${fmt(q(r.updates, 0.9))} ms | ${fmt(Math.max(...r.updates))} ms | ${r.verifies.length ? `${fmt(q(r.verifies, 0.5))}, ${fmt(q(r.verifies, 0.9))}, ${fmt(Math.max(...r.verifies))} ms` : '—'} | ${fmt(q(r.frames, 0.5))} ms | ${fmt(q(r.frames, 0.9))} ms | ${r.frames.filter((f) => f > 25).length} of ${r.frames.length} | ${fmt(r.release)} ms | ${q(r.updates, 0.5) <= TARGET_MS ? 'met' : '**missed**'} |`).join('\n')}
+${[['orbiting the view (same pointer moves; redraw only)', orbit], ['no input (2 s)', still]].map(([what, f]) => `| ${what} | — | — | — | — | ${fmt(q(f, 0.5))} ms | ${fmt(q(f, 0.9))} ms | ${f.filter((x) => x > 25).length} of ${f.length} | — | — |`).join('\n')}
 
-The last two rows are the frames without the page's own work: where they drop as many frames as
-the drags, the drops are the browser's software rendering (SwiftShader draws and reads back the
-canvas on the CPU), not the update.`);
+"Frames" are those while the pointer moves; the release (the page's own final verification, then
+the deferred form, link, address and autosave) is timed apart. The last two rows are the frames
+without the page's own work: where they drop as many frames as the drags, the drops are the
+browser's software rendering (SwiftShader draws and reads back the canvas on the CPU, on the same
+two cores as the page and its worker), not the update.`);
