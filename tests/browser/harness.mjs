@@ -3,7 +3,7 @@
 // common start of an end-to-end test (`begin`), frame recording, and the CLI as a reference.
 
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync } from 'node:fs';
+import { mkdirSync, mkdtempSync } from 'node:fs';
 import { createServer } from 'node:http';
 import { readFileSync, statSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -146,7 +146,7 @@ export async function readSections(scope) {
 }
 
 /** What `cablenav verify FILE --trajectory NAME --json` prints, parsed (the release binary under
- * `root`, built if missing). */
+ * `root`, brought up to date first). */
 export function cliVerify(root, file, trajectory) {
   return cliJson(root, ['verify', file, '--trajectory', trajectory]);
 }
@@ -229,9 +229,17 @@ export function frameStats(xs) {
   return { n: s.length, median: s[Math.floor(s.length / 2)] ?? NaN, worst: s[s.length - 1] ?? NaN, dropped: s.filter((x) => x > 25).length };
 }
 
-/** What `cablenav ARGS…` prints with --json, parsed (the release binary under `root`). */
+/** Whether this process has brought the release CLI up to date. */
+let cliFresh = false;
+
+/** What `cablenav ARGS…` prints with --json, parsed (the release binary under `root`, brought up
+ * to date once per process: a binary left from an older commit would compare the page with
+ * another core). */
 export function cliJson(root, args) {
   const cliPath = join(root, 'target', 'release', 'cablenav');
-  if (!existsSync(cliPath)) execFileSync('cargo', ['build', '--release', '-q', '--bin', 'cablenav'], { cwd: root, stdio: 'inherit' });
+  if (!cliFresh) {
+    execFileSync('cargo', ['build', '--release', '-q', '--bin', 'cablenav'], { cwd: root, stdio: 'inherit' });
+    cliFresh = true;
+  }
   return JSON.parse(execFileSync(cliPath, [...args, '--json'], { cwd: root, encoding: 'utf8' }));
 }
