@@ -50,7 +50,6 @@ impl Bound {
     }
 }
 
-
 /// Deepest level of the dyadic refinement: pieces of width 2^−DEPTH in λ.
 pub const DEPTH: usize = 6;
 
@@ -235,7 +234,7 @@ impl Tube {
             let level = (usize::BITS - 1 - k.leading_zeros()) as usize;
             let levels_left = DEPTH - level;
             if levels_left == 0 || (level >= first_judged && !(m > radii / (1u64 << levels_left) as f64)) {
-                push_interval(&mut out, node_interval(k));
+                push_interval(&mut out, (a, b));
             } else {
                 stack.push(2 * k + 1);
                 stack.push(2 * k);

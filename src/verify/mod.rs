@@ -52,7 +52,8 @@ fn pieces_settling(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[V
         for &k in &order {
             found[k] = conditions[k].violation(&mut sweep);
             union = union.or(&found[k]);
-            if settle {
+            // the union's violated set grows only where this condition is violated
+            if settle && !found[k].is_all(Truth::False) {
                 sweep.settled = settled(&union, SETTLED_MARGIN * tol, neighbours);
             }
         }
