@@ -2,8 +2,8 @@
 //! clearance.
 
 use super::algebra::{hvec_const, HVec};
-use super::primitives::segment_segment;
-use super::{on_undecided, Condition, Cost, Kind, PoseCables, PoseCheck, Sweep};
+use super::primitives::{segment_segment, ALL_ENDS};
+use super::{on_undecided, subtract, Condition, Cost, Kind, PoseCables, PoseCheck, Sweep};
 use crate::poly::Partition;
 use crate::query::segment_segment_dist;
 
@@ -38,8 +38,11 @@ impl Condition for CableCable {
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let (ci, cj) = (&sweep.cables[self.i], &sweep.cables[self.j]);
         let undecided = ci.tube.undecided_near(&cj.tube, self.clearance, &sweep.settled);
+        // which endpoint cases the exact work needs, asked only where there is exact work
+        let work = !subtract(&undecided, &sweep.settled).0.is_empty();
+        let ends = if work { ci.tube.ends_near(&cj.tube, self.clearance, &sweep.settled) } else { ALL_ENDS };
         let r: HVec = hvec_const(&(cj.base - ci.base));
-        on_undecided(sweep, &undecided, &[self.i, self.j], |alg, _, s, tol, _| segment_segment(alg, &r, s[0], s[1], self.clearance, tol))
+        on_undecided(sweep, &undecided, &[self.i, self.j], |alg, _, s, tol, _| segment_segment(alg, &r, s[0], s[1], self.clearance, ends, tol))
     }
 
     fn check(&self, cables: &PoseCables) -> PoseCheck {

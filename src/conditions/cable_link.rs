@@ -4,7 +4,7 @@
 //! motion both segments move, so this is the cable–cable primitive with a moving offset.
 
 use super::algebra::{HVec, H};
-use super::primitives::{point_segment, segment_segment};
+use super::primitives::{point_segment, segment_segment, ALL_ENDS};
 use super::{on_undecided, Condition, Cost, Kind, PoseCables, PoseCheck, Sweep};
 use crate::poly::{Bern, Partition};
 use crate::query::{point_segment_dist2, segment_segment_dist};
@@ -61,7 +61,7 @@ impl Condition for CableLink {
             if point {
                 point_segment(alg, &r, s[0], c, None, tol)
             } else {
-                segment_segment(alg, &r, s[0], &local(&dir), c, tol)
+                segment_segment(alg, &r, s[0], &local(&dir), c, ALL_ENDS, tol)
             }
         })
     }

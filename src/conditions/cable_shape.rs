@@ -5,7 +5,7 @@
 
 use super::algebra::{hvec_const, HVec};
 use super::offset::{cone_near, cylinder_near, ellipsoid_clear};
-use super::primitives::{point_segment, segment_cone, segment_face, segment_segment, ConeSolid};
+use super::primitives::{point_segment, segment_cone, segment_face, segment_segment, ConeSolid, ALL_ENDS};
 use super::tube::Bound;
 use super::{on_undecided, Condition, Cost, Kind, PoseCables, PoseCheck, Sweep};
 use crate::poly::{Partition, Truth};
@@ -132,7 +132,7 @@ impl Condition for CableShape {
                         }
                         let r: HVec = hvec_const(&(p - a));
                         let t: HVec = hvec_const(&(q - p));
-                        acc = acc.or(&segment_segment(alg, &r, s, &t, c, tol));
+                        acc = acc.or(&segment_segment(alg, &r, s, &t, c, ALL_ENDS, tol));
                     }
                     for ((tri, _), _) in faces.iter().zip(&near[edges.len()..]).filter(|(_, &n)| n) {
                         if acc.is_all(Truth::True) {

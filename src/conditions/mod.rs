@@ -85,25 +85,23 @@ impl Sweep {
     /// Prepares the cables of `robot` along its links' motions `links` (one per link, with a
     /// common weight and parameter; one for a platform robot).
     pub fn of_links(robot: &Robot, links: &[Motion], tol: f64) -> Sweep {
+        // each row's polynomials raised once to the row's common degree (at least w's), so that
+        // each cable's vectors are plain linear combinations of coefficients
         let w = &links[0].weight;
-        let cables = robot
-            .cables
-            .iter()
-            .map(|cable| {
-                let motion = &links[cable.link];
-                // X̂ = P̂ + M̂ b (one power of w); s = X̂ − a·w
-                let tip: [crate::poly::Bern; 3] = [0, 1, 2].map(|i| {
-                    let mut acc = motion.position[i].clone();
-                    for j in 0..3 {
-                        acc = acc.add(&motion.rotation[i][j].scale(cable.platform[j]));
-                    }
-                    acc
-                });
-                let s: HVec = [0, 1, 2].map(|i| algebra::H { p: tip[i].sub(&w.scale(cable.base[i])), k: 1 });
-                let tube = Tube::new(cable.base, &tip, w);
-                SweptCable { base: cable.base, s, tube }
-            })
-            .collect();
+        let row_degree = |i: usize| links.iter().flat_map(|m| m.rotation[i].iter().chain([&m.position[i]])).map(Bern::degree).fold(w.degree(), usize::max);
+        let n = [row_degree(0), row_degree(1), row_degree(2)];
+        let lifted: Vec<([Bern; 3], [[Bern; 3]; 3])> = links.iter().map(|m| ([0, 1, 2].map(|i| m.position[i].elevate(n[i])), [0, 1, 2].map(|i| m.rotation[i].each_ref().map(|p| p.elevate(n[i]))))).collect();
+        let w_at = n.map(|d| w.elevate(d));
+        let mut cables = Vec::with_capacity(robot.cables.len());
+        for cable in &robot.cables {
+            let (position, rotation) = &lifted[cable.link];
+            let b = cable.platform;
+            // X̂ = P̂ + M̂ b (one power of w); s = X̂ − a·w
+            let tip: [Bern; 3] = [0, 1, 2].map(|i| Bern::linear_combination(&[(&position[i], 1.0), (&rotation[i][0], b[0]), (&rotation[i][1], b[1]), (&rotation[i][2], b[2])]));
+            let s: HVec = [0, 1, 2].map(|i| algebra::H { p: Bern::linear_combination(&[(&tip[i], 1.0), (&w_at[i], -cable.base[i])]), k: 1 });
+            let tube = Tube::new(cable.base, &tip, w);
+            cables.push(SweptCable { base: cable.base, s, tube });
+        }
         Sweep { alg: Alg::new(w), cables, tol, links: links.to_vec(), tension: None, facets: None, settled: Vec::new() }
     }
 

@@ -78,39 +78,50 @@ pub fn point_segment(alg: &mut Alg, e: &HVec, s: &HVec, r: f64, g: Option<&Matri
     )
 }
 
+/// Which of the four endpoint cases of [`segment_segment`] may hold somewhere, in its order: the
+/// second segment's start within the distance of the first segment, the first's start of the
+/// second, the second's end of the first, the first's end of the second.
+pub type EndCases = [bool; 4];
+
+/// Every endpoint case examined.
+pub const ALL_ENDS: EndCases = [true; 4];
+
 /// Where the segments a_i + u·s_i and a_i + r + v·s_j (u, v ∈ [0, 1]) come closer than `c`.
 /// `r` is the offset between the two starts. Exact: the closest pair is interior to both (the
 /// common perpendicular) or has an endpoint on one of them. When the two lines are parallel
 /// throughout (|s_i × s_j|² zero within its error bound) the interior case cannot give the
-/// minimum and is skipped.
-pub fn segment_segment(alg: &mut Alg, r: &HVec, si: &HVec, sj: &HVec, c: f64, tol: f64) -> Partition {
+/// minimum and is skipped. `ends` says which endpoint cases may hold somewhere (see
+/// [`EndCases`]); one known false everywhere is skipped.
+pub fn segment_segment(alg: &mut Alg, r: &HVec, si: &HVec, sj: &HVec, c: f64, ends: EndCases, tol: f64) -> Partition {
     if c <= 0.0 {
         return Partition::constant(Truth::False); // no distance is below 0
     }
     let neg_r: HVec = [r[0].scale(-1.0), r[1].scale(-1.0), r[2].scale(-1.0)];
+    let never = || Partition::constant(Truth::False);
     any_of!(
-        point_segment(alg, r, si, c, None, tol),
-        point_segment(alg, &neg_r, sj, c, None, tol),
-        { let e = alg.vadd(r, sj); point_segment(alg, &e, si, c, None, tol) },
-        { let e = alg.vsub(si, r); point_segment(alg, &e, sj, c, None, tol) },
+        if ends[0] { point_segment(alg, r, si, c, None, tol) } else { never() },
+        if ends[1] { point_segment(alg, &neg_r, sj, c, None, tol) } else { never() },
+        if ends[2] { let e = alg.vadd(r, sj); point_segment(alg, &e, si, c, None, tol) } else { never() },
+        if ends[3] { let e = alg.vsub(si, r); point_segment(alg, &e, sj, c, None, tol) } else { never() },
         {
             let n = alg.cross(si, sj);
             let d = alg.dot(&n, &n);
             if d.p.max_abs() <= d.p.err {
                 Partition::constant(Truth::False)
             } else {
-                let rsj = alg.cross(r, sj);
-                let u = alg.dot(&rsj, &n);
-                let rsi = alg.cross(r, si);
-                let v = alg.dot(&rsi, &n);
-                all_of!(tol;
-                    d.clone() => GT,
-                    u.clone() => GT,
-                    alg.sub(&d, &u) => GT,
-                    v.clone() => GT,
-                    alg.sub(&d, &v) => GT,
-                    { let rn = alg.dot(r, &n); alg.sub(&rn.mul(&rn), &d.scale(c * c)) } => LT,
-                )
+                // the lines' distance first (it implies d > 0, and usually decides alone), then
+                // the feet u/d and v/d of the common perpendicular inside both segments
+                let line = all_of!(tol; { let rn = alg.dot(r, &n); alg.sub(&rn.mul(&rn), &d.scale(c * c)) } => LT);
+                let foot = |alg: &mut Alg, acc: Partition, s: &HVec| {
+                    if acc.is_all(Truth::False) {
+                        return acc;
+                    }
+                    let rs = alg.cross(r, s);
+                    let u = alg.dot(&rs, &n);
+                    acc.and(&all_of!(tol; u.clone() => GT, alg.sub(&d, &u) => GT))
+                };
+                let on_i = foot(alg, line, sj);
+                foot(alg, on_i, si)
             }
         },
     )

@@ -8,9 +8,12 @@
 //! ball or capsule around an obstacle, exceeds the clearance plus the radii on every piece, the
 //! condition cannot be violated anywhere and is decided without polynomials.
 
+use super::primitives::EndCases;
+use super::subtract;
 use crate::poly::Bern;
 use crate::query::{point_segment_dist2, segment_segment_dist};
 use nalgebra::Vector3;
+use std::borrow::Cow;
 use std::cell::RefCell;
 
 type V = Vector3<f64>;
@@ -176,7 +179,7 @@ impl Tube {
     /// The tube of the cable from `base` to X̂/w.
     pub fn new(base: V, tip: &[Bern; 3], w: &Bern) -> Tube {
         let n = tip.iter().map(Bern::degree).max().unwrap_or(0).max(w.degree());
-        let polys = [tip[0].elevate(n), tip[1].elevate(n), tip[2].elevate(n), w.elevate(n)];
+        let polys = [&tip[0], &tip[1], &tip[2], w].map(|p| if p.degree() == n { Cow::Borrowed(p) } else { Cow::Owned(p.elevate(n)) });
         let nodes = 2 << DEPTH;
         let mut coeffs = Vec::with_capacity(nodes * 4 * (n + 1));
         coeffs.extend(polys.iter().flat_map(|p| p.c.iter().copied()));
@@ -233,7 +236,9 @@ impl Tube {
             }
             let level = (usize::BITS - 1 - k.leading_zeros()) as usize;
             let levels_left = DEPTH - level;
-            if levels_left == 0 || (level >= first_judged && !(m > radii / (1u64 << levels_left) as f64)) {
+            // a piece partly spared is halved regardless: its ball says little about the rest
+            let partly_spared = spare.iter().any(|&(c, d)| c < b && a < d);
+            if levels_left == 0 || (level >= first_judged && !partly_spared && !(m > radii / (1u64 << levels_left) as f64)) {
                 push_interval(&mut out, (a, b));
             } else {
                 stack.push(2 * k + 1);
@@ -251,6 +256,30 @@ impl Tube {
             let dist = segment_segment_dist(&self.base, &(c - self.base), &other.base, &(d - other.base));
             (dist - gap - slack(c.abs().max() + d.abs().max()), r + q)
         })
+    }
+
+    /// Which endpoint cases of the distance between this cable and `other` (in the order of
+    /// [`EndCases`], this cable first) may come within `gap` outside `spare`: each case is a
+    /// point (a base, or a moving end in its ball) against the other cable's segment, so its
+    /// pruning clears it wherever that point stays away, even where the segments come close.
+    pub fn ends_near(&self, other: &Tube, gap: f64, spare: &[(f64, f64)]) -> EndCases {
+        let (a, b) = (self.base, other.base);
+        // the distance from point p to the segment a → c
+        let dist = |p: &V, a: &V, c: &V| point_segment_dist2(p, a, &(c - a), None).sqrt();
+        let case = |margin: &dyn Fn(&V, f64, &V, f64) -> (f64, f64)| {
+            let undecided = self.undecided(Some(other), spare, 0, &|(c, r), theirs| {
+                let (d, q) = theirs.expect("a ball of the other tube");
+                let (m, radii) = margin(c, *r, d, *q);
+                (m - gap - slack(c.abs().max() + d.abs().max()), radii)
+            });
+            !subtract(&undecided, spare).0.is_empty()
+        };
+        [
+            case(&|c, r, _, _| (dist(&b, &a, c), r)),
+            case(&|_, _, d, q| (dist(&a, &b, d), q)),
+            case(&|c, r, d, q| (dist(d, &a, c), r + q)),
+            case(&|c, r, d, q| (dist(c, &b, d), r + q)),
+        ]
     }
 
     /// Where the cable may enter `bound` (already grown by the clearance): the λ-intervals the

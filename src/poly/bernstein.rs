@@ -211,6 +211,37 @@ impl Bern {
         Bern { c: coeffs, err }
     }
 
+    /// Σ k_i · p_i for constants k_i (taken as exact), at the largest degree among the p_i, in
+    /// one pass: no intermediate polynomial, and only terms of a lower degree are elevated. The
+    /// rounding of each coefficient, a sum of m products, is within γ_m ≤ (m + 1)u of the sum of
+    /// the products' magnitudes. An empty sum is the constant 0.
+    pub fn linear_combination(terms: &[(&Bern, f64)]) -> Bern {
+        let n = terms.iter().map(|(p, _)| p.degree()).max().unwrap_or(0);
+        let mut c = zeros(n + 1);
+        let mut mag = zeros(n + 1);
+        let mut err = 0.0;
+        let mut lifted = Coeffs::new();
+        for &(p, k) in terms {
+            let coeffs: &[f64] = if p.degree() == n {
+                &p.c
+            } else {
+                lifted.clear();
+                lifted.resize(n + 1, 0.0);
+                elevate_into(&p.c, &mut lifted);
+                err += k.abs() * (p.degree() + 4) as f64 * U * p.max_abs();
+                &lifted
+            };
+            for ((z, m), x) in c.iter_mut().zip(mag.iter_mut()).zip(coeffs) {
+                let t = k * x;
+                *z += t;
+                *m += t.abs();
+            }
+            err += k.abs() * p.err;
+        }
+        let err = err + (terms.len() + 1) as f64 * U * max_abs(&mag);
+        Bern { c, err }
+    }
+
     fn scale_with_err(&self, k: f64, k_err: f64) -> Bern {
         let mut r = self.scale(k);
         r.err += k_err * (self.max_abs() + self.err);
@@ -363,6 +394,21 @@ mod tests {
             let x = i as f64 / 10.0;
             assert!((q.eval(x).0 - p.eval(0.25 + 0.5 * x).0).abs() < 1e-13);
         }
+    }
+
+    #[test]
+    fn linear_combination_matches_its_terms() {
+        let (p, q, r) = (Bern::from_monomial(&[1.0, 2.0, -3.0]), Bern::from_monomial(&[0.5, -1.0, 0.25, 4.0]), Bern::constant(-0.7));
+        let sum = Bern::linear_combination(&[(&p, 2.0), (&q, -0.3), (&r, 1.5)]);
+        assert_eq!(sum.degree(), 3);
+        for i in 0..=10 {
+            let x = i as f64 / 10.0;
+            let want = 2.0 * p.eval(x).0 - 0.3 * q.eval(x).0 + 1.5 * r.eval(x).0;
+            let (v, e) = sum.eval(x);
+            assert!((v - want).abs() <= e + 1e-15, "at {x}: {v} vs {want} (err {e})");
+        }
+        assert!(sum.err > 0.0 && sum.err < 1e-13, "{}", sum.err);
+        assert_eq!(Bern::linear_combination(&[]).c[..], [0.0]);
     }
 
     #[test]
