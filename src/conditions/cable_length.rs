@@ -2,7 +2,7 @@
 
 use super::algebra::H;
 use super::primitives::{all_of, any_of, GT, LT};
-use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
+use super::{on_undecided, Condition, Kind, PoseCables, PoseCheck, Sweep};
 use crate::model::Bounds;
 use crate::poly::{Partition, Truth};
 
@@ -29,15 +29,15 @@ impl Condition for CableLength {
     }
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
-        let Sweep { alg, cables, tol, .. } = sweep;
-        let tol = *tol;
-        let s = &cables[self.cable].s;
-        let ss = alg.dot(s, s);
         let (lo, hi) = (self.bounds.min, self.bounds.max);
-        any_of!(
-            if lo > 0.0 { all_of!(tol; alg.sub(&ss, &H::constant(lo * lo)) => LT) } else { Partition::constant(Truth::False) },
-            if hi.is_finite() { all_of!(tol; alg.sub(&ss, &H::constant(hi * hi)) => GT) } else { Partition::constant(Truth::False) },
-        )
+        let undecided = sweep.cables[self.cable].tube.undecided_length(lo, hi, &sweep.settled);
+        on_undecided(sweep, &undecided, &[self.cable], |alg, _, s, tol, _| {
+            let ss = alg.dot(s[0], s[0]);
+            any_of!(
+                if lo > 0.0 { all_of!(tol; alg.sub(&ss, &H::constant(lo * lo)) => LT) } else { Partition::constant(Truth::False) },
+                if hi.is_finite() { all_of!(tol; alg.sub(&ss, &H::constant(hi * hi)) => GT) } else { Partition::constant(Truth::False) },
+            )
+        })
     }
 
     fn check(&self, cables: &PoseCables) -> PoseCheck {

@@ -15,14 +15,15 @@ pub const GT: bool = true;
 pub const LT: bool = false;
 
 /// Conjunction of sign conditions, evaluated lazily: once the conjunction is false everywhere the
-/// remaining polynomials are not even built.
+/// remaining polynomials are not even built, and each sign is classified only where the
+/// conditions before it are not already false.
 macro_rules! all_of {
     ($tol:expr; $($poly:expr => $side:expr),+ $(,)?) => {{
         let mut acc = Partition::constant(Truth::True);
         $(
             if !acc.is_all(Truth::False) {
                 let h: H = $poly;
-                acc = acc.and(&Partition::atom(&h.p, $side, $tol));
+                acc = acc.and(&Partition::atom_outside(&h.p, $side, $tol, &acc.where_is(Truth::False)));
             }
         )+
         acc

@@ -293,6 +293,17 @@ impl Tube {
         self.undecided(None, spare, 1, &|(c, r), _| (bound.distance_from(&self.base, &(c - self.base)) - slack(c.abs().max()), *r))
     }
 
+    /// Where the cable's length may leave [lo, hi]: the λ-intervals the balls could not keep
+    /// inside (the length lies within the ball's radius of the base's distance to its centre), or
+    /// that lie inside `spare`. A bound ≤ 0 below or infinite above never binds.
+    pub fn undecided_length(&self, lo: f64, hi: f64, spare: &[(f64, f64)]) -> Vec<(f64, f64)> {
+        self.undecided(None, spare, 1, &|(c, r), _| {
+            let dist = (c - self.base).norm();
+            let below = if lo > 0.0 { dist - lo } else { f64::INFINITY };
+            (below.min(hi - dist) - slack(c.abs().max() + self.base.abs().max()), *r)
+        })
+    }
+
     /// Whether the cable stays outside `bound` (already grown by the clearance) throughout.
     pub fn clear_of(&self, bound: &Bound) -> bool {
         self.undecided_in(bound, &[]).is_empty()

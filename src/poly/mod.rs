@@ -13,4 +13,4 @@ mod signs;
 
 pub use bernstein::{binomial, Bern};
 pub use partition::{Partition, Truth};
-pub use signs::{sign_pieces, Sign};
+pub use signs::{sign_pieces, sign_pieces_outside, Sign};

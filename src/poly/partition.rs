@@ -1,6 +1,6 @@
 //! Three-valued truth over [0, 1], piecewise constant: the sets the conditions describe.
 
-use super::{sign_pieces, Bern, Sign};
+use super::{sign_pieces_outside, Bern, Sign};
 
 /// Truth of a statement on a piece of [0, 1].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -47,7 +47,14 @@ impl Partition {
 
     /// Where `p > 0` (`positive`) or `p < 0` (otherwise), certified to `tol`.
     pub fn atom(p: &Bern, positive: bool, tol: f64) -> Partition {
-        let pieces = sign_pieces(p, tol)
+        Partition::atom_outside(p, positive, tol, &[])
+    }
+
+    /// [`Partition::atom`], except that pieces inside one of the ordered, disjoint intervals
+    /// `skip` may be left Unknown without work (see [`sign_pieces_outside`]): for an atom whose
+    /// truth does not matter there, such as one conjoined with something false there.
+    pub fn atom_outside(p: &Bern, positive: bool, tol: f64, skip: &[(f64, f64)]) -> Partition {
+        let pieces = sign_pieces_outside(p, tol, skip)
             .into_iter()
             .map(|(end, s)| {
                 let t = match (s, positive) {
@@ -149,6 +156,11 @@ impl Partition {
             Truth::Unknown => Truth::Unknown,
         };
         Partition { pieces: self.pieces.iter().map(|&(end, t)| (end, flip(t))).collect() }
+    }
+
+    /// The intervals (ordered, disjoint, closed) where the truth is `t`.
+    pub fn where_is(&self, t: Truth) -> Vec<(f64, f64)> {
+        self.intervals().into_iter().filter(|p| p.2 == t).map(|(a, b, _)| (a, b)).collect()
     }
 
     /// Whether the truth is `t` on all of [0, 1].

@@ -28,13 +28,35 @@ const MAX_NODES: usize = 20_000;
 /// starting at 0, the last ending at 1. Unknown pieces are at most `tol` wide where certification
 /// succeeds.
 pub fn sign_pieces(p: &Bern, tol: f64) -> Vec<(f64, Sign)> {
+    sign_pieces_outside(p, tol, &[])
+}
+
+/// [`sign_pieces`], except that a piece inside one of the ordered, disjoint intervals `skip`
+/// (where the caller does not need the sign) may be reported Unknown without being examined, and
+/// a root is not refined once its bracket lies inside one: never more work than without `skip`.
+pub fn sign_pieces_outside(p: &Bern, tol: f64, skip: &[(f64, f64)]) -> Vec<(f64, Sign)> {
     if p.is_exact_zero() {
         return vec![(1.0, Sign::Zero)];
     }
     let mut out: Vec<(f64, Sign)> = Vec::new();
     let mut budget = MAX_NODES;
-    recurse(p, 0.0, 1.0, tol, &mut budget, &mut out);
+    recurse(p, 0.0, 1.0, &Limits { tol, skip }, &mut budget, &mut out);
     out
+}
+
+/// What bounds the work of one sign classification besides its node budget.
+struct Limits<'a> {
+    /// Width below which a piece is reported Unknown.
+    tol: f64,
+    /// Where the sign is not needed (see [`sign_pieces_outside`]).
+    skip: &'a [(f64, f64)],
+}
+
+impl Limits<'_> {
+    /// Whether [lo, hi] lies inside a skipped interval.
+    fn skipped(&self, lo: f64, hi: f64) -> bool {
+        self.skip.iter().any(|&(a, b)| a <= lo && hi <= b)
+    }
 }
 
 fn push(out: &mut Vec<(f64, Sign)>, end: f64, s: Sign) {
@@ -77,7 +99,11 @@ fn single_crossing(p: &Bern) -> bool {
     true
 }
 
-fn recurse(p: &Bern, lo: f64, hi: f64, tol: f64, budget: &mut usize, out: &mut Vec<(f64, Sign)>) {
+fn recurse(p: &Bern, lo: f64, hi: f64, limits: &Limits, budget: &mut usize, out: &mut Vec<(f64, Sign)>) {
+    let tol = limits.tol;
+    if limits.skipped(lo, hi) {
+        return push(out, hi, Sign::Unknown);
+    }
     if p.c.iter().all(|&c| c > p.err) {
         return push(out, hi, Sign::Pos);
     }
@@ -90,18 +116,20 @@ fn recurse(p: &Bern, lo: f64, hi: f64, tol: f64, budget: &mut usize, out: &mut V
     }
     *budget -= 1;
     if single_crossing(p) {
-        return bisect_root(p, lo, hi, tol, sign_of(p.c[0], p.err), out);
+        return bisect_root(p, lo, hi, limits, sign_of(p.c[0], p.err), out);
     }
     let (left, right) = p.split(0.5);
     let mid = 0.5 * (lo + hi);
-    recurse(&left, lo, mid, tol, budget, out);
-    recurse(&right, mid, hi, tol, budget, out);
+    recurse(&left, lo, mid, limits, budget, out);
+    recurse(&right, mid, hi, limits, budget, out);
 }
 
 /// Locates the single simple root of `p` on [lo, hi] (local parameter 0…1) on certified values:
 /// Illinois false position, with a bisection step every third iteration so the bracket always
-/// shrinks. Emits sign `s0` before the root, Unknown around it, −s0 after.
-fn bisect_root(p: &Bern, lo: f64, hi: f64, tol: f64, s0: i8, out: &mut Vec<(f64, Sign)>) {
+/// shrinks, until the bracket is narrower than the tolerance or lies inside a skipped interval.
+/// Emits sign `s0` before the root, Unknown around it, −s0 after.
+fn bisect_root(p: &Bern, lo: f64, hi: f64, limits: &Limits, s0: i8, out: &mut Vec<(f64, Sign)>) {
+    let tol = limits.tol;
     let sign_at = |x: f64| -> (i8, f64) {
         let (v, e) = p.eval(x);
         (if v > e { 1 } else if v < -e { -1 } else { 0 }, v)
@@ -111,7 +139,7 @@ fn bisect_root(p: &Bern, lo: f64, hi: f64, tol: f64, s0: i8, out: &mut Vec<(f64,
     let (mut fa, mut fb) = (p.c[0], p.c[p.degree()]);
     let mut last_side = 0i8;
     let mut step = 0usize;
-    while (b - a) * width > tol && step < 200 {
+    while (b - a) * width > tol && step < 200 && !limits.skipped(lo + a * width, lo + b * width) {
         step += 1;
         let secant = (a * fb - b * fa) / (fb - fa);
         let m = if step.is_multiple_of(3) || !(secant > a && secant < b) { 0.5 * (a + b) } else { secant };
@@ -195,6 +223,32 @@ mod tests {
     fn certifies_constant_signs_and_zero() {
         assert_eq!(sign_pieces(&Bern::from_monomial(&[1.0, -1.0, 1.0]), 1e-12), vec![(1.0, Sign::Pos)]);
         assert_eq!(sign_pieces(&Bern::constant(0.0), 1e-12), vec![(1.0, Sign::Zero)]);
+    }
+
+    #[test]
+    fn skipped_intervals_are_left_unknown_and_the_rest_kept() {
+        // (x − 0.2)(x − 0.5)(x − 0.9), the sign not needed on [0.4, 0.6]
+        let p = Bern::from_monomial(&[-0.09, 0.73, -1.6, 1.0]);
+        let full = sign_pieces(&p, 1e-12);
+        let pieces = sign_pieces_outside(&p, 1e-12, &[(0.4, 0.6)]);
+        let roots = roots_of(&pieces);
+        // the roots outside the skipped interval are isolated as before; the middle one is not
+        // refined: its Unknown piece stays inside [0.4, 0.6] and is wider than the tolerance
+        assert_eq!(roots.len(), 3, "{pieces:?}");
+        assert_eq!((roots[0], roots[2]), (roots_of(&full)[0], roots_of(&full)[2]));
+        assert!(roots[1].0 >= 0.4 && roots[1].1 <= 0.6 && roots[1].1 - roots[1].0 > 1e-12, "{pieces:?}");
+        // certified signs stay true wherever they are given
+        let mut start = 0.0;
+        for &(end, s) in &pieces {
+            let mid = 0.5 * (start + end);
+            let v = p.eval(mid).0;
+            match s {
+                Sign::Pos => assert!(v > 0.0),
+                Sign::Neg => assert!(v < 0.0),
+                _ => {}
+            }
+            start = end;
+        }
     }
 
     #[test]

@@ -7,7 +7,7 @@ mod sections;
 pub mod slice;
 
 pub use pointwise::{verify_pointwise, verify_pointwise_along};
-pub use sections::{push_merged, sections, Labelled, Piece, Sections};
+pub use sections::{push_merged, sections, Piece, Sections};
 pub use slice::{slice, SliceMap};
 
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -26,15 +26,15 @@ pub const BOUNDARY_TOL: f64 = 1e-10;
 
 /// Violation pieces along a list of motions, mapped to user units and concatenated: the overall
 /// union and each condition's own.
-fn violation_pieces(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[Vec<Motion>], tol_user: f64) -> (Vec<Piece>, Vec<Labelled>) {
+fn violation_pieces(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[Vec<Motion>], tol_user: f64) -> (Vec<Piece>, Vec<Vec<Piece>>) {
     pieces_settling(conditions, s, motions, tol_user, true)
 }
 
 /// [`violation_pieces`], with `settle` saying whether conditions get the settled intervals.
 /// Each entry of `motions` is one piece: the motion of every link (the platform's alone for a
 /// platform robot).
-fn pieces_settling(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[Vec<Motion>], tol_user: f64, settle: bool) -> (Vec<Piece>, Vec<Labelled>) {
-    let mut per: Vec<Labelled> = conditions.iter().map(|c| Labelled { label: c.label(), pieces: vec![] }).collect();
+fn pieces_settling(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[Vec<Motion>], tol_user: f64, settle: bool) -> (Vec<Piece>, Vec<Vec<Piece>>) {
+    let mut per: Vec<Vec<Piece>> = vec![Vec::new(); conditions.len()];
     let mut overall: Vec<Piece> = Vec::new();
     // the cheap conditions first (a stable sort keeps file order within each cost): where they
     // already violate, the costlier ones may stay undecided
@@ -58,7 +58,7 @@ fn pieces_settling(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[V
             }
         }
         for (v, out) in found.iter().zip(per.iter_mut()) {
-            append_mapped(&mut out.pieces, v, &motion.param);
+            append_mapped(out, v, &motion.param);
         }
         append_mapped(&mut overall, &union, &motion.param);
     }
@@ -187,7 +187,7 @@ pub fn verify_along(s: &Scenario, along: Along) -> Result<VerifyReport> {
     let conditions = for_scenario(s);
     let motions = along.motions(s);
     let (overall, per) = violation_pieces(&conditions, s, &motions, BOUNDARY_TOL);
-    let sec = sections(&overall, &per, BOUNDARY_TOL);
+    let sec = sections(&overall, &per, &|k| conditions[k].label(), BOUNDARY_TOL);
     let mut warnings = s.warnings.clone();
     if !sec.uncertain.is_empty() {
         warnings.push(format!("{} section(s) could not be certified either way; see \"uncertain\"", sec.uncertain.len()));
@@ -286,7 +286,7 @@ pub fn ray_sections(s: &Scenario, conditions: &[Box<dyn Condition>], c: &[f64], 
     };
     let tol = BOUNDARY_TOL * (hi - lo).abs().max(1.0);
     let (overall, per) = violation_pieces(conditions, s, &motions, tol);
-    sections(&overall, &per, tol)
+    sections(&overall, &per, &|k| conditions[k].label(), tol)
 }
 
 /// Wrench feasibility of the scenario's 6-cable robot at `pose` (Bohigas et al. §3), if the
@@ -444,7 +444,7 @@ mod tests {
                 let motions = one_link(Motion::trajectory(traj));
                 let [with, without] = [true, false].map(|settle| {
                     let (overall, per) = pieces_settling(&conditions, &s, &motions, BOUNDARY_TOL, settle);
-                    sections(&overall, &per, BOUNDARY_TOL)
+                    sections(&overall, &per, &|k| conditions[k].label(), BOUNDARY_TOL)
                 });
                 assert!(agree(&with, &without, 2.0 * BOUNDARY_TOL), "{name} {}: {with:?} vs {without:?}", traj.name);
                 infeasible += with.infeasible.len();

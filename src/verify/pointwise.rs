@@ -2,7 +2,7 @@
 //! what exact verification replaces, kept for tests and benchmarks. Boundaries are placed halfway
 //! between the samples that disagree, so they are only as good as Δt.
 
-use super::sections::{push_merged, sections, Labelled, Piece};
+use super::sections::{push_merged, sections, Piece};
 use super::{trajectory_report, Along};
 use crate::conditions::for_scenario;
 use crate::error::{Error, Result};
@@ -49,11 +49,7 @@ pub fn verify_pointwise_along(s: &Scenario, along: Along, dt: f64) -> Result<Ver
         out
     };
     let overall = pieces_of(&|k| states[k].iter().any(|&v| v));
-    let per: Vec<Labelled> = conditions
-        .iter()
-        .enumerate()
-        .map(|(i, c)| Labelled { label: c.label(), pieces: pieces_of(&|k| states[k][i]) })
-        .collect();
-    let sec = sections(&overall, &per, 0.0);
+    let per: Vec<Vec<Piece>> = (0..conditions.len()).map(|i| pieces_of(&|k| states[k][i])).collect();
+    let sec = sections(&overall, &per, &|i| conditions[i].label(), 0.0);
     Ok(trajectory_report(along, sec, "pointwise", Some(dt), s.warnings.clone()))
 }

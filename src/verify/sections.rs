@@ -7,14 +7,6 @@ use crate::report::Side;
 /// A piece of the parameter range (in user units) with the truth of "violated" on it.
 pub type Piece = (f64, f64, Truth);
 
-/// One labelled condition's violation pieces, in user units.
-pub struct Labelled {
-    /// The condition's label.
-    pub label: String,
-    /// Its pieces.
-    pub pieces: Vec<Piece>,
-}
-
 /// The sections of a range.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Sections {
@@ -39,7 +31,7 @@ pub fn push_merged(out: &mut Vec<Piece>, p: Piece) {
 /// Resolves narrow undecided pieces between a feasible and an infeasible piece into a boundary at
 /// their middle (certified to half their width, at most `tol`); every other undecided piece stays
 /// uncertain.
-pub fn sections(overall: &[Piece], conditions: &[Labelled], tol: f64) -> Sections {
+pub fn sections(overall: &[Piece], conditions: &[Vec<Piece>], label: &dyn Fn(usize) -> String, tol: f64) -> Sections {
     let mut resolved: Vec<Piece> = Vec::new();
     for (k, &(a, b, t)) in overall.iter().enumerate() {
         if t == Truth::Unknown && b - a <= tol && k > 0 && k + 1 < overall.len() {
@@ -65,23 +57,25 @@ pub fn sections(overall: &[Piece], conditions: &[Labelled], tol: f64) -> Section
         }
         if k > 0 && t != Truth::Unknown && resolved[k - 1].2 != Truth::Unknown {
             let side = if t == Truth::False { Side::Feasible } else { Side::Infeasible };
-            out.boundaries.push((a, active_at(conditions, a, tol), side));
+            out.boundaries.push((a, active_at(conditions, label, a, tol), side));
         }
     }
     out
 }
 
-/// The labels of the conditions whose truth changes within `tol` of x, joined with " & ".
-fn active_at(conditions: &[Labelled], x: f64, tol: f64) -> String {
+/// The labels (`label` of its index) of the conditions (each one's violation pieces) whose truth
+/// changes within `tol` of x, joined with " & ".
+fn active_at(conditions: &[Vec<Piece>], label: &dyn Fn(usize) -> String, x: f64, tol: f64) -> String {
     let (lo, hi) = (x - 2.0 * tol, x + 2.0 * tol);
-    let names: Vec<&str> = conditions
+    let names: Vec<String> = conditions
         .iter()
-        .filter(|c| {
-            let mut seen: Vec<Truth> = c.pieces.iter().filter(|p| p.1 >= lo && p.0 <= hi).map(|p| p.2).collect();
+        .enumerate()
+        .filter(|(_, pieces)| {
+            let mut seen: Vec<Truth> = pieces.iter().filter(|p| p.1 >= lo && p.0 <= hi).map(|p| p.2).collect();
             seen.dedup();
             seen.len() > 1 || seen.contains(&Truth::Unknown)
         })
-        .map(|c| c.label.as_str())
+        .map(|(k, _)| label(k))
         .collect();
     if names.is_empty() {
         "unidentified".to_string()
@@ -97,8 +91,7 @@ mod tests {
     #[test]
     fn narrow_unknown_between_sides_becomes_a_boundary() {
         let overall = vec![(0.0, 0.4, Truth::False), (0.4, 0.4 + 1e-12, Truth::Unknown), (0.4 + 1e-12, 1.0, Truth::True)];
-        let conds = vec![Labelled { label: "cables 1-2".into(), pieces: overall.clone() }];
-        let s = sections(&overall, &conds, 1e-10);
+        let s = sections(&overall, &[overall.clone()], &|_| "cables 1-2".into(), 1e-10);
         assert_eq!(s.feasible.len(), 1);
         assert_eq!(s.infeasible.len(), 1);
         assert!(s.uncertain.is_empty());
@@ -111,7 +104,7 @@ mod tests {
     #[test]
     fn unknown_between_equal_sides_stays_uncertain() {
         let overall = vec![(0.0, 0.4, Truth::False), (0.4, 0.4 + 1e-12, Truth::Unknown), (0.4 + 1e-12, 1.0, Truth::False)];
-        let s = sections(&overall, &[], 1e-10);
+        let s = sections(&overall, &[], &|_| unreachable!("no condition to name"), 1e-10);
         assert_eq!(s.uncertain.len(), 1);
         assert!(s.boundaries.is_empty());
     }
