@@ -214,7 +214,7 @@ fn strips(build: &dyn Fn(f64, f64) -> Vec<Clause>, clauses: Vec<Clause>, lo: f64
         return out.push((hi, Truth::Unknown));
     }
     let mid = 0.5 * (lo + hi);
-    let (left, right) = if (depth + 1) % REBUILD_EVERY == 0 {
+    let (left, right) = if (depth + 1).is_multiple_of(REBUILD_EVERY) {
         (build(lo, mid), build(mid, hi))
     } else {
         let (mut left, mut right) = (Vec::with_capacity(clauses.len()), Vec::with_capacity(clauses.len()));

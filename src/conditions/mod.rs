@@ -148,9 +148,12 @@ pub fn on_undecided(
     out
 }
 
+/// Ordered, disjoint λ-intervals.
+type Intervals = Vec<(f64, f64)>;
+
 /// The parts of the ordered, disjoint intervals `from` outside the ordered, disjoint intervals
 /// `minus`, and the parts inside.
-fn subtract(from: &[(f64, f64)], minus: &[(f64, f64)]) -> (Vec<(f64, f64)>, Vec<(f64, f64)>) {
+fn subtract(from: &[(f64, f64)], minus: &[(f64, f64)]) -> (Intervals, Intervals) {
     let (mut outside, mut inside) = (Vec::new(), Vec::new());
     for &(a, b) in from {
         let mut at = a;

@@ -228,12 +228,12 @@ fn ellipsoid_clauses(a: &V, s: &HVec, w: &Bern, frame: &EllipsoidFrame, c: f64) 
     let mut alpha = VPoly::in_v(&[0.0]);
     let mut beta = VPoly::in_v(&[0.0]);
     let mut gamma = b.times(&w.mul(w)).scale(-1.0);
-    for i in 0..3 {
+    for (i, coef) in coef.iter().enumerate() {
         let z = line.along(&frame.axes.column(i).into_owned());
         let (z0, z1) = (&z.0[0], &z.0[1]);
-        alpha = alpha.add(&coef[i].times(&z1.mul(z1)));
-        beta = beta.add(&coef[i].times(&z0.mul(z1)).scale(2.0));
-        gamma = gamma.add(&coef[i].times(&z0.mul(z0)));
+        alpha = alpha.add(&coef.times(&z1.mul(z1)));
+        beta = beta.add(&coef.times(&z0.mul(z1)).scale(2.0));
+        gamma = gamma.add(&coef.times(&z0.mul(z0)));
     }
     let ends = || vec![gt(&gamma), gt(&alpha.add(&beta).add(&gamma))];
     let with = |extra: Atom| {

@@ -115,6 +115,6 @@ pub(crate) fn det_with(minors: &[Bern], x: &[&Bern]) -> Bern {
     let n = minors.len();
     (0..n).fold(Bern::constant(0.0), |acc, j| {
         let t = x[j].mul(&minors[j]);
-        if (j + n - 1) % 2 == 0 { acc.add(&t) } else { acc.sub(&t) }
+        if (j + n - 1).is_multiple_of(2) { acc.add(&t) } else { acc.sub(&t) }
     })
 }

@@ -95,15 +95,12 @@ impl TensionPolys {
                 delta = Some((0..6).fold(Bern::constant(0.0), |d, j| d.add(&n[j][i].mul(&cofactors[j]))));
             }
             let g: Vec<Bern> = cofactors.iter().enumerate().map(|(j, c)| c.mul(row_weight(j))).collect();
-            let a = (0..6).fold(Bern::constant(0.0), |acc, j| acc.add(&g[j].scale(wrench.nominal[j])));
+            let a = Bern::linear_combination(&[0, 1, 2, 3, 4, 5].map(|j| (&g[j], wrench.nominal[j])));
             let mut b = Bern::constant(0.0);
             for j in 0..6 {
                 // E⁻¹ symmetric: diagonal once, off-diagonal twice.
-                let mut row = g[j].scale(wrench.ellipsoid_inv[(j, j)]);
-                for k in (j + 1)..6 {
-                    row = row.add(&g[k].scale(2.0 * wrench.ellipsoid_inv[(j, k)]));
-                }
-                b = b.add(&g[j].mul(&row));
+                let terms: Vec<(&Bern, f64)> = (j..6).map(|k| (&g[k], if k == j { 1.0 } else { 2.0 } * wrench.ellipsoid_inv[(j, k)])).collect();
+                b = b.add(&g[j].mul(&Bern::linear_combination(&terms)));
             }
             columns.push((i, a, b));
         }

@@ -21,6 +21,14 @@ type V = Vector3<f64>;
 /// Centre and radius.
 type Ball = (V, f64);
 
+/// For the balls of a tube and of another (if any) on one piece: how far the fixed segments
+/// through their centres stay beyond the gap, and the radii that margin must exceed.
+type Margin<'a> = dyn Fn(&Ball, Option<&Ball>) -> (f64, f64) + 'a;
+
+/// For one endpoint case: from the centre and radius of this tube's ball and of the other's, the
+/// distance of the fixed geometry through the centres and the radii it must exceed (beyond the gap).
+type PointMargin<'a> = dyn Fn(&V, f64, &V, f64) -> (f64, f64) + 'a;
+
 /// A simple solid around an obstacle (or part of one), already grown by the clearance.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Bound {
@@ -142,11 +150,11 @@ fn halve(c: &[f64], left: &mut [f64], right: &mut [f64]) -> f64 {
     let n = c.len() - 1;
     right.copy_from_slice(c);
     left[0] = right[0];
-    for level in 1..=n {
+    for (level, out) in left.iter_mut().enumerate().skip(1) {
         for k in 0..=(n - level) {
             right[k] = 0.5 * (right[k] + right[k + 1]);
         }
-        left[level] = right[0];
+        *out = right[0];
     }
     (2 * n + 2) as f64 * U * c.iter().fold(0.0f64, |m, x| m.max(x.abs()))
 }
@@ -215,7 +223,7 @@ impl Tube {
     /// decided when the margin exceeds the radii; from level `first_judged` on it is halved
     /// (smaller balls) only while the margin could still beat the radii at the finest level,
     /// since where the centres' segments themselves come within the gap no refinement can decide.
-    fn undecided(&self, other: Option<&Tube>, spare: &[(f64, f64)], first_judged: usize, margin: &dyn Fn(&Ball, Option<&Ball>) -> (f64, f64)) -> Vec<(f64, f64)> {
+    fn undecided(&self, other: Option<&Tube>, spare: &[(f64, f64)], first_judged: usize, margin: &Margin) -> Vec<(f64, f64)> {
         let mut out = Vec::new();
         let mut stack = vec![1usize];
         while let Some(k) = stack.pop() {
@@ -266,7 +274,7 @@ impl Tube {
         let (a, b) = (self.base, other.base);
         // the distance from point p to the segment a → c
         let dist = |p: &V, a: &V, c: &V| point_segment_dist2(p, a, &(c - a), None).sqrt();
-        let case = |margin: &dyn Fn(&V, f64, &V, f64) -> (f64, f64)| {
+        let case = |margin: &PointMargin| {
             let undecided = self.undecided(Some(other), spare, 0, &|(c, r), theirs| {
                 let (d, q) = theirs.expect("a ball of the other tube");
                 let (m, radii) = margin(c, *r, d, *q);
