@@ -50,9 +50,9 @@ impl Condition for CableLink {
         let [b0, b1] = self.body;
         let d = b1 - b0;
         // r̂ = B̂0 − a·w = P̂ + M̂ b0 − a·w and d̂ = M̂ (b1 − b0), both over w
-        let lin = |i: usize, v: &Vector3<f64>, acc: Bern| (0..3).fold(acc, |acc, j| acc.add(&m.rotation[i][j].scale(v[j])));
-        let r: [Bern; 3] = [0, 1, 2].map(|i| lin(i, &b0, m.position[i].sub(&m.weight.scale(base[i]))));
-        let dir: [Bern; 3] = [0, 1, 2].map(|i| lin(i, &d, Bern::constant(0.0)));
+        let row = |i: usize, v: &Vector3<f64>| [(&m.rotation[i][0], v[0]), (&m.rotation[i][1], v[1]), (&m.rotation[i][2], v[2])];
+        let r: [Bern; 3] = [0, 1, 2].map(|i| Bern::linear_combination(&[[(&m.position[i], 1.0), (&m.weight, -base[i])].as_slice(), &row(i, &b0)].concat()));
+        let dir: [Bern; 3] = [0, 1, 2].map(|i| Bern::linear_combination(&row(i, &d)));
         let point = d == Vector3::zeros();
         let c = self.radius + self.clearance;
         on_undecided(sweep, &[(0.0, 1.0)], &[self.cable], |alg, _, s, tol, (a, b)| {

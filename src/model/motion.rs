@@ -370,24 +370,19 @@ impl Motion {
         if *p == nalgebra::Vector3::zeros() && *r == nalgebra::Matrix3::identity() {
             return self.clone();
         }
-        let rows = |m: &[Bern; 3], extra: Option<f64>, i: usize| {
-            let acc = extra.map_or(Bern::constant(0.0), |x| self.weight.scale(x));
-            (0..3).fold(acc, |acc, j| acc.add(&m[j].scale(r[(i, j)])))
-        };
-        let position = [0, 1, 2].map(|i| rows(&self.position, Some(p[i]), i));
-        let columns: [[Bern; 3]; 3] = [0, 1, 2].map(|c| [0, 1, 2].map(|j| self.rotation[j][c].clone()));
-        let by_column: [[Bern; 3]; 3] = columns.each_ref().map(|col| [0, 1, 2].map(|i| rows(col, None, i)));
-        let rotation = [0, 1, 2].map(|i| [0, 1, 2].map(|c| by_column[c][i].clone()));
-        Motion { position, rotation, weight: self.weight.clone(), param: self.param }
+        let w = &self.weight;
+        let position = [0, 1, 2].map(|i| Bern::linear_combination(&[(w, p[i]), (&self.position[0], r[(i, 0)]), (&self.position[1], r[(i, 1)]), (&self.position[2], r[(i, 2)])]));
+        let m = &self.rotation;
+        let rotation = [0, 1, 2].map(|i| [0, 1, 2].map(|c| Bern::linear_combination(&[(&m[0][c], r[(i, 0)]), (&m[1][c], r[(i, 1)]), (&m[2][c], r[(i, 2)])])));
+        Motion { position, rotation, weight: w.clone(), param: self.param }
     }
 
     /// The frame fixed to this moving one at offset `t` and relative rotation `r`
     /// (P̂ ↦ P̂ + M̂·t, M̂ ↦ M̂·r).
     pub fn then(&self, t: &nalgebra::Vector3<f64>, r: &nalgebra::Matrix3<f64>) -> Motion {
-        let position = [0, 1, 2].map(|i| (0..3).fold(self.position[i].clone(), |acc, j| acc.add(&self.rotation[i][j].scale(t[j]))));
-        let rotation = [0, 1, 2].map(|i| {
-            [0, 1, 2].map(|c| (0..3).fold(Bern::constant(0.0), |acc, j| acc.add(&self.rotation[i][j].scale(r[(j, c)]))))
-        });
+        let m = &self.rotation;
+        let position = [0, 1, 2].map(|i| Bern::linear_combination(&[(&self.position[i], 1.0), (&m[i][0], t[0]), (&m[i][1], t[1]), (&m[i][2], t[2])]));
+        let rotation = [0, 1, 2].map(|i| [0, 1, 2].map(|c| Bern::linear_combination(&[(&m[i][0], r[(0, c)]), (&m[i][1], r[(1, c)]), (&m[i][2], r[(2, c)])])));
         Motion { position, rotation, weight: self.weight.clone(), param: self.param }
     }
 
