@@ -222,7 +222,7 @@ fn adaptive_radii_follow_the_curvature() {
     assert!(mean(&ends) < 0.5 * mean(&sides), "radii near the ends {ends:?}, along the sides {sides:?}");
     // At the ends, κr²/2 ≤ ε/2 gives r ≤ sqrt(ε/κ) = 0.16: the smallest charts are there.
     let smallest = charts.iter().map(|ch| ch.radius).fold(f64::INFINITY, f64::min);
-    assert!(ends.iter().any(|&r| r == smallest) && smallest <= (0.3f64 / 12.0).sqrt(), "smallest radius {smallest}");
+    assert!(ends.contains(&smallest) && smallest <= (0.3f64 / 12.0).sqrt(), "smallest radius {smallest}");
     for ch in charts {
         assert!(on(&ch.centre).abs() < 1e-9 && ch.radius >= params.min_radius && ch.radius <= params.radius);
     }

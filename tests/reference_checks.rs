@@ -9,6 +9,10 @@ use wasm_bindgen_test::wasm_bindgen_test as test;
 #[path = "support/reference.rs"]
 mod reference;
 
+#[allow(dead_code)]
+#[path = "support/gen.rs"]
+mod gen;
+
 use reference::*;
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -247,9 +251,9 @@ fn matrix_inverse_and_determinant() {
     let m = [[4.0, 1.0, 0.5], [1.0, 3.0, 0.2], [0.5, 0.2, 2.0]];
     let i = inv3(&m);
     let p = mat_mul(&m, &i);
-    for r in 0..3 {
-        for c in 0..3 {
-            assert_close!(p[r][c], if r == c { 1.0 } else { 0.0 }, 1e-14);
+    for (r, row) in p.iter().enumerate() {
+        for (c, x) in row.iter().enumerate() {
+            assert_close!(*x, if r == c { 1.0 } else { 0.0 }, 1e-14);
         }
     }
     assert_close!(det3(&[[2.0, 0.0, 0.0], [0.0, 3.0, 0.0], [0.0, 0.0, 4.0]]), 24.0, 0.0);
@@ -438,9 +442,9 @@ fn quaternion_matrix() {
     let q = [rng.normal(), rng.normal(), rng.normal(), rng.normal()];
     let r = quat_to_matrix(q);
     let p = mat_mul(&r, &transpose(&r));
-    for i in 0..3 {
-        for j in 0..3 {
-            assert_close!(p[i][j], if i == j { 1.0 } else { 0.0 }, 1e-14);
+    for (i, row) in p.iter().enumerate() {
+        for (j, x) in row.iter().enumerate() {
+            assert_close!(*x, if i == j { 1.0 } else { 0.0 }, 1e-14);
         }
     }
     assert_close!(det3(&r), 1.0, 1e-14);
@@ -503,22 +507,8 @@ fn trajectory_pose_evaluation() {
     let mut rng = Rng::new(7);
     let pts: Vec<V3> = (0..6).map(|_| rng.in_box(1.0)).collect();
     let a = RefTranslation::Bezier(pts.clone());
-    let coeffs = {
-        // inline conversion (the generator's is exercised by the property tests)
-        let n = pts.len() - 1;
-        let binom = |n: usize, k: usize| -> f64 { (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64) };
-        let mut c: [Vec<f64>; 3] = [vec![0.0; n + 1], vec![0.0; n + 1], vec![0.0; n + 1]];
-        for k in 0..=n {
-            for i in 0..=k {
-                let s = if (k - i) % 2 == 0 { 1.0 } else { -1.0 };
-                for (ax, cc) in c.iter_mut().enumerate() {
-                    cc[k] += binom(n, k) * binom(k, i) * s * pts[i].get(ax);
-                }
-            }
-        }
-        c
-    };
-    let b = RefTranslation::Polynomial(coeffs);
+    // the generator's conversion, which the property tests use to write Bézier trajectories
+    let b = RefTranslation::Polynomial(gen::bezier_to_monomial(&pts));
     for i in 0..=10 {
         let tau = i as f64 / 10.0;
         assert!((a.at(tau) - b.at(tau)).norm() < 1e-13);

@@ -375,8 +375,8 @@ fn wrench_section_is_validated() {
         }
     };
     let mut e = vec![vec![0.0; 6]; 6];
-    for i in 0..6 {
-        e[i][i] = 2.0;
+    for (i, row) in e.iter_mut().enumerate() {
+        row[i] = 2.0;
     }
     let s = ok_with(full(json!(e.clone())));
     assert_eq!(s.wrench.unwrap().frame, cablenav::model::PointFrame::Platform);

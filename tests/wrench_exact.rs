@@ -62,6 +62,8 @@ impl Case {
 
     /// Least tension margin over the cables and both bounds at t (negative: violated), the
     /// (cable, lower?) attaining it, and a scale for rounding; `None` at a singular pose.
+    // `!(x < bound)` rejects NaN together with the values past the bound, as the crate does
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
     fn margin(&self, t: f64) -> Option<(f64, (usize, bool), f64)> {
         let (p, r) = self.traj.pose(t);
         let c = if self.world_frame { p + self.point } else { p + mat_vec(&r, self.point) };

@@ -285,7 +285,7 @@ pub fn lattice(
 
 /// The [`Request::Lattice`] of `lattice`'s arguments.
 fn lattice_request(pose: String, axes: &[String], ranges: &[f64], steps: &JsValue) -> Result<Request, Error> {
-    if ranges.len() % 2 != 0 {
+    if !ranges.len().is_multiple_of(2) {
         return Err(Error::new("ranges", format!("needs [lo, hi] pairs, got {} numbers", ranges.len())));
     }
     let ranges = ranges.chunks(2).map(|p| [p[0], p[1]]).collect();

@@ -91,7 +91,7 @@ mod tests {
     #[test]
     fn narrow_unknown_between_sides_becomes_a_boundary() {
         let overall = vec![(0.0, 0.4, Truth::False), (0.4, 0.4 + 1e-12, Truth::Unknown), (0.4 + 1e-12, 1.0, Truth::True)];
-        let s = sections(&overall, &[overall.clone()], &|_| "cables 1-2".into(), 1e-10);
+        let s = sections(&overall, std::slice::from_ref(&overall), &|_| "cables 1-2".into(), 1e-10);
         assert_eq!(s.feasible.len(), 1);
         assert_eq!(s.infeasible.len(), 1);
         assert!(s.uncertain.is_empty());

@@ -335,7 +335,7 @@ mod tests {
     fn only_a_whole_turn_of_an_angle_wraps() {
         let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/static/scenarios/robocrane.json")).unwrap();
         let s = Scenario::from_json(&text).unwrap();
-        let pose = s.poses.iter().next().map(|(n, _)| n.clone()).unwrap();
+        let pose = s.poses.first().map(|(n, _)| n.clone()).unwrap();
         let classes = two_edge_columns().classes;
         let count = |axes: [Coord; 2], range: [[f64; 2]; 2]| slice_from_classes(&s, &pose, axes, 4, range, classes.clone()).unwrap().components;
         let (phi, theta, z) = (Coord::ALL[3], Coord::ALL[4], Coord::ALL[2]);

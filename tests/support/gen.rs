@@ -117,20 +117,8 @@ pub fn random_shape_at(rng: &mut Rng, kind: usize, center: V3) -> RefShape {
         3 => {
             let r = random_rotation(rng);
             let d = [rng.range(0.05, 0.35), rng.range(0.05, 0.35), rng.range(0.05, 0.35)];
-            // M = R diag(1/a²) Rᵀ, symmetrised exactly.
-            let mut m = [[0.0; 3]; 3];
-            for i in 0..3 {
-                for j in 0..3 {
-                    m[i][j] = (0..3).map(|k| r[i][k] * r[j][k] / (d[k] * d[k])).sum();
-                }
-            }
-            for i in 0..3 {
-                for j in 0..i {
-                    let s = 0.5 * (m[i][j] + m[j][i]);
-                    m[i][j] = s;
-                    m[j][i] = s;
-                }
-            }
+            // M = R diag(1/a²) Rᵀ, exactly symmetric (entry ij sums the same products as ji)
+            let m = [0, 1, 2].map(|i| [0, 1, 2].map(|j| (0..3).map(|k| r[i][k] * r[j][k] / (d[k] * d[k])).sum()));
             RefShape::Ellipsoid { center, matrix: m }
         }
         4 => {
@@ -162,11 +150,11 @@ pub fn bezier_to_monomial(p: &[V3]) -> [Vec<f64>; 3] {
     let binom = |n: usize, k: usize| -> f64 { (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64) };
     let mut out: [Vec<f64>; 3] = [vec![0.0; n + 1], vec![0.0; n + 1], vec![0.0; n + 1]];
     for k in 0..=n {
-        for i in 0..=k {
-            let sign = if (k - i) % 2 == 0 { 1.0 } else { -1.0 };
+        for (i, pi) in p.iter().enumerate().take(k + 1) {
+            let sign = if (k - i).is_multiple_of(2) { 1.0 } else { -1.0 };
             let w = binom(n, k) * binom(k, i) * sign;
             for (ax, o) in out.iter_mut().enumerate() {
-                o[k] += w * p[i].get(ax);
+                o[k] += w * pi.get(ax);
             }
         }
     }

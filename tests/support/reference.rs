@@ -145,14 +145,8 @@ pub fn inv3(m: &M3) -> M3 {
         let (c0, c1) = ((j + 1) % 3, (j + 2) % 3);
         m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0]
     };
-    let mut r = [[0.0; 3]; 3];
-    for i in 0..3 {
-        for j in 0..3 {
-            // (adj m)_{ij} = cofactor_{ji}; the cyclic index choice already carries the sign.
-            r[i][j] = c(j, i) / d;
-        }
-    }
-    r
+    // (adj m)_{ij} = cofactor_{ji}; the cyclic index choice already carries the sign.
+    [0, 1, 2].map(|i| [0, 1, 2].map(|j| c(j, i) / d))
 }
 
 /// xᵀ M x.

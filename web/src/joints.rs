@@ -117,6 +117,8 @@ pub fn JointSliders(parsed: Memo<Parsed>, shown: Memo<Option<Vec<f64>>>, set: Ca
 }
 
 #[cfg(test)]
+// ±0.7854 is the arm's joint range as its CASPR file writes it, not an approximation of π/4
+#[allow(clippy::approx_constant)]
 mod tests {
     use super::*;
     use crate::presets::{find, PRESETS};

@@ -141,7 +141,7 @@ mod tests {
     fn ticks_are_round_and_inside() {
         let t = ticks(0.0, 1.0, 5);
         assert_eq!(t, [0.0, 0.2, 0.4, 0.6000000000000001, 0.8, 1.0]);
-        let t = ticks(-3.14, 3.14, 6);
+        let t = ticks(-3.1, 3.1, 6);
         assert_eq!(t, [-3.0, -2.0, -1.0, 0.0, 1.0, 2.0, 3.0]);
         let t = ticks(0.013, 0.049, 4);
         assert!(t.iter().all(|v| (0.013..=0.049).contains(v)) && t.len() >= 3, "{t:?}");

@@ -326,6 +326,8 @@ fn SliceMapView(map: SliceMap, axes: [Coord; 2], overlay: Signal<Overlay>) -> im
 }
 
 #[cfg(test)]
+// ±0.7854 is the arm's joint range as its CASPR file writes it, not an approximation of π/4
+#[allow(clippy::approx_constant)]
 mod tests {
     use super::*;
     use crate::presets::{find, PRESETS};
