@@ -51,7 +51,10 @@ impl Condition for CableLink {
         let d = b1 - b0;
         // r̂ = B̂0 − a·w = P̂ + M̂ b0 − a·w and d̂ = M̂ (b1 − b0), both over w
         let row = |i: usize, v: &Vector3<f64>| [(&m.rotation[i][0], v[0]), (&m.rotation[i][1], v[1]), (&m.rotation[i][2], v[2])];
-        let r: [Bern; 3] = [0, 1, 2].map(|i| Bern::linear_combination(&[[(&m.position[i], 1.0), (&m.weight, -base[i])].as_slice(), &row(i, &b0)].concat()));
+        let r: [Bern; 3] = [0, 1, 2].map(|i| {
+            let [x, y, z] = row(i, &b0);
+            Bern::linear_combination(&[(&m.position[i], 1.0), (&m.weight, -base[i]), x, y, z])
+        });
         let dir: [Bern; 3] = [0, 1, 2].map(|i| Bern::linear_combination(&row(i, &d)));
         let point = d == Vector3::zeros();
         let c = self.radius + self.clearance;

@@ -99,7 +99,8 @@ impl TensionPolys {
             let mut b = Bern::constant(0.0);
             for j in 0..6 {
                 // E⁻¹ symmetric: diagonal once, off-diagonal twice.
-                let terms: Vec<(&Bern, f64)> = (j..6).map(|k| (&g[k], if k == j { 1.0 } else { 2.0 } * wrench.ellipsoid_inv[(j, k)])).collect();
+                let twice = |k: usize| if k == j { 1.0 } else { 2.0 };
+                let terms: Vec<(&Bern, f64)> = (j..6).map(|k| (&g[k], twice(k) * wrench.ellipsoid_inv[(j, k)])).collect();
                 b = b.add(&g[j].mul(&Bern::linear_combination(&terms)));
             }
             columns.push((i, a, b));

@@ -76,10 +76,9 @@ const SETTLED_MARGIN: f64 = 8.0;
 fn settled(union: &Partition, margin: f64, neighbours: (bool, bool)) -> Vec<(f64, f64)> {
     let shrink = |x: f64, by: f64| if (x == 0.0 && !neighbours.0) || (x == 1.0 && !neighbours.1) { x } else { x + by };
     union
-        .intervals()
+        .where_is(Truth::True)
         .into_iter()
-        .filter(|p| p.2 == Truth::True)
-        .map(|(a, b, _)| (shrink(a, margin), shrink(b, -margin)))
+        .map(|(a, b)| (shrink(a, margin), shrink(b, -margin)))
         .filter(|(a, b)| a < b)
         .collect()
 }
