@@ -393,10 +393,17 @@ fn wrench_section_is_validated() {
     expect(|v| { six(v); v["wrench"] = json!({"nominal": [0, 0, 1], "radius": 1}); }, "wrench.nominal", "expected 6");
     expect(|v| { six(v); v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1, "point_frame": "moon"}); }, "wrench.point_frame", "moon");
     expect(|v| { six(v); v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1, "mass": 3}); }, "wrench.mass", "unknown field");
-    // The 7-cable base scenario takes a wrench section (closure and static feasibility) with a
-    // warning that the ellipsoid is not used; 11 cables are too many.
+    // The 7-cable base scenario takes a wrench section (the ellipsoid inside the available wrench
+    // set; closure only when asked for, in format 4), without a warning; 11 cables are too many.
     let s = ok_with(|v| v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1}));
-    assert!(s.warnings.iter().any(|w| w.contains("wrench closure")), "{:?}", s.warnings);
+    assert!(s.warnings.is_empty(), "{:?}", s.warnings);
+    assert!(!s.wrench.as_ref().unwrap().closure);
+    expect(|v| v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1, "closure": true}), "wrench.closure", "cablenav-scenario/4");
+    let s = ok_with(|v| {
+        v["format"] = json!("cablenav-scenario/4");
+        v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1, "closure": true});
+    });
+    assert!(s.wrench.as_ref().unwrap().closure);
     expect(
         |v| {
             for k in 0..4 {
@@ -478,8 +485,53 @@ fn trajectory_forms() {
 // Errors: one per kind of mistake, each naming its JSON path
 
 #[test]
+fn dynamics_winch_and_duration_are_validated() {
+    let v4 = |v: &mut Value| v["format"] = json!("cablenav-scenario/4");
+    let inertia = json!([[2, 0.1, 0], [0.1, 3, 0], [0, 0, 4]]);
+    let dynamics = json!({"mass": 12.5, "com": [0, 0, 0.1], "inertia": inertia});
+    // format 4 is needed for each new field
+    expect(|v| v["robot"]["dynamics"] = dynamics.clone(), "robot.dynamics", "cablenav-scenario/4");
+    expect(|v| v["robot"]["winch"] = json!({"speed": 1}), "robot.winch", "cablenav-scenario/4");
+    expect(|v| v["trajectories"][0]["duration"] = json!(2), "trajectories[0].duration", "cablenav-scenario/4");
+    let s = ok_with(|v| {
+        v4(v);
+        v["robot"]["dynamics"] = dynamics.clone();
+        v["robot"]["winch"] = json!({"speed": 1.5, "acceleration": 4});
+        v["trajectories"][0]["duration"] = json!(2.5);
+    });
+    let d = s.robot.dynamics.as_ref().unwrap();
+    assert_eq!(d.mass, 12.5);
+    assert_eq!(d.gravity, nalgebra::Vector3::from(cablenav::scenario::STANDARD_GRAVITY));
+    assert_eq!((d.inertia[(0, 1)], d.inertia[(2, 2)]), (0.1, 4.0));
+    assert_eq!((s.robot.winch.speed, s.robot.winch.acceleration), (Some(1.5), Some(4.0)));
+    assert_eq!(s.trajectories[0].duration, Some(2.5));
+    assert!(s.load().is_some(), "a mass alone brings tension conditions");
+    // bad values name their field
+    let with_dynamics = |f: fn(&mut Value)| {
+        move |v: &mut Value| {
+            v4(v);
+            v["robot"]["dynamics"] = json!({"mass": 12.5, "inertia": [[2, 0.1, 0], [0.1, 3, 0], [0, 0, 4]]});
+            f(v)
+        }
+    };
+    expect(with_dynamics(|v| v["robot"]["dynamics"]["mass"] = json!(0)), "robot.dynamics.mass", "positive");
+    expect(with_dynamics(|v| v["robot"]["dynamics"]["mass"] = json!(-3)), "robot.dynamics.mass", "positive");
+    expect(with_dynamics(|v| v["robot"]["dynamics"]["inertia"] = json!([[2, 0.5, 0], [0.1, 3, 0], [0, 0, 4]])), "robot.dynamics.inertia", "not symmetric");
+    expect(with_dynamics(|v| v["robot"]["dynamics"]["inertia"] = json!([[2, 0, 0], [0, -3, 0], [0, 0, 4]])), "robot.dynamics.inertia", "positive definite");
+    expect(with_dynamics(|v| v["robot"]["dynamics"]["inertia"] = json!([[2, 0], [0, 3]])), "robot.dynamics.inertia[0]", "expected 3");
+    expect(with_dynamics(|v| v["robot"]["dynamics"]["com"] = json!([0, "x", 0])), "robot.dynamics.com[1]", "");
+    expect(with_dynamics(|v| v["robot"]["dynamics"]["gravity"] = json!([0, 0])), "robot.dynamics.gravity", "expected 3");
+    expect(with_dynamics(|v| v["robot"]["dynamics"]["spin"] = json!(1)), "robot.dynamics.spin", "unknown field");
+    expect(|v| { v4(v); v["robot"]["winch"] = json!({"speed": 0}); }, "robot.winch.speed", "positive");
+    expect(|v| { v4(v); v["robot"]["winch"] = json!({"acceleration": -1}); }, "robot.winch.acceleration", "positive");
+    expect(|v| { v4(v); v["trajectories"][0]["duration"] = json!(0); }, "trajectories[0].duration", "positive");
+    expect(|v| { v4(v); v["trajectories"][0]["duration"] = json!(-2); }, "trajectories[0].duration", "positive");
+    expect(|v| { v4(v); v["trajectories"][0]["duration"] = json!("2 s"); }, "trajectories[0].duration", "");
+}
+
+#[test]
 fn format_field() {
-    expect(|v| v["format"] = json!("cablenav-scenario/4"), "format", "cablenav-scenario/1");
+    expect(|v| v["format"] = json!("cablenav-scenario/5"), "format", "cablenav-scenario/4");
     expect(|v| v["format"] = json!(1), "format", "cablenav-scenario/1");
     expect(
         |v| {

@@ -1,37 +1,41 @@
-//! Wrench conditions of robots with more than six cables (m ≥ 7): wrench closure (thesis WCC: a
-//! strictly positive tension vector in the null space of the structure matrix J, J of rank 6) and
-//! static feasibility of the nominal wrench w0 (tensions strictly within their bounds balance it).
+//! Wrench conditions written with the facets of the structure matrix's columns (any m ≥ 6; the
+//! verifier uses them for m ≥ 7): wrench closure (thesis WCC: a strictly positive tension vector
+//! in the null space of J, J of rank 6), where the scenario asks for it, and wrench feasibility
+//! (every wrench of the ellipsoid around the nominal load — the wrench set's w0, plus the
+//! platform's weight and inertia — is balanced by tensions strictly within their bounds).
 //!
-//! Both are written with the facets of the column configuration: for a set S of five columns,
-//! n_S·x = det [J_S | x]. Up to a positive factor (powers of w and cable lengths),
-//! det [J_S | j_k] = d_k = det [Ñ_S | ñ_k] and det [J_S | w0] = d_0 = det [Ñ_S | D_w w0], with Ñ
-//! the polynomial structure matrix of [`super::structure`].
+//! For a set S of five columns, n_S·x = det [J_S | x]. Up to a positive factor (powers of w and
+//! cable lengths), det [J_S | j_k] = d_k = det [Ñ_S | ñ_k] and det [J_S | x] = n̂_S·(D_w x), with
+//! Ñ the polynomial structure matrix of [`super::structure`] and n̂_S its cofactor vector.
 //!
 //! * Closure holds iff for every S not degenerate (some d_k ≠ 0), columns lie strictly on both
 //!   sides: some d_k > 0 and some d_k < 0. Polynomial sign conditions: exact along motions.
-//! * w0 lies inside the zonotope {J f : f_min < f < f_max} iff for every such S
-//!   Σ_{k∉S} min(d_k f_min,k, d_k f_max,k)/ρ_k < d_0 < Σ_{k∉S} max(…)/ρ_k (hyperplane shifting).
-//!   The 1/ρ_k = w/√P_k make these non-polynomial: along motions they are decided on
-//!   sub-intervals by enclosures (Bernstein coefficient ranges, interval arithmetic), bisected
-//!   down to the boundary tolerance; what stays undecided is reported as such. Per pose the test is
-//!   a small linear program ([`crate::query::wrench::static_margin`]).
+//! * The ellipsoid W around the load lies inside the zonotope {J f : f_min < f < f_max} iff for
+//!   every such S, with d_0 = n̂_S·(D_w ℓ) and the ellipsoid's reach r_S = √((D_w n̂_S)ᵀE⁻¹(D_w n̂_S)),
+//!   Σ_{k∉S} min(d_k f_min,k, d_k f_max,k)/ρ_k < d_0 − r_S and d_0 + r_S < Σ_{k∉S} max(…)/ρ_k
+//!   (hyperplane shifting). The 1/ρ_k = w/√P_k and √ make these non-polynomial: along motions they
+//!   are decided on sub-intervals by enclosures (Bernstein coefficient ranges, interval
+//!   arithmetic), bisected down to the boundary tolerance; what stays undecided is reported as
+//!   such. Per pose: [`crate::query::wrench::wrench_set_margin`].
 
 use std::rc::Rc;
 
 use super::primitives::{GT, LT};
 use super::structure::{det_with, minors, structure_numerators, Local};
 use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
-use crate::model::{Bounds, Wrench};
+use crate::model::{Bounds, Load};
 use crate::poly::{Bern, Partition, Truth};
-use crate::query::wrench::{closure_holds, static_margin, subsets};
+use crate::query::wrench::{closure_holds, subsets, wrench_set_margin};
 
-/// One facet candidate: five columns S, d_k for the other columns, and d_0.
+/// One facet candidate: five columns S, d_k for the other columns, d_0 and the ellipsoid's reach.
 #[derive(Debug, Clone)]
 struct Facet {
     /// (k, d_k) for every column k ∉ S.
     others: Vec<(usize, Bern)>,
-    /// d_0 = det [Ñ_S | D_w w0].
+    /// d_0 = n̂_S·(D_w ℓ) (times the load's w^q).
     load: Bern,
+    /// r_S² = (D_w n̂_S)ᵀ E⁻¹ (D_w n̂_S) ≥ 0 (times w^2q); `None` for a single wrench (E⁻¹ = 0).
+    reach2: Option<Bern>,
 }
 
 impl Facet {
@@ -49,16 +53,20 @@ pub struct FacetPolys {
     len2: Vec<Bern>,
     /// The motion's weight w.
     weight: Bern,
+    /// w^q, the positive factor the loads d_0 carry (`None` for 1).
+    scale: Option<Bern>,
 }
 
 impl FacetPolys {
-    /// The shared polynomials of `sweep` for `wrench`.
-    pub fn new(sweep: &Sweep, wrench: &Wrench) -> FacetPolys {
-        let local = Local::of(sweep);
-        let n = structure_numerators(&local, wrench);
+    /// The shared polynomials of `sweep` under `load`.
+    pub fn new(sweep: &Sweep, load: &Load) -> FacetPolys {
+        let local = Local::of(sweep, load);
+        let n = structure_numerators(&local, &load.wrench);
         let w = &local.weight;
         let w2 = w.mul(w);
-        let load: [Bern; 6] = std::array::from_fn(|j| if j < 3 { w.scale(wrench.nominal[j]) } else { w2.scale(wrench.nominal[j]) });
+        let e_inv = &load.wrench.ellipsoid_inv;
+        let single = e_inv.iter().all(|x| *x == 0.0);
+        let rows = &local.load.rows;
         let m = local.cables.len();
         let facets = subsets(m, 5)
             .into_iter()
@@ -68,18 +76,35 @@ impl FacetPolys {
                     .filter(|k| !s.contains(k))
                     .map(|k| (k, det_with(&minors, &std::array::from_fn::<_, 6, _>(|j| &n[j][k]))))
                     .collect();
-                Facet { others, load: det_with(&minors, &std::array::from_fn::<_, 6, _>(|j| &load[j])) }
+                let reach2 = (!single).then(|| {
+                    // D_w n̂: the cofactors (−1)^(j+5) M_j times w (force rows) or w² (moments)
+                    let g: [Bern; 6] = std::array::from_fn(|j| {
+                        let c = minors[j].mul(if j < 3 { w } else { &w2 });
+                        if (j + 5) % 2 == 0 { c } else { c.scale(-1.0) }
+                    });
+                    let mut r = Bern::constant(0.0);
+                    for j in 0..6 {
+                        // E⁻¹ symmetric: diagonal once, off-diagonal twice.
+                        let terms: Vec<(&Bern, f64)> = (j..6).map(|k| (&g[k], if k == j { 1.0 } else { 2.0 } * e_inv[(j, k)])).collect();
+                        r = r.add(&g[j].mul(&Bern::linear_combination(&terms)));
+                    }
+                    match &local.load.scale {
+                        Some(q) => r.mul(&q.mul(q)),
+                        None => r,
+                    }
+                });
+                Facet { others, load: det_with(&minors, &std::array::from_fn::<_, 6, _>(|j| &rows[j])), reach2 }
             })
             .collect();
         let len2 = local.len2();
-        FacetPolys { facets, len2, weight: w.clone() }
+        FacetPolys { facets, len2, weight: w.clone(), scale: local.load.scale.clone() }
     }
 
-    fn of(sweep: &mut Sweep, wrench: &Wrench) -> Rc<FacetPolys> {
+    fn of(sweep: &mut Sweep, load: &Load) -> Rc<FacetPolys> {
         match &sweep.facets {
             Some(p) => Rc::clone(p),
             None => {
-                let p = Rc::new(FacetPolys::new(sweep, wrench));
+                let p = Rc::new(FacetPolys::new(sweep, load));
                 sweep.facets = Some(Rc::clone(&p));
                 p
             }
@@ -87,12 +112,12 @@ impl FacetPolys {
     }
 }
 
-/// Wrench closure of a robot with m ≥ 7 cables.
+/// Wrench closure (thesis WCC), where the scenario asks for it (`wrench.closure`).
 #[derive(Debug, Clone)]
 pub struct WrenchClosure {
-    /// The wrench set (its application point fixes the moment arm; closure does not depend on it
-    /// but the structure matrix is built the same way as for the other wrench conditions).
-    pub wrench: Rc<Wrench>,
+    /// The load (its wrench point fixes the moment arm; closure does not depend on it but the
+    /// structure matrix is built the same way as for the other wrench conditions).
+    pub load: Rc<Load>,
 }
 
 impl Condition for WrenchClosure {
@@ -106,12 +131,12 @@ impl Condition for WrenchClosure {
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let tol = sweep.tol;
-        let polys = FacetPolys::of(sweep, &self.wrench);
+        let polys = FacetPolys::of(sweep, &self.load);
         not_spanning(polys.facets.iter().map(|f| f.others.iter().map(|(_, d)| d.clone()).collect()), tol)
     }
 
     fn check(&self, at: &PoseCables) -> PoseCheck {
-        PoseCheck { violated: !closure_holds(&at.cables, &self.wrench.point_at(&at.pose)), distance: None }
+        PoseCheck { violated: !closure_holds(&at.cables, &self.load.wrench.point_at(&at.pose)), distance: None }
     }
 }
 
@@ -140,12 +165,12 @@ pub(super) fn not_spanning(facets: impl Iterator<Item = Vec<Bern>>, tol: f64) ->
     holds.not()
 }
 
-/// Static feasibility of the nominal wrench for a robot with m ≥ 7 cables: tensions strictly
-/// within their bounds balance w0.
+/// Wrench feasibility of a robot with m ≥ 7 cables: every wrench of the ellipsoid around the
+/// load is balanced by tensions strictly within their bounds.
 #[derive(Debug, Clone)]
-pub struct StaticFeasibility {
-    /// The wrench set (its nominal wrench and application point).
-    pub wrench: Rc<Wrench>,
+pub struct WrenchFeasibility {
+    /// The load: the wrench set (ellipsoid, nominal wrench, application point), weight, inertia.
+    pub load: Rc<Load>,
     /// Tension bounds per cable.
     pub bounds: Vec<Bounds>,
 }
@@ -191,11 +216,19 @@ impl Iv {
 /// Deepest bisection of the static-feasibility decision before a piece is reported undecided.
 const MAX_NODES: usize = 4_000;
 
-impl StaticFeasibility {
-    /// The truth of "statically feasible" on the piece of the motion where `polys` are expanded
+/// One facet on a piece of the motion: (k, d_k) for the other columns, d_0, r_S².
+type LocalFacet = (Vec<(usize, Bern)>, Bern, Option<Bern>);
+
+impl WrenchFeasibility {
+    /// The truth of "wrench-feasible" on the piece of the motion where `polys` are expanded
     /// (all of them restricted to it): True, False, or Unknown when the enclosures cannot tell.
-    fn decide(&self, polys: &[(Vec<(usize, Bern)>, Bern)], len2: &[Bern], weight: &Bern) -> Truth {
+    fn decide(&self, polys: &[LocalFacet], len2: &[Bern], weight: &Bern, scale: Option<&Bern>) -> Truth {
         let w = Iv::of(weight);
+        // 1/w^q: the loads' positive factor divided out
+        let inv_scale = scale.map(|q| {
+            let q = Iv::of(q);
+            if q.lo > 0.0 { Iv { lo: 1.0 / q.hi, hi: 1.0 / q.lo } } else { Iv { lo: 0.0, hi: f64::INFINITY } }
+        });
         let inv_rho: Vec<Iv> = len2
             .iter()
             .map(|p| {
@@ -208,8 +241,19 @@ impl StaticFeasibility {
             })
             .collect();
         let mut all_hold = true;
-        for (others, load) in polys {
+        for (others, load, reach2) in polys {
             let d0 = Iv::of(load);
+            // the ellipsoid's reach r = √(r²) (over the same w^q as d_0)
+            let reach = reach2.as_ref().map_or(Iv { lo: 0.0, hi: 0.0 }, |r| {
+                let r = Iv::of(r);
+                Iv { lo: r.lo.max(0.0).sqrt(), hi: r.hi.max(0.0).sqrt() }
+            });
+            // the extreme loads d_0 ∓ r, divided by w^q
+            let (d_lo, d_hi) = (Iv { lo: d0.lo - reach.hi, hi: d0.hi - reach.lo }, Iv { lo: d0.lo + reach.lo, hi: d0.hi + reach.hi });
+            let (d_lo, d_hi) = match inv_scale {
+                Some(s) => (d_lo.mul(s), d_hi.mul(s)),
+                None => (d_lo, d_hi),
+            };
             let (mut lower, mut upper) = (Iv { lo: 0.0, hi: 0.0 }, Iv { lo: 0.0, hi: 0.0 });
             for (k, d) in others {
                 let b = self.bounds[*k];
@@ -217,9 +261,9 @@ impl StaticFeasibility {
                 lower = lower.add(lo_t.mul(inv_rho[*k]));
                 upper = upper.add(hi_t.mul(inv_rho[*k]));
             }
-            // margins: upper − d0 > 0 and d0 − lower > 0
-            let above = Iv { lo: upper.lo - d0.hi, hi: upper.hi - d0.lo };
-            let below = Iv { lo: d0.lo - lower.hi, hi: d0.hi - lower.lo };
+            // margins: upper − (d0 + r) > 0 and (d0 − r) − lower > 0
+            let above = Iv { lo: upper.lo - d_hi.hi, hi: upper.hi - d_hi.lo };
+            let below = Iv { lo: d_lo.lo - lower.hi, hi: d_lo.hi - lower.lo };
             if above.hi < 0.0 || below.hi < 0.0 {
                 return Truth::False;
             }
@@ -237,15 +281,15 @@ impl StaticFeasibility {
     /// Bisection over [a, b] ⊆ [0, 1]: pieces of `out` as (end, feasible?).
     fn bisect(&self, all: &FacetPolys, live: &[usize], (a, b): (f64, f64), tol: f64, budget: &mut usize, out: &mut Vec<(f64, Truth)>) {
         let restrict = |p: &Bern| p.restrict(a, b);
-        let polys: Vec<(Vec<(usize, Bern)>, Bern)> = live
+        let polys: Vec<LocalFacet> = live
             .iter()
             .map(|&i| {
                 let f = &all.facets[i];
-                (f.others.iter().map(|(k, d)| (*k, restrict(d))).collect(), restrict(&f.load))
+                (f.others.iter().map(|(k, d)| (*k, restrict(d))).collect(), restrict(&f.load), f.reach2.as_ref().map(restrict))
             })
             .collect();
         let len2: Vec<Bern> = all.len2.iter().map(restrict).collect();
-        let truth = self.decide(&polys, &len2, &restrict(&all.weight));
+        let truth = self.decide(&polys, &len2, &restrict(&all.weight), all.scale.as_ref().map(restrict).as_ref());
         if truth != Truth::Unknown || b - a <= tol || *budget == 0 {
             out.push((b, truth));
             return;
@@ -257,18 +301,18 @@ impl StaticFeasibility {
     }
 }
 
-impl Condition for StaticFeasibility {
+impl Condition for WrenchFeasibility {
     fn kind(&self) -> Kind {
         Kind::Tension
     }
 
     fn label(&self) -> String {
-        "static feasibility".to_string()
+        "wrench feasibility".to_string()
     }
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let tol = sweep.tol;
-        let polys = FacetPolys::of(sweep, &self.wrench);
+        let polys = FacetPolys::of(sweep, &self.load);
         let live: Vec<usize> = (0..polys.facets.len()).filter(|&i| !polys.facets[i].degenerate()).collect();
         if live.is_empty() {
             return Partition::constant(Truth::True); // rank < 5 all along: nothing is balanced
@@ -280,8 +324,9 @@ impl Condition for StaticFeasibility {
     }
 
     fn check(&self, at: &PoseCables) -> PoseCheck {
-        match static_margin(&at.cables, &self.wrench.point_at(&at.pose), &self.wrench.nominal, &self.bounds) {
-            Some((margin, _)) => PoseCheck { violated: !(margin > 0.0), distance: Some(margin) },
+        let wrench = &self.load.wrench;
+        match wrench_set_margin(&at.cables, &wrench.point_at(&at.pose), &at.nominal(&self.load), &wrench.ellipsoid_inv, &self.bounds) {
+            Some(r) => PoseCheck { violated: !(r.margin > 0.0), distance: Some(r.margin) },
             None => PoseCheck { violated: true, distance: None },
         }
     }

@@ -17,6 +17,7 @@ pub mod primitives;
 mod closure;
 pub mod exists;
 mod joint_closure;
+mod load;
 mod offset;
 mod structure;
 mod tension;
@@ -26,7 +27,7 @@ pub use cable_cable::CableCable;
 pub use cable_length::CableLength;
 pub use cable_link::CableLink;
 pub use cable_shape::CableShape;
-pub use closure::{FacetPolys, StaticFeasibility, WrenchClosure};
+pub use closure::{FacetPolys, WrenchClosure, WrenchFeasibility};
 pub use joint_closure::JointClosure;
 pub use tension::{CableTension, Side, TensionPolys};
 
@@ -34,7 +35,7 @@ use std::cell::OnceCell;
 use std::rc::Rc;
 
 use crate::model::chain::Frame;
-use crate::model::{Motion, Pose, Robot, Wrench};
+use crate::model::{Kinematics, Load, Motion, Pose, Robot};
 use crate::poly::{Bern, Partition, Truth};
 use crate::query::wrench::{tension_ranges_at, TensionRange};
 use crate::scenario::Scenario;
@@ -74,6 +75,10 @@ pub struct Sweep {
     /// undecided (`Unknown`) there, without pruning or exact work, since its answer cannot change
     /// the union, nor the constraints active at its boundaries.
     pub settled: Vec<(f64, f64)>,
+    /// How long the whole trajectory takes (seconds) when it is run in time: the conditions that
+    /// depend on speed (inertia, winch limits) take their rates from it. `None` for a motion
+    /// without time (a ray, an untimed trajectory): those conditions see the robot at rest.
+    pub duration: Option<f64>,
 }
 
 impl Sweep {
@@ -102,7 +107,7 @@ impl Sweep {
             let tube = Tube::new(cable.base, &tip, w);
             cables.push(SweptCable { base: cable.base, s, tube });
         }
-        Sweep { alg: Alg::new(w), cables, tol, links: links.to_vec(), tension: None, facets: None, settled: Vec::new() }
+        Sweep { alg: Alg::new(w), cables, tol, links: links.to_vec(), tension: None, facets: None, settled: Vec::new(), duration: None }
     }
 
     /// The platform's motion (the first link's for a multi-link robot): the weight and the
@@ -193,6 +198,8 @@ pub struct PoseCables {
     pub cables: Vec<(Vector3<f64>, Vector3<f64>)>,
     /// Every link's frame (the platform's alone for a platform robot).
     pub links: Vec<Frame>,
+    /// How the platform moves there, on a timed trajectory; `None`: at rest.
+    pub kinematics: Option<Kinematics>,
     tensions: OnceCell<Option<[TensionRange; 6]>>,
 }
 
@@ -204,10 +211,23 @@ impl std::ops::Deref for PoseCables {
 }
 
 impl PoseCables {
-    /// The six cables' tension ranges over `wrench` (the scenario's only wrench set), or `None`
-    /// at a singular pose or when the robot does not have six cables.
-    pub fn tension_ranges(&self, wrench: &Wrench) -> Option<[TensionRange; 6]> {
-        *self.tensions.get_or_init(|| tension_ranges_at(&self.cables, &wrench.point_at(&self.pose), wrench))
+    /// The six cables' tension ranges under `load` (the scenario's only one), or `None` at a
+    /// singular pose or when the robot does not have six cables.
+    pub fn tension_ranges(&self, load: &Load) -> Option<[TensionRange; 6]> {
+        *self.tensions.get_or_init(|| tension_ranges_at(&self.cables, &load.wrench.point_at(&self.pose), &self.nominal(load), &load.wrench))
+    }
+
+    /// The nominal wrench the cables balance here under `load` (with the platform's weight and,
+    /// when moving, its inertia).
+    pub fn nominal(&self, load: &Load) -> nalgebra::Vector6<f64> {
+        load.nominal_at(&self.pose, self.kinematics.as_ref())
+    }
+
+    /// The same cables with the platform moving as `kin`.
+    pub fn moving(mut self, kin: Kinematics) -> PoseCables {
+        self.kinematics = Some(kin);
+        self.tensions = OnceCell::new();
+        self
     }
 }
 
@@ -217,6 +237,7 @@ pub fn cables_at(robot: &Robot, pose: &Pose) -> PoseCables {
         pose: *pose,
         cables: robot.cables.iter().map(|c| (c.base, pose.transform(&c.platform))).collect(),
         links: vec![(pose.position, pose.matrix())],
+        kinematics: None,
         tensions: OnceCell::new(),
     }
 }
@@ -238,6 +259,7 @@ fn cables_of_chain(robot: &Robot, links: Vec<Frame>) -> PoseCables {
         pose,
         cables: robot.cables.iter().map(|c| (c.base, links[c.link].0 + links[c.link].1 * c.platform)).collect(),
         links,
+        kinematics: None,
         tensions: OnceCell::new(),
     }
 }
@@ -300,7 +322,8 @@ pub trait Condition {
 /// each pair not sharing an anchor, cable–obstacle clearance for each cable and obstacle; for a
 /// multi-link robot cable–link clearance for each cable and link (but a cable's own link where it
 /// is attached within the clearance) and joint-space wrench closure; the wrench conditions of the
-/// scenario's wrench set.
+/// scenario's load (wrench set, weight, inertia): per cable and bound for six cables, the wrench
+/// set inside the available wrench set for more; wrench closure where the scenario asks for it.
 pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
     let robot = &s.robot;
     let m = robot.cables.len();
@@ -337,19 +360,21 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
         }
         out.push(Box::new(JointClosure { chain: Rc::new(chain.clone()), cable_links: robot.cables.iter().map(|c| c.link).collect() }));
     }
-    if let Some(wrench) = &s.wrench {
-        let wrench = Rc::new(wrench.clone());
+    if let Some(load) = s.load() {
+        let load = Rc::new(load);
+        if load.wrench.closure {
+            out.push(Box::new(WrenchClosure { load: Rc::clone(&load) }));
+        }
         if m == 6 {
             for (i, cable) in robot.cables.iter().enumerate() {
                 let bounds = [(Side::Lower, cable.tension.min), (Side::Upper, cable.tension.max)];
                 for (side, bound) in bounds.into_iter().filter(|(_, b)| b.is_finite()) {
-                    out.push(Box::new(CableTension { cable: i, side, bound, wrench: Rc::clone(&wrench) }));
+                    out.push(Box::new(CableTension { cable: i, side, bound, load: Rc::clone(&load) }));
                 }
             }
         } else {
-            out.push(Box::new(WrenchClosure { wrench: Rc::clone(&wrench) }));
             let bounds = robot.cables.iter().map(|c| c.tension).collect();
-            out.push(Box::new(StaticFeasibility { wrench, bounds }));
+            out.push(Box::new(WrenchFeasibility { load, bounds }));
         }
     }
     out

@@ -2,8 +2,9 @@
 //! motion's weight w, and the minors the wrench conditions are written in. Shared by the 6-cable
 //! tension conditions and the m-cable closure and static-feasibility conditions.
 
+use super::load::{load_polys, time_rate, LoadPolys};
 use super::Sweep;
-use crate::model::{PointFrame, Wrench};
+use crate::model::{Load, PointFrame, Wrench};
 use crate::poly::Bern;
 use nalgebra::Vector3;
 
@@ -19,17 +20,24 @@ pub(crate) struct Local {
     pub(crate) weight: Bern,
     /// (base anchor, s̃ = s·w) per cable.
     pub(crate) cables: Vec<(Vector3<f64>, [Bern; 3])>,
+    /// The wrench the cables balance ([`super::load`]).
+    pub(crate) load: LoadPolys,
 }
 
 impl Local {
-    pub(crate) fn of(sweep: &Sweep) -> Local {
+    /// The sweep's motion and the load along it (with the inertial wrench when the sweep is timed).
+    pub(crate) fn of(sweep: &Sweep, load: &Load) -> Local {
         let m = sweep.motion();
-        Local {
+        let mut local = Local {
             position: m.position.clone(),
             rotation: m.rotation.clone(),
             weight: m.weight.clone(),
             cables: sweep.cables.iter().map(|c| (c.base, [c.s[0].p.clone(), c.s[1].p.clone(), c.s[2].p.clone()])).collect(),
-        }
+            load: LoadPolys { rows: std::array::from_fn(|_| Bern::constant(0.0)), scale: None },
+        };
+        let rate = sweep.duration.and_then(|d| time_rate(&m.param, d));
+        local.load = load_polys(&local, load, rate.as_ref());
+        local
     }
 
     /// P_i = ‖s̃_i‖² per cable (the squared cable lengths times w²).
@@ -44,6 +52,7 @@ impl Local {
             rotation: self.rotation.each_ref().map(|row| row.each_ref().map(r)),
             weight: r(&self.weight),
             cables: self.cables.iter().map(|(base, s)| (*base, s.each_ref().map(r))).collect(),
+            load: self.load.restrict(a, b),
         }
     }
 }

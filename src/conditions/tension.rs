@@ -19,7 +19,7 @@ use super::algebra::H;
 use super::primitives::{all_of, any_of, GT, LT};
 use super::structure::{minors, structure_numerators, Local};
 use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
-use crate::model::Wrench;
+use crate::model::Load;
 use crate::poly::{Bern, Partition, Truth};
 
 /// Which tension bound a [`CableTension`] condition is about.
@@ -40,8 +40,9 @@ pub struct CableTension {
     pub side: Side,
     /// The bound's value (f_min,i or f_max,i; finite).
     pub bound: f64,
-    /// The wrench set, shared by the twelve conditions of a robot.
-    pub wrench: Rc<Wrench>,
+    /// What the cables balance (wrench set, weight, inertia), shared by the twelve conditions of
+    /// a robot.
+    pub load: Rc<Load>,
 }
 
 /// The polynomials the tension conditions of one motion share, on one λ-interval.
@@ -54,16 +55,16 @@ pub struct TensionPolys {
     /// Δ = det Ñ.
     delta: Bern,
     /// (i, α_i, β_i) for the cables expanded here (all six on a whole motion, one on a refined
-    /// piece).
+    /// piece); with a load over w^q (inertia), α_i carries the factor w^q and β_i its square.
     columns: Vec<(usize, Bern, Bern)>,
     /// P_i = ‖s̃_i‖² per cable.
     len2: Vec<Bern>,
 }
 
 impl TensionPolys {
-    /// The shared polynomials of `sweep` (whose robot has exactly 6 cables) for `wrench`.
-    pub fn new(sweep: &Sweep, wrench: &Wrench) -> TensionPolys {
-        TensionPolys::on(Local::of(sweep), (0.0, 1.0), wrench, &[0, 1, 2, 3, 4, 5])
+    /// The shared polynomials of `sweep` (whose robot has exactly 6 cables) under `load`.
+    pub fn new(sweep: &Sweep, load: &Load) -> TensionPolys {
+        TensionPolys::on(Local::of(sweep, load), (0.0, 1.0), load, &[0, 1, 2, 3, 4, 5])
     }
 
     /// α_i and β_i of cable i, if expanded here.
@@ -72,13 +73,14 @@ impl TensionPolys {
     }
 
     /// Cable i's polynomials (and Δ) re-expanded on [c, d] ⊆ [0, 1].
-    fn refined(&self, (c, d): (f64, f64), wrench: &Wrench, i: usize) -> TensionPolys {
+    fn refined(&self, (c, d): (f64, f64), load: &Load, i: usize) -> TensionPolys {
         let (c0, d0) = self.span;
         let local = self.local.restrict((c - c0) / (d0 - c0), (d - c0) / (d0 - c0));
-        TensionPolys::on(local, (c, d), wrench, &[i])
+        TensionPolys::on(local, (c, d), load, &[i])
     }
 
-    fn on(local: Local, span: (f64, f64), wrench: &Wrench, cables: &[usize]) -> TensionPolys {
+    fn on(local: Local, span: (f64, f64), load: &Load, cables: &[usize]) -> TensionPolys {
+        let wrench = &load.wrench;
         let w = &local.weight;
         let n = structure_numerators(&local, wrench);
         let w2 = w.mul(w);
@@ -95,7 +97,12 @@ impl TensionPolys {
                 delta = Some((0..6).fold(Bern::constant(0.0), |d, j| d.add(&n[j][i].mul(&cofactors[j]))));
             }
             let g: Vec<Bern> = cofactors.iter().enumerate().map(|(j, c)| c.mul(row_weight(j))).collect();
-            let a = Bern::linear_combination(&[0, 1, 2, 3, 4, 5].map(|j| (&g[j], wrench.nominal[j])));
+            let a = match (&local.load.scale, load.dynamics.is_some()) {
+                // a constant load: α = Σ g_j w0_j
+                (None, false) => Bern::linear_combination(&[0, 1, 2, 3, 4, 5].map(|j| (&g[j], wrench.nominal[j]))),
+                // α = Σ C_j (D_w ℓ)_j w^q
+                _ => (0..6).fold(Bern::constant(0.0), |acc, j| acc.add(&cofactors[j].mul(&local.load.rows[j]))),
+            };
             let mut b = Bern::constant(0.0);
             for j in 0..6 {
                 // E⁻¹ symmetric: diagonal once, off-diagonal twice.
@@ -103,6 +110,10 @@ impl TensionPolys {
                 let terms: Vec<(&Bern, f64)> = (j..6).map(|k| (&g[k], twice(k) * wrench.ellipsoid_inv[(j, k)])).collect();
                 b = b.add(&g[j].mul(&Bern::linear_combination(&terms)));
             }
+            let b = match &local.load.scale {
+                Some(q) => b.mul(&q.mul(q)),
+                None => b,
+            };
             columns.push((i, a, b));
         }
         let len2 = local.len2();
@@ -153,8 +164,14 @@ impl CableTension {
             pa.mul(&pa).mul(beta).scale(4.0)
         };
         let a2_minus_b = || a.mul(&a).sub(beta);
-        // f·w·|Δ|: the bound with the denominators of ρ and Δ cleared.
-        let scaled_bound = || t.local.weight.mul(&abs_delta).scale(self.bound);
+        // f·w·|Δ|(·w^q): the bound with the denominators of ρ, Δ (and the load) cleared.
+        let scaled_bound = || {
+            let k = t.local.weight.mul(&abs_delta).scale(self.bound);
+            match &t.local.load.scale {
+                Some(q) => k.mul(q),
+                None => k,
+            }
+        };
         match self.side {
             // √P (a − √β) > k with k ≥ 0: a > √β, then square.
             Side::Lower if self.bound == 0.0 => all_of!(tol; h(a.clone()) => GT, h(a2_minus_b()) => GT),
@@ -208,7 +225,7 @@ impl Condition for CableTension {
         let polys = match &sweep.tension {
             Some(p) => Rc::clone(p),
             None => {
-                let p = Rc::new(TensionPolys::new(sweep, &self.wrench));
+                let p = Rc::new(TensionPolys::new(sweep, &self.load));
                 sweep.tension = Some(Rc::clone(&p));
                 p
             }
@@ -228,7 +245,7 @@ impl Condition for CableTension {
             }
             for (a, b) in wide {
                 let span = ((a - (b - a)).max(0.0), (b + (b - a)).min(1.0));
-                let local = polys.refined(span, &self.wrench, self.cable);
+                let local = polys.refined(span, &self.load, self.cable);
                 let inner = self.violated_on(&local, tol / (span.1 - span.0));
                 out = out.splice((a, b), &inner, span);
             }
@@ -237,7 +254,7 @@ impl Condition for CableTension {
     }
 
     fn check(&self, at: &PoseCables) -> PoseCheck {
-        match at.tension_ranges(&self.wrench) {
+        match at.tension_ranges(&self.load) {
             None => PoseCheck { violated: true, distance: None },
             Some(ranges) => {
                 let r = ranges[self.cable];

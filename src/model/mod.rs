@@ -2,6 +2,7 @@
 //! cables and their bounds, poses, trajectories, and the rational motions the exact conditions use.
 
 pub mod chain;
+pub mod dynamics;
 pub mod motion;
 pub mod pose;
 pub mod robot;
@@ -10,8 +11,9 @@ pub mod via;
 pub mod wrench;
 
 pub use chain::{Chain, Joint, JointCoord, JointPath, Link};
+pub use dynamics::{Dynamics, Kinematics, Winch};
 pub use motion::Motion;
 pub use pose::{Coord, Pose};
 pub use robot::{Bounds, Cable, Clearance, Robot};
 pub use trajectory::{Orientation, Segment, Trajectory, Translation};
-pub use wrench::{PointFrame, Wrench};
+pub use wrench::{Load, PointFrame, Wrench};

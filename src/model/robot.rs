@@ -2,7 +2,7 @@
 //! platform or on one link of a multi-link chain (in that link's frame), with length and tension
 //! bounds.
 
-use super::Chain;
+use super::{Chain, Dynamics, Winch};
 use nalgebra::Vector3;
 
 /// A closed range `[min, max]`.
@@ -47,6 +47,11 @@ pub struct Robot {
     /// The links of a multi-link robot; `None` for a platform robot (one link, free joint,
     /// configured by poses).
     pub chain: Option<Chain>,
+    /// The platform's mass and inertia, and gravity (format 4); `None`: the platform is massless
+    /// and every load is in the wrench set.
+    pub dynamics: Option<Dynamics>,
+    /// The winches' speed and acceleration limits (format 4); both `None` when not limited.
+    pub winch: Winch,
 }
 
 /// Minimum distances the verifier enforces, between cable centrelines and from a centreline to an

@@ -3,6 +3,7 @@
 //! A piecewise trajectory (format 2) chains such pieces, each starting where the previous ends;
 //! piece k of n covers t ∈ [k/n, (k+1)/n] of the whole.
 
+use super::dynamics::Kinematics;
 use super::pose::Pose;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
@@ -37,6 +38,9 @@ pub struct Trajectory {
     /// The pieces after the first, in order, for a piecewise trajectory (format 2 `pieces`);
     /// empty for a one-piece trajectory.
     pub more: Vec<Segment>,
+    /// How long the whole trajectory takes (format 4 `duration`, seconds): t = time/duration, a
+    /// uniform time law. `None` for a trajectory without timing (geometry and statics only).
+    pub duration: Option<f64>,
 }
 
 /// One piece of a piecewise trajectory: a translation in its own τ and a slerp in its own t.
@@ -83,7 +87,67 @@ impl Segment {
     }
 }
 
+impl Segment {
+    /// The motion at slerp parameter t per unit of t (the trajectory's own parameter): the
+    /// origin's dp/dt and d²p/dt², and the angular velocity dΦ/dt, constant along a slerp (the
+    /// angular acceleration is zero). With τ = tan(tθ/2)/tan(θ/2):
+    /// τ' = (θ/2)(1 + T²)/tan(θ/2) and τ'' = (θ²/2)·T(1 + T²)/tan(θ/2), T = tan(tθ/2).
+    pub fn rates_at(&self, t: f64) -> Kinematics {
+        let theta = self.theta();
+        let (tau, d1, d2) = if theta < 1e-9 {
+            (t.clamp(0.0, 1.0), 1.0, 0.0)
+        } else {
+            let big_t = (t * theta / 2.0).tan();
+            let tan_half = (theta / 2.0).tan();
+            let sec2 = 1.0 + big_t * big_t;
+            (self.tau_of_t(t), 0.5 * theta * sec2 / tan_half, 0.5 * theta * theta * big_t * sec2 / tan_half)
+        };
+        let (p1, p2) = self.translation.derivatives_at(tau);
+        Kinematics { velocity: p1 * d1, acceleration: p2 * d1 * d1 + p1 * d2, omega: self.angular_rate(), alpha: Vector3::zeros() }
+    }
+
+    /// The slerp's angular velocity per unit of t, in the world frame: Q(t) = Qs·(Qs⁻¹Qe)^t turns
+    /// about the axis u (in the platform frame of Qs) of Qs⁻¹Qe = (cos θ, sin θ·u) at the rate
+    /// 2θ, which in the world frame is Rs·u·2θ.
+    pub fn angular_rate(&self) -> Vector3<f64> {
+        let Orientation::Slerp(qs, qe) = &self.orientation;
+        let rel = qs.quaternion().conjugate() * qe.quaternion();
+        let theta = self.theta();
+        // 2θ·u = 2θ/sin θ · vec(rel); θ/sin θ → 1 as θ → 0
+        let factor = if theta < 1e-6 { 2.0 * (1.0 + theta * theta / 6.0) } else { 2.0 * theta / theta.sin() };
+        qs.transform_vector(&(rel.imag() * factor))
+    }
+}
+
 impl Translation {
+    /// dp/dτ and d²p/dτ² at τ.
+    pub fn derivatives_at(&self, tau: f64) -> (Vector3<f64>, Vector3<f64>) {
+        match self {
+            Translation::Polynomial(c) => {
+                let d = |k: usize| {
+                    Vector3::from_fn(|i, _| {
+                        c[i].iter().enumerate().skip(k).rev().fold(0.0, |acc, (j, &a)| {
+                            let falling = if k == 1 { j as f64 } else { (j * (j - 1)) as f64 };
+                            acc * tau + a * falling
+                        })
+                    })
+                };
+                (d(1), d(2))
+            }
+            Translation::Bezier(points) => {
+                let diff = |pts: &[Vector3<f64>]| -> Vec<Vector3<f64>> {
+                    let n = (pts.len() - 1) as f64;
+                    pts.windows(2).map(|w| (w[1] - w[0]) * n).collect()
+                };
+                let first = if points.len() > 1 { diff(points) } else { vec![] };
+                let second = if first.len() > 1 { diff(&first) } else { vec![] };
+                let at = |pts: Vec<Vector3<f64>>| if pts.is_empty() { Vector3::zeros() } else { Translation::Bezier(pts).at(tau) };
+                (at(first), at(second))
+            }
+            Translation::Line(a, b) => (b - a, Vector3::zeros()),
+        }
+    }
+
     /// The position at τ (direct evaluation, used by the point-wise baseline).
     pub fn at(&self, tau: f64) -> Vector3<f64> {
         match self {
@@ -107,14 +171,14 @@ impl Translation {
 impl Trajectory {
     /// A one-piece trajectory.
     pub fn single(name: impl Into<String>, translation: Translation, orientation: Orientation) -> Trajectory {
-        Trajectory { name: name.into(), translation, orientation, more: vec![] }
+        Trajectory { name: name.into(), translation, orientation, more: vec![], duration: None }
     }
 
     /// A trajectory of one or more pieces (the first must exist: `None` for an empty list).
     pub fn piecewise(name: impl Into<String>, pieces: Vec<Segment>) -> Option<Trajectory> {
         let mut it = pieces.into_iter();
         let first = it.next()?;
-        Some(Trajectory { name: name.into(), translation: first.translation, orientation: first.orientation, more: it.collect() })
+        Some(Trajectory { name: name.into(), translation: first.translation, orientation: first.orientation, more: it.collect(), duration: None })
     }
 
     /// Number of pieces (1 for an ordinary trajectory).
@@ -161,5 +225,15 @@ impl Trajectory {
     pub fn pose_at(&self, t: f64) -> Pose {
         let (seg, _, local) = self.locate(t);
         seg.pose_at(local)
+    }
+
+    /// The platform's motion at t, evaluated directly, when the trajectory is run in `duration`
+    /// seconds (time = t·duration): piece k of n covers 1/n of t, so its own t runs n/duration
+    /// per second.
+    pub fn kinematics_at(&self, t: f64, duration: f64) -> Kinematics {
+        let (seg, _, local) = self.locate(t);
+        let rate = self.piece_count() as f64 / duration;
+        let k = seg.rates_at(local);
+        Kinematics { velocity: k.velocity * rate, acceleration: k.acceleration * (rate * rate), omega: k.omega * rate, alpha: Vector3::zeros() }
     }
 }

@@ -1,6 +1,7 @@
 //! The wrench set a pose must withstand (Bohigas et al. §2): every wrench w in the ellipsoid
 //! W = {w : (w − w0)ᵀ E (w − w0) ≤ 1}, applied at a point of the platform.
 
+use super::dynamics::{Dynamics, Kinematics};
 use super::pose::Pose;
 use nalgebra::{Matrix6, Vector3, Vector6};
 
@@ -26,14 +27,51 @@ pub struct Wrench {
     pub point: Vector3<f64>,
     /// How the offset moves with the platform.
     pub frame: PointFrame,
+    /// Whether wrench closure is required as well (format 4 `wrench.closure`): a condition of its
+    /// own, not implied by the wrench set (a cable-suspended robot holds its load without it).
+    pub closure: bool,
 }
 
 impl Wrench {
+    /// The set holding the zero wrench alone (E⁻¹ = 0; E is infinite): what the cables balance
+    /// when a scenario gives the platform a mass but no wrench section.
+    pub fn zero() -> Wrench {
+        Wrench {
+            nominal: Vector6::zeros(),
+            ellipsoid: Matrix6::from_element(f64::INFINITY),
+            ellipsoid_inv: Matrix6::zeros(),
+            point: Vector3::zeros(),
+            frame: PointFrame::Platform,
+            closure: false,
+        }
+    }
+
     /// The application point in the world frame at `pose`.
     pub fn point_at(&self, pose: &Pose) -> Vector3<f64> {
         match self.frame {
             PointFrame::Platform => pose.transform(&self.point),
             PointFrame::World => pose.position + self.point,
+        }
+    }
+}
+
+/// Everything the cables must balance: the wrench set (external loads) and, when the platform has
+/// a mass, its weight and (along a timed motion) its inertia. Shared by the tension conditions.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Load {
+    /// The external wrench set ([`Wrench::zero`] if the scenario has none).
+    pub wrench: Wrench,
+    /// The platform's rigid-body data, if given.
+    pub dynamics: Option<Dynamics>,
+}
+
+impl Load {
+    /// The nominal wrench the cables balance at `pose` moving as `kin` (`None`: at rest): the
+    /// wrench set's w0 plus weight and inertia, about the wrench set's point.
+    pub fn nominal_at(&self, pose: &Pose, kin: Option<&Kinematics>) -> Vector6<f64> {
+        match &self.dynamics {
+            None => self.wrench.nominal,
+            Some(d) => self.wrench.nominal + d.wrench(pose, kin, &self.wrench.point_at(pose)),
         }
     }
 }

@@ -294,6 +294,21 @@ impl Bern {
         }
     }
 
+    /// The derivative dp/dx, of degree n − 1: n·(c_{k+1} − c_k). Each coefficient carries twice
+    /// the input's error times n, plus the rounding of one subtraction and one product.
+    pub fn derivative(&self) -> Bern {
+        let n = self.degree();
+        if n == 0 {
+            return Bern::constant(0.0);
+        }
+        let k = n as f64;
+        let mut c = zeros(n);
+        for (i, ci) in c.iter_mut().enumerate() {
+            *ci = k * (self.c[i + 1] - self.c[i]);
+        }
+        Bern { err: 2.0 * k * self.err + 3.0 * U * max_abs(&c), c }
+    }
+
     /// Whether every coefficient is exactly zero and the error bound is zero.
     pub fn is_exact_zero(&self) -> bool {
         self.err == 0.0 && self.c.iter().all(|&x| x == 0.0)

@@ -1,4 +1,5 @@
-//! Per-pose wrench feasibility of a 6-cable robot (Bohigas et al. §3).
+//! Per-pose wrench feasibility (Bohigas et al. §3): the tension ranges of a 6-cable robot, wrench
+//! closure, and the wrench set inside the available wrench set for any number of cables.
 //!
 //! The structure matrix J has one column per cable, [e_i ; (x_i − c) × e_i], where e_i is the unit
 //! vector from the base anchor to the platform anchor x_i and c the wrench's application point.
@@ -166,16 +167,17 @@ pub struct TensionRange {
     pub spread: f64,
 }
 
-/// The tension ranges of the six cables at `pose`, or `None` at a singular pose (J not
-/// invertible to within [`SINGULAR_RATIO`]).
+/// The tension ranges of the six cables at `pose` over the wrench set alone (no weight or inertia
+/// of the platform), or `None` at a singular pose (J not invertible to within [`SINGULAR_RATIO`]).
 pub fn tension_ranges(robot: &Robot, pose: &Pose, wrench: &Wrench) -> Option<[TensionRange; 6]> {
     let cables: Vec<_> = robot.cables.iter().map(|c| (c.base, pose.transform(&c.platform))).collect();
-    tension_ranges_at(&cables, &wrench.point_at(pose), wrench)
+    tension_ranges_at(&cables, &wrench.point_at(pose), &wrench.nominal, wrench)
 }
 
-/// [`tension_ranges`] from the cables' world anchors and the wrench's application point; `None`
-/// also when there are not exactly six cables.
-pub fn tension_ranges_at(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, wrench: &Wrench) -> Option<[TensionRange; 6]> {
+/// The tension ranges from the cables' world anchors and the wrench's application point, for the
+/// ellipsoid of `wrench` around `nominal` (the wrench set's own nominal wrench, or that plus the
+/// platform's weight and inertia); `None` also when there are not exactly six cables.
+pub fn tension_ranges_at(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, nominal: &Vector6<f64>, wrench: &Wrench) -> Option<[TensionRange; 6]> {
     if cables.len() != 6 {
         return None;
     }
@@ -186,7 +188,85 @@ pub fn tension_ranges_at(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector
         return None;
     }
     let inv = lu.try_inverse()?;
-    let f0 = inv * wrench.nominal;
+    let f0 = inv * nominal;
     let v = inv * wrench.ellipsoid_inv * inv.transpose();
     Some(std::array::from_fn(|i| TensionRange { nominal: f0[i], spread: v[(i, i)].max(0.0).sqrt() }))
+}
+
+/// The wrench set at one pose against the available wrench set {J f : f_min ≤ f ≤ f_max}
+/// ([`wrench_set_margin`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct WrenchSetMargin {
+    /// The largest t such that every wrench of the ellipsoid is balanced by tensions within
+    /// [f_min + t, f_max − t]; feasible iff t > 0. For a single wrench (E⁻¹ = 0) it is the
+    /// static-feasibility LP's margin.
+    pub margin: f64,
+    /// The wrench of the ellipsoid that sets the margin: the one furthest out through the facet
+    /// that binds (a witness: at a negative margin no tensions within the bounds balance it).
+    pub worst: Vector6<f64>,
+}
+
+/// Hyperplane shifting (Gouttefarde & Gosselin; Bouchard et al.): the zonotope
+/// Z(t) = {J f : f_min + t ≤ f ≤ f_max − t} has a facet pair for every set S of five columns
+/// spanning a hyperplane, with normal n_S (the cofactors of [J_S | x], so n_S·x = det [J_S | x])
+/// and support h(±n_S) = Σ_k max(±d_k (f_min,k + t), ±d_k (f_max,k − t)), d_k = n_S·j_k. The
+/// ellipsoid W = {w : (w − w0)ᵀE(w − w0) ≤ 1} lies in Z(t) iff for every S,
+/// |n_S·w0| + √(n_Sᵀ E⁻¹ n_S) stays inside on both sides; each side is linear in t, so the
+/// largest t is the least over facets of (h(±n_S) at t = 0 ∓ n_S·w0 − √(n_Sᵀ E⁻¹ n_S)) / Σ_k |d_k|.
+/// Any number of cables ≥ 6 (C(m, 5) facets). `None` when J has rank below 6 (no facet has
+/// columns off its hyperplane while some hyperplane holds them all): W, or w0, is then balanced
+/// nowhere but on that hyperplane, reported as singular.
+pub fn wrench_set_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, nominal: &Vector6<f64>, ellipsoid_inv: &Matrix6<f64>, bounds: &[Bounds]) -> Option<WrenchSetMargin> {
+    let j = structure_matrix_m(cables, point);
+    let m = j.ncols();
+    let norms: Vec<f64> = (0..m).map(|i| j.column(i).norm()).collect();
+    let mut best: Option<WrenchSetMargin> = None;
+    let mut spanned = false;
+    for s in subsets(m, 5) {
+        let n = facet_normal(&j, &s);
+        let scale: f64 = s.iter().map(|&k| norms[k]).product();
+        if !(n.norm() > SINGULAR_RATIO * scale) {
+            continue; // the five columns do not span a hyperplane
+        }
+        let (mut lower, mut upper, mut spread) = (0.0, 0.0, 0.0);
+        for k in (0..m).filter(|k| !s.contains(k)) {
+            let d = n.dot(&j.column(k));
+            if d.abs() <= SINGULAR_RATIO * scale * norms[k] {
+                continue;
+            }
+            let (a, b) = (d * bounds[k].min, d * bounds[k].max);
+            lower += a.min(b);
+            upper += a.max(b);
+            spread += d.abs();
+        }
+        if spread == 0.0 {
+            return None; // every column on this hyperplane: rank 5
+        }
+        spanned = true;
+        let reach = (n.dot(&(ellipsoid_inv * n))).max(0.0).sqrt();
+        let centre = n.dot(nominal);
+        for side in [1.0, -1.0] {
+            // side +1: n·w ≤ upper; side −1: n·w ≥ lower
+            let room = if side > 0.0 { upper - centre } else { centre - lower };
+            let t = (room - reach) / spread;
+            if best.as_ref().is_none_or(|b| t < b.margin) {
+                let push = if reach > 0.0 { ellipsoid_inv * n * (side / reach) } else { Vector6::zeros() };
+                best = Some(WrenchSetMargin { margin: t, worst: nominal + push });
+            }
+        }
+    }
+    if !spanned {
+        return None;
+    }
+    best
+}
+
+/// The normal of the hyperplane through the five columns `s` of the 6×m matrix `j`: the cofactors
+/// of the last column of [J_S | x], so that n·x = det [J_S | x].
+fn facet_normal(j: &DMatrix<f64>, s: &[usize]) -> Vector6<f64> {
+    Vector6::from_fn(|r, _| {
+        let minor = DMatrix::from_fn(5, 5, |a, b| j[(if a < r { a } else { a + 1 }, s[b])]);
+        let sign = if (r + 5) % 2 == 0 { 1.0 } else { -1.0 };
+        sign * minor.determinant()
+    })
 }

@@ -25,6 +25,15 @@ pub const FORMAT_2: &str = "cablenav-scenario/2";
 /// Format version 3: version 2 plus multi-link robots (`robot.links`, cables' `link`,
 /// `configurations`, `clearance.cable_link`). A file using them must declare it.
 pub const FORMAT_3: &str = "cablenav-scenario/3";
+/// Format version 4: version 3 plus time and mass (`robot.dynamics`, `robot.winch`,
+/// trajectories' `duration`) and the opt-in wrench closure condition (`wrench.closure`). A file
+/// using them must declare it.
+pub const FORMAT_4: &str = "cablenav-scenario/4";
+
+/// The version number of a format string this reader knows (1 to 4), or `None`.
+pub fn version(format: &str) -> Option<u8> {
+    [FORMAT, FORMAT_2, FORMAT_3, FORMAT_4].iter().position(|f| *f == format).map(|k| k as u8 + 1)
+}
 
 /// The whole file.
 #[derive(Debug, Deserialize)]
@@ -64,6 +73,9 @@ pub struct RawWrench {
     pub point: Option<Fixed<f64, 3>>,
     #[serde(default)]
     pub point_frame: Option<String>,
+    /// Also require wrench closure (format 4; the condition is not implied by the wrench set).
+    #[serde(default)]
+    pub closure: Option<bool>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -78,6 +90,35 @@ pub struct RawRobot {
     pub diameter: Option<f64>,
     #[serde(default)]
     pub links: Option<Vec<RawLink>>,
+    /// The platform's mass and inertia (format 4).
+    #[serde(default)]
+    pub dynamics: Option<RawDynamics>,
+    /// The winches' limits (format 4).
+    #[serde(default)]
+    pub winch: Option<RawWinch>,
+}
+
+/// The platform as a rigid body: mass, centre of mass and inertia about it (platform frame),
+/// gravity (world frame).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawDynamics {
+    pub mass: f64,
+    #[serde(default)]
+    pub com: Option<Fixed<f64, 3>>,
+    pub inertia: Fixed<Fixed<f64, 3>, 3>,
+    #[serde(default)]
+    pub gravity: Option<Fixed<f64, 3>>,
+}
+
+/// Cable speed and acceleration limits, the same for every winch.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawWinch {
+    #[serde(default)]
+    pub speed: Option<f64>,
+    #[serde(default)]
+    pub acceleration: Option<f64>,
 }
 
 /// One link of a multi-link robot.
@@ -254,6 +295,9 @@ pub struct RawTrajectory {
     /// A multi-link robot's path: the names of the configurations it passes through (format 3).
     #[serde(default)]
     pub through: Option<Vec<String>>,
+    /// How long the trajectory takes, in seconds (format 4).
+    #[serde(default)]
+    pub duration: Option<f64>,
 }
 
 /// One piece of a piecewise trajectory.
@@ -509,11 +553,11 @@ pub fn parse(text: &str) -> Result<RawScenario> {
     let head: FormatOnly = read(text)?;
     match head.format {
         None => {
-            return Err(Error::new("format", format!("missing; this version reads \"{FORMAT}\", \"{FORMAT_2}\" and \"{FORMAT_3}\"")));
+            return Err(Error::new("format", format!("missing; this version reads \"{FORMAT}\" to \"{FORMAT_4}\"")));
         }
-        Some(serde_json::Value::String(s)) if s == FORMAT || s == FORMAT_2 || s == FORMAT_3 => {}
+        Some(serde_json::Value::String(s)) if version(&s).is_some() => {}
         Some(other) => {
-            return Err(Error::new("format", format!("unsupported format {other}; this version reads \"{FORMAT}\", \"{FORMAT_2}\" and \"{FORMAT_3}\"")));
+            return Err(Error::new("format", format!("unsupported format {other}; this version reads \"{FORMAT}\" to \"{FORMAT_4}\"")));
         }
     }
     read(text)

@@ -6,13 +6,15 @@ mod caspr_links;
 pub mod chain;
 pub mod json;
 pub mod link;
+mod timing;
 pub mod validate;
 
 use crate::error::{Error, Result};
 use crate::model::{Clearance, Coord, Pose, Robot, Trajectory, Wrench};
 use crate::shape::Obstacle;
 
-pub use json::{FORMAT, FORMAT_3};
+pub use json::{FORMAT, FORMAT_3, FORMAT_4};
+pub use timing::STANDARD_GRAVITY;
 
 /// A planning query between two named poses, optionally on a slice with some coordinates fixed.
 #[derive(Debug, Clone, PartialEq)]
@@ -65,6 +67,16 @@ impl Scenario {
     /// quaternion normalised, a slerp the long way round) are in [`Scenario::warnings`].
     pub fn from_json(text: &str) -> Result<Scenario> {
         validate::scenario(json::parse(text)?)
+    }
+
+    /// What the cables must balance — the wrench set and the platform's weight and inertia —
+    /// if the scenario states either (a wrench section, or `robot.dynamics`); `None` means no
+    /// tension condition.
+    pub fn load(&self) -> Option<crate::model::Load> {
+        if self.wrench.is_none() && self.robot.dynamics.is_none() {
+            return None;
+        }
+        Some(crate::model::Load { wrench: self.wrench.clone().unwrap_or_else(Wrench::zero), dynamics: self.robot.dynamics.clone() })
     }
 
     /// The pose called `name`.

@@ -37,7 +37,10 @@ pub const UNIT_TOLERANCE: f64 = 1e-9;
 /// Validates a raw scenario; warnings go into the result.
 pub fn scenario(raw: RawScenario) -> Result<Scenario> {
     let mut warnings = Vec::new();
+    let version = super::json::version(&raw.format).unwrap_or(1);
     let mut robot = robot(&raw.robot)?;
+    robot.dynamics = super::timing::dynamics(&raw, version)?;
+    robot.winch = super::timing::winch(&raw, version)?;
     let clearance = clearance(&raw)?;
     let configs = multi_link(&raw, &mut robot, &clearance, &mut warnings)?;
     if robot.chain.is_some() {
@@ -48,24 +51,23 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
     let obstacles = obstacles(&raw.obstacles)?;
     let poses = poses(&raw.poses.0, &mut warnings)?;
     check_cable_lengths(&robot, &poses)?;
-    let trajectories = trajectories(&raw.trajectories, raw.format == super::json::FORMAT_2, &poses, &mut warnings)?;
+    let mut trajectories = trajectories(&raw.trajectories, version >= 2, &poses, &mut warnings)?;
+    super::timing::durations(&raw, version, &mut trajectories)?;
     let queries = queries(&raw.queries, &poses)?;
-    let wrench = raw.wrench.as_ref().map(wrench).transpose()?;
-    if wrench.is_some() && robot.cables.len() > MAX_WRENCH_CABLES {
+    let mut wrench = raw.wrench.as_ref().map(wrench).transpose()?;
+    if let Some(w) = &mut wrench {
+        w.closure = super::timing::closure(&raw, version)?;
+    }
+    let loaded = wrench.is_some() || robot.dynamics.is_some();
+    if loaded && robot.cables.len() > MAX_WRENCH_CABLES {
+        let field = if wrench.is_some() { "wrench" } else { "robot.dynamics" };
         return Err(Error::new(
-            "wrench",
+            field,
             format!(
-                "wrench conditions are supported for up to {MAX_WRENCH_CABLES} cables (closure and static feasibility \
-                 test every set of 5 structure-matrix columns); this robot has {}",
+                "tension conditions are supported for up to {MAX_WRENCH_CABLES} cables (the wrench set is tested \
+                 against every facet of the available wrench set, one per 5 structure-matrix columns); this robot has {}",
                 robot.cables.len()
             ),
-        ));
-    }
-    if wrench.is_some() && robot.cables.len() > 6 {
-        warnings.push(format!(
-            "with {} cables the wrench conditions are wrench closure and static feasibility of the nominal wrench; \
-             the ellipsoid is used only by 6-cable robots",
-            robot.cables.len()
         ));
     }
     Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses, trajectories, queries, wrench, configs, joint_paths: Vec::new(), warnings })
@@ -87,7 +89,7 @@ fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clearance, warni
         }
         return Ok(Vec::new());
     };
-    if raw.format != super::json::FORMAT_3 {
+    if super::json::version(&raw.format).unwrap_or(1) < 3 {
         return Err(Error::new("robot.links", format!("multi-link robots need \"format\": \"{}\"", super::json::FORMAT_3)));
     }
     let chain = super::chain::chain(links)?;
@@ -140,7 +142,7 @@ fn non_negative(field: &str, x: f64) -> Result<f64> {
 }
 
 /// A finite, positive number at `field`.
-fn positive(field: &str, x: f64) -> Result<f64> {
+pub(super) fn positive(field: &str, x: f64) -> Result<f64> {
     let x = num(field, x)?;
     if x <= 0.0 {
         return Err(Error::new(field, format!("must be positive, got {x}")));
@@ -149,7 +151,7 @@ fn positive(field: &str, x: f64) -> Result<f64> {
 }
 
 /// A point or vector of three finite numbers at `field`.
-fn vec3(field: &str, v: &Fixed<f64, 3>) -> Result<Vector3<f64>> {
+pub(super) fn vec3(field: &str, v: &Fixed<f64, 3>) -> Result<Vector3<f64>> {
     let [x, y, z] = v.0;
     Ok(Vector3::new(num(&format!("{field}[0]"), x)?, num(&format!("{field}[1]"), y)?, num(&format!("{field}[2]"), z)?))
 }
@@ -221,7 +223,7 @@ fn robot(raw: &RawRobot) -> Result<Robot> {
         .zip(tension)
         .map(|(((base, platform), length), tension)| Cable { base, platform, link: 0, length, tension })
         .collect();
-    Ok(Robot { cables, diameter, chain: None })
+    Ok(Robot { cables, diameter, chain: None, dynamics: None, winch: crate::model::Winch { speed: None, acceleration: None } })
 }
 
 /// One value of a bound and the JSON path it came from (empty for the default).
@@ -485,7 +487,7 @@ fn mesh(path: &str, o: &RawObstacle) -> Result<Mesh> {
 
 /// A symmetric positive definite N×N matrix at `field`; symmetric up to a relative 1e-9 (then
 /// symmetrised), definiteness by Cholesky.
-fn spd<const N: usize>(field: &str, m: &Fixed<Fixed<f64, N>, N>, what: &str) -> Result<SMatrix<f64, N, N>> {
+pub(super) fn spd<const N: usize>(field: &str, m: &Fixed<Fixed<f64, N>, N>, what: &str) -> Result<SMatrix<f64, N, N>> {
     let mut a = SMatrix::<f64, N, N>::zeros();
     for (i, row) in m.0.iter().enumerate() {
         for (j, x) in row.0.iter().enumerate() {
@@ -535,7 +537,7 @@ fn wrench(raw: &RawWrench) -> Result<Wrench> {
         Some("world") => PointFrame::World,
         Some(other) => return Err(Error::new("wrench.point_frame", format!("{other:?} is not \"platform\" or \"world\""))),
     };
-    Ok(Wrench { nominal, ellipsoid, ellipsoid_inv, point, frame })
+    Ok(Wrench { nominal, ellipsoid, ellipsoid_inv, point, frame, closure: false })
 }
 
 fn poses(raw: &[(String, RawPose)], warnings: &mut Vec<String>) -> Result<Vec<(String, Pose)>> {

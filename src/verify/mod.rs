@@ -12,8 +12,8 @@ pub use slice::{slice, SliceMap};
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 use crate::conditions::{cables_at, cables_at_config, for_scenario, Condition, PoseCables, Sweep};
-use crate::model::{Bounds, Wrench};
-use crate::query::wrench::{closure_holds, static_margin};
+use crate::model::{Bounds, Load};
+use crate::query::wrench::{closure_holds, static_margin, wrench_set_margin};
 use crate::error::{Error, Result};
 use crate::model::motion::Param;
 use crate::model::{Coord, JointPath, Motion, Pose, Trajectory};
@@ -26,14 +26,15 @@ pub const BOUNDARY_TOL: f64 = 1e-10;
 
 /// Violation pieces along a list of motions, mapped to user units and concatenated: the overall
 /// union and each condition's own.
-fn violation_pieces(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[Vec<Motion>], tol_user: f64) -> (Vec<Piece>, Vec<Vec<Piece>>) {
-    pieces_settling(conditions, s, motions, tol_user, true)
+/// `duration` times the motion (a timed trajectory; `None` for a ray or an untimed one).
+fn violation_pieces(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[Vec<Motion>], tol_user: f64, duration: Option<f64>) -> (Vec<Piece>, Vec<Vec<Piece>>) {
+    pieces_settling(conditions, s, motions, tol_user, duration, true)
 }
 
 /// [`violation_pieces`], with `settle` saying whether conditions get the settled intervals.
 /// Each entry of `motions` is one piece: the motion of every link (the platform's alone for a
 /// platform robot).
-fn pieces_settling(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[Vec<Motion>], tol_user: f64, settle: bool) -> (Vec<Piece>, Vec<Vec<Piece>>) {
+fn pieces_settling(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[Vec<Motion>], tol_user: f64, duration: Option<f64>, settle: bool) -> (Vec<Piece>, Vec<Vec<Piece>>) {
     let mut per: Vec<Vec<Piece>> = vec![Vec::new(); conditions.len()];
     let mut overall: Vec<Piece> = Vec::new();
     // the cheap conditions first (a stable sort keeps file order within each cost): where they
@@ -44,6 +45,7 @@ fn pieces_settling(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[V
         let motion = &links[0];
         let tol = tol_user / motion.param.max_slope().max(1e-300);
         let mut sweep = Sweep::of_links(&s.robot, links, tol);
+        sweep.duration = duration;
         let mut union = Partition::constant(Truth::False);
         // where the piece meets its neighbour a boundary may lie, so a margin is kept there too;
         // the range's own ends are no boundary
@@ -117,13 +119,27 @@ impl Along<'_> {
         }
     }
 
-    /// The cables at t.
+    /// The cables at t (moving, on a timed trajectory).
     fn cables_at(&self, s: &Scenario, t: f64) -> PoseCables {
         match (self, &s.robot.chain) {
             (Along::Joints(p), Some(chain)) => cables_at_config(&s.robot, &p.config_at(chain, t)),
             // a path needs a chain (validation pairs them); without one only its start is known
             (Along::Joints(p), None) => cables_at_config(&s.robot, p.through.first().map_or(&[0.0; 6][..], |q| q)),
-            (Along::Trajectory(traj), _) => cables_at(&s.robot, &traj.pose_at(t)),
+            (Along::Trajectory(traj), _) => {
+                let at = cables_at(&s.robot, &traj.pose_at(t));
+                match traj.duration {
+                    Some(d) => at.moving(traj.kinematics_at(t, d)),
+                    None => at,
+                }
+            }
+        }
+    }
+
+    /// How long it takes in seconds, if it is timed.
+    pub fn duration(&self) -> Option<f64> {
+        match self {
+            Along::Trajectory(t) => t.duration,
+            Along::Joints(_) => None,
         }
     }
 
@@ -185,7 +201,7 @@ pub fn verify_trajectory(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport
 pub fn verify_along(s: &Scenario, along: Along) -> Result<VerifyReport> {
     let conditions = for_scenario(s);
     let motions = along.motions(s);
-    let (overall, per) = violation_pieces(&conditions, s, &motions, BOUNDARY_TOL);
+    let (overall, per) = violation_pieces(&conditions, s, &motions, BOUNDARY_TOL, along.duration());
     let sec = sections(&overall, &per, &|k| conditions[k].label(), BOUNDARY_TOL);
     let mut warnings = s.warnings.clone();
     if !sec.uncertain.is_empty() {
@@ -284,21 +300,26 @@ pub fn ray_sections(s: &Scenario, conditions: &[Box<dyn Condition>], c: &[f64], 
         None => one_link(Motion::ray_through([c[0], c[1], c[2], c[3], c[4], c[5]], coord, lo, hi)),
     };
     let tol = BOUNDARY_TOL * (hi - lo).abs().max(1.0);
-    let (overall, per) = violation_pieces(conditions, s, &motions, tol);
+    let (overall, per) = violation_pieces(conditions, s, &motions, tol, None);
     sections(&overall, &per, &|k| conditions[k].label(), tol)
 }
 
-/// Wrench feasibility of the scenario's 6-cable robot at `pose` (Bohigas et al. §3), if the
-/// scenario has a wrench section.
+/// Wrench feasibility of the scenario's robot at rest at `pose` (Bohigas et al. §3 for six
+/// cables, the wrench set inside the available wrench set for more), if the scenario has a load
+/// (a wrench section or the platform's dynamics).
 pub fn wrench_at(s: &Scenario, pose: &Pose) -> Option<WrenchReport> {
-    let wrench = s.wrench.as_ref()?;
+    wrench_of(s, &cables_at(&s.robot, pose))
+}
+
+/// [`wrench_at`] for the cables `at` (moving as `at.kinematics` says, or at rest).
+pub fn wrench_of(s: &Scenario, at: &PoseCables) -> Option<WrenchReport> {
+    let load = s.load()?;
     let cables = &s.robot.cables;
-    let at = cables_at(&s.robot, pose);
     let bad_length = cables.iter().zip(at.iter()).position(|(c, (a, x))| !c.length.contains((x - a).norm()));
     if cables.len() != 6 {
-        return Some(static_report(s, &at, wrench, bad_length));
+        return Some(facet_report(s, at, &load, bad_length));
     }
-    let Some(ranges) = at.tension_ranges(wrench) else {
+    let Some(ranges) = at.tension_ranges(&load) else {
         return Some(WrenchReport {
             feasible: false,
             singular: true,
@@ -333,22 +354,24 @@ pub fn wrench_at(s: &Scenario, pose: &Pose) -> Option<WrenchReport> {
     })
 }
 
-/// The per-pose wrench report of a robot with more than six cables: wrench closure, and the
-/// static-feasibility LP's margin and tensions for the nominal wrench (the ellipsoid is not used;
-/// `tension_min`/`tension_max` stay empty).
-fn static_report(s: &Scenario, at: &PoseCables, wrench: &Wrench, bad_length: Option<usize>) -> WrenchReport {
+/// The per-pose wrench report of a robot with more than six cables: the margin of the wrench set
+/// inside the available wrench set (hyperplane shifting), the LP's tensions balancing the nominal
+/// load, and wrench closure where the scenario asks for it (`tension_min`/`tension_max` stay
+/// empty: the tensions are not unique).
+fn facet_report(s: &Scenario, at: &PoseCables, load: &Load, bad_length: Option<usize>) -> WrenchReport {
+    let wrench = &load.wrench;
     let point = wrench.point_at(&at.pose);
     let bounds: Vec<Bounds> = s.robot.cables.iter().map(|c| c.tension).collect();
-    let closed = closure_holds(&at.cables, &point);
-    let solved = static_margin(&at.cables, &point, &wrench.nominal, &bounds);
-    let margin = solved.as_ref().map(|(m, _)| *m);
-    let tensions = solved.map(|(_, f)| f).unwrap_or_default();
+    let closed = !wrench.closure || closure_holds(&at.cables, &point);
+    let nominal = at.nominal(load);
+    let margin = wrench_set_margin(&at.cables, &point, &nominal, &wrench.ellipsoid_inv, &bounds).map(|r| r.margin);
+    let tensions = static_margin(&at.cables, &point, &nominal, &bounds).map(|(_, f)| f).unwrap_or_default();
     let active = if let Some(i) = bad_length {
         format!("cable {} length", i + 1)
     } else if !closed {
         "wrench closure".to_string()
     } else {
-        "static feasibility".to_string()
+        "wrench feasibility".to_string()
     };
     WrenchReport {
         feasible: closed && margin.is_some_and(|m| m > 0.0) && bad_length.is_none(),
@@ -442,7 +465,7 @@ mod tests {
             for traj in &s.trajectories {
                 let motions = one_link(Motion::trajectory(traj));
                 let [with, without] = [true, false].map(|settle| {
-                    let (overall, per) = pieces_settling(&conditions, &s, &motions, BOUNDARY_TOL, settle);
+                    let (overall, per) = pieces_settling(&conditions, &s, &motions, BOUNDARY_TOL, None, settle);
                     sections(&overall, &per, &|k| conditions[k].label(), BOUNDARY_TOL)
                 });
                 assert!(agree(&with, &without, 2.0 * BOUNDARY_TOL), "{name} {}: {with:?} vs {without:?}", traj.name);

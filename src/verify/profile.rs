@@ -207,8 +207,8 @@ fn states_of(s: &Scenario, cables: &PoseCables, wrench: Option<crate::report::Wr
 /// planned path's poses), as [`super::tension_envelope`] gives it along a trajectory; `name`
 /// labels the path.
 pub fn tension_at(s: &Scenario, name: &str, samples: &[(f64, Pose)]) -> Result<crate::report::TensionEnvelope> {
-    if s.wrench.is_none() {
-        return Err(Error::new("wrench", "the scenario has no wrench section"));
+    if s.load().is_none() {
+        return Err(Error::new("wrench", "the scenario has no wrench section and no platform dynamics: no tensions to compute"));
     }
     if samples.len() > MAX_SAMPLES {
         return Err(Error::new("samples", format!("at most {MAX_SAMPLES} samples, got {}", samples.len())));

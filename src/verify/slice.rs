@@ -117,8 +117,8 @@ fn classify(s: &Scenario, conditions: &[Box<dyn Condition>], q: &[f64]) -> Class
     if violated(Kind::Length) {
         return Class::Length;
     }
-    if let Some(wrench) = &s.wrench {
-        if cables.tension_ranges(wrench).is_none() {
+    if let Some(load) = s.load() {
+        if s.robot.cables.len() == 6 && cables.tension_ranges(&load).is_none() {
             return Class::Singular;
         }
     }

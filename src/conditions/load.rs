@@ -1,0 +1,152 @@
+//! The wrench the cables must balance along a motion, as polynomials: the wrench set's nominal
+//! wrench, the platform's weight about the wrench point, and along a timed trajectory the
+//! d'Alembert inertial wrench (`crate::model::dynamics`).
+//!
+//! With p = P̂/w, R = M̂/w and g = dλ/ds (s the time; a polynomial for a uniform time law), every
+//! term is a polynomial over a power of w:
+//!
+//! * centre of mass X̂ = P̂ + M̂ c_b (over w); its acceleration Ã/w³ with
+//!   Ã = g g' (X̂'w − X̂w') w + g² ((X̂''w − X̂w'') w − 2w'(X̂'w − X̂w'));
+//! * angular velocity ω = g Ω̂/w², Ω̂ the axial vector of M̂'M̂ᵀ's skew part (R'Rᵀ = M̂'M̂ᵀ/w² −
+//!   (w'/w) I because M̂M̂ᵀ = w² I), and α = α̃/w³ with α̃ = g g' Ω̂ w + g² (Ω̂'w − 2Ω̂w');
+//! * world inertia I = M̂ I_b M̂ᵀ/w².
+//!
+//! The rows are returned scaled as the structure matrix's rows are (forces times w, moments times
+//! w²) and over a common w^q: [`LoadPolys::rows`] = D_w ℓ · w^q.
+
+use super::structure::Local;
+use crate::model::motion::Param;
+use crate::model::{Dynamics, Load, PointFrame};
+use crate::poly::Bern;
+
+/// The load along a motion: D_w ℓ · w^q, row by row, and w^q (`None` when q = 0).
+#[derive(Debug, Clone)]
+pub(crate) struct LoadPolys {
+    /// Rows 0–2: force · w · w^q; rows 3–5: moment · w² · w^q.
+    pub(crate) rows: [Bern; 6],
+    /// w^q, the positive factor the rows carry (`None` for 1).
+    pub(crate) scale: Option<Bern>,
+}
+
+impl LoadPolys {
+    /// The rows restricted to [a, b] ⊆ [0, 1].
+    pub(crate) fn restrict(&self, a: f64, b: f64) -> LoadPolys {
+        LoadPolys { rows: self.rows.each_ref().map(|p| p.restrict(a, b)), scale: self.scale.as_ref().map(|p| p.restrict(a, b)) }
+    }
+}
+
+/// dλ/ds along a trajectory piece run in `duration` seconds in all (time = t·duration), as a
+/// polynomial in λ; `None` for a motion without time (a ray).
+pub(crate) fn time_rate(param: &Param, duration: f64) -> Option<Bern> {
+    match *param {
+        Param::Trajectory { psi, h, t0, t1 } => {
+            let span = (t1 - t0) * duration;
+            Some(if psi < 1e-9 {
+                Bern::constant(1.0 / span)
+            } else {
+                // t = t0 + (t1 − t0)·2·atan(hλ)/ψ  ⇒  dλ/dt = ψ(1 + h²λ²)/(2h(t1 − t0))
+                let a = psi / (2.0 * h * span);
+                Bern::from_monomial(&[a, 0.0, a * h * h])
+            })
+        }
+        Param::Linear { .. } | Param::Angle { .. } => None,
+    }
+}
+
+fn cross(a: &[Bern; 3], b: &[Bern; 3]) -> [Bern; 3] {
+    [a[1].mul(&b[2]).sub(&a[2].mul(&b[1])), a[2].mul(&b[0]).sub(&a[0].mul(&b[2])), a[0].mul(&b[1]).sub(&a[1].mul(&b[0]))]
+}
+
+fn mat_vec(m: &[[Bern; 3]; 3], v: &[Bern; 3]) -> [Bern; 3] {
+    [0, 1, 2].map(|i| m[i][0].mul(&v[0]).add(&m[i][1].mul(&v[1])).add(&m[i][2].mul(&v[2])))
+}
+
+/// M̂ c for a constant vector c.
+fn mat_const(m: &[[Bern; 3]; 3], c: &nalgebra::Vector3<f64>) -> [Bern; 3] {
+    [0, 1, 2].map(|i| Bern::linear_combination(&[(&m[i][0], c[0]), (&m[i][1], c[1]), (&m[i][2], c[2])]))
+}
+
+/// The load along the motion of `local` (expanded on all of [0, 1] of the motion whose λ maps to
+/// time through `rate` = dλ/ds, `None` at rest).
+pub(crate) fn load_polys(local: &Local, load: &Load, rate: Option<&Bern>) -> LoadPolys {
+    let w = &local.weight;
+    let w2 = w.mul(w);
+    let w0 = &load.wrench.nominal;
+    let Some(dynamics) = &load.dynamics else {
+        return LoadPolys { rows: std::array::from_fn(|j| if j < 3 { w.scale(w0[j]) } else { w2.scale(w0[j]) }), scale: None };
+    };
+    // r̃ = (x_c − c)·w: from the wrench point to the centre of mass
+    let point = &load.wrench.point;
+    let com = mat_const(&local.rotation, &dynamics.com);
+    let r: [Bern; 3] = match load.wrench.frame {
+        PointFrame::Platform => {
+            let at = mat_const(&local.rotation, point);
+            [0, 1, 2].map(|i| com[i].sub(&at[i]))
+        }
+        PointFrame::World => [0, 1, 2].map(|i| com[i].sub(&w.scale(point[i]))),
+    };
+    let weight = dynamics.gravity * dynamics.mass;
+    let weight_b: [Bern; 3] = [0, 1, 2].map(|i| Bern::constant(weight[i]));
+    // static rows, q = 0: force (w0 + m g)·w, moment w0·w² + (r̃ × m g)·w
+    let static_moment = cross(&r, &weight_b);
+    let statics: [Bern; 6] = std::array::from_fn(|j| {
+        if j < 3 {
+            w.scale(w0[j] + weight[j])
+        } else {
+            w2.scale(w0[j]).add(&static_moment[j - 3].mul(w))
+        }
+    });
+    let Some(g) = rate else { return LoadPolys { rows: statics, scale: None } };
+    let inertial = inertial_rows(local, dynamics, &r, g);
+    // everything over w⁴: the static rows times w⁴
+    let w4 = w2.mul(&w2);
+    let rows = std::array::from_fn(|j| statics[j].mul(&w4).add(&inertial[j]));
+    LoadPolys { rows, scale: Some(w4) }
+}
+
+/// The d'Alembert rows over w⁴ (D_w-scaled): force −m Ã·w², moment
+/// −m (r̃ × Ã)·w² − (M̂ I_b M̂ᵀ α̃)·w − g² Ω̂ × (M̂ I_b M̂ᵀ Ω̂).
+fn inertial_rows(local: &Local, d: &Dynamics, r: &[Bern; 3], g: &Bern) -> [Bern; 6] {
+    let w = &local.weight;
+    let dw = w.derivative();
+    let ddw = dw.derivative();
+    let dg = g.derivative();
+    let gg = g.mul(g);
+    let gdg = g.mul(&dg);
+    // centre of mass numerator X̂ = P̂ + M̂ c_b
+    let com = mat_const(&local.rotation, &d.com);
+    let x: [Bern; 3] = [0, 1, 2].map(|i| local.position[i].add(&com[i]));
+    let accel: [Bern; 3] = [0, 1, 2].map(|i| {
+        let (x1, x2) = (x[i].derivative(), x[i].derivative().derivative());
+        let first = x1.mul(w).sub(&x[i].mul(&dw)); // X̂'w − X̂w'
+        let second = x2.mul(w).sub(&x[i].mul(&ddw)); // X̂''w − X̂w''
+        gdg.mul(&first).mul(w).add(&gg.mul(&second.mul(w).sub(&dw.mul(&first).scale(2.0))))
+    });
+    // Ω̂ = axial vector of the skew part of M̂'M̂ᵀ
+    let m = &local.rotation;
+    let dm: [[Bern; 3]; 3] = m.each_ref().map(|row| row.each_ref().map(Bern::derivative));
+    let a = |i: usize, j: usize| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&dm[i][k].mul(&m[j][k])));
+    let omega: [Bern; 3] = [a(2, 1).sub(&a(1, 2)).scale(0.5), a(0, 2).sub(&a(2, 0)).scale(0.5), a(1, 0).sub(&a(0, 1)).scale(0.5)];
+    let alpha: [Bern; 3] = [0, 1, 2].map(|i| {
+        let d_om = omega[i].derivative();
+        gdg.mul(&omega[i]).mul(w).add(&gg.mul(&d_om.mul(w).sub(&omega[i].mul(&dw).scale(2.0))))
+    });
+    // M̂ I_b M̂ᵀ v for a polynomial vector v
+    let inertia_times = |v: &[Bern; 3]| {
+        let body: [Bern; 3] = [0, 1, 2].map(|i| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&m[k][i].mul(&v[k]))));
+        let ib: [Bern; 3] = [0, 1, 2].map(|i| Bern::linear_combination(&[(&body[0], d.inertia[(i, 0)]), (&body[1], d.inertia[(i, 1)]), (&body[2], d.inertia[(i, 2)])]));
+        mat_vec(m, &ib)
+    };
+    let i_alpha = inertia_times(&alpha);
+    let gyro = cross(&omega, &inertia_times(&omega));
+    let w2 = w.mul(w);
+    let r_x_a = cross(r, &accel);
+    std::array::from_fn(|j| {
+        if j < 3 {
+            accel[j].mul(&w2).scale(-d.mass)
+        } else {
+            let k = j - 3;
+            r_x_a[k].mul(&w2).scale(-d.mass).sub(&i_alpha[k].mul(w)).sub(&gyro[k].mul(&gg))
+        }
+    })
+}
