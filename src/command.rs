@@ -15,7 +15,7 @@ use crate::plan::lattice::{LatticeParams, LatticePlanReport};
 use crate::plan::{PlanParams, PlanReport, PlanStatus};
 use crate::report::{PoseReport, RayReport, Side, TensionEnvelope, VerifyReport};
 use crate::verify::slice::{default_range, slice_counted, Class, SliceMap};
-use crate::verify::{along, check_config, check_pose, ray, tension_envelope, verify_all_counted, verify_along, verify_pointwise_along};
+use crate::verify::{along, check_along, check_config, check_pose, ray, tension_envelope, verify_all_counted, verify_along, verify_pointwise_along};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use crate::Scenario;
 use serde::Serialize;
@@ -49,6 +49,13 @@ pub enum Request {
     Check {
         /// Pose name.
         pose: String,
+    },
+    /// [`Request::Check`] where a trajectory is at t, moving as it moves there if it is timed.
+    CheckAt {
+        /// Trajectory name (`None`: the scenario's first).
+        trajectory: Option<String>,
+        /// The trajectory's parameter t ∈ [0, 1].
+        t: f64,
     },
     /// Each cable's least and greatest tension over the wrench set along a trajectory.
     Envelope {
@@ -102,7 +109,7 @@ pub enum Output {
     VerifyAll(Vec<VerifyReport>),
     /// Of [`Request::Ray`].
     Ray(RayReport),
-    /// Of [`Request::Check`].
+    /// Of [`Request::Check`] and [`Request::CheckAt`].
     Check(PoseReport),
     /// Of [`Request::Envelope`].
     Envelope(TensionEnvelope),
@@ -146,6 +153,10 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
             Some(_) => check_config(scenario, pose, &scenario.config(pose)?),
             None => check_pose(scenario, pose, scenario.pose(pose)?),
         }),
+        Request::CheckAt { .. } if scenario.robot.chain.is_some() => {
+            return Err(Error::new("--trajectory", "checking along a path is for platform robots; check a multi-link robot's configurations with --pose"));
+        }
+        Request::CheckAt { trajectory, t } => Output::Check(check_along(scenario, scenario.trajectory(trajectory.as_deref())?, *t)?),
         Request::Envelope { .. } if scenario.robot.chain.is_some() => {
             return Err(Error::new("envelope", "tension envelopes need a wrench set; a multi-link robot's wrench condition is joint-space wrench closure, which has no tension ranges"));
         }
@@ -323,7 +334,23 @@ fn verify_text(r: &VerifyReport) -> String {
         out += &format!("  boundary t = {:.9}{tau}: {} → {}\n", b.t, b.constraint, side(b.enters));
     }
     out += &format!("  uncertain  t ∈ {}\n", intervals(&r.uncertain));
+    if let Some(sec) = &r.seconds {
+        out += &seconds_text(sec);
+    }
     out + &notes(&r.warnings)
+}
+
+/// A timed trajectory's sections in seconds and its least time scale.
+fn seconds_text(sec: &crate::report::Seconds) -> String {
+    let mut out = format!("  timed: {} s\n", sec.duration);
+    out += &format!("    feasible   s ∈ {}\n", intervals(&sec.feasible));
+    out += &format!("    infeasible s ∈ {}\n", intervals(&sec.infeasible));
+    out += &format!("    uncertain  s ∈ {}\n", intervals(&sec.uncertain));
+    match (sec.min_time_scale, sec.min_duration) {
+        (Some(k), Some(d)) => out += &format!("    min time scale {k:.6} (shortest certified duration {d:.6} s): {}\n", sec.min_time_scale_note),
+        _ => out += &format!("    min time scale: {}\n", sec.min_time_scale_note),
+    }
+    out
 }
 
 fn ray_text(r: &RayReport) -> String {

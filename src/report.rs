@@ -49,6 +49,44 @@ pub struct VerifyReport {
     pub uncertain: Vec<[f64; 2]>,
     /// Notes for the user (from the scenario and the verification).
     pub warnings: Vec<String>,
+    /// The sections in seconds and how fast the trajectory may run, for a timed trajectory
+    /// (format 4 `duration`); absent for an untimed one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seconds: Option<Seconds>,
+}
+
+/// A timed trajectory's sections in seconds (time = t·duration) and its fastest uniform timing.
+#[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
+pub struct Seconds {
+    /// The trajectory's duration (s).
+    pub duration: f64,
+    /// Feasible time intervals [s0, s1].
+    pub feasible: Vec<[f64; 2]>,
+    /// Infeasible time intervals.
+    pub infeasible: Vec<[f64; 2]>,
+    /// Time intervals that could not be certified either way.
+    pub uncertain: Vec<[f64; 2]>,
+    /// The least uniform time scale k (every duration × k) certified to make the speed-dependent
+    /// conditions (tensions under weight and inertia, winch limits) hold along the whole
+    /// trajectory: k < 1 means it could run faster, k > 1 that it must run slower. `None` when no
+    /// scale does (see `min_time_scale_note`) or when it was not computed (point-wise reports).
+    pub min_time_scale: Option<f64>,
+    /// [k_lo, k_hi]: k_hi is `min_time_scale`, certified feasible; below k_lo the conditions are
+    /// certainly violated somewhere (k_lo = 0 when that was not certified).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub min_time_scale_bracket: Option<[f64; 2]>,
+    /// The shortest certified duration, `min_time_scale` × `duration` (s).
+    pub min_duration: Option<f64>,
+    /// When the trajectory fails at rest but holds at some speed (the inertia keeps a cable taut):
+    /// the largest scale certified to hold; slower fails. Absent when every slower timing holds.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_time_scale: Option<f64>,
+    /// Why `min_time_scale` is what it is: the condition that binds at the scale found, or why
+    /// there is none.
+    pub min_time_scale_note: String,
+    /// The t-intervals where the speed-dependent conditions fail even at rest (then no scale
+    /// helps).
+    pub infeasible_at_rest: Vec<[f64; 2]>,
 }
 
 /// A point along a ray where feasibility changes.

@@ -5,7 +5,7 @@
 #[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
-use cablenav::scenario::caspr::{import, kind, to_json};
+use cablenav::scenario::caspr::{import, kind, model_files, to_json};
 use cablenav::verify::check_pose;
 use cablenav::Scenario;
 use nalgebra::Vector3;
@@ -23,6 +23,8 @@ const NIST_CABLES: &str = model!("NIST_ROBOCRANE/NIST_RoboCrane_cables.xml");
 const ARM_BODIES: &str = model!("BMArm/BMArm_bodies.xml");
 const EXAMPLE_BODIES: &str = model!("Example_spatial/Example_spatial_bodies.xml");
 const EXAMPLE_CABLES: &str = model!("Example_spatial/Example_spatial_cables.xml");
+const COGIRO_BODIES: &str = model!("CoGiRo/CoGiRo_bodies.xml");
+const COGIRO_CABLES: &str = model!("CoGiRo/CoGiRo_cables.xml");
 const CDPR7_PRESET: &str = include_str!("../static/scenarios/cdpr7.json");
 
 fn v(x: f64, y: f64, z: f64) -> Vector3<f64> {
@@ -167,4 +169,44 @@ fn refusals_name_the_file_and_say_why() {
     five.replace_range(last..end, "");
     let e = import("x", NIST_BODIES, &five).expect_err("5 cables");
     assert_eq!(e.field, "robot.cables");
+}
+
+/// The platform's physical data comes along (format 4): CoGiRo's mass, centre of mass and
+/// inertia about it as written, CASPR's gravity; the model holds itself at its initial pose.
+#[test]
+fn physical_data_becomes_the_platforms_dynamics() {
+    let imported = to_json("CoGiRo", COGIRO_BODIES, COGIRO_CABLES).unwrap();
+    assert!(imported.json.contains("cablenav-scenario/4"));
+    let s = import("CoGiRo", COGIRO_BODIES, COGIRO_CABLES).unwrap();
+    let d = s.robot.dynamics.as_ref().expect("CoGiRo has a mass");
+    assert_eq!(d.mass, 91.058);
+    assert_eq!(d.com, v(-0.034, -0.013, 0.264));
+    assert_eq!((d.inertia[(0, 0)], d.inertia[(1, 1)], d.inertia[(2, 2)]), (36.598, 35.982, 25.439));
+    assert_eq!((d.inertia[(0, 1)], d.inertia[(0, 2)], d.inertia[(1, 2)]), (-0.453, 3.012, -1.539));
+    assert_eq!(d.inertia, d.inertia.transpose());
+    assert_eq!(d.gravity, v(0.0, 0.0, -9.81));
+    assert_eq!(s.robot.cables.len(), 8);
+    let report = check_pose(&s, "initial", s.pose("initial").unwrap());
+    let w = report.wrench.expect("a mass brings the tension conditions");
+    assert!(w.feasible && w.margin.unwrap() > 100.0, "{w:?}");
+    // an inertia about the joint is moved to the centre of mass: I_com = I_joint − m(|c|²E − ccᵀ)
+    let about_joint = COGIRO_BODIES.replace(r#"<inertia ref="com">"#, r#"<inertia ref="joint">"#);
+    let moved = import("CoGiRo", &about_joint, COGIRO_CABLES).unwrap().robot.dynamics.unwrap();
+    let c = d.com;
+    let shift = (nalgebra::Matrix3::identity() * c.norm_squared() - c * c.transpose()) * d.mass;
+    assert!((moved.inertia - (d.inertia - shift)).amax() < 1e-12);
+    // no rigid body: imported massless, with a note
+    let flat = COGIRO_BODIES.replace("<Ixx>36.598</Ixx>", "<Ixx>-1</Ixx>");
+    let massless = to_json("CoGiRo", &flat, COGIRO_CABLES).unwrap();
+    assert!(massless.json.contains("cablenav-scenario/1") && massless.notes.iter().any(|n| n.contains("massless")), "{:?}", massless.notes);
+}
+
+#[test]
+fn a_model_directory_names_its_files() {
+    let names = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+    let files = model_files(&names(&["NIST_RoboCrane_cables.xml", "NIST_RoboCrane_bodies.xml", "NIST_RoboCrane_operational_spaces.xml"])).unwrap();
+    assert_eq!((files.name.as_str(), files.bodies.as_str(), files.cables.as_str()), ("NIST_RoboCrane", "NIST_RoboCrane_bodies.xml", "NIST_RoboCrane_cables.xml"));
+    assert_eq!(model_files(&names(&["a_cables.xml"])).unwrap_err().field, "model");
+    assert!(model_files(&names(&["a_bodies.xml", "b_bodies.xml"])).unwrap_err().reason.contains("exactly one"));
+    assert!(model_files(&names(&["a_bodies.xml", "b_cables.xml"])).unwrap_err().reason.contains("a_cables.xml"));
 }

@@ -242,7 +242,7 @@ fn random_chain_paths_agree_with_dense_sampling() {
 
 #[cfg(not(target_arch = "wasm32"))]
 /// A platform scenario rewritten as a one-link chain with a free joint: the cables pull the link,
-/// the poses become configurations (x, y, z, φ, θ, σ), no wrench set.
+/// the poses become configurations (x, y, z, φ, θ, σ), no wrench set, mass or winch limits.
 fn as_chain(text: &str) -> Option<(Scenario, Scenario)> {
     let platform = Scenario::from_json(text).ok().filter(|s| s.robot.chain.is_none())?;
     let mut v: Value = serde_json::from_str(text).ok()?;
@@ -256,6 +256,9 @@ fn as_chain(text: &str) -> Option<(Scenario, Scenario)> {
         platform.poses.iter().map(|(n, p)| (n.clone(), Value::Object(names.iter().zip(p.coords()).map(|(k, x)| (k.to_string(), json!(x))).collect()))).collect();
     o.insert("configurations".into(), Value::Object(configs));
     let robot = o.get_mut("robot")?.as_object_mut()?;
+    // the platform's mass and winches are not for chains yet
+    robot.remove("dynamics");
+    robot.remove("winch");
     robot.insert("links".into(), json!([{"name": "platform", "joint": {"type": "free", "coordinates": names}}]));
     for c in robot.get_mut("cables")?.as_array_mut()? {
         c["link"] = json!("platform");
@@ -263,6 +266,8 @@ fn as_chain(text: &str) -> Option<(Scenario, Scenario)> {
     let chain = Scenario::from_json(&v.to_string()).expect("the chain version is valid");
     let mut plain = platform.clone();
     plain.wrench = None;
+    plain.robot.dynamics = None;
+    plain.robot.winch = cablenav::model::Winch { speed: None, acceleration: None };
     Some((plain, chain))
 }
 

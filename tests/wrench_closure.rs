@@ -33,7 +33,8 @@ impl Rng {
 fn cdpr7_with_load(poses_and_trajectories: Option<(serde_json::Value, serde_json::Value)>) -> Scenario {
     let mut v: serde_json::Value = serde_json::from_str(CDPR7).unwrap();
     v["robot"]["tension"] = json!({"min": 0.1, "max": 40});
-    v["wrench"] = json!({"nominal": [0, 0, -10, 0, 0, 0], "radius": 1, "point": [0, 0, 0]});
+    v["format"] = json!("cablenav-scenario/4");
+    v["wrench"] = json!({"nominal": [0, 0, -10, 0, 0, 0], "radius": 1, "point": [0, 0, 0], "closure": true});
     v["clearance"] = json!({"cable_cable": 0, "cable_obstacle": 0});
     if let Some((poses, trajectories)) = poses_and_trajectories {
         v["poses"] = poses;

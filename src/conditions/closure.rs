@@ -20,6 +20,7 @@
 
 use std::rc::Rc;
 
+use super::load::{inverse_square, with_inertia};
 use super::primitives::{GT, LT};
 use super::structure::{det_with, minors, structure_numerators, Local};
 use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
@@ -32,8 +33,9 @@ use crate::query::wrench::{closure_holds, subsets, wrench_set_margin};
 struct Facet {
     /// (k, d_k) for every column k ∉ S.
     others: Vec<(usize, Bern)>,
-    /// d_0 = n̂_S·(D_w ℓ) (times the load's w^q).
-    load: Bern,
+    /// d_0 = n̂_S·(D_w ℓ) (times the load's w^q), and its inertial part for one second (a
+    /// motion run in T seconds has d_0 + inertial/T²).
+    load: (Bern, Option<Bern>),
     /// r_S² = (D_w n̂_S)ᵀ E⁻¹ (D_w n̂_S) ≥ 0 (times w^2q); `None` for a single wrench (E⁻¹ = 0).
     reach2: Option<Bern>,
 }
@@ -66,7 +68,7 @@ impl FacetPolys {
         let w2 = w.mul(w);
         let e_inv = &load.wrench.ellipsoid_inv;
         let single = e_inv.iter().all(|x| *x == 0.0);
-        let rows = &local.load.rows;
+        let (rows, inertial) = (&local.load.rows, local.load.inertial.as_ref());
         let m = local.cables.len();
         let facets = subsets(m, 5)
             .into_iter()
@@ -93,7 +95,8 @@ impl FacetPolys {
                         None => r,
                     }
                 });
-                Facet { others, load: det_with(&minors, &std::array::from_fn::<_, 6, _>(|j| &rows[j])), reach2 }
+                let d0 = |rows: &[Bern; 6]| det_with(&minors, &std::array::from_fn::<_, 6, _>(|j| &rows[j]));
+                Facet { others, load: (d0(rows), inertial.map(d0)), reach2 }
             })
             .collect();
         let len2 = local.len2();
@@ -216,13 +219,16 @@ impl Iv {
 /// Deepest bisection of the static-feasibility decision before a piece is reported undecided.
 const MAX_NODES: usize = 4_000;
 
-/// One facet on a piece of the motion: (k, d_k) for the other columns, d_0, r_S².
+/// One facet on a piece of the motion: (k, d_k) for the other columns, d_0 at the motion's
+/// timing, r_S².
 type LocalFacet = (Vec<(usize, Bern)>, Bern, Option<Bern>);
 
 impl WrenchFeasibility {
     /// The truth of "wrench-feasible" on the piece of the motion where `polys` are expanded
-    /// (all of them restricted to it): True, False, or Unknown when the enclosures cannot tell.
-    fn decide(&self, polys: &[LocalFacet], len2: &[Bern], weight: &Bern, scale: Option<&Bern>) -> Truth {
+    /// (all of them restricted to it): True, False, or Unknown when the enclosures cannot tell —
+    /// then with the positions in `polys` of the facets not certainly satisfied (a facet that
+    /// holds on a piece holds on every part of it, so only those need looking at there).
+    fn decide(&self, polys: &[LocalFacet], len2: &[Bern], weight: &Bern, scale: Option<&Bern>) -> (Truth, Vec<usize>) {
         let w = Iv::of(weight);
         // 1/w^q: the loads' positive factor divided out
         let inv_scale = scale.map(|q| {
@@ -240,8 +246,8 @@ impl WrenchFeasibility {
                 }
             })
             .collect();
-        let mut all_hold = true;
-        for (others, load, reach2) in polys {
+        let mut open = Vec::new();
+        for (pos, (others, load, reach2)) in polys.iter().enumerate() {
             let d0 = Iv::of(load);
             // the ellipsoid's reach r = √(r²) (over the same w^q as d_0)
             let reach = reach2.as_ref().map_or(Iv { lo: 0.0, hi: 0.0 }, |r| {
@@ -265,39 +271,43 @@ impl WrenchFeasibility {
             let above = Iv { lo: upper.lo - d_hi.hi, hi: upper.hi - d_hi.lo };
             let below = Iv { lo: d_lo.lo - lower.hi, hi: d_lo.hi - lower.lo };
             if above.hi < 0.0 || below.hi < 0.0 {
-                return Truth::False;
+                return (Truth::False, Vec::new());
             }
             if !(above.lo > 0.0 && below.lo > 0.0) {
-                all_hold = false;
+                open.push(pos);
             }
         }
-        if all_hold {
-            Truth::True
+        if open.is_empty() {
+            (Truth::True, open)
         } else {
-            Truth::Unknown
+            (Truth::Unknown, open)
         }
     }
 
     /// Bisection over [a, b] ⊆ [0, 1]: pieces of `out` as (end, feasible?).
-    fn bisect(&self, all: &FacetPolys, live: &[usize], (a, b): (f64, f64), tol: f64, budget: &mut usize, out: &mut Vec<(f64, Truth)>) {
+    /// `loads` holds each facet's d_0 at the motion's timing.
+    #[allow(clippy::too_many_arguments)]
+    fn bisect(&self, all: &FacetPolys, loads: &[Bern], live: &[usize], (a, b): (f64, f64), tol: f64, budget: &mut usize, out: &mut Vec<(f64, Truth)>) {
         let restrict = |p: &Bern| p.restrict(a, b);
         let polys: Vec<LocalFacet> = live
             .iter()
             .map(|&i| {
                 let f = &all.facets[i];
-                (f.others.iter().map(|(k, d)| (*k, restrict(d))).collect(), restrict(&f.load), f.reach2.as_ref().map(restrict))
+                (f.others.iter().map(|(k, d)| (*k, restrict(d))).collect(), restrict(&loads[i]), f.reach2.as_ref().map(restrict))
             })
             .collect();
         let len2: Vec<Bern> = all.len2.iter().map(restrict).collect();
-        let truth = self.decide(&polys, &len2, &restrict(&all.weight), all.scale.as_ref().map(restrict).as_ref());
-        if truth != Truth::Unknown || b - a <= tol || *budget == 0 {
+        let (truth, open) = self.decide(&polys, &len2, &restrict(&all.weight), all.scale.as_ref().map(restrict).as_ref());
+        // a quarter of the tolerance: two undecided neighbours merged stay narrower than it
+        if truth != Truth::Unknown || b - a <= 0.25 * tol || *budget == 0 {
             out.push((b, truth));
             return;
         }
         *budget -= 1;
+        let live: Vec<usize> = open.into_iter().map(|pos| live[pos]).collect();
         let mid = 0.5 * (a + b);
-        self.bisect(all, live, (a, mid), tol, budget, out);
-        self.bisect(all, live, (mid, b), tol, budget, out);
+        self.bisect(all, loads, &live, (a, mid), tol, budget, out);
+        self.bisect(all, loads, &live, (mid, b), tol, budget, out);
     }
 }
 
@@ -319,7 +329,9 @@ impl Condition for WrenchFeasibility {
         }
         let mut pieces = Vec::new();
         let mut budget = MAX_NODES;
-        self.bisect(&polys, &live, (0.0, 1.0), tol, &mut budget, &mut pieces);
+        let inv_t2 = inverse_square(sweep.duration);
+        let loads: Vec<Bern> = polys.facets.iter().map(|f| with_inertia(&f.load.0, f.load.1.as_ref(), inv_t2)).collect();
+        self.bisect(&polys, &loads, &live, (0.0, 1.0), tol, &mut budget, &mut pieces);
         Partition::from_pieces(pieces).not()
     }
 

@@ -19,11 +19,17 @@ use crate::model::motion::Param;
 use crate::model::{Dynamics, Load, PointFrame};
 use crate::poly::Bern;
 
-/// The load along a motion: D_w ℓ · w^q, row by row, and w^q (`None` when q = 0).
+/// The load along a motion: D_w ℓ · w^q, row by row, and w^q (`None` when q = 0). Along a timed
+/// motion the inertial rows are kept apart, for a duration of one second: a trajectory run in T
+/// seconds has the rows `rows + inertial / T²` (velocities scale with 1/T, accelerations with
+/// 1/T²), so one expansion serves every timing.
 #[derive(Debug, Clone)]
 pub(crate) struct LoadPolys {
-    /// Rows 0–2: force · w · w^q; rows 3–5: moment · w² · w^q.
+    /// Rows 0–2: force · w · w^q; rows 3–5: moment · w² · w^q — the wrench set's nominal wrench
+    /// and the weight.
     pub(crate) rows: [Bern; 6],
+    /// The d'Alembert rows at a duration of one second (same scaling), along a timed motion.
+    pub(crate) inertial: Option<[Bern; 6]>,
     /// w^q, the positive factor the rows carry (`None` for 1).
     pub(crate) scale: Option<Bern>,
 }
@@ -31,7 +37,21 @@ pub(crate) struct LoadPolys {
 impl LoadPolys {
     /// The rows restricted to [a, b] ⊆ [0, 1].
     pub(crate) fn restrict(&self, a: f64, b: f64) -> LoadPolys {
-        LoadPolys { rows: self.rows.each_ref().map(|p| p.restrict(a, b)), scale: self.scale.as_ref().map(|p| p.restrict(a, b)) }
+        let r = |rows: &[Bern; 6]| rows.each_ref().map(|p| p.restrict(a, b));
+        LoadPolys { rows: r(&self.rows), inertial: self.inertial.as_ref().map(r), scale: self.scale.as_ref().map(|p| p.restrict(a, b)) }
+    }
+}
+
+/// 1/T² for a motion run in `duration` seconds (0 at rest, `None`).
+pub(crate) fn inverse_square(duration: Option<f64>) -> f64 {
+    duration.map_or(0.0, |d| 1.0 / (d * d))
+}
+
+/// `fixed + inertial · k` (the inertial part absent: `fixed`).
+pub(crate) fn with_inertia(fixed: &Bern, inertial: Option<&Bern>, k: f64) -> Bern {
+    match inertial {
+        Some(i) if k != 0.0 => Bern::linear_combination(&[(fixed, 1.0), (i, k)]),
+        _ => fixed.clone(),
     }
 }
 
@@ -67,13 +87,13 @@ fn mat_const(m: &[[Bern; 3]; 3], c: &nalgebra::Vector3<f64>) -> [Bern; 3] {
 }
 
 /// The load along the motion of `local` (expanded on all of [0, 1] of the motion whose λ maps to
-/// time through `rate` = dλ/ds, `None` at rest).
+/// time through `rate` = dλ/ds for a duration of one second; `None` at rest).
 pub(crate) fn load_polys(local: &Local, load: &Load, rate: Option<&Bern>) -> LoadPolys {
     let w = &local.weight;
     let w2 = w.mul(w);
     let w0 = &load.wrench.nominal;
     let Some(dynamics) = &load.dynamics else {
-        return LoadPolys { rows: std::array::from_fn(|j| if j < 3 { w.scale(w0[j]) } else { w2.scale(w0[j]) }), scale: None };
+        return LoadPolys { rows: std::array::from_fn(|j| if j < 3 { w.scale(w0[j]) } else { w2.scale(w0[j]) }), inertial: None, scale: None };
     };
     // r̃ = (x_c − c)·w: from the wrench point to the centre of mass
     let point = &load.wrench.point;
@@ -96,12 +116,11 @@ pub(crate) fn load_polys(local: &Local, load: &Load, rate: Option<&Bern>) -> Loa
             w2.scale(w0[j]).add(&static_moment[j - 3].mul(w))
         }
     });
-    let Some(g) = rate else { return LoadPolys { rows: statics, scale: None } };
+    let Some(g) = rate else { return LoadPolys { rows: statics, inertial: None, scale: None } };
     let inertial = inertial_rows(local, dynamics, &r, g);
     // everything over w⁴: the static rows times w⁴
     let w4 = w2.mul(&w2);
-    let rows = std::array::from_fn(|j| statics[j].mul(&w4).add(&inertial[j]));
-    LoadPolys { rows, scale: Some(w4) }
+    LoadPolys { rows: statics.each_ref().map(|p| p.mul(&w4)), inertial: Some(inertial), scale: Some(w4) }
 }
 
 /// The d'Alembert rows over w⁴ (D_w-scaled): force −m Ã·w², moment

@@ -22,6 +22,7 @@ mod offset;
 mod structure;
 mod tension;
 pub mod tube;
+mod winch;
 
 pub use cable_cable::CableCable;
 pub use cable_length::CableLength;
@@ -30,6 +31,7 @@ pub use cable_shape::CableShape;
 pub use closure::{FacetPolys, WrenchClosure, WrenchFeasibility};
 pub use joint_closure::JointClosure;
 pub use tension::{CableTension, Side, TensionPolys};
+pub use winch::{Rate, WinchLimit};
 
 use std::cell::OnceCell;
 use std::rc::Rc;
@@ -273,6 +275,9 @@ pub enum Kind {
     Tension,
     /// Cable–cable and cable–obstacle clearance.
     Interference,
+    /// Winch speed and acceleration limits: only along timed motions (a pose, a ray or a slice
+    /// is at rest).
+    Winch,
 }
 
 /// How much exact work a condition's violation set takes along a motion, cheapest first.
@@ -359,6 +364,11 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
             }
         }
         out.push(Box::new(JointClosure { chain: Rc::new(chain.clone()), cable_links: robot.cables.iter().map(|c| c.link).collect() }));
+    }
+    for (rate, limit) in [(Rate::Speed, robot.winch.speed), (Rate::Acceleration, robot.winch.acceleration)] {
+        if let Some(limit) = limit {
+            out.extend((0..m).map(|cable| Box::new(WinchLimit { cable, rate, limit }) as Box<dyn Condition>));
+        }
     }
     if let Some(load) = s.load() {
         let load = Rc::new(load);

@@ -25,7 +25,8 @@ pub(crate) struct Local {
 }
 
 impl Local {
-    /// The sweep's motion and the load along it (with the inertial wrench when the sweep is timed).
+    /// The sweep's motion and the load along it (with the inertial wrench, for any duration, when
+    /// the sweep is timed).
     pub(crate) fn of(sweep: &Sweep, load: &Load) -> Local {
         let m = sweep.motion();
         let mut local = Local {
@@ -33,9 +34,10 @@ impl Local {
             rotation: m.rotation.clone(),
             weight: m.weight.clone(),
             cables: sweep.cables.iter().map(|c| (c.base, [c.s[0].p.clone(), c.s[1].p.clone(), c.s[2].p.clone()])).collect(),
-            load: LoadPolys { rows: std::array::from_fn(|_| Bern::constant(0.0)), scale: None },
+            load: LoadPolys { rows: std::array::from_fn(|_| Bern::constant(0.0)), inertial: None, scale: None },
         };
-        let rate = sweep.duration.and_then(|d| time_rate(&m.param, d));
+        // timed: the inertial rows for one second, scaled to the sweep's duration when used
+        let rate = sweep.duration.and_then(|_| time_rate(&m.param, 1.0));
         local.load = load_polys(&local, load, rate.as_ref());
         local
     }

@@ -16,6 +16,7 @@
 use std::rc::Rc;
 
 use super::algebra::H;
+use super::load::{inverse_square, with_inertia};
 use super::primitives::{all_of, any_of, GT, LT};
 use super::structure::{minors, structure_numerators, Local};
 use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
@@ -54,9 +55,10 @@ pub struct TensionPolys {
     local: Local,
     /// Δ = det Ñ.
     delta: Bern,
-    /// (i, α_i, β_i) for the cables expanded here (all six on a whole motion, one on a refined
-    /// piece); with a load over w^q (inertia), α_i carries the factor w^q and β_i its square.
-    columns: Vec<(usize, Bern, Bern)>,
+    /// (i, α_i, β_i, α_i's inertial part for one second) for the cables expanded here (all six
+    /// on a whole motion, one on a refined piece); with a load over w^q (inertia), α_i carries the
+    /// factor w^q and β_i its square. A motion run in T seconds has α_i + inertial/T².
+    columns: Vec<(usize, Bern, Bern, Option<Bern>)>,
     /// P_i = ‖s̃_i‖² per cable.
     len2: Vec<Bern>,
 }
@@ -67,9 +69,10 @@ impl TensionPolys {
         TensionPolys::on(Local::of(sweep, load), (0.0, 1.0), load, &[0, 1, 2, 3, 4, 5])
     }
 
-    /// α_i and β_i of cable i, if expanded here.
-    fn column(&self, i: usize) -> Option<(&Bern, &Bern)> {
-        self.columns.iter().find(|c| c.0 == i).map(|c| (&c.1, &c.2))
+    /// α_i (for a motion run in T seconds, `inv_t2` = 1/T², 0 at rest) and β_i of cable i, if
+    /// expanded here.
+    fn column(&self, i: usize, inv_t2: f64) -> Option<(Bern, &Bern)> {
+        self.columns.iter().find(|c| c.0 == i).map(|c| (with_inertia(&c.1, c.3.as_ref(), inv_t2), &c.2))
     }
 
     /// Cable i's polynomials (and Δ) re-expanded on [c, d] ⊆ [0, 1].
@@ -97,12 +100,14 @@ impl TensionPolys {
                 delta = Some((0..6).fold(Bern::constant(0.0), |d, j| d.add(&n[j][i].mul(&cofactors[j]))));
             }
             let g: Vec<Bern> = cofactors.iter().enumerate().map(|(j, c)| c.mul(row_weight(j))).collect();
+            // α = Σ C_j (D_w ℓ)_j w^q
+            let dot = |rows: &[Bern; 6]| (0..6).fold(Bern::constant(0.0), |acc, j| acc.add(&cofactors[j].mul(&rows[j])));
             let a = match (&local.load.scale, load.dynamics.is_some()) {
                 // a constant load: α = Σ g_j w0_j
                 (None, false) => Bern::linear_combination(&[0, 1, 2, 3, 4, 5].map(|j| (&g[j], wrench.nominal[j]))),
-                // α = Σ C_j (D_w ℓ)_j w^q
-                _ => (0..6).fold(Bern::constant(0.0), |acc, j| acc.add(&cofactors[j].mul(&local.load.rows[j]))),
+                _ => dot(&local.load.rows),
             };
+            let inertial = local.load.inertial.as_ref().map(dot);
             let mut b = Bern::constant(0.0);
             for j in 0..6 {
                 // E⁻¹ symmetric: diagonal once, off-diagonal twice.
@@ -114,7 +119,7 @@ impl TensionPolys {
                 Some(q) => b.mul(&q.mul(q)),
                 None => b,
             };
-            columns.push((i, a, b));
+            columns.push((i, a, b, inertial));
         }
         let len2 = local.len2();
         TensionPolys { span, delta: delta.unwrap_or_else(|| Bern::constant(0.0)), columns, len2, local }
@@ -142,19 +147,19 @@ impl CableTension {
     /// Where the bound is violated on `t`'s span (as a partition of [0, 1] over it): violated
     /// unless (Δ > 0 and it holds with σ = +1) or (Δ < 0 and with σ = −1) — so also wherever Δ
     /// vanishes identically.
-    fn violated_on(&self, t: &TensionPolys, tol: f64) -> Partition {
+    fn violated_on(&self, t: &TensionPolys, inv_t2: f64, tol: f64) -> Partition {
         let holds = any_of!(
-            and_then(all_of!(tol; h(t.delta.clone()) => GT), || self.holds(t, 1.0, tol)),
-            and_then(all_of!(tol; h(t.delta.clone()) => LT), || self.holds(t, -1.0, tol)),
+            and_then(all_of!(tol; h(t.delta.clone()) => GT), || self.holds(t, 1.0, inv_t2, tol)),
+            and_then(all_of!(tol; h(t.delta.clone()) => LT), || self.holds(t, -1.0, inv_t2, tol)),
         );
         holds.not()
     }
 
     /// Where the bound holds over the whole ellipsoid, assuming sign Δ = `sigma` (the caller
     /// restricts to those pieces).
-    fn holds(&self, t: &TensionPolys, sigma: f64, tol: f64) -> Partition {
+    fn holds(&self, t: &TensionPolys, sigma: f64, inv_t2: f64, tol: f64) -> Partition {
         let i = self.cable;
-        let Some((alpha, beta)) = t.column(i) else { return Partition::constant(Truth::Unknown) };
+        let Some((alpha, beta)) = t.column(i, inv_t2) else { return Partition::constant(Truth::Unknown) };
         let a = alpha.scale(sigma);
         let abs_delta = t.delta.scale(sigma);
         let p = &t.len2[i];
@@ -230,7 +235,8 @@ impl Condition for CableTension {
                 p
             }
         };
-        let mut out = self.violated_on(&polys, tol);
+        let inv_t2 = inverse_square(sweep.duration);
+        let mut out = self.violated_on(&polys, inv_t2, tol);
         // Undecided pieces wider than tol: re-expand the motion around each and decide again,
         // where error bounds follow the local (often much smaller) magnitudes.
         for _ in 0..REFINE_ROUNDS {
@@ -246,7 +252,7 @@ impl Condition for CableTension {
             for (a, b) in wide {
                 let span = ((a - (b - a)).max(0.0), (b + (b - a)).min(1.0));
                 let local = polys.refined(span, &self.load, self.cable);
-                let inner = self.violated_on(&local, tol / (span.1 - span.0));
+                let inner = self.violated_on(&local, inv_t2, tol / (span.1 - span.0));
                 out = out.splice((a, b), &inner, span);
             }
         }

@@ -212,7 +212,8 @@ pub struct WrenchSetMargin {
 /// and support h(±n_S) = Σ_k max(±d_k (f_min,k + t), ±d_k (f_max,k − t)), d_k = n_S·j_k. The
 /// ellipsoid W = {w : (w − w0)ᵀE(w − w0) ≤ 1} lies in Z(t) iff for every S,
 /// |n_S·w0| + √(n_Sᵀ E⁻¹ n_S) stays inside on both sides; each side is linear in t, so the
-/// largest t is the least over facets of (h(±n_S) at t = 0 ∓ n_S·w0 − √(n_Sᵀ E⁻¹ n_S)) / Σ_k |d_k|.
+/// largest t is the least over facets of (h(±n_S) at t = 0 ∓ n_S·w0 − √(n_Sᵀ E⁻¹ n_S)) / Σ_k |d_k|,
+/// and at most half the narrowest finite tension range (the shrunk box is empty beyond).
 /// Any number of cables ≥ 6 (C(m, 5) facets). `None` when J has rank below 6 (no facet has
 /// columns off its hyperplane while some hyperplane holds them all): W, or w0, is then balanced
 /// nowhere but on that hyperplane, reported as singular.
@@ -258,7 +259,9 @@ pub fn wrench_set_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector
     if !spanned {
         return None;
     }
-    best
+    // past half the narrowest finite tension range the shrunk box is empty
+    let half = bounds.iter().filter(|b| b.max.is_finite()).map(|b| 0.5 * (b.max - b.min)).fold(f64::INFINITY, f64::min);
+    best.map(|b| WrenchSetMargin { margin: b.margin.min(half), ..b })
 }
 
 /// The normal of the hyperplane through the five columns `s` of the 6×m matrix `j`: the cofactors

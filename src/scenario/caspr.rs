@@ -15,6 +15,12 @@
 //!   `force_min`/`force_max` become the tension bounds, `diameter` the robot's diameter (the
 //!   largest, if they differ).
 //!
+//! * physical data: the platform link's `<physical>` `mass`, `com_location` and `inertia` become
+//!   `robot.dynamics` (format 4) with CASPR's gravity, 9.81 m/s² down the base's z axis; an
+//!   inertia given about the joint (`ref="joint"`) is moved to the centre of mass (parallel axes).
+//!   A link without a positive mass and a positive definite inertia is imported massless, with a
+//!   note.
+//!
 //! The scenario also gets one trajectory, `hold initial`, that stays at the initial pose, as a
 //! starting point for editing. Everything else (clearances, obstacles, length bounds) is left at
 //! the format's defaults. Errors name the file (`bodies` or `cables`) as the field and give the
@@ -24,7 +30,7 @@ use roxmltree::{Document, Node, ParsingOptions};
 use serde::Serialize;
 use std::collections::BTreeMap;
 
-use super::{Scenario, FORMAT};
+use super::{Scenario, FORMAT, FORMAT_4};
 use crate::error::{Error, Result};
 
 /// An imported model: the scenario JSON and what the user should know about the conversion.
@@ -46,10 +52,12 @@ pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import>
     let mut notes = Vec::new();
     let Properties { diameter, tension, per_cable } = Properties::of(cables.iter().map(|c| [c.force_min, c.force_max, c.diameter]).collect(), &mut notes);
 
+    let dynamics = platform.physical.and_then(|ph| ph.dynamics(&mut notes));
     let out = OutScenario {
-        format: FORMAT,
+        format: if dynamics.is_some() { FORMAT_4 } else { FORMAT },
         name,
         robot: OutRobot {
+            dynamics,
             links: None,
             cables: cables
                 .iter()
@@ -75,6 +83,34 @@ pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import>
     };
     let json = serde_json::to_string_pretty(&out).map_err(|e| Error::new("", format!("internal: {e}")))?;
     Ok(Import { json, notes })
+}
+
+/// The files of a CASPR model directory: its bodies and cables files, and the model's name.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ModelFiles {
+    /// The model's name: the files' common prefix (`CoGiRo` of `CoGiRo_bodies.xml`).
+    pub name: String,
+    /// `<name>_bodies.xml`.
+    pub bodies: String,
+    /// `<name>_cables.xml`.
+    pub cables: String,
+}
+
+/// Picks a model's bodies and cables files from the names in its directory: exactly one
+/// `*_bodies.xml`, and the `*_cables.xml` of the same name. Errors (field `model`) say what is
+/// missing or ambiguous.
+pub fn model_files(names: &[String]) -> Result<ModelFiles> {
+    let mut bodies: Vec<&String> = names.iter().filter(|n| n.ends_with("_bodies.xml")).collect();
+    bodies.sort();
+    let [only] = bodies.as_slice() else {
+        return Err(Error::new("model", format!("needs exactly one CASPR <name>_bodies.xml, found {}: {bodies:?}", bodies.len())));
+    };
+    let name = only.trim_end_matches("_bodies.xml").to_string();
+    let cables = format!("{name}_cables.xml");
+    if !names.contains(&cables) {
+        return Err(Error::new("model", format!("{only} has no {cables} beside it")));
+    }
+    Ok(ModelFiles { bodies: (*only).clone(), cables, name })
 }
 
 /// Converts and validates: the scenario of [`to_json`], parsed by [`Scenario::from_json`].
@@ -152,6 +188,73 @@ pub(super) struct OutRobot {
     pub(super) tension: Option<OutBounds>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) diameter: Option<f64>,
+    /// The platform's mass and inertia (format 4), platform robots only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) dynamics: Option<OutDynamics>,
+}
+
+/// `robot.dynamics` as written.
+#[derive(Serialize)]
+pub(super) struct OutDynamics {
+    mass: f64,
+    com: [f64; 3],
+    inertia: [[f64; 3]; 3],
+    gravity: [f64; 3],
+}
+
+/// CASPR's gravity: 9.81 m/s² along −z of the base frame.
+const CASPR_GRAVITY: [f64; 3] = [0.0, 0.0, -9.81];
+
+/// A link's `<physical>` data as read: mass, centre of mass (link frame), inertia and the point it
+/// is given about.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Physical {
+    mass: f64,
+    com: [f64; 3],
+    /// Ixx, Iyy, Izz, Ixy, Ixz, Iyz as the tensor's entries.
+    inertia: [f64; 6],
+    /// Given about the joint (`ref="joint"`) rather than the centre of mass.
+    about_joint: bool,
+}
+
+impl Physical {
+    /// `robot.dynamics`, the inertia moved to the centre of mass; `None` (with a note) for data
+    /// that gives no rigid body: a mass that is not positive, an inertia not positive definite.
+    fn dynamics(&self, notes: &mut Vec<String>) -> Option<OutDynamics> {
+        let [xx, yy, zz, xy, xz, yz] = self.inertia;
+        let mut i = nalgebra::Matrix3::new(xx, xy, xz, xy, yy, yz, xz, yz, zz);
+        if self.about_joint {
+            // parallel axes: I_joint = I_com + m (|c|² E − c cᵀ)
+            let c = nalgebra::Vector3::from(self.com);
+            i -= (nalgebra::Matrix3::identity() * c.norm_squared() - c * c.transpose()) * self.mass;
+        }
+        if !(self.mass > 0.0) || nalgebra::Cholesky::new(i).is_none() {
+            notes.push(format!("the platform's physical data (mass {}, inertia about its centre of mass {:?}) is not a rigid body; imported massless", self.mass, i.as_slice()));
+            return None;
+        }
+        Some(OutDynamics { mass: self.mass, com: self.com, inertia: [0, 1, 2].map(|r| [0, 1, 2].map(|c| i[(r, c)])), gravity: CASPR_GRAVITY })
+    }
+}
+
+/// A link's `<physical>` element, if it has one with a `<mass>`.
+fn physical(node: Node) -> Result<Option<Physical>> {
+    const FILE: &str = "bodies";
+    let Some(ph) = child(node, "physical") else { return Ok(None) };
+    let Some([mass]) = child_numbers::<1>(FILE, ph, "mass")? else { return Ok(None) };
+    let com = child_numbers::<3>(FILE, ph, "com_location")?.unwrap_or([0.0; 3]);
+    let Some(inertia) = child(ph, "inertia") else {
+        return Err(Error::new(FILE, format!("{}: <physical> has a <mass> but no <inertia>", line(ph))));
+    };
+    let about_joint = match inertia.attribute("ref").unwrap_or("com") {
+        "com" => false,
+        "joint" => true,
+        other => return Err(Error::new(FILE, format!("{}: inertia ref {other:?} is not \"com\" or \"joint\"", line(inertia)))),
+    };
+    let mut entries = [0.0; 6];
+    for (slot, tag) in entries.iter_mut().zip(["Ixx", "Iyy", "Izz", "Ixy", "Ixz", "Iyz"]) {
+        *slot = child_numbers::<1>(FILE, inertia, tag)?.map_or(0.0, |[x]| x);
+    }
+    Ok(Some(Physical { mass, com, inertia: entries, about_joint }))
 }
 
 /// A cable as written: its base anchor, the link it pulls (multi-link robots only), its anchor
@@ -216,6 +319,8 @@ struct Platform {
     euler_rad: [f64; 3],
     /// The centre of mass in the link frame (for `attachment_reference="com"`).
     com: [f64; 3],
+    /// Its physical data, if given.
+    physical: Option<Physical>,
 }
 
 /// One cable as read.
@@ -336,6 +441,7 @@ fn platform(xml: &str) -> Result<Platform> {
         position: [parent_location[0] + q[0], parent_location[1] + q[1], parent_location[2] + q[2]],
         euler_rad: [q[3], q[4], q[5]],
         com,
+        physical: physical(*link)?,
     })
 }
 

@@ -213,6 +213,7 @@ pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import>
         format: FORMAT_3,
         name,
         robot: OutRobot {
+            dynamics: None,
             links: Some(links
                 .iter()
                 .map(|l| OutLink {

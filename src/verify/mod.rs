@@ -5,6 +5,7 @@ mod pointwise;
 pub mod profile;
 mod sections;
 pub mod slice;
+pub mod timing;
 
 pub use pointwise::{verify_pointwise, verify_pointwise_along};
 pub use sections::{push_merged, sections, Piece, Sections};
@@ -18,7 +19,7 @@ use crate::error::{Error, Result};
 use crate::model::motion::Param;
 use crate::model::{Coord, JointPath, Motion, Pose, Trajectory};
 use crate::poly::{Partition, Truth};
-use crate::report::{Boundary, CheckEntry, PoseReport, RayBoundary, RayReport, TensionEnvelope, VerifyReport, WrenchReport};
+use crate::report::{Seconds, Boundary, CheckEntry, PoseReport, RayBoundary, RayReport, TensionEnvelope, VerifyReport, WrenchReport};
 use crate::scenario::Scenario;
 
 /// Accuracy of reported boundaries, in the user's parameter (t, or the ray's coordinate).
@@ -35,34 +36,56 @@ fn violation_pieces(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[
 /// Each entry of `motions` is one piece: the motion of every link (the platform's alone for a
 /// platform robot).
 fn pieces_settling(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[Vec<Motion>], tol_user: f64, duration: Option<f64>, settle: bool) -> (Vec<Piece>, Vec<Vec<Piece>>) {
+    pieces_on(conditions, &mut sweeps(s, motions, tol_user, duration), settle)
+}
+
+/// The sweeps of the pieces `motions` (each the motion of every link), with the tolerance in λ
+/// for `tol_user` in the user's parameter, timed by `duration` (`None`: at rest).
+fn sweeps(s: &Scenario, motions: &[Vec<Motion>], tol_user: f64, duration: Option<f64>) -> Vec<Sweep> {
+    motions
+        .iter()
+        .map(|links| {
+            let tol = tol_user / links[0].param.max_slope().max(1e-300);
+            let mut sweep = Sweep::of_links(&s.robot, links, tol);
+            sweep.duration = duration;
+            sweep
+        })
+        .collect()
+}
+
+/// The violation pieces of `conditions` along `sweeps` (consecutive pieces of one range), mapped
+/// to user units and concatenated: the union and each condition's own. The sweeps keep the
+/// polynomials the conditions expanded on them, so a caller may run them again — at another
+/// duration, say — without expanding anew.
+fn pieces_on(conditions: &[Box<dyn Condition>], sweeps: &mut [Sweep], settle: bool) -> (Vec<Piece>, Vec<Vec<Piece>>) {
     let mut per: Vec<Vec<Piece>> = vec![Vec::new(); conditions.len()];
     let mut overall: Vec<Piece> = Vec::new();
     // the cheap conditions first (a stable sort keeps file order within each cost): where they
     // already violate, the costlier ones may stay undecided
     let mut order: Vec<usize> = (0..conditions.len()).collect();
     order.sort_by_key(|&k| conditions[k].cost());
-    for (piece, links) in motions.iter().enumerate() {
-        let motion = &links[0];
-        let tol = tol_user / motion.param.max_slope().max(1e-300);
-        let mut sweep = Sweep::of_links(&s.robot, links, tol);
-        sweep.duration = duration;
+    let count = sweeps.len();
+    for (piece, sweep) in sweeps.iter_mut().enumerate() {
+        let tol = sweep.tol;
+        sweep.settled.clear();
         let mut union = Partition::constant(Truth::False);
         // where the piece meets its neighbour a boundary may lie, so a margin is kept there too;
         // the range's own ends are no boundary
-        let neighbours = (piece > 0, piece + 1 < motions.len());
+        let neighbours = (piece > 0, piece + 1 < count);
         let mut found = vec![Partition::constant(Truth::False); conditions.len()];
         for &k in &order {
-            found[k] = conditions[k].violation(&mut sweep);
+            found[k] = conditions[k].violation(sweep);
             union = union.or(&found[k]);
             // the union's violated set grows only where this condition is violated
             if settle && !found[k].is_all(Truth::False) {
                 sweep.settled = settled(&union, SETTLED_MARGIN * tol, neighbours);
             }
         }
+        let param = sweep.motion().param;
         for (v, out) in found.iter().zip(per.iter_mut()) {
-            append_mapped(out, v, &motion.param);
+            append_mapped(out, v, &param);
         }
-        append_mapped(&mut overall, &union, &motion.param);
+        append_mapped(&mut overall, &union, &param);
     }
     (overall, per)
 }
@@ -207,7 +230,11 @@ pub fn verify_along(s: &Scenario, along: Along) -> Result<VerifyReport> {
     if !sec.uncertain.is_empty() {
         warnings.push(format!("{} section(s) could not be certified either way; see \"uncertain\"", sec.uncertain.len()));
     }
-    Ok(trajectory_report(along, sec, "exact", None, warnings))
+    let seconds = match along {
+        Along::Trajectory(traj) => timing::seconds(s, traj, &sec, true),
+        Along::Joints(_) => None,
+    };
+    Ok(trajectory_report(along, sec, "exact", None, warnings, seconds))
 }
 
 /// Verification of every trajectory of the scenario (what `cablenav verify SCENARIO --all`
@@ -234,7 +261,7 @@ pub fn verify_all_counted(s: &Scenario, pointwise: Option<f64>, done: &AtomicUsi
 }
 
 /// Builds the report of a trajectory from its sections in t.
-fn trajectory_report(along: Along, sec: Sections, method: &str, step: Option<f64>, warnings: Vec<String>) -> VerifyReport {
+fn trajectory_report(along: Along, sec: Sections, method: &str, step: Option<f64>, warnings: Vec<String>, seconds: Option<Seconds>) -> VerifyReport {
     let to_tau = |v: &[[f64; 2]]| v.iter().map(|iv| [along.tau_of_t(iv[0]), along.tau_of_t(iv[1])]).collect();
     VerifyReport {
         trajectory: along.name().to_string(),
@@ -251,6 +278,7 @@ fn trajectory_report(along: Along, sec: Sections, method: &str, step: Option<f64
         infeasible: sec.infeasible,
         uncertain: sec.uncertain,
         warnings,
+        seconds,
     }
 }
 
@@ -385,15 +413,27 @@ fn facet_report(s: &Scenario, at: &PoseCables, load: &Load, bad_length: Option<u
 }
 
 /// The tension envelope along a trajectory (Bohigas et al. Fig. 6, bottom): at `samples` + 1
-/// evenly spaced t, each cable's least and greatest tension over the wrench set — data for a plot.
-/// `None` entries mark singular poses.
+/// evenly spaced t, each cable's least and greatest tension over the wrench set (with the
+/// platform's weight, and its inertia along a timed trajectory) — data for a plot. `None` entries
+/// mark singular poses.
 pub fn tension_envelope(s: &Scenario, traj: &Trajectory, samples: usize) -> Result<TensionEnvelope> {
     // samples + 1 poses, at most profile::MAX_SAMPLES of them.
     if samples == 0 || samples >= profile::MAX_SAMPLES {
         return Err(Error::new("--samples", format!("must be between 1 and {}, got {samples}", profile::MAX_SAMPLES - 1)));
     }
-    let at: Vec<(f64, Pose)> = (0..=samples).map(|k| k as f64 / samples as f64).map(|t| (t, traj.pose_at(t))).collect();
-    profile::tension_at(s, &traj.name, &at)
+    let at: Vec<(f64, PoseCables)> = (0..=samples).map(|k| k as f64 / samples as f64).map(|t| (t, Along::Trajectory(traj).cables_at(s, t))).collect();
+    profile::tension_of(s, &traj.name, &at)
+}
+
+/// Every condition where a trajectory is at t, moving as it moves there if it is timed (the
+/// tension ranges then include the platform's inertia); the report names the pose `NAME@t`.
+pub fn check_along(s: &Scenario, traj: &Trajectory, t: f64) -> Result<PoseReport> {
+    if !(0.0..=1.0).contains(&t) {
+        return Err(Error::new("--t", format!("must be in [0, 1], got {t}")));
+    }
+    let cables = Along::Trajectory(traj).cables_at(s, t);
+    let wrench = wrench_of(s, &cables);
+    Ok(check_cables(s, &format!("{}@{t}", traj.name), cables, wrench))
 }
 
 /// Every condition at one pose, with lengths and distances.

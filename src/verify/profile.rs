@@ -30,7 +30,8 @@ struct Tagged {
 }
 
 /// The length and clearance conditions of `s` ([`crate::conditions::for_scenario`]), tagged with
-/// their kind and cables; tensions are read from [`wrench_at`] instead.
+/// their kind and cables; tensions are read from [`wrench_at`] instead, and the winch limits,
+/// which need time, are not profiled.
 fn tagged_conditions(s: &Scenario) -> Vec<Tagged> {
     for_scenario(s)
         .into_iter()
@@ -40,7 +41,7 @@ fn tagged_conditions(s: &Scenario) -> Vec<Tagged> {
                 (conditions::Kind::Length, _) => Kind::Length,
                 (conditions::Kind::Interference, 2) => Kind::CableCable,
                 (conditions::Kind::Interference, _) => Kind::CableBody,
-                (conditions::Kind::Tension, _) => return None,
+                (conditions::Kind::Tension | conditions::Kind::Winch, _) => return None,
             };
             Some(Tagged { kind, cables, condition })
         })
@@ -221,10 +222,27 @@ pub fn tension_at(s: &Scenario, name: &str, samples: &[(f64, Pose)]) -> Result<c
         bounds: s.robot.cables.iter().map(|c| [c.tension.min, c.tension.max]).collect(),
     };
     for (t, pose) in samples {
-        let w = wrench_at(s, pose).filter(|w| !w.singular);
-        env.t.push(*t);
-        env.tension_min.push(w.as_ref().map(|w| w.tension_min.clone()));
-        env.tension_max.push(w.map(|w| w.tension_max));
+        push_tensions(&mut env, *t, wrench_at(s, pose));
     }
     Ok(env)
+}
+
+/// [`tension_at`] with the cables at each sample given (moving, along a timed trajectory).
+pub fn tension_of(s: &Scenario, name: &str, samples: &[(f64, crate::conditions::PoseCables)]) -> Result<crate::report::TensionEnvelope> {
+    let mut env = tension_at(s, name, &[])?;
+    if samples.len() > MAX_SAMPLES {
+        return Err(Error::new("samples", format!("at most {MAX_SAMPLES} samples, got {}", samples.len())));
+    }
+    for (t, cables) in samples {
+        push_tensions(&mut env, *t, super::wrench_of(s, cables));
+    }
+    Ok(env)
+}
+
+/// One sample of an envelope: the tension ranges of a wrench report, `None` where singular.
+fn push_tensions(env: &mut crate::report::TensionEnvelope, t: f64, w: Option<crate::report::WrenchReport>) {
+    let w = w.filter(|w| !w.singular);
+    env.t.push(t);
+    env.tension_min.push(w.as_ref().map(|w| w.tension_min.clone()));
+    env.tension_max.push(w.map(|w| w.tension_max));
 }

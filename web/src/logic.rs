@@ -194,6 +194,7 @@ mod tests {
             ],
             uncertain: vec![[0.4, 0.5]],
             warnings: vec!["w".into()],
+            seconds: None,
         }
     }
 

@@ -22,6 +22,7 @@ pub fn label(id: &str) -> &str {
         "cdpr7-box" => "7-cable + box",
         "cdpr7-tree" => "7-cable + tree",
         "robocrane" => "Robocrane (NIST)",
+        "robocrane-timed" => "Robocrane with mass, timed trajectories",
         "blank" => "Blank (8-cable frame, to start from)",
         "bmarm-x4-2" => "4-DoF arm, multi-link",
         other => other,
@@ -44,8 +45,8 @@ mod tests {
         assert_eq!(find("cdpr7-box"), Some(1));
         assert_eq!(find("nope"), None);
         assert_eq!(ids.last(), Some(&"bmarm-x4-2"), "the multi-link robots last");
-        // the six presets of the page, each with its own label
-        for id in ["cdpr7", "cdpr7-box", "cdpr7-tree", "robocrane", "blank", "bmarm-x4-2"] {
+        // the seven presets of the page, each with its own label
+        for id in ["cdpr7", "cdpr7-box", "cdpr7-tree", "robocrane", "robocrane-timed", "blank", "bmarm-x4-2"] {
             assert!(find(id).is_some(), "{id}");
             assert_ne!(label(id), id);
         }

@@ -4,7 +4,7 @@
 
 use cablenav::lattice::LatticeReport;
 use cablenav::model::Pose;
-use cablenav::report::{Boundary, Side, TensionEnvelope, VerifyReport};
+use cablenav::report::{Boundary, Seconds, Side, TensionEnvelope, VerifyReport};
 use cablenav::verify::profile::{ClearanceProfile, ClearanceSample, Closest};
 use cablenav::verify::slice::Class;
 use cablenav::Scenario;
@@ -96,6 +96,9 @@ pub struct WireReport {
     boundaries: Vec<(u64, u64, String, bool)>,
     uncertain: Vec<[u64; 2]>,
     warnings: Vec<String>,
+    /// A timed trajectory's sections in seconds (as numbers: JSON's shortest representation
+    /// round-trips them exactly).
+    seconds: Option<Seconds>,
 }
 
 fn to_bits(v: &[[f64; 2]]) -> Vec<[u64; 2]> {
@@ -119,6 +122,7 @@ impl From<&VerifyReport> for WireReport {
             boundaries: r.boundaries.iter().map(|b| (b.t.to_bits(), b.tau.to_bits(), b.constraint.clone(), b.enters == Side::Feasible)).collect(),
             uncertain: to_bits(&r.uncertain),
             warnings: r.warnings.clone(),
+            seconds: r.seconds.clone(),
         }
     }
 }
@@ -146,6 +150,7 @@ impl WireReport {
                 .collect(),
             uncertain: from_bits(&self.uncertain),
             warnings: self.warnings.clone(),
+            seconds: self.seconds.clone(),
         }
     }
 }

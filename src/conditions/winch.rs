@@ -1,0 +1,107 @@
+//! Winch limits along a timed motion: each cable's speed |l̇| < v_max and acceleration
+//! |l̈| < a_max, exact polynomial sign conditions.
+//!
+//! With the cable vector s = s̃/w, ŝ = s̃'w − s̃w' (so ds/dλ = ŝ/w²), P = s̃·s̃, u = s̃·ŝ and
+//! g = dλ/ds (time s):
+//!
+//! * l̇ = g u / (w² √P), so |l̇| < v ⇔ v² w⁴ P − g² u² > 0;
+//! * l̈ = g Z / (w³ P^{3/2}) with Z = (g'u + g u') w P − 2 g u w' P − g u w P'/2, so
+//!   |l̈| < a ⇔ a² w⁶ P³ − g² Z² > 0.
+//!
+//! A motion without time (a ray, an untimed trajectory) is at rest: the limits hold.
+
+use super::load::time_rate;
+use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
+use crate::poly::{Bern, Partition, Truth};
+
+/// Which rate a [`WinchLimit`] bounds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Rate {
+    /// |l̇|.
+    Speed,
+    /// |l̈|.
+    Acceleration,
+}
+
+/// The speed or acceleration limit of one cable's winch.
+#[derive(Debug, Clone)]
+pub struct WinchLimit {
+    /// The cable (0-based).
+    pub cable: usize,
+    /// Which rate.
+    pub rate: Rate,
+    /// The limit (positive).
+    pub limit: f64,
+}
+
+impl WinchLimit {
+    /// The polynomial that is positive exactly where the limit holds, on the sweep's motion timed
+    /// by `g` = dλ/ds.
+    fn margin(&self, sweep: &Sweep, g: &Bern) -> Bern {
+        let w = &sweep.motion().weight;
+        let s = &sweep.cables[self.cable].s;
+        let st: [&Bern; 3] = [&s[0].p, &s[1].p, &s[2].p];
+        let dw = w.derivative();
+        let d: [Bern; 3] = st.map(|c| c.derivative());
+        let hat: [Bern; 3] = [0, 1, 2].map(|i| d[i].mul(w).sub(&st[i].mul(&dw)));
+        let dot = |a: [&Bern; 3], b: [&Bern; 3]| a[0].mul(b[0]).add(&a[1].mul(b[1])).add(&a[2].mul(b[2]));
+        let p = dot(st, st);
+        let u = dot(st, [&hat[0], &hat[1], &hat[2]]);
+        let w2 = w.mul(w);
+        let limit2 = self.limit * self.limit;
+        match self.rate {
+            Rate::Speed => w2.mul(&w2).mul(&p).scale(limit2).sub(&g.mul(g).mul(&u).mul(&u)),
+            Rate::Acceleration => {
+                let dp = dot(st, [&d[0], &d[1], &d[2]]).scale(2.0);
+                let du = u.derivative();
+                let gu = g.mul(&u);
+                let z = g.derivative().mul(&u).add(&g.mul(&du)).mul(w).mul(&p).sub(&gu.mul(&dw).mul(&p).scale(2.0)).sub(&gu.mul(w).mul(&dp).scale(0.5));
+                let w6p3 = w2.mul(&w2).mul(&w2).mul(&p).mul(&p).mul(&p);
+                w6p3.scale(limit2).sub(&g.mul(g).mul(&z).mul(&z))
+            }
+        }
+    }
+}
+
+impl Condition for WinchLimit {
+    fn kind(&self) -> Kind {
+        Kind::Winch
+    }
+
+    fn label(&self) -> String {
+        match self.rate {
+            Rate::Speed => format!("cable {} speed", self.cable + 1),
+            Rate::Acceleration => format!("cable {} acceleration", self.cable + 1),
+        }
+    }
+
+    fn cables(&self) -> Vec<usize> {
+        vec![self.cable]
+    }
+
+    fn violation(&self, sweep: &mut Sweep) -> Partition {
+        let Some(g) = sweep.duration.and_then(|d| time_rate(&sweep.motion().param, d)) else {
+            return Partition::constant(Truth::False);
+        };
+        let margin = self.margin(sweep, &g);
+        Partition::atom_outside(&margin, true, sweep.tol, &sweep.settled).not()
+    }
+
+    /// The cable's rate at the pose (its platform anchor moving as the pose's kinematics say):
+    /// l̇ = e·v_b, l̈ = e·a_b + (|v_b|² − l̇²)/l, e the unit cable direction. The distance is the
+    /// rate's magnitude; at rest both are 0.
+    fn check(&self, at: &PoseCables) -> PoseCheck {
+        let Some(kin) = &at.kinematics else { return PoseCheck { violated: false, distance: Some(0.0) } };
+        let (a, x) = at.cables[self.cable];
+        let b = at.pose.rotation.inverse_transform_vector(&(x - at.pose.position));
+        let (v, acc) = kin.of_point(&at.pose, &b);
+        let len = (x - a).norm();
+        let e = (x - a) / len;
+        let speed = e.dot(&v);
+        let rate = match self.rate {
+            Rate::Speed => speed.abs(),
+            Rate::Acceleration => (e.dot(&acc) + (v.norm_squared() - speed * speed) / len).abs(),
+        };
+        PoseCheck { violated: !(rate < self.limit), distance: Some(rate) }
+    }
+}

@@ -1,0 +1,203 @@
+//! Time along a timed trajectory: its sections in seconds, and the least uniform time scale at
+//! which the conditions that depend on speed hold throughout, certified.
+//!
+//! Under a uniform time scale k (every duration × k) velocities scale by 1/k and accelerations
+//! by 1/k², so at each λ the tension conditions (the load is w_rest + w_inertial/k²) and the winch
+//! limits (l̇² ∝ 1/k², l̈ ∝ 1/k²) are each linear in u = 1/k²: the scales that work at one λ
+//! form an interval of u around 0 when the robot holds there at rest, and so do the scales that
+//! work along the whole trajectory. The least k is therefore found by bisection in k, each step an
+//! exact verification of those conditions (certified feasible, certainly violated, or undecided).
+
+use super::sections::{sections, Sections};
+use super::{one_link, pieces_on, sweeps, BOUNDARY_TOL};
+use crate::conditions::{for_scenario, Condition, Kind, Sweep};
+use crate::model::{Motion, Trajectory};
+use crate::poly::Truth;
+use crate::report::Seconds;
+use crate::scenario::Scenario;
+
+/// Relative width of the bracket [k_lo, k_hi] the bisection stops at.
+pub const SCALE_TOL: f64 = 1e-4;
+
+/// Largest and smallest scales tried: beyond them the answer is reported as such.
+const SCALE_RANGE: (f64, f64) = (1e-6, 1e6);
+
+/// The verdict on the speed-dependent conditions at one time scale.
+#[derive(Debug, Clone, PartialEq)]
+enum Verdict {
+    /// Certified to hold along the whole trajectory.
+    Holds,
+    /// Certainly violated somewhere; the constraint at the first violated stretch.
+    Fails(String),
+    /// Neither could be certified.
+    Undecided,
+}
+
+/// The speed-dependent conditions of `s`: tensions (under weight and inertia) and winch limits.
+fn speed_conditions(s: &Scenario) -> Vec<Box<dyn Condition>> {
+    for_scenario(s).into_iter().filter(|c| matches!(c.kind(), Kind::Tension | Kind::Winch)).collect()
+}
+
+/// The sections of `conditions` along `sweeps` run in `duration` seconds (`None`: at rest; the
+/// sweeps must have been made at rest then, timed otherwise): the expansions the conditions keep
+/// in the sweeps serve every duration.
+/// Also gives the verdict: where the first infeasible section starts, the conditions certainly
+/// violated just inside it are named.
+fn sections_at(conditions: &[Box<dyn Condition>], sweeps: &mut [Sweep], duration: Option<f64>) -> (Sections, Verdict) {
+    for sweep in sweeps.iter_mut() {
+        sweep.duration = duration;
+    }
+    let (overall, per) = pieces_on(conditions, sweeps, true);
+    let sec = sections(&overall, &per, &|k| conditions[k].label(), BOUNDARY_TOL);
+    let verdict = if let Some(&[a, b]) = sec.infeasible.first() {
+        let at = a + (0.5 * (b - a)).min(1e-6);
+        let names: Vec<String> = per
+            .iter()
+            .enumerate()
+            .filter(|(_, pieces)| pieces.iter().any(|&(x, y, t)| t == Truth::True && x <= at && at <= y))
+            .map(|(k, _)| conditions[k].label())
+            .collect();
+        Verdict::Fails(format!("{} from t = {a:.9}", names.join(", ")))
+    } else if sec.uncertain.is_empty() {
+        Verdict::Holds
+    } else {
+        Verdict::Undecided
+    };
+    (sec, verdict)
+}
+
+/// The sections `t` (in the trajectory's t ∈ [0, 1]) in seconds.
+fn in_seconds(v: &[[f64; 2]], duration: f64) -> Vec<[f64; 2]> {
+    v.iter().map(|iv| [iv[0] * duration, iv[1] * duration]).collect()
+}
+
+/// The `seconds` part of a timed trajectory's report: its sections `sec` (in t) in seconds and,
+/// when `scale` is true, its least certified time scale (the point-wise baseline passes false).
+pub(super) fn seconds(s: &Scenario, traj: &Trajectory, sec: &Sections, scale: bool) -> Option<Seconds> {
+    let duration = traj.duration?;
+    let mut out = Seconds {
+        duration,
+        feasible: in_seconds(&sec.feasible, duration),
+        infeasible: in_seconds(&sec.infeasible, duration),
+        uncertain: in_seconds(&sec.uncertain, duration),
+        min_time_scale: None,
+        min_time_scale_bracket: None,
+        min_duration: None,
+        max_time_scale: None,
+        min_time_scale_note: "computed by exact verification only".to_string(),
+        infeasible_at_rest: Vec::new(),
+    };
+    if scale {
+        min_time_scale(s, traj, duration, &mut out);
+    }
+    Some(out)
+}
+
+/// Fills in the least time scale of `traj` (run in `duration` seconds). The scales that work
+/// form an interval (module docs): if the trajectory holds at rest, every scale above the least
+/// one; otherwise (inertia helps somewhere — a fast swing keeps a cable taut that hangs slack at
+/// rest) at most a bounded interval, whose upper end is reported too. A scale that holds is
+/// found first (halving from 1 when the rest holds; else trying 1, ½, 2, ¼, 4, …), then each end
+/// is bracketed by doubling or halving and bisected.
+fn min_time_scale(s: &Scenario, traj: &Trajectory, duration: f64, out: &mut Seconds) {
+    let conditions = speed_conditions(s);
+    if conditions.is_empty() {
+        out.min_time_scale_note = "no condition depends on speed (the scenario has no platform dynamics and no winch limits)".to_string();
+        return;
+    }
+    let motions = one_link(Motion::trajectory(traj));
+    let (at_rest, rest_verdict) = sections_at(&conditions, &mut sweeps(s, &motions, BOUNDARY_TOL, None), None);
+    out.infeasible_at_rest = at_rest.infeasible.clone();
+    let rest_holds = rest_verdict == Verdict::Holds;
+    let mut timed = sweeps(s, &motions, BOUNDARY_TOL, Some(duration));
+    let mut check = |k: f64| sections_at(&conditions, &mut timed, Some(duration * k)).1;
+    // a scale that holds
+    let tries: Vec<f64> = if rest_holds { vec![1.0] } else { (0..=40).map(|j| if j % 2 == 0 { 2f64.powi(j / 2) } else { 0.5f64.powi(j / 2 + 1) }).collect() };
+    let mut held = None;
+    for &k in &tries {
+        match check(k) {
+            Verdict::Holds => {
+                held = Some(k);
+                break;
+            }
+            Verdict::Fails(_) | Verdict::Undecided => {}
+        }
+    }
+    let Some(k_hold) = held.or(rest_holds.then_some(SCALE_RANGE.1)) else {
+        out.min_time_scale_note = match rest_verdict {
+            Verdict::Fails(c) => format!("none: at rest the trajectory fails ({c}) on t ∈ {}, and no scale from 2^-20 to 2^20 is certified to hold", list(&at_rest.infeasible)),
+            _ => format!("none certified: at rest the tensions are uncertain on t ∈ {}", list(&at_rest.uncertain)),
+        };
+        return;
+    };
+    let (lower, binding) = edge(&mut check, k_hold, 0.5, SCALE_RANGE.0);
+    out.min_time_scale = Some(lower.holds);
+    out.min_time_scale_bracket = Some([lower.fails.unwrap_or(0.0), lower.holds]);
+    out.min_duration = Some(lower.holds * duration);
+    out.min_time_scale_note = match (&binding, lower.fails) {
+        (Some(c), Some(k)) => format!("binding: {c} (certainly violated at k = {k})"),
+        _ if lower.holds <= SCALE_RANGE.0 => format!("holds down to k = {:e}, the smallest scale tried: speed hardly matters", lower.holds),
+        _ => "certified at the scale found; nothing failing below it was certified".to_string(),
+    };
+    if !rest_holds {
+        let (upper, binding) = edge(&mut check, k_hold, 2.0, SCALE_RANGE.1);
+        out.max_time_scale = Some(upper.holds);
+        let rest = match rest_verdict {
+            Verdict::Fails(c) => format!("at rest it fails ({c})"),
+            _ => "at rest it is uncertain".to_string(),
+        };
+        out.min_time_scale_note += &format!(
+            "; slower than k = {} it fails too{}: {rest}, so only scales in [{}, {}] are certified",
+            upper.holds,
+            binding.map_or(String::new(), |c| format!(" ({c})")),
+            lower.holds,
+            upper.holds
+        );
+    }
+}
+
+/// One end of the interval of scales that hold: `holds` certified, `fails` (if found) certainly
+/// violated, within [`SCALE_TOL`] of each other.
+struct End {
+    holds: f64,
+    fails: Option<f64>,
+}
+
+/// The end of the scales that hold reached from `k_hold` by multiplying with `step` (½: the
+/// least scale, 2: the largest), no further than `limit`; the condition violated past it.
+fn edge(check: &mut impl FnMut(f64) -> Verdict, k_hold: f64, step: f64, limit: f64) -> (End, Option<String>) {
+    let (mut holds, mut fails, mut binding) = (k_hold, None, None);
+    // bracket: step away until a scale does not hold
+    let mut k = k_hold;
+    let mut far = loop {
+        k *= step;
+        if (step < 1.0 && k < limit) || (step > 1.0 && k > limit) {
+            return (End { holds, fails }, binding);
+        }
+        match check(k) {
+            Verdict::Holds => holds = k,
+            Verdict::Fails(c) => {
+                (fails, binding) = (Some(k), Some(c));
+                break k;
+            }
+            Verdict::Undecided => break k,
+        }
+    };
+    // bisect between holds and far
+    while (holds - far).abs() > SCALE_TOL * holds.max(far) {
+        let mid = 0.5 * (holds + far);
+        match check(mid) {
+            Verdict::Holds => holds = mid,
+            Verdict::Fails(c) => {
+                (far, fails, binding) = (mid, Some(mid), Some(c));
+            }
+            // not certified either way: narrow without claiming a failure
+            Verdict::Undecided => far = mid,
+        }
+    }
+    (End { holds, fails }, binding)
+}
+
+fn list(v: &[[f64; 2]]) -> String {
+    v.iter().map(|iv| format!("[{:.6}, {:.6}]", iv[0], iv[1])).collect::<Vec<_>>().join(", ")
+}

@@ -1,0 +1,496 @@
+//! Timed trajectories of robots with mass: exact dynamic sections against dense sampling of an
+//! independent per-pose reference, the least time scale against the reference's own, and the
+//! per-pose wrench-set test of six cables against paper 1's.
+//!
+//! The reference (below) is written from the definitions, sharing nothing with the core's
+//! conditions: the pose from the test-support model (direct slerp, τ(t)); velocities and
+//! accelerations by 5-point finite differences of that pose (ω and α from the skew parts of ṘRᵀ
+//! and R̈Rᵀ); the required wrench by Newton–Euler about the centre of mass; J from its definition;
+//! then for six cables J⁻¹ (f0 ± v), and for more a linear program (largest t with J f = w,
+//! f_min + t ≤ f ≤ f_max − t) — with an ellipsoid, "infeasible" when a sampled direction u has
+//! u·w + √(uᵀE⁻¹u) beyond the zonotope's support Σ_k max(f_min u·j_k, f_max u·j_k), "feasible"
+//! when the LP's tensions plus a pseudo-inverse correction stay inside for the whole ellipsoid
+//! (sufficient), undecided (skipped) otherwise. Winch limits from finite differences of the
+//! cable lengths.
+
+#[cfg(target_arch = "wasm32")]
+use wasm_bindgen_test::wasm_bindgen_test as test;
+
+mod support;
+
+use cablenav::model::Bounds;
+use cablenav::query::lp::{maximise, LpResult};
+use cablenav::query::wrench::{tension_ranges_at, wrench_set_margin};
+use cablenav::report::{Side, VerifyReport};
+use cablenav::verify::verify_trajectory;
+use cablenav::Scenario;
+use nalgebra::{DMatrix, DVector, Matrix3, Matrix6, Vector3, Vector6};
+use support::env_usize;
+use support::reference::*;
+
+#[cfg(not(target_arch = "wasm32"))]
+const CASES: usize = 300;
+#[cfg(target_arch = "wasm32")]
+const CASES: usize = 16;
+#[cfg(not(target_arch = "wasm32"))]
+const SAMPLES: usize = 2_000;
+#[cfg(target_arch = "wasm32")]
+const SAMPLES: usize = 400;
+
+/// Finite-difference step in t (5-point stencils: truncation ~h⁴, rounding ~1e-16/h²).
+const H: f64 = 1e-3;
+
+/// A robot with mass, its load and one timed trajectory, as the reference sees them. z points
+/// down: gravity is +z, the cables mostly hang from anchors at z = 0.
+struct Case {
+    cables: Vec<(V3, V3)>,
+    tension: (f64, f64),
+    mass: f64,
+    com: V3,
+    inertia: Matrix3<f64>,
+    gravity: V3,
+    /// The wrench set (nominal, E⁻¹, point in the platform frame), if any.
+    wrench: Option<(Vector6<f64>, Matrix6<f64>, V3)>,
+    /// Winch speed and acceleration limits.
+    winch: Option<(f64, f64)>,
+    traj: RefTrajectory,
+    duration: f64,
+}
+
+fn to_v(v: V3) -> Vector3<f64> {
+    Vector3::new(v.x, v.y, v.z)
+}
+
+fn to_m(m: &M3) -> Matrix3<f64> {
+    Matrix3::from_fn(|i, j| m[i][j])
+}
+
+fn vee_skew(m: &Matrix3<f64>) -> Vector3<f64> {
+    Vector3::new(m[(2, 1)] - m[(1, 2)], m[(0, 2)] - m[(2, 0)], m[(1, 0)] - m[(0, 1)]) * 0.5
+}
+
+/// What the reference finds at one t.
+struct At {
+    /// Least margin (negative: violated) when decided, with a scale for rounding.
+    verdict: Option<bool>,
+    /// For six cables without winch limits: the largest u = 1/k² that holds here (∞ if any).
+    u_max: f64,
+}
+
+impl Case {
+    fn json(&self) -> String {
+        let cables: Vec<_> = self.cables.iter().map(|(a, b)| serde_json::json!({"base": a.arr(), "platform": b.arr()})).collect();
+        let inertia: Vec<Vec<f64>> = (0..3).map(|i| (0..3).map(|j| self.inertia[(i, j)]).collect()).collect();
+        let mut traj = self.traj.to_json();
+        traj["duration"] = serde_json::json!(self.duration);
+        let mut v = serde_json::json!({
+            "format": "cablenav-scenario/4",
+            "name": "random timed case",
+            "robot": {
+                "cables": cables,
+                "tension": {"min": self.tension.0, "max": self.tension.1},
+                "dynamics": {"mass": self.mass, "com": self.com.arr(), "inertia": inertia, "gravity": self.gravity.arr()},
+            },
+            "trajectories": [traj],
+        });
+        if let Some((w0, e_inv, point)) = &self.wrench {
+            let e = e_inv.try_inverse().unwrap();
+            let rows: Vec<Vec<f64>> = (0..6).map(|i| (0..6).map(|j| 0.5 * (e[(i, j)] + e[(j, i)])).collect()).collect();
+            v["wrench"] = serde_json::json!({"nominal": w0.as_slice(), "ellipsoid": rows, "point": point.arr(), "point_frame": "platform"});
+        }
+        if let Some((speed, accel)) = self.winch {
+            v["robot"]["winch"] = serde_json::json!({"speed": speed, "acceleration": accel});
+        }
+        v.to_string()
+    }
+
+    fn pose(&self, t: f64) -> (Vector3<f64>, Matrix3<f64>) {
+        let (p, r) = self.traj.pose(t);
+        (to_v(p), to_m(&r))
+    }
+
+    /// f and its first and second derivatives in t by 5-point stencils.
+    fn derivatives<T>(&self, t: f64, f: impl Fn(f64) -> T) -> (T, T, T)
+    where
+        T: std::ops::Add<Output = T> + std::ops::Sub<Output = T> + std::ops::Mul<f64, Output = T> + Copy,
+    {
+        let (m2, m1, z, p1, p2) = (f(t - 2.0 * H), f(t - H), f(t), f(t + H), f(t + 2.0 * H));
+        let d1 = (m2 - p2 + (p1 - m1) * 8.0) * (1.0 / (12.0 * H));
+        let d2 = ((p1 + m1) * 16.0 - z * 30.0 - m2 - p2) * (1.0 / (12.0 * H * H));
+        (z, d1, d2)
+    }
+
+    /// The wrench the cables balance at t run in `duration` (None: at rest) about the wrench
+    /// point, and J there.
+    fn required(&self, t: f64, duration: Option<f64>) -> (Vector6<f64>, DMatrix<f64>) {
+        let com = to_v(self.com);
+        let (p, r) = self.pose(t);
+        let x_c = p + r * com;
+        let point = self.wrench.as_ref().map_or(Vector3::zeros(), |w| to_v(w.2));
+        let c = p + r * point;
+        let (accel, moment) = match duration {
+            None => (Vector3::zeros(), Vector3::zeros()),
+            Some(d) => {
+                let (_, _, xc2) = self.derivatives(t, |s| {
+                    let (p, r) = self.pose(s);
+                    p + r * com
+                });
+                let (_, r1, r2) = self.derivatives(t, |s| self.pose(s).1);
+                let omega = vee_skew(&(r1 * r.transpose())) / d;
+                let alpha = vee_skew(&(r2 * r.transpose())) / (d * d);
+                let iw = r * self.inertia * r.transpose();
+                (xc2 / (d * d), iw * alpha + omega.cross(&(iw * omega)))
+            }
+        };
+        let force = (to_v(self.gravity) - accel) * self.mass;
+        let m = (x_c - c).cross(&force) - moment;
+        let nominal = self.wrench.as_ref().map_or(Vector6::zeros(), |w| w.0);
+        let w = nominal + Vector6::new(force.x, force.y, force.z, m.x, m.y, m.z);
+        let mut j = DMatrix::zeros(6, self.cables.len());
+        for (i, (a, b)) in self.cables.iter().enumerate() {
+            let x = p + r * to_v(*b);
+            let e = (x - to_v(*a)).normalize();
+            let mo = (x - c).cross(&e);
+            for k in 0..3 {
+                j[(k, i)] = e[k];
+                j[(k + 3, i)] = mo[k];
+            }
+        }
+        (w, j)
+    }
+
+    /// Largest t with J f = w, f_min + t ≤ f ≤ f_max − t (an LP over g = f − f_min − t ≥ 0,
+    /// t = t⁺ − t⁻, upper slacks, t⁺ capped), and the tensions; None when J f = w has no solution.
+    fn lp_margin(&self, j: &DMatrix<f64>, w: &Vector6<f64>) -> Option<(f64, DVector<f64>)> {
+        let m = j.ncols();
+        let (lo, hi) = self.tension;
+        let nvar = m + 2 + m + 1;
+        let mut a = DMatrix::zeros(6 + m + 1, nvar);
+        let mut b = DVector::zeros(6 + m + 1);
+        for r in 0..6 {
+            let row_sum: f64 = (0..m).map(|k| j[(r, k)]).sum();
+            for k in 0..m {
+                a[(r, k)] = j[(r, k)];
+            }
+            a[(r, m)] = row_sum;
+            a[(r, m + 1)] = -row_sum;
+            b[r] = w[r] - lo * row_sum;
+        }
+        for k in 0..m {
+            a[(6 + k, k)] = 1.0;
+            a[(6 + k, m)] = 2.0;
+            a[(6 + k, m + 1)] = -2.0;
+            a[(6 + k, m + 2 + k)] = 1.0;
+            b[6 + k] = hi - lo;
+        }
+        a[(6 + m, m)] = 1.0;
+        a[(6 + m, nvar - 1)] = 1.0;
+        b[6 + m] = hi;
+        let mut c = DVector::zeros(nvar);
+        c[m] = 1.0;
+        c[m + 1] = -1.0;
+        match maximise(&a, &b, &c) {
+            LpResult::Optimal { x, value } => Some((value, DVector::from_fn(m, |k, _| lo + value + x[k]))),
+            _ => None,
+        }
+    }
+
+    /// The reference at t, run in `duration`.
+    fn at(&self, t: f64, duration: f64, rng: &mut Rng) -> At {
+        let (w, j) = self.required(t, Some(duration));
+        let scale = self.mass * to_v(self.gravity).norm();
+        let eps = 1e-7 * scale;
+        let mut at = At { verdict: None, u_max: f64::INFINITY };
+        // winch limits
+        if let Some((speed, accel)) = self.winch {
+            for (a, b) in &self.cables {
+                let (_, l1, l2) = self.derivatives(t, |s| {
+                    let (p, r) = self.pose(s);
+                    (p + r * to_v(*b) - to_v(*a)).norm()
+                });
+                let (v, acc) = (l1.abs() / duration, l2.abs() / (duration * duration));
+                if v > speed * (1.0 + 1e-7) || acc > accel * (1.0 + 1e-7) {
+                    return At { verdict: Some(false), ..at };
+                }
+                if v > speed * (1.0 - 1e-7) || acc > accel * (1.0 - 1e-7) {
+                    return at; // too close to call
+                }
+            }
+        }
+        let m = self.cables.len();
+        if m == 6 {
+            let Some(inv) = DMatrix::from(j.clone()).try_inverse().filter(|i| i.amax() < 1e9) else { return at };
+            let e_inv = self.wrench.as_ref().map_or(Matrix6::zeros(), |w| w.1);
+            let (w_rest, _) = self.required(t, None);
+            let mut least = f64::INFINITY;
+            for i in 0..6 {
+                let g: Vector6<f64> = Vector6::from_fn(|k, _| inv[(i, k)]);
+                let (f0, f_rest) = (g.dot(&w), g.dot(&w_rest));
+                let v = g.dot(&(e_inv * g)).max(0.0).sqrt();
+                least = least.min(f0 - v - self.tension.0).min(self.tension.1 - f0 - v);
+                // linear in u: f(u) = f_rest + u·(f0 − f_rest) at u = 1 for this duration
+                let slope = f0 - f_rest;
+                for room in [(f_rest - v - self.tension.0, -slope), (self.tension.1 - f_rest - v, slope)] {
+                    if room.1 > 0.0 {
+                        at.u_max = at.u_max.min(room.0 / room.1);
+                    }
+                }
+            }
+            if least.abs() > eps {
+                at.verdict = Some(least > 0.0);
+            }
+            return at;
+        }
+        let Some((margin, f)) = self.lp_margin(&j, &w) else { return At { verdict: Some(false), ..at } };
+        if margin < -eps {
+            return At { verdict: Some(false), ..at };
+        }
+        let Some((_, e_inv, _)) = &self.wrench else {
+            if margin > eps {
+                at.verdict = Some(true);
+            }
+            return at;
+        };
+        // necessary: sampled directions against the zonotope's support function
+        for _ in 0..64 {
+            let u = Vector6::from_fn(|_, _| rng.normal());
+            let reach = u.dot(&(e_inv * u)).max(0.0).sqrt();
+            let support: f64 = (0..m).map(|k| {
+                let d = u.dot(&j.column(k));
+                (d * self.tension.0).max(d * self.tension.1)
+            }).sum();
+            if u.dot(&w) + reach > support + 1e-7 * u.norm() * scale {
+                return At { verdict: Some(false), ..at };
+            }
+        }
+        // sufficient: f + J⁺δw within the bounds for every δw of the ellipsoid
+        let jt = j.transpose();
+        let Some(pinv) = (&j * &jt).try_inverse().map(|x| &jt * x) else { return at };
+        let worst = (0..m).map(|k| {
+            let row: Vector6<f64> = Vector6::from_fn(|c, _| pinv[(k, c)]);
+            let reach = row.dot(&(e_inv * row)).max(0.0).sqrt();
+            (f[k] - reach - self.tension.0).min(self.tension.1 - f[k] - reach)
+        }).fold(f64::INFINITY, f64::min);
+        if worst > eps {
+            at.verdict = Some(true);
+        }
+        at
+    }
+}
+
+/// A random robot with 6 to 10 cables and mass, a random load and a random timed trajectory.
+fn random_case(rng: &mut Rng) -> Case {
+    let m = rng.int(6, 10);
+    let (b, a) = (rng.range(1.5, 2.5), rng.range(0.6, 1.0));
+    let r3 = 3f64.sqrt();
+    let cables: Vec<(V3, V3)> = if m == 6 {
+        // the Robocrane's octahedral layout, perturbed
+        let base = [v3(-b, -b * r3 / 3.0, 0.0), v3(b, -b * r3 / 3.0, 0.0), v3(0.0, 2.0 * b * r3 / 3.0, 0.0)];
+        let plat = [v3(0.0, -2.0 * a * r3 / 3.0, 0.0), v3(a, a * r3 / 3.0, 0.0), v3(-a, a * r3 / 3.0, 0.0)];
+        [(0, 0), (1, 0), (1, 1), (2, 1), (2, 2), (0, 2)].iter().map(|&(i, j)| (base[i] + rng.in_box(0.2), plat[j] + rng.in_box(0.1))).collect()
+    } else {
+        // hanging from a ring at z = 0, up to two pulling from a ring below (z = 4)
+        let low = rng.int(0, 2);
+        (0..m)
+            .map(|k| {
+                let angle = 2.0 * std::f64::consts::PI * (k as f64 + rng.range(-0.2, 0.2)) / m as f64;
+                let below = k < low;
+                let base = v3(b * angle.cos(), b * angle.sin(), if below { 4.0 } else { 0.0 });
+                // alternate twists, so that the cables resist turning about z both ways
+                let twist = if k % 2 == 0 { 0.6 } else { -0.6 };
+                let on = v3(a * 0.5 * (angle + twist).cos(), a * 0.5 * (angle + twist).sin(), if below { 0.1 } else { -0.1 });
+                (base, on + rng.in_box(0.05))
+            })
+            .collect()
+    };
+    let mass = rng.range(0.5, 2.0);
+    let gravity = v3(0.0, 0.0, 10.0);
+    let weight = mass * 10.0;
+    let q = Matrix3::from_fn(|_, _| rng.normal());
+    let inertia = (q * q.transpose()) * (0.02 * mass) + Matrix3::identity() * (0.01 * mass);
+    let wrench = (m == 6 || rng.chance(0.5)).then(|| {
+        let w0 = Vector6::from_fn(|_, _| weight * rng.range(-0.05, 0.05));
+        let rot = Matrix6::from_fn(|_, _| rng.normal()).qr().q();
+        let top = if m == 6 { 0.08 } else { 0.04 };
+        let radii = Matrix6::from_diagonal(&Vector6::from_fn(|_, _| (weight * rng.range(0.005, top)).powi(2)));
+        (w0, rot.transpose() * radii * rot, rng.in_box(0.1))
+    });
+    let tension = (if rng.chance(0.5) { 0.0 } else { 0.05 * weight }, weight * rng.range(0.6, 2.0));
+    let winch = rng.chance(0.3).then(|| (rng.range(0.3, 1.5), rng.range(1.0, 6.0)));
+    let deg = rng.int(1, 3);
+    let centre = v3(rng.range(-0.3, 0.3), rng.range(-0.3, 0.3), rng.range(1.6, 2.4));
+    let mut coeffs: [Vec<f64>; 3] = Default::default();
+    for (axis, c) in coeffs.iter_mut().enumerate() {
+        c.push(centre.get(axis));
+        for k in 1..=deg {
+            c.push(rng.range(-0.6, 0.6) / k as f64);
+        }
+    }
+    let qs = quat_normalize(quat_axis_angle(rng.unit_vector(), rng.range(0.0, 30f64.to_radians())));
+    let qe = quat_normalize(quat_mul(qs, quat_axis_angle(rng.unit_vector(), rng.range(0.0, 60f64.to_radians()))));
+    let traj = RefTrajectory { name: "t".into(), translation: RefTranslation::Polynomial(coeffs), qs, qe };
+    Case { cables, tension, mass, com: rng.in_box(0.1), inertia, gravity, wrench, winch, traj, duration: rng.range(0.5, 2.5) }
+}
+
+/// The report's verdict at t: inside a reported interval at least `gap` from its ends.
+fn reported(r: &VerifyReport, t: f64, gap: f64) -> Option<bool> {
+    let inside = |iv: &[f64; 2]| t > iv[0] + gap && t < iv[1] - gap;
+    if r.uncertain.iter().any(|iv| t >= iv[0] - gap && t <= iv[1] + gap) {
+        return None;
+    }
+    if r.feasible.iter().any(inside) {
+        Some(true)
+    } else if r.infeasible.iter().any(inside) {
+        Some(false)
+    } else {
+        None
+    }
+}
+
+/// Per case: samples compared, contradictions, boundaries checked, mixed sections.
+fn run_case(k: usize, case: &Case) -> (usize, Vec<String>, usize, bool) {
+    let s = Scenario::from_json(&case.json()).unwrap_or_else(|e| panic!("case {k}: {e}"));
+    let r = verify_trajectory(&s, &s.trajectories[0]).unwrap();
+    let mut rng = Rng::new(k as u64);
+    let mut bad = Vec::new();
+    let uncertain: f64 = r.uncertain.iter().map(|u| u[1] - u[0]).sum();
+    if uncertain > 1e-6 {
+        bad.push(format!("{uncertain} of t uncertain: {:?}", r.uncertain));
+    }
+    let offset = rng.f64();
+    let mut compared = 0;
+    let samples = env_usize("CABLENAV_DYNAMICS_SAMPLES", SAMPLES);
+    for i in 0..samples {
+        let t = (i as f64 + offset) / samples as f64;
+        let Some(claim) = reported(&r, t, 1e-9) else { continue };
+        let Some(truth) = case.at(t, case.duration, &mut rng).verdict else { continue };
+        compared += 1;
+        if claim != truth {
+            bad.push(format!("t = {t}: reported {claim}, reference {truth}"));
+        }
+    }
+    // each boundary separates decided reference verdicts 1e-6 to either side, as reported
+    let mut checked = 0;
+    for b in &r.boundaries {
+        let (lo, hi) = (b.t - 1e-6, b.t + 1e-6);
+        let crowded = r.boundaries.iter().any(|o| o.t != b.t && (o.t - b.t).abs() < 2e-6) || r.uncertain.iter().any(|u| u[0] < hi + 1e-6 && u[1] > lo - 1e-6);
+        if crowded || lo < 0.0 || hi > 1.0 {
+            continue;
+        }
+        let enters = matches!(b.enters, Side::Feasible);
+        let (before, after) = (case.at(lo, case.duration, &mut rng).verdict, case.at(hi, case.duration, &mut rng).verdict);
+        if before == Some(enters) || after == Some(!enters) {
+            bad.push(format!("boundary t = {} ({}) not matched by the reference within 1e-6: {before:?} → {after:?}", b.t, b.constraint));
+        }
+        checked += usize::from(before.is_some() && after.is_some());
+    }
+    let bad = bad.into_iter().map(|b| format!("case {k} ({} cables): {b}\n{}", case.cables.len(), case.json())).collect();
+    (compared, bad, checked, !r.feasible.is_empty() && !r.infeasible.is_empty())
+}
+
+#[test]
+fn dynamic_sections_match_an_independent_reference_on_random_robots() {
+    let mut rng = Rng::new(22);
+    let cases: Vec<Case> = (0..env_usize("CABLENAV_DYNAMICS_CASES", CASES)).map(|_| random_case(&mut rng)).collect();
+    #[cfg(not(target_arch = "wasm32"))]
+    let results = support::on_two_threads(cases.len(), &|k| run_case(k, &cases[k]));
+    #[cfg(target_arch = "wasm32")]
+    let results: Vec<_> = cases.iter().enumerate().map(|(k, c)| run_case(k, c)).collect();
+    let failures: Vec<&String> = results.iter().flat_map(|r| &r.1).collect();
+    let compared: usize = results.iter().map(|r| r.0).sum();
+    let boundaries: usize = results.iter().map(|r| r.2).sum();
+    let mixed = results.iter().filter(|r| r.3).count();
+    let n = cases.len();
+    assert!(failures.is_empty(), "{} contradictions, first: {}", failures.len(), failures[0]);
+    assert!(mixed * 5 >= n, "only {mixed} of {n} trajectories have both kinds of section");
+    let samples = env_usize("CABLENAV_DYNAMICS_SAMPLES", SAMPLES);
+    assert!(boundaries >= n / 8 && compared > n * samples / 2, "{boundaries} boundaries, {compared} samples");
+}
+
+/// The least time scale of six-cable trajectories (no winch limits) against the reference's:
+/// per sample, the largest u = 1/k² its tensions allow is linear algebra on the rest and inertial
+/// wrenches; the certified scale is never below the sampled one (soundness) and within 1e-3 of it
+/// (the samples are dense, the peak smooth).
+#[test]
+fn min_time_scale_matches_the_reference() {
+    let mut rng = Rng::new(23);
+    let (mut compared, mut faster, mut slower) = (0, 0, 0);
+    let n = env_usize("CABLENAV_DYNAMICS_CASES", CASES) / 3;
+    let mut k = 0;
+    while compared < n.max(4) && k < 20 * n.max(4) {
+        k += 1;
+        let mut case = random_case(&mut rng);
+        if case.cables.len() != 6 {
+            continue;
+        }
+        case.winch = None;
+        let s = Scenario::from_json(&case.json()).unwrap();
+        let r = verify_trajectory(&s, &s.trajectories[0]).unwrap();
+        let sec = r.seconds.as_ref().expect("a timed trajectory has seconds");
+        assert!((sec.duration - case.duration).abs() <= 1e-15 * case.duration);
+        if !sec.infeasible_at_rest.is_empty() {
+            // holding only at some speeds (or at none): then the scales that hold are bounded
+            assert!(sec.min_time_scale.is_none() || sec.max_time_scale.is_some(), "case {k}: {sec:?}");
+            continue;
+        }
+        assert!(sec.max_time_scale.is_none());
+        let Some(scale) = sec.min_time_scale else { panic!("case {k}: holds at rest, yet no scale: {sec:?}") };
+        let samples = SAMPLES * 5;
+        let u_max = (0..=samples).map(|i| case.at(i as f64 / samples as f64, case.duration, &mut rng).u_max).fold(f64::INFINITY, f64::min);
+        let k_ref = if u_max.is_finite() { 1.0 / u_max.max(0.0).sqrt() } else { 0.0 };
+        assert!(scale >= k_ref * (1.0 - 1e-9), "case {k}: certified {scale} below the sampled {k_ref}\n{}", case.json());
+        assert!(scale <= k_ref * (1.0 + 1e-3) + 1e-6, "case {k}: certified {scale}, sampled {k_ref}\n{}", case.json());
+        let [lo, hi] = sec.min_time_scale_bracket.unwrap();
+        assert!(lo <= hi && hi == scale && (hi - lo) <= 2e-4 * hi + 1e-6, "{lo} {hi}");
+        assert!((sec.min_duration.unwrap() - scale * case.duration).abs() < 1e-12);
+        compared += 1;
+        if scale < 1.0 { faster += 1 } else { slower += 1 }
+    }
+    assert!(compared >= n.max(4), "only {compared} comparable cases");
+    assert!(faster > 0 && slower > 0, "{faster} could run faster, {slower} must run slower: both kinds are needed");
+}
+
+/// Six cables: the hyperplane-shifting margin of the wrench set equals paper 1's
+/// min over cables of (f0 − v − f_min, f_max − f0 − v), on 10⁴ random poses.
+#[test]
+fn six_cable_wrench_set_margin_agrees_with_paper_1() {
+    let mut rng = Rng::new(24);
+    let poses = if cfg!(target_arch = "wasm32") { 1_000 } else { 10_000 };
+    let mut signs = [0, 0];
+    for _ in 0..poses {
+        let case = random_case(&mut rng);
+        if case.cables.len() != 6 {
+            continue;
+        }
+        let (p, r) = case.pose(rng.f64());
+        let cables: Vec<(Vector3<f64>, Vector3<f64>)> = case.cables.iter().map(|(a, b)| (to_v(*a), p + r * to_v(*b))).collect();
+        let (mut w0, e_inv, point) = case.wrench.clone().unwrap();
+        w0[2] += case.mass * case.gravity.z; // the weight, as a load
+        let c = p + r * to_v(point);
+        let bounds = vec![Bounds { min: case.tension.0, max: case.tension.1 }; 6];
+        let facets = wrench_set_margin(&cables, &c, &w0, &e_inv, &bounds);
+        let wrench = cablenav::model::Wrench {
+            nominal: w0,
+            ellipsoid: e_inv.try_inverse().unwrap(),
+            ellipsoid_inv: e_inv,
+            point: to_v(point),
+            frame: cablenav::model::PointFrame::Platform,
+            closure: false,
+        };
+        let ranges = tension_ranges_at(&cables, &c, &w0, &wrench);
+        match (facets, ranges) {
+            (Some(f), Some(ranges)) => {
+                let paper = ranges.iter().map(|t| (t.nominal - t.spread - case.tension.0).min(case.tension.1 - t.nominal - t.spread)).fold(f64::INFINITY, f64::min);
+                let half = 0.5 * (case.tension.1 - case.tension.0);
+                let scale = ranges.iter().map(|t| t.nominal.abs() + t.spread).fold(1.0, f64::max);
+                assert!((f.margin - paper.min(half)).abs() <= 1e-9 * scale, "facets {} vs paper 1 {paper}", f.margin);
+                signs[usize::from(paper > 0.0)] += 1;
+            }
+            (None, None) => {}
+            (f, r) => panic!("singular in one test only: {f:?} {r:?}"),
+        }
+    }
+    assert!(signs[0] > 100 && signs[1] > 100, "{signs:?}");
+}
+
+
