@@ -17,7 +17,7 @@ Exit codes:
   70  internal error: a bug (please report the command and the scenario)
   74  the report could not be written to stdout";
 
-const SCENARIO_HELP: &str = "A cablenav-scenario/1, /2 or /3 JSON file (docs/scenario-format.md)";
+const SCENARIO_HELP: &str = "A cablenav-scenario/1 to /4 JSON file (docs/scenario-format.md)";
 
 /// Exact feasibility of cable-driven parallel robot motions.
 ///
@@ -73,14 +73,21 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// Lengths, distances, violated conditions and the wrench set's tension ranges at one pose
+    /// Lengths, distances, violated conditions and the wrench set's tension ranges at one pose, or
+    /// where a trajectory is at t (--trajectory NAME --t T: moving, if the trajectory is timed)
     #[command(after_help = EXIT_CODES)]
     Check {
         #[arg(value_name = "SCENARIO", help = SCENARIO_HELP)]
         scenario: String,
         /// The pose to check
-        #[arg(long, value_name = "NAME")]
-        pose: String,
+        #[arg(long, value_name = "NAME", required_unless_present = "trajectory", conflicts_with = "trajectory")]
+        pose: Option<String>,
+        /// Check where this trajectory is at --t instead of a pose
+        #[arg(long, value_name = "NAME", requires = "t")]
+        trajectory: Option<String>,
+        /// The trajectory's parameter t ∈ [0, 1]
+        #[arg(long, value_name = "T", value_parser = finite, requires = "trajectory")]
+        t: Option<f64>,
         /// Print the report as JSON
         #[arg(long)]
         json: bool,
@@ -189,6 +196,21 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Convert a CASPR model into a scenario: MODEL_DIR holds CASPR's <name>_bodies.xml and
+    /// <name>_cables.xml (the platform's mass and inertia come along, format 4); the scenario
+    /// goes to --out FILE, or to stdout without it
+    #[command(after_help = EXIT_CODES)]
+    Import {
+        /// The model's directory
+        #[arg(value_name = "MODEL_DIR")]
+        dir: String,
+        /// Write the scenario JSON to FILE (and print a summary) instead of printing it
+        #[arg(long, value_name = "FILE")]
+        out: Option<String>,
+        /// The scenario's name [default: the model's, from its file names]
+        #[arg(long, value_name = "NAME")]
+        name: Option<String>,
+    },
     /// Print a shell completion script (e.g. `cablenav completions bash > /etc/bash_completion.d/cablenav`)
     Completions {
         /// The shell
@@ -222,7 +244,14 @@ impl Command {
             Command::Ray { scenario, pose, vary, range, json } => {
                 plain(scenario, Request::Ray { pose, vary, range: [range[0], range[1]] }, json)
             }
-            Command::Check { scenario, pose, json } => plain(scenario, Request::Check { pose }, json),
+            Command::Check { scenario, pose, trajectory, t, json } => {
+                let request = match (pose, t) {
+                    (Some(pose), _) => Request::Check { pose },
+                    (None, Some(t)) => Request::CheckAt { trajectory, t },
+                    (None, None) => return Err(cablenav::Error::new("--pose", "give --pose NAME, or --trajectory NAME --t T")),
+                };
+                plain(scenario, request, json)
+            }
             Command::Envelope { scenario, trajectory, samples, json } => plain(scenario, Request::Envelope { trajectory, samples }, json),
             Command::Slice { scenario, pose, axes, res, range, png, json } => {
                 let range = range.map(|r| [[r[0], r[1]], [r[2], r[3]]]);
@@ -248,6 +277,7 @@ impl Command {
                 Ok(Invocation { scenario, request: Request::Plan { query, params, planner, lattice }, json, png: None, out })
             }
             Command::Completions { .. } => Err(cablenav::Error::new("completions", "reads no scenario")),
+            Command::Import { .. } => Err(cablenav::Error::new("import", "reads a CASPR model, not a scenario")),
         }
     }
 }

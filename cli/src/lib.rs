@@ -18,6 +18,8 @@ use std::fmt;
 pub type Read<'a> = &'a dyn Fn(&str) -> cablenav::Result<String>;
 /// Writes an output file (`--png`, `--out`) by path.
 pub type Write<'a> = &'a dyn Fn(&str, &[u8]) -> cablenav::Result<()>;
+/// Lists the file names in a directory (`import MODEL_DIR`).
+pub type List<'a> = &'a dyn Fn(&str) -> cablenav::Result<Vec<String>>;
 
 /// Why a command failed.
 #[derive(Debug)]
@@ -72,7 +74,7 @@ impl From<cablenav::Error> for CliError {
 
 /// Runs one command line (without the program name) and returns what to print on stdout:
 /// the report, `--help`, `--version` or a completion script. Long commands report to `progress`.
-pub fn run<I, S>(args: I, read: Read, write: Write, progress: &mut dyn FnMut(Progress)) -> Result<String, CliError>
+pub fn run<I, S>(args: I, read: Read, write: Write, list: List, progress: &mut dyn FnMut(Progress)) -> Result<String, CliError>
 where
     I: IntoIterator<Item = S>,
     S: Into<std::ffi::OsString> + Clone,
@@ -89,6 +91,7 @@ where
             clap_complete::generate(shell, &mut Cli::command(), "cablenav", &mut out);
             return Ok(String::from_utf8_lossy(&out).into_owned());
         }
+        Command::Import { dir, out, name } => return Ok(import(&dir, out.as_deref(), name.as_deref(), read, write, list)?),
         command => command.invocation()?,
     };
     let path = &invocation.scenario;
@@ -107,4 +110,25 @@ where
         }
     }
     Ok(printed)
+}
+
+/// `cablenav import`: the CASPR model in `dir` as scenario JSON, written to `out` (then a summary
+/// is returned) or returned.
+fn import(dir: &str, out: Option<&str>, name: Option<&str>, read: Read, write: Write, list: List) -> cablenav::Result<String> {
+    let files = cablenav::scenario::caspr::model_files(&list(dir)?).map_err(|e| cablenav::Error::new(dir, e.reason))?;
+    let path = |f: &str| format!("{}/{f}", dir.trim_end_matches('/'));
+    let (bodies, cables) = (read(&path(&files.bodies))?, read(&path(&files.cables))?);
+    let imported = cablenav::scenario::caspr::to_json(name.unwrap_or(&files.name), &bodies, &cables)?;
+    let scenario = Scenario::from_json(&imported.json)?;
+    let Some(out) = out else { return Ok(imported.json) };
+    write(out, imported.json.as_bytes())?;
+    let mut text = format!("wrote {out}: {} ({} cables", scenario.name, scenario.robot.cables.len());
+    text += &match &scenario.robot.dynamics {
+        Some(d) => format!(", mass {} kg)\n", d.mass),
+        None => ", massless)\n".to_string(),
+    };
+    for note in &imported.notes {
+        text += &format!("  note: {note}\n");
+    }
+    Ok(text)
 }

@@ -16,7 +16,7 @@ fn files(path: &str) -> cablenav::Result<String> {
 }
 
 fn cli(args: &str) -> Result<String, CliError> {
-    run(args.split_whitespace(), &files, &|_, _| Ok(()), &mut |_| {})
+    run(args.split_whitespace(), &files, &|_, _| Ok(()), &|_| Ok(vec![]), &mut |_| {})
 }
 
 fn json(args: &str) -> serde_json::Value {
@@ -112,7 +112,7 @@ fn slice_json_png_and_errors() {
         written.borrow_mut().push((path.to_string(), bytes.len()));
         Ok(())
     };
-    let text = run(args, &files, &write, &mut |_| {}).unwrap();
+    let text = run(args, &files, &write, &|_| Ok(vec![]), &mut |_| {}).unwrap();
     assert!(text.contains("component"));
     assert_eq!(written.borrow()[0].0, "out.png");
     for (args, field) in [
@@ -290,4 +290,34 @@ fn long_commands_draw_bars_on_a_terminal_and_print_the_same_report_when_piped() 
         assert!(piped.status.success() && piped.stderr.is_empty(), "{}: {}", args[0], String::from_utf8_lossy(&piped.stderr));
         assert_eq!(report, String::from_utf8_lossy(&piped.stdout), "{}", args[0]);
     }
+}
+
+/// `cablenav import MODEL_DIR`: the bodies and cables files found in the directory, the scenario
+/// written to --out (a summary printed) or printed; a directory without a model is an error
+/// naming it.
+#[test]
+fn import_reads_a_model_directory() {
+    let bodies = include_str!("../../../shared/models/caspr/CoGiRo/CoGiRo_bodies.xml");
+    let cables = include_str!("../../../shared/models/caspr/CoGiRo/CoGiRo_cables.xml");
+    let read = |p: &str| match p {
+        "m/CoGiRo_bodies.xml" => Ok(bodies.to_string()),
+        "m/CoGiRo_cables.xml" => Ok(cables.to_string()),
+        _ => Err(cablenav::Error::new(p, "no such file")),
+    };
+    let list = |p: &str| if p == "m" || p == "m/" { Ok(vec!["CoGiRo_trajectories.xml".to_string(), "CoGiRo_cables.xml".into(), "CoGiRo_bodies.xml".into()]) } else { Ok(vec![]) };
+    let written = std::cell::RefCell::new(Vec::new());
+    let write = |p: &str, bytes: &[u8]| {
+        written.borrow_mut().push((p.to_string(), String::from_utf8_lossy(bytes).into_owned()));
+        Ok(())
+    };
+    let printed = run("import m/ --out cogiro.json".split(' '), &read, &write, &list, &mut |_| {}).unwrap();
+    assert!(printed.contains("wrote cogiro.json: CoGiRo (8 cables, mass 91.058 kg)"), "{printed}");
+    let (path, text) = written.borrow()[0].clone();
+    assert_eq!(path, "cogiro.json");
+    let s = cablenav::Scenario::from_json(&text).unwrap();
+    assert_eq!((s.name.as_str(), s.robot.dynamics.as_ref().unwrap().mass), ("CoGiRo", 91.058));
+    let printed = run("import m --name crane".split(' '), &read, &write, &list, &mut |_| {}).unwrap();
+    assert_eq!(cablenav::Scenario::from_json(&printed).unwrap().name, "crane");
+    let e = run("import empty".split(' '), &read, &write, &list, &mut |_| {}).unwrap_err();
+    assert_eq!(e.field(), "empty");
 }

@@ -54,7 +54,7 @@ impl Files {
             self.0.borrow_mut().insert(p.to_string(), String::from_utf8_lossy(bytes).into_owned());
             Ok(())
         };
-        run(args.iter().copied(), &read, &write, &mut |_| {})
+        run(args.iter().copied(), &read, &write, &|_| Ok(vec![]), &mut |_| {})
     }
 
     fn json(&self, args: &[&str]) -> Value {

@@ -12,7 +12,7 @@ const ARM: &str = include_str!("../../static/multilink/bmarm-x4-2.json");
 fn cli(args: &[&str]) -> Result<String, CliError> {
     let read = |p: &str| if p == "arm.json" { Ok(ARM.to_string()) } else { Err(Error::new(p, "no such file")) };
     let write = |_: &str, _: &[u8]| Ok(());
-    run(args.iter().copied(), &read, &write, &mut |_| {})
+    run(args.iter().copied(), &read, &write, &|_| Ok(vec![]), &mut |_| {})
 }
 
 fn json(args: &[&str]) -> Value {

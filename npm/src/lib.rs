@@ -33,6 +33,19 @@ export interface VerifyReport {
   boundaries: { t: number; tau: number; constraint: string; enters: "feasible" | "infeasible" }[];
   uncertain: Interval[];
   warnings: string[];
+  /** A timed trajectory (format 4 `duration`): its sections in seconds and its least time scale. */
+  seconds?: {
+    duration: number;
+    feasible: Interval[];
+    infeasible: Interval[];
+    uncertain: Interval[];
+    min_time_scale: number | null;
+    min_time_scale_bracket?: Interval;
+    min_duration: number | null;
+    max_time_scale?: number;
+    min_time_scale_note: string;
+    infeasible_at_rest: Interval[];
+  };
 }
 
 /** What `ray` returns (`cablenav ray --json`). */
@@ -225,6 +238,13 @@ pub fn verify(#[wasm_bindgen(unchecked_param_type = "ScenarioInput")] scenario: 
 #[wasm_bindgen(unchecked_return_type = "PoseReport")]
 pub fn check(#[wasm_bindgen(unchecked_param_type = "ScenarioInput")] scenario: JsValue, pose: String) -> Result<JsValue, JsValue> {
     call(scenario, Ok(Request::Check { pose }))
+}
+
+/// `check` where a trajectory (default: the scenario's first) is at t ∈ [0, 1], moving as it
+/// moves there if it is timed (its tension ranges then include the platform's inertia).
+#[wasm_bindgen(js_name = checkAt, unchecked_return_type = "PoseReport")]
+pub fn check_at(#[wasm_bindgen(unchecked_param_type = "ScenarioInput")] scenario: JsValue, t: f64, trajectory: Option<String>) -> Result<JsValue, JsValue> {
+    call(scenario, Ok(Request::CheckAt { trajectory, t }))
 }
 
 /// Exact feasible intervals of one coordinate over [lo, hi], the others held at the pose's (a

@@ -57,6 +57,21 @@ function close(actual, expected, path = '') {
   }
 }
 
+test('timed trajectories: seconds, checkAt and the envelope with inertia equal the CLI', () => {
+  const timed = join(root, 'static', 'scenarios', 'robocrane-timed.json');
+  const text = preset('robocrane-timed.json');
+  for (const { name } of JSON.parse(text).trajectories) {
+    const report = cablenav.verify(text, name);
+    close(report, cli('verify', timed, '--trajectory', name));
+    assert.ok(report.seconds.duration > 0, name);
+    for (const t of [0, 0.3, 1]) {
+      close(cablenav.checkAt(text, t, name), cli('check', timed, '--trajectory', name, '--t', t));
+    }
+  }
+  close(cablenav.envelope(text, 'swing', 10), cli('envelope', timed, '--trajectory', 'swing', '--samples', 10));
+  assert.throws(() => cablenav.checkAt(text, 1.5), (e) => e.name === 'ScenarioError' && e.field === '--t');
+});
+
 test('check, ray, envelope, slice and plan equal the CLI (to the last bits of libm)', () => {
   const box = join(root, 'static', 'scenarios', 'cdpr7-box.json');
   const robocrane = join(root, 'static', 'scenarios', 'robocrane.json');

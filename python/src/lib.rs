@@ -202,6 +202,16 @@ fn check(py: Python<'_>, scenario: &Bound<'_, PyAny>, pose: String) -> PyResult<
     call(py, scenario, Ok(Request::Check { pose }))
 }
 
+/// `check` where a trajectory (default: the scenario's first) is at `t` ∈ [0, 1], moving as it
+/// moves there if it is timed (its tension ranges then include the platform's inertia).
+///
+/// Returns the dict `cablenav check SCENARIO --trajectory NAME --t T --json` prints.
+#[pyfunction]
+#[pyo3(signature = (scenario, t, trajectory=None))]
+fn check_at(py: Python<'_>, scenario: &Bound<'_, PyAny>, t: f64, trajectory: Option<String>) -> PyResult<Py<PyAny>> {
+    call(py, scenario, Ok(Request::CheckAt { trajectory, t }))
+}
+
 /// Exact feasible intervals of one pose coordinate over `range`, the others held at `pose`'s.
 ///
 /// `vary` is one of "x", "y", "z", "phi", "theta", "sigma" (or, for a multi-link robot, one of
@@ -300,6 +310,7 @@ fn _cablenav(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_function(wrap_pyfunction!(verify, m)?)?;
     m.add_function(wrap_pyfunction!(check, m)?)?;
+    m.add_function(wrap_pyfunction!(check_at, m)?)?;
     m.add_function(wrap_pyfunction!(ray, m)?)?;
     m.add_function(wrap_pyfunction!(envelope, m)?)?;
     m.add_function(wrap_pyfunction!(slice, m)?)?;

@@ -54,6 +54,20 @@ def test_envelope_slice_and_plan_equal_the_cli(cli):
     assert ours == theirs and ours["status"] == "found"
 
 
+def test_timed_trajectories_equal_the_cli(cli):
+    timed = ROOT / "static" / "scenarios" / "robocrane-timed.json"
+    for trajectory in [t["name"] for t in load(timed)["trajectories"]]:
+        report = cablenav.verify(timed, trajectory)
+        assert report == cli("verify", timed, "--trajectory", trajectory)
+        assert report["seconds"]["duration"] > 0
+        for t in (0.0, 0.3, 1.0):
+            assert cablenav.check_at(timed, t, trajectory) == cli("check", timed, "--trajectory", trajectory, "--t", t)
+    assert cablenav.envelope(timed, "swing", samples=10) == cli("envelope", timed, "--trajectory", "swing", "--samples", 10)
+    with pytest.raises(cablenav.ScenarioError) as e:
+        cablenav.check_at(timed, 1.5)
+    assert e.value.field == "--t"
+
+
 def test_plan_takes_the_clis_atlas_options(cli):
     robocrane = ROOT / "static" / "scenarios" / "robocrane.json"
     default = cablenav.plan(robocrane, "q1-q2")

@@ -27,6 +27,9 @@ def verify(scenario: Scenario, trajectory: Optional[str] = None, *, pointwise: O
 def check(scenario: Scenario, pose: str) -> Report:
     """Lengths, clearances, violated conditions and wrench tension ranges at one pose."""
 
+def check_at(scenario: Scenario, t: float, trajectory: Optional[str] = None) -> Report:
+    """``check`` where a trajectory is at ``t`` ∈ [0, 1], moving as it moves there if it is timed."""
+
 def ray(scenario: Scenario, pose: str, vary: str, range: Tuple[float, float]) -> Report:
     """Exact feasible intervals of one coordinate (x, y, z, phi, theta, sigma, or a multi-link
     robot's joint coordinate by name, ``pose`` naming a configuration) over ``range``."""
