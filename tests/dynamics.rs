@@ -21,11 +21,10 @@ mod support;
 use cablenav::model::Bounds;
 use cablenav::query::lp::{maximise, LpResult};
 use cablenav::query::wrench::{tension_ranges_at, wrench_set_margin};
-use cablenav::report::{Side, VerifyReport};
 use cablenav::verify::verify_trajectory;
 use cablenav::Scenario;
 use nalgebra::{DMatrix, DVector, Matrix3, Matrix6, Vector3, Vector6};
-use support::env_usize;
+use support::{env_usize, lone_boundaries, reported};
 use support::reference::*;
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -332,21 +331,6 @@ fn random_case(rng: &mut Rng) -> Case {
     Case { cables, tension, mass, com: rng.in_box(0.1), inertia, gravity, wrench, winch, traj, duration: rng.range(0.5, 2.5) }
 }
 
-/// The report's verdict at t: inside a reported interval at least `gap` from its ends.
-fn reported(r: &VerifyReport, t: f64, gap: f64) -> Option<bool> {
-    let inside = |iv: &[f64; 2]| t > iv[0] + gap && t < iv[1] - gap;
-    if r.uncertain.iter().any(|iv| t >= iv[0] - gap && t <= iv[1] + gap) {
-        return None;
-    }
-    if r.feasible.iter().any(inside) {
-        Some(true)
-    } else if r.infeasible.iter().any(inside) {
-        Some(false)
-    } else {
-        None
-    }
-}
-
 /// Per case: samples compared, contradictions, boundaries checked, mixed sections.
 fn run_case(k: usize, case: &Case) -> (usize, Vec<String>, usize, bool) {
     let s = Scenario::from_json(&case.json()).unwrap_or_else(|e| panic!("case {k}: {e}"));
@@ -371,13 +355,7 @@ fn run_case(k: usize, case: &Case) -> (usize, Vec<String>, usize, bool) {
     }
     // each boundary separates decided reference verdicts 1e-6 to either side, as reported
     let mut checked = 0;
-    for b in &r.boundaries {
-        let (lo, hi) = (b.t - 1e-6, b.t + 1e-6);
-        let crowded = r.boundaries.iter().any(|o| o.t != b.t && (o.t - b.t).abs() < 2e-6) || r.uncertain.iter().any(|u| u[0] < hi + 1e-6 && u[1] > lo - 1e-6);
-        if crowded || lo < 0.0 || hi > 1.0 {
-            continue;
-        }
-        let enters = matches!(b.enters, Side::Feasible);
+    for (b, lo, hi, enters) in lone_boundaries(&r, 1e-6) {
         let (before, after) = (case.at(lo, case.duration, &mut rng).verdict, case.at(hi, case.duration, &mut rng).verdict);
         if before == Some(enters) || after == Some(!enters) {
             bad.push(format!("boundary t = {} ({}) not matched by the reference within 1e-6: {before:?} → {after:?}", b.t, b.constraint));

@@ -11,7 +11,7 @@ use wasm_bindgen_test::wasm_bindgen_test as test;
 
 mod support;
 
-use support::env_usize;
+use support::{env_usize, lone_boundaries, reported};
 
 use cablenav::report::{Side, VerifyReport};
 use cablenav::verify::verify_trajectory;
@@ -139,23 +139,6 @@ fn random_case(rng: &mut Rng) -> Case {
     Case { cables, tension, nominal, e_inv, point, world_frame: rng.chance(0.5), traj }
 }
 
-/// The report's verdict at t: Some(feasible) inside a reported interval at least `gap` from its
-/// ends, None near a boundary or in an uncertain interval.
-fn reported(r: &VerifyReport, t: f64, gap: f64) -> Option<bool> {
-    let inside = |iv: &[f64; 2]| t > iv[0] + gap && t < iv[1] - gap;
-    let near = |iv: &[f64; 2]| t >= iv[0] - gap && t <= iv[1] + gap;
-    if r.uncertain.iter().any(near) {
-        return None;
-    }
-    if r.feasible.iter().any(inside) {
-        Some(true)
-    } else if r.infeasible.iter().any(inside) {
-        Some(false)
-    } else {
-        None
-    }
-}
-
 /// Dense comparison of one case: (samples compared, contradictions, boundaries, boundary misses).
 fn compare(case: &Case, r: &VerifyReport, samples: usize, seed: u64) -> (usize, Vec<String>, usize) {
     let mut rng = Rng::new(seed);
@@ -180,14 +163,7 @@ fn compare(case: &Case, r: &VerifyReport, samples: usize, seed: u64) -> (usize, 
         }
     }
     // Each boundary separates reference verdicts 1e-6 to either side, in the reported direction.
-    for b in &r.boundaries {
-        let (lo, hi) = (b.t - 1e-6, b.t + 1e-6);
-        let crowded = r.boundaries.iter().any(|o| o.t != b.t && (o.t - b.t).abs() < 2e-6)
-            || r.uncertain.iter().any(|u| u[0] < hi + 1e-6 && u[1] > lo - 1e-6);
-        if crowded || lo < 0.0 || hi > 1.0 {
-            continue;
-        }
-        let enters_feasible = matches!(b.enters, Side::Feasible);
+    for (b, lo, hi, enters_feasible) in lone_boundaries(r, 1e-6) {
         if case.feasible(lo) == enters_feasible || case.feasible(hi) != enters_feasible {
             bad.push(format!("boundary t = {} ({}) not matched by the reference within 1e-6", b.t, b.constraint));
         }

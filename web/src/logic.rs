@@ -2,7 +2,7 @@
 //! here, so all of it is unit-tested natively). No maths either: the intervals come from
 //! `cablenav::verify`; this module only sorts and formats them.
 
-use cablenav::report::{Side, VerifyReport};
+use cablenav::report::{Seconds, Side, VerifyReport};
 use cablenav::Scenario;
 
 /// What a t-section of the strip is.
@@ -98,6 +98,21 @@ pub fn fmt_num(x: f64) -> String {
     let s = format!("{x:.4}");
     let s = s.trim_end_matches('0').trim_end_matches('.');
     if s == "-0" { "0".to_string() } else { s.to_string() }
+}
+
+/// What the page says about a timed trajectory's fastest uniform timing (docs/dynamics.md): the
+/// least certified scale and duration, the largest one where slower fails too, or why there is
+/// none; then the core's note on what binds.
+pub fn time_scale_summary(s: &Seconds) -> String {
+    let lead = match (s.min_time_scale, s.min_duration, s.max_time_scale) {
+        (Some(k), Some(d), Some(k_max)) => {
+            format!("Certified for durations from {} s to {} s (time scale {} to {})", fmt_num(d), fmt_num(k_max * s.duration), fmt_num(k), fmt_num(k_max))
+        }
+        (Some(k), Some(d), None) if k <= 1.0 => format!("Could run in {} s (time scale {}; certified for every slower timing)", fmt_num(d), fmt_num(k)),
+        (Some(k), Some(d), None) => format!("Must run slower: at least {} s (time scale {})", fmt_num(d), fmt_num(k)),
+        _ => "No certified timing".to_string(),
+    };
+    format!("{lead}. {}", s.min_time_scale_note)
 }
 
 /// A number for machines (`data-t0` etc.): the shortest text that parses back to the same f64.
@@ -196,6 +211,29 @@ mod tests {
             warnings: vec!["w".into()],
             seconds: None,
         }
+    }
+
+    #[test]
+    fn timed_reports_say_how_fast() {
+        let mut sec = Seconds {
+            duration: 2.0,
+            feasible: vec![[0.0, 2.0]],
+            infeasible: vec![],
+            uncertain: vec![],
+            min_time_scale: Some(0.5),
+            min_time_scale_bracket: Some([0.49995, 0.5]),
+            min_duration: Some(1.0),
+            max_time_scale: None,
+            min_time_scale_note: "binding: cable 2 speed".into(),
+            infeasible_at_rest: vec![],
+        };
+        assert_eq!(time_scale_summary(&sec), "Could run in 1 s (time scale 0.5; certified for every slower timing). binding: cable 2 speed");
+        (sec.min_time_scale, sec.min_duration) = (Some(1.5), Some(3.0));
+        assert!(time_scale_summary(&sec).starts_with("Must run slower: at least 3 s"));
+        sec.max_time_scale = Some(2.0);
+        assert!(time_scale_summary(&sec).starts_with("Certified for durations from 3 s to 4 s"));
+        (sec.min_time_scale, sec.min_duration, sec.max_time_scale) = (None, None, None);
+        assert!(time_scale_summary(&sec).starts_with("No certified timing."));
     }
 
     #[test]

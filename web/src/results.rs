@@ -2,7 +2,7 @@
 //! the first screen, under the 3-D view), and the tables of intervals and boundaries with the
 //! warnings (in the results panels). Both read the page's `parsed` and `verified` memos.
 
-use cablenav::report::VerifyReport;
+use cablenav::report::{Seconds, VerifyReport};
 use leptos::prelude::*;
 
 use crate::logic::{self, fmt_num, Section, StripModel};
@@ -66,6 +66,7 @@ pub fn ResultTables(parsed: Memo<Parsed>, verified: Memo<Verified>) -> impl Into
         let notes_view = |report: Option<&VerifyReport>| view! { <Notes notes=logic::notes(&scenario.warnings, report) /> };
         match verified.0.as_ref() {
             Some(Ok(report)) => view! {
+                {report.seconds.clone().map(|seconds| view! { <Timing seconds /> })}
                 <Tables model=logic::strip(report) />
                 {notes_view(Some(report))}
             }
@@ -164,6 +165,35 @@ fn Tables(model: StripModel) -> impl IntoView {
                 </tbody>
             </table>
         </div>
+    }
+}
+
+/// A timed trajectory: its sections in seconds and how fast it may run.
+#[component]
+fn Timing(seconds: Seconds) -> impl IntoView {
+    let rows: Vec<(&'static str, [f64; 2])> = [("feasible", &seconds.feasible), ("infeasible", &seconds.infeasible), ("uncertain", &seconds.uncertain)]
+        .into_iter()
+        .flat_map(|(kind, v)| v.iter().map(move |iv| (kind, *iv)))
+        .collect();
+    view! {
+        <section class="timing" data-testid="timing">
+            <p data-testid="time-scale" data-min-duration=seconds.min_duration.map(logic::fmt_exact).unwrap_or_default()>
+                <strong>{format!("Timed: {} s. ", fmt_num(seconds.duration))}</strong>
+                {logic::time_scale_summary(&seconds)}
+            </p>
+            <table data-testid="seconds">
+                <caption>"Sections in seconds"</caption>
+                <thead>
+                    <tr><th>"kind"</th><th>"from (s)"</th><th>"to (s)"</th></tr>
+                </thead>
+                <tbody>
+                    {rows
+                        .into_iter()
+                        .map(|(kind, [a, b])| view! { <tr class=kind><td>{kind}</td><td>{fmt_num(a)}</td><td>{fmt_num(b)}</td></tr> })
+                        .collect_view()}
+                </tbody>
+            </table>
+        </section>
     }
 }
 

@@ -3,7 +3,8 @@
 //! [`path`] (paths into the tree and the core's error field they correspond to), [`numbers`]
 //! (reading and writing numbers), and the per-part edits [`robot`] (cables, with per-cable
 //! arrays kept in step), [`links`] (a multi-link robot's links, joints, configurations and paths),
-//! [`obstacles`], [`poses`], [`trajectories`], [`wrench`] and [`caspr`]
+//! [`obstacles`], [`poses`], [`trajectories`], [`wrench`], [`timing`] (mass, winches, durations:
+//! format 4) and [`caspr`]
 //! (templates for new items, conversions done by the core), and [`handles`] (the points the 3-D
 //! view drags). Everything is re-exported here, so
 //! callers write `edit_logic::add_cable`.
@@ -16,6 +17,7 @@ pub mod obstacles;
 pub mod path;
 pub mod poses;
 pub mod robot;
+pub mod timing;
 pub mod trajectories;
 pub mod wrench;
 
@@ -27,6 +29,7 @@ pub use obstacles::*;
 pub use path::*;
 pub use poses::*;
 pub use robot::*;
+pub use timing::*;
 pub use trajectories::*;
 pub use wrench::*;
 

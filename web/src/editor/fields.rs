@@ -97,7 +97,8 @@ pub fn NumInput(
     }
 }
 
-/// A number at `path` of the scenario.
+/// A number at `path` of the scenario; a `timed` one is a format-4 field (mass, winch limit,
+/// duration): writing it raises the file's format, and only positive numbers are taken.
 #[component]
 pub fn NumField(
     ed: Ed,
@@ -106,11 +107,13 @@ pub fn NumField(
     #[prop(optional)] unit: &'static str,
     #[prop(optional)] optional: bool,
     #[prop(optional)] compact: bool,
+    #[prop(optional)] timed: bool,
 ) -> impl IntoView {
     let (p1, p2, p3, p4) = (path.clone(), path.clone(), path.clone(), path);
     let value = Memo::new(move |_| ed.num(&p1));
     let on_value = Callback::new(move |v: Option<f64>| {
         ed.edit(|d| match v {
+            Some(x) if timed => el::set_timed_number(d, &p2, Some(x)),
             Some(x) => {
                 el::set(d, &p2, el::number(x));
             }
@@ -127,6 +130,7 @@ pub fn NumField(
             unit
             optional
             compact
+            positive=timed
             field=Signal::derive(move || ed.core_path(&p3))
             error=Signal::derive(move || ed.error_at(&p4, true))
         />

@@ -11,6 +11,7 @@ pub mod obstacles;
 pub mod poses;
 pub mod robot;
 pub mod share;
+pub mod timing;
 pub mod trajectories;
 pub mod wrench;
 
@@ -145,6 +146,10 @@ pub fn ScenarioEditor(source: RwSignal<String>, origin: RwSignal<&'static str>) 
 #[component]
 fn PlatformParts(ed: Ed) -> impl IntoView {
     view! {
+        <details>
+            <summary>"Mass and winches (timed motion)"</summary>
+            <timing::TimingEditor ed />
+        </details>
         <details>
             <summary>"Wrench set"</summary>
             <wrench::WrenchEditor ed />

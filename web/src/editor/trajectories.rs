@@ -65,6 +65,7 @@ fn TrajectoryItem(ed: Ed, i: usize) -> impl IntoView {
         <fieldset class="trajectory" data-testid="trajectory-item" class:invalid=move || item_error.with(Option::is_some)>
             <legend>{move || format!("Trajectory {}", i + 1)}</legend>
             <TextField ed path=path.k("name") label="Name" />
+            <NumField ed path=path.k("duration") label="Duration (empty: untimed)" unit="s" optional=true timed=true />
             <Choice
                 label="Translation"
                 options=vec![
