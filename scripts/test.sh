@@ -21,6 +21,9 @@
 #                                      Robocrane q1-q2) against `cablenav verify`
 #   8c. tests/browser/e2e-multilink.mjs the 4-DoF arm: strip, 3-D view, joint sliders, the α–β
 #                                      slice map and ray lattice against `cablenav verify|check|slice|lattice`
+#   8d. tests/browser/e2e-timing.mjs   timed trajectories and the platform's mass: sections in
+#                                      seconds and the fastest timing, a duration and a mass typed
+#                                      in the editor, against `cablenav verify`
 #   9. python/ (maturin, pytest)       the wheel built and installed into target/venv; pytest
 #                                      compares it with the CLI that step 1 built, runs the sweep
 #                                      example serially, on threads and on a Dask LocalCluster
@@ -72,6 +75,9 @@ node tests/browser/e2e-lattice.mjs target/page
 
 step "browser end-to-end test of a multi-link robot (the 4-DoF arm)"
 node tests/browser/e2e-multilink.mjs target/page
+
+step "browser end-to-end test of timed trajectories and the platform's mass"
+node tests/browser/e2e-timing.mjs target/page
 
 step "Python package: build the wheel, install it into target/venv, pytest"
 # The dev profile (opt-level 2) reuses step 1's build of the core; --force-reinstall replaces

@@ -30,7 +30,7 @@ use support::reference::*;
 #[cfg(not(target_arch = "wasm32"))]
 const CASES: usize = 300;
 #[cfg(target_arch = "wasm32")]
-const CASES: usize = 16;
+const CASES: usize = 40;
 #[cfg(not(target_arch = "wasm32"))]
 const SAMPLES: usize = 2_000;
 #[cfg(target_arch = "wasm32")]
@@ -382,7 +382,7 @@ fn dynamic_sections_match_an_independent_reference_on_random_robots() {
     assert!(failures.is_empty(), "{} contradictions, first: {}", failures.len(), failures[0]);
     assert!(mixed * 5 >= n, "only {mixed} of {n} trajectories have both kinds of section");
     let samples = env_usize("CABLENAV_DYNAMICS_SAMPLES", SAMPLES);
-    assert!(boundaries >= n / 8 && compared > n * samples / 2, "{boundaries} boundaries, {compared} samples");
+    assert!(boundaries >= n / 12 && compared > n * samples / 2, "{boundaries} boundaries, {compared} samples");
 }
 
 /// The least time scale of six-cable trajectories (no winch limits) against the reference's:
@@ -393,9 +393,9 @@ fn dynamic_sections_match_an_independent_reference_on_random_robots() {
 fn min_time_scale_matches_the_reference() {
     let mut rng = Rng::new(23);
     let (mut compared, mut faster, mut slower) = (0, 0, 0);
-    let n = env_usize("CABLENAV_DYNAMICS_CASES", CASES) / 3;
+    let n = (env_usize("CABLENAV_DYNAMICS_CASES", CASES) / 3).max(12);
     let mut k = 0;
-    while compared < n.max(4) && k < 20 * n.max(4) {
+    while compared < n && k < 20 * n {
         k += 1;
         let mut case = random_case(&mut rng);
         if case.cables.len() != 6 {
@@ -424,7 +424,7 @@ fn min_time_scale_matches_the_reference() {
         compared += 1;
         if scale < 1.0 { faster += 1 } else { slower += 1 }
     }
-    assert!(compared >= n.max(4), "only {compared} comparable cases");
+    assert!(compared >= n, "only {compared} comparable cases");
     assert!(faster > 0 && slower > 0, "{faster} could run faster, {slower} must run slower: both kinds are needed");
 }
 
@@ -468,7 +468,7 @@ fn six_cable_wrench_set_margin_agrees_with_paper_1() {
             (f, r) => panic!("singular in one test only: {f:?} {r:?}"),
         }
     }
-    assert!(signs[0] > 100 && signs[1] > 100, "{signs:?}");
+    assert!(signs[0] > poses / 100 && signs[1] > poses / 100, "{signs:?}");
 }
 
 

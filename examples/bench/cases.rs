@@ -16,6 +16,7 @@ const CDPR7: &str = include_str!("../../static/scenarios/cdpr7.json");
 const CDPR7_TREE: &str = include_str!("../../static/scenarios/cdpr7-tree.json");
 const CDPR7_BOX: &str = include_str!("../../static/scenarios/cdpr7-box.json");
 const ROBOCRANE: &str = include_str!("../../static/scenarios/robocrane.json");
+const ROBOCRANE_TIMED: &str = include_str!("../../static/scenarios/robocrane-timed.json");
 
 /// The Robocrane preset plus a slerp from q1 tilting on to θ = 1.4, past the tension bound (the
 /// trajectory of `tests/wrench_exact.rs`).
@@ -135,6 +136,17 @@ pub fn run_all(platform: &str, filter: &str, now: &dyn Fn() -> f64, out: &mut dy
     record(measure(now, filter, "crane/q1-q2/pointwise-0.001", &mut || pointwise(&crane, &crane_q12, 0.001)), out);
     record(measure(now, filter, "crane/tilt/exact", &mut || exact(&crane, &crane_tilt)), out);
     record(measure(now, filter, "crane/tilt/pointwise-0.001", &mut || pointwise(&crane, &crane_tilt, 0.001)), out);
+    // A timed trajectory with mass (docs/dynamics.md): the exact verification includes the search
+    // of the least time scale; the point-wise baseline checks weight, inertia and winch limits at
+    // each sample, without the scale.
+    let timed = parse(ROBOCRANE_TIMED);
+    for name in ["quick drop", "swing"] {
+        let t = traj(&timed, name);
+        let id = name.replace(' ', "-");
+        record(measure(now, filter, &format!("timed/{id}/exact"), &mut || exact(&timed, &t)), out);
+        record(measure(now, filter, &format!("timed/{id}/pointwise-0.01"), &mut || pointwise(&timed, &t, 0.01)), out);
+        record(measure(now, filter, &format!("timed/{id}/pointwise-0.001"), &mut || pointwise(&timed, &t, 0.001)), out);
+    }
     record(
         measure(now, filter, "crane/slice-400", &mut || {
             let range = [default_range(Coord::Phi).expect("angle"), default_range(Coord::Theta).expect("angle")];

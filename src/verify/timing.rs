@@ -111,8 +111,13 @@ fn min_time_scale(s: &Scenario, traj: &Trajectory, duration: f64, out: &mut Seco
     let rest_holds = rest_verdict == Verdict::Holds;
     let mut timed = sweeps(s, &motions, BOUNDARY_TOL, Some(duration));
     let mut check = |k: f64| sections_at(&conditions, &mut timed, Some(duration * k)).1;
-    // a scale that holds
-    let tries: Vec<f64> = if rest_holds { vec![1.0] } else { (0..=40).map(|j| if j % 2 == 0 { 2f64.powi(j / 2) } else { 0.5f64.powi(j / 2 + 1) }).collect() };
+    // a scale that holds: 1, 2, 4, … when the rest holds (slower always helps then); else 1, ½,
+    // 2, ¼, 4, …
+    let tries: Vec<f64> = if rest_holds {
+        (0..=20).map(|j| 2f64.powi(j)).collect()
+    } else {
+        (0..=40).map(|j| if j % 2 == 0 { 2f64.powi(j / 2) } else { 0.5f64.powi(j / 2 + 1) }).collect()
+    };
     let mut held = None;
     for &k in &tries {
         match check(k) {
@@ -123,10 +128,11 @@ fn min_time_scale(s: &Scenario, traj: &Trajectory, duration: f64, out: &mut Seco
             Verdict::Fails(_) | Verdict::Undecided => {}
         }
     }
-    let Some(k_hold) = held.or(rest_holds.then_some(SCALE_RANGE.1)) else {
+    let Some(k_hold) = held else {
         out.min_time_scale_note = match rest_verdict {
             Verdict::Fails(c) => format!("none: at rest the trajectory fails ({c}) on t ∈ {}, and no scale from 2^-20 to 2^20 is certified to hold", list(&at_rest.infeasible)),
-            _ => format!("none certified: at rest the tensions are uncertain on t ∈ {}", list(&at_rest.uncertain)),
+            Verdict::Holds => "none certified: it holds at rest, but no scale up to 2^20 was certified to hold (uncertain stretches)".to_string(),
+            Verdict::Undecided => format!("none certified: at rest the tensions are uncertain on t ∈ {}", list(&at_rest.uncertain)),
         };
         return;
     };
@@ -136,7 +142,7 @@ fn min_time_scale(s: &Scenario, traj: &Trajectory, duration: f64, out: &mut Seco
     out.min_duration = Some(lower.holds * duration);
     out.min_time_scale_note = match (&binding, lower.fails) {
         (Some(c), Some(k)) => format!("binding: {c} (certainly violated at k = {k})"),
-        _ if lower.holds <= SCALE_RANGE.0 => format!("holds down to k = {:e}, the smallest scale tried: speed hardly matters", lower.holds),
+        (_, None) if lower.holds < 2.0 * SCALE_RANGE.0 => format!("holds down to k = {:e}, the smallest scale tried: speed hardly matters", lower.holds),
         _ => "certified at the scale found; nothing failing below it was certified".to_string(),
     };
     if !rest_holds {

@@ -64,6 +64,18 @@ pub struct StripModel {
     pub ticks: Vec<Tick>,
     /// Parts of [0, 1] that no section covers (should be empty; shown if not).
     pub gaps: Vec<[f64; 2]>,
+    /// A timed trajectory's duration (s): the strip's axis is then in seconds as well.
+    pub duration: Option<f64>,
+}
+
+impl StripModel {
+    /// The strip's axis label at t: t itself, or for a timed trajectory the time it is reached.
+    pub fn axis_label(&self, t: f64) -> String {
+        match self.duration {
+            Some(d) => format!("{} s", fmt_num(t * d)),
+            None => fmt_num(t),
+        }
+    }
 }
 
 /// Parses scenario JSON with the core; the error is the core's "field: reason" text.
@@ -135,6 +147,8 @@ pub fn strip(report: &VerifyReport) -> StripModel {
     }
     sections.sort_by(|a, b| a.t0.total_cmp(&b.t0).then(a.t1.total_cmp(&b.t1)));
 
+    let duration = report.seconds.as_ref().map(|s| s.duration);
+    let at = |t: f64| duration.map_or_else(String::new, |d| format!(", {} s", fmt_num(t * d)));
     let mut ticks: Vec<Tick> = report
         .boundaries
         .iter()
@@ -143,20 +157,14 @@ pub fn strip(report: &VerifyReport) -> StripModel {
                 Side::Feasible => "feasible",
                 Side::Infeasible => "infeasible",
             };
-            let label = format!(
-                "t = {} (τ = {}): {} — enters {}",
-                fmt_num(b.t),
-                fmt_num(b.tau),
-                b.constraint,
-                enters
-            );
+            let label = format!("t = {} (τ = {}{}): {} — enters {}", fmt_num(b.t), fmt_num(b.tau), at(b.t), b.constraint, enters);
             Tick { t: b.t, tau: b.tau, constraint: b.constraint.clone(), enters, label }
         })
         .collect();
     ticks.sort_by(|a, b| a.t.total_cmp(&b.t));
 
     let gaps = gaps(&sections);
-    StripModel { sections, ticks, gaps }
+    StripModel { sections, ticks, gaps, duration }
 }
 
 /// Parts of [0, 1] not covered by `sections` (sorted by start), ignoring gaps below 1e-12.
@@ -211,6 +219,27 @@ mod tests {
             warnings: vec!["w".into()],
             seconds: None,
         }
+    }
+
+    #[test]
+    fn a_timed_strip_is_labelled_in_seconds() {
+        let mut r = report();
+        assert_eq!(strip(&r).axis_label(0.25), "0.25");
+        r.seconds = Some(Seconds {
+            duration: 2.0,
+            feasible: vec![],
+            infeasible: vec![],
+            uncertain: vec![],
+            min_time_scale: None,
+            min_time_scale_bracket: None,
+            min_duration: None,
+            max_time_scale: None,
+            min_time_scale_note: String::new(),
+            infeasible_at_rest: vec![],
+        });
+        let m = strip(&r);
+        assert_eq!(m.axis_label(0.25), "0.5 s");
+        assert!(m.ticks[0].label.starts_with("t = 0.25 (τ = 0.2, 0.5 s): "), "{}", m.ticks[0].label);
     }
 
     #[test]

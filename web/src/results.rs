@@ -66,7 +66,7 @@ pub fn ResultTables(parsed: Memo<Parsed>, verified: Memo<Verified>) -> impl Into
         let notes_view = |report: Option<&VerifyReport>| view! { <Notes notes=logic::notes(&scenario.warnings, report) /> };
         match verified.0.as_ref() {
             Some(Ok(report)) => view! {
-                {report.seconds.clone().map(|seconds| view! { <Timing seconds /> })}
+                {report.seconds.clone().map(|seconds| view! { <Timing seconds trajectory=report.trajectory.clone() /> })}
                 <Tables model=logic::strip(report) />
                 {notes_view(Some(report))}
             }
@@ -168,15 +168,18 @@ fn Tables(model: StripModel) -> impl IntoView {
     }
 }
 
-/// A timed trajectory: its sections in seconds and how fast it may run.
+/// A timed trajectory: its sections in seconds and how fast it may run. Test contract:
+/// `[data-testid=timing]` with `data-trajectory` and `data-duration`, the summary
+/// `[data-testid=time-scale]` with `data-min-duration` (empty when there is none), the table
+/// `[data-testid=seconds]`.
 #[component]
-fn Timing(seconds: Seconds) -> impl IntoView {
+fn Timing(seconds: Seconds, trajectory: String) -> impl IntoView {
     let rows: Vec<(&'static str, [f64; 2])> = [("feasible", &seconds.feasible), ("infeasible", &seconds.infeasible), ("uncertain", &seconds.uncertain)]
         .into_iter()
         .flat_map(|(kind, v)| v.iter().map(move |iv| (kind, *iv)))
         .collect();
     view! {
-        <section class="timing" data-testid="timing">
+        <section class="timing" data-testid="timing" data-trajectory=trajectory data-duration=logic::fmt_exact(seconds.duration)>
             <p data-testid="time-scale" data-min-duration=seconds.min_duration.map(logic::fmt_exact).unwrap_or_default()>
                 <strong>{format!("Timed: {} s. ", fmt_num(seconds.duration))}</strong>
                 {logic::time_scale_summary(&seconds)}

@@ -146,6 +146,7 @@ mod tests {
             ],
             ticks: vec![Tick { t: 0.6948514220984694, tau: 0.7, constraint: "cable 3 - crown, \"x\"".into(), enters: "feasible", label: String::new() }],
             gaps: vec![],
+            duration: None,
         };
         let csv = intervals_csv(&model);
         let lines: Vec<&str> = csv.lines().collect();

@@ -1,5 +1,5 @@
-//! The t-strip: feasible/infeasible/uncertain sections over t ∈ [0, 1] and a tick at each
-//! boundary naming the active constraint — as an SVG tooltip on hover, and in a readout line on
+//! The t-strip: feasible/infeasible/uncertain sections over t ∈ [0, 1] (labelled in seconds for a
+//! timed trajectory) and a tick at each boundary naming the active constraint — as an SVG tooltip on hover, and in a readout line on
 //! tap or click (touch screens show no tooltips). Test contract: `svg[data-testid=strip]` holds
 //! `rect[data-testid=section]` with `data-kind`, `data-t0`, `data-t1` and a `<title>`, and
 //! `g[data-testid=boundary]` with `data-t` and an SVG `<title>`.
@@ -33,7 +33,10 @@ pub fn Strip(model: StripModel) -> impl IntoView {
             viewBox=format!("-12 0 {} 64", STRIP_W + 24.0)
             font-family=FONT
             role="img"
-            aria-label="feasibility along the trajectory, t from 0 to 1"
+            aria-label=match model.duration {
+                Some(d) => format!("feasibility along the trajectory, t from 0 to 1 (0 to {} s)", fmt_num(d)),
+                None => "feasibility along the trajectory, t from 0 to 1".to_string(),
+            }
         >
             {model.sections.iter().map(|s| view! { <SectionRect section=s.clone() /> }).collect_view()}
             {model.ticks.iter().map(|t| view! { <TickMark tick=t.clone() picked /> }).collect_view()}
@@ -42,7 +45,7 @@ pub fn Strip(model: StripModel) -> impl IntoView {
                 .map(|&t| {
                     view! {
                         <text class="axis" x=t * STRIP_W y=STRIP_Y + STRIP_H + 16.0 text-anchor="middle" font-size="13" fill="#5b6670">
-                            {fmt_num(t)}
+                            {model.axis_label(t)}
                         </text>
                     }
                 })

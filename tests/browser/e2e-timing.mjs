@@ -1,0 +1,144 @@
+// End-to-end test of timed trajectories and the platform's mass on the page (scenario format 4,
+// docs/dynamics.md), in Debian's headless Chromium driven by playwright-core, against the built
+// page (scripts/build-page.sh):
+//   node tests/browser/e2e-timing.mjs [PAGE_DIR]      (default: target/page)
+// - the timed Robocrane preset: for each trajectory the strip equals `cablenav verify`, and the
+//   Intervals tab shows its sections in seconds and the shortest certified duration of the CLI's
+//   `seconds` report;
+// - a trajectory's duration typed in the editor: the format becomes 4, the sections and the
+//   timing follow (against the CLI on the page's own scenario text); a duration of 0 stays in
+//   its field with a message and is not written;
+// - "Give the platform a mass" on the 7-cable preset: the mass section appears, the format becomes
+//   4, and a mass typed there changes what the page verifies as the CLI does.
+// Screenshots in tests/browser/artifacts/. Ends with "N passed, M failed"; exits 1 on failure.
+
+import { writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { begin, cliJson, cliSections, openTab, stripSections, watchProblems } from './harness.mjs';
+
+const { root, artifacts, scratch, test, finish, base, browser, close } = await begin(import.meta.url, { watchdogMinutes: 8, scratch: 'cablenav-timing-' });
+const TIMEOUT = 60_000;
+const TIMED = 'static/scenarios/robocrane-timed.json';
+
+const context = await browser.newContext({ viewport: { width: 1366, height: 900 } });
+const problems = watchProblems(context);
+const page = await context.newPage();
+await page.goto(`${base}/#preset=robocrane-timed`, { waitUntil: 'load' });
+await page.waitForSelector('section[data-testid="result"][data-origin="robocrane-timed"] svg[data-testid="strip"]', { timeout: TIMEOUT });
+await openTab(page, 'intervals');
+
+const field = (path) => `[data-field="${path}"]`;
+const source = () => page.$eval('textarea[data-testid="source"]', (t) => t.value);
+
+async function open(summary) {
+  const details = page.locator('[data-testid="scenario-editor"] details').filter({ has: page.locator('summary', { hasText: summary }) }).first();
+  if (!(await details.evaluate((d) => d.open))) await details.locator('summary').first().click();
+}
+
+async function typeInto(selector, text) {
+  const input = page.locator(selector);
+  await input.click();
+  await input.press('Control+a');
+  await input.pressSequentially(text);
+}
+
+/** The CLI's verify report of the page's current scenario text. */
+async function cliOfPage(trajectory) {
+  const file = join(scratch, 'page.json');
+  writeFileSync(file, await source());
+  return cliJson(root, ['verify', file, '--trajectory', trajectory]);
+}
+
+/** The page's strip and timing equal the CLI report `cli`. */
+async function sameAsCli(cli, what) {
+  const got = await stripSections(page);
+  const want = cliSections(cli);
+  if (got.length !== want.length || got.some((s, i) => s.kind !== want[i].kind || Math.abs(s.t0 - want[i].t0) > 1e-12 || Math.abs(s.t1 - want[i].t1) > 1e-12)) {
+    throw new Error(`${what}: strip ${JSON.stringify(got)} vs CLI ${JSON.stringify(want)}`);
+  }
+  const minDuration = await page.getAttribute('[data-testid="time-scale"]', 'data-min-duration');
+  const expected = cli.seconds.min_duration;
+  if (expected === null ? minDuration !== '' : Math.abs(Number(minDuration) - expected) > 1e-12) {
+    throw new Error(`${what}: page's shortest duration "${minDuration}" vs CLI ${expected}`);
+  }
+  const rows = await page.$$eval('table[data-testid="seconds"] tbody tr', (trs) => trs.length);
+  const count = cli.seconds.feasible.length + cli.seconds.infeasible.length + cli.seconds.uncertain.length;
+  if (rows !== count) throw new Error(`${what}: ${rows} rows in seconds, CLI ${count}`);
+  return { sections: want.length, minDuration: expected };
+}
+
+await test('the timed Robocrane: strip, sections in seconds and the shortest duration equal `cablenav verify`', async () => {
+  const names = JSON.parse(await source()).trajectories.map((t) => t.name);
+  const out = [];
+  for (const [i, name] of names.entries()) {
+    await page.selectOption('select[data-testid="trajectory"]', String(i));
+    await page.waitForSelector(`section[data-testid="result"][data-trajectory-index="${i}"]`, { timeout: TIMEOUT });
+    await page.waitForSelector(`[data-testid="timing"][data-trajectory="${name}"]`, { timeout: TIMEOUT });
+    const cli = await cliOfPage(name);
+    const r = await sameAsCli(cli, name);
+    const summary = await page.textContent('[data-testid="time-scale"]');
+    if (!summary.includes(cli.seconds.min_time_scale_note)) throw new Error(`${name}: the page does not give the CLI's note: ${summary}`);
+    out.push(`${name}: ${r.sections} sections, shortest ${r.minDuration?.toFixed(4)} s`);
+  }
+  await page.screenshot({ path: join(artifacts, 'timing-preset.png'), fullPage: true });
+  problems.assertNone();
+  return out.join('; ');
+});
+
+await test('a duration typed in the editor: the format becomes 4 and the page follows the CLI; 0 is refused', async () => {
+  // the first trajectory, timed 2 s in the preset: 1 s instead is faster than its 1.796 s minimum
+  await page.selectOption('select[data-testid="trajectory"]', '0');
+  await open('Trajectories');
+  const f = field('trajectories[0].duration');
+  await typeInto(f, '1');
+  await page.waitForFunction(() => JSON.parse(document.querySelector('textarea[data-testid="source"]').value).trajectories[0].duration === 1, null, { timeout: TIMEOUT });
+  await page.waitForSelector('[data-testid="timing"][data-trajectory="slerp q1-q2"][data-duration="1.0"]', { timeout: TIMEOUT });
+  const cli = await cliOfPage('slerp q1-q2');
+  if (!cli.seconds.infeasible.length) throw new Error('1 s was meant to be too fast');
+  const r = await sameAsCli(cli, 'after typing 1 s');
+  const before = await source();
+  await typeInto(f, '0');
+  const msg = await page.locator('label', { has: page.locator(f) }).last().locator('[data-testid="field-error"]').first().textContent();
+  if (!/positive/.test(msg)) throw new Error(`a duration of 0: message "${msg}"`);
+  if ((await source()) !== before) throw new Error('a duration of 0 was written');
+  return `1 s: ${r.sections} sections like the CLI, 0 kept in the field ("${msg}")`;
+});
+
+await test('"Give the platform a mass" on the 7-cable preset: format 4, and a typed mass verified as the CLI does', async () => {
+  await page.goto(`${base}/#preset=cdpr7`, { waitUntil: 'load' });
+  await page.waitForSelector('section[data-testid="result"][data-origin="cdpr7"] svg[data-testid="strip"]', { timeout: TIMEOUT });
+  await open('Mass and winches');
+  await page.click('[data-testid="add-dynamics"]');
+  await page.waitForSelector('[data-testid="dynamics"]', { timeout: TIMEOUT });
+  let doc = JSON.parse(await source());
+  if (doc.format !== 'cablenav-scenario/4' || !doc.robot.dynamics) throw new Error(`after adding a mass: format ${doc.format}, dynamics ${JSON.stringify(doc.robot.dynamics)}`);
+  // with tensions up to 12 N the 1 kg platform is held on the end of "linear" (from the boundary
+  // where the weight leaves the available wrench set), a 2 kg one nowhere
+  await open('Robot');
+  await typeInto(field('robot.tension.max'), '12');
+  await page.waitForFunction(() => JSON.parse(document.querySelector('textarea[data-testid="source"]').value).robot.tension?.max === 12, null, { timeout: TIMEOUT });
+  await page.waitForSelector('section[data-testid="result"][data-origin="edited"] svg[data-testid="strip"]', { timeout: TIMEOUT });
+  const name = JSON.parse(await source()).trajectories[0].name;
+  const compare = async (what) => {
+    const cli = await cliOfPage(name);
+    const got = await stripSections(page);
+    const want = cliSections(cli);
+    if (got.length !== want.length || got.some((g, k) => g.kind !== want[k].kind || Math.abs(g.t0 - want[k].t0) > 1e-12 || Math.abs(g.t1 - want[k].t1) > 1e-12)) {
+      throw new Error(`${what}: strip ${JSON.stringify(got)} vs CLI ${JSON.stringify(want)}`);
+    }
+    return cli;
+  };
+  const light = await compare('1 kg');
+  if (!light.boundaries.some((b) => b.constraint === 'wrench feasibility') || !light.feasible.length) throw new Error(`1 kg: ${JSON.stringify(light)}`);
+  await typeInto(field('robot.dynamics.mass'), '2');
+  await page.waitForFunction(() => JSON.parse(document.querySelector('textarea[data-testid="source"]').value).robot.dynamics.mass === 2, null, { timeout: TIMEOUT });
+  await page.waitForFunction(() => [...document.querySelectorAll('svg[data-testid="strip"] rect[data-testid="section"]')].every((r) => r.dataset.kind === 'infeasible'), null, { timeout: TIMEOUT });
+  const heavy = await compare('2 kg');
+  if (heavy.feasible.length) throw new Error(`2 kg: ${JSON.stringify(heavy)}`);
+  await page.screenshot({ path: join(artifacts, 'timing-mass.png'), fullPage: true });
+  problems.assertNone();
+  return `1 kg held from t = ${light.feasible[0][0].toFixed(4)} (wrench feasibility), 2 kg nowhere, both as the CLI says`;
+});
+
+await close();
+finish();
