@@ -22,7 +22,7 @@ use std::rc::Rc;
 
 use super::load::{inverse_square, with_inertia};
 use super::primitives::{GT, LT};
-use super::structure::{det_with, minors, structure_numerators, Local};
+use super::structure::{det_with, minors, quadratic_form, structure_numerators, Local};
 use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
 use crate::model::{Bounds, Load};
 use crate::poly::{Bern, Partition, Truth};
@@ -84,16 +84,7 @@ impl FacetPolys {
                         let c = minors[j].mul(if j < 3 { w } else { &w2 });
                         if (j + 5) % 2 == 0 { c } else { c.scale(-1.0) }
                     });
-                    let mut r = Bern::constant(0.0);
-                    for j in 0..6 {
-                        // E⁻¹ symmetric: diagonal once, off-diagonal twice.
-                        let terms: Vec<(&Bern, f64)> = (j..6).map(|k| (&g[k], if k == j { 1.0 } else { 2.0 } * e_inv[(j, k)])).collect();
-                        r = r.add(&g[j].mul(&Bern::linear_combination(&terms)));
-                    }
-                    match &local.load.scale {
-                        Some(q) => r.mul(&q.mul(q)),
-                        None => r,
-                    }
+                    local.load.scaled_square(quadratic_form(&g, e_inv))
                 });
                 let d0 = |rows: &[Bern; 6]| det_with(&minors, &std::array::from_fn::<_, 6, _>(|j| &rows[j]));
                 Facet { others, load: (d0(rows), inertial.map(d0)), reach2 }

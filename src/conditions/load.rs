@@ -35,6 +35,15 @@ pub(crate) struct LoadPolys {
 }
 
 impl LoadPolys {
+    /// `p` times (w^q)², for a square (the ellipsoid's reach squared) that must carry the factor
+    /// the rows carry.
+    pub(crate) fn scaled_square(&self, p: Bern) -> Bern {
+        match &self.scale {
+            Some(q) => p.mul(&q.mul(q)),
+            None => p,
+        }
+    }
+
     /// The rows restricted to [a, b] ⊆ [0, 1].
     pub(crate) fn restrict(&self, a: f64, b: f64) -> LoadPolys {
         let r = |rows: &[Bern; 6]| rows.each_ref().map(|p| p.restrict(a, b));

@@ -129,3 +129,12 @@ pub(crate) fn det_with(minors: &[Bern], x: &[&Bern]) -> Bern {
         if (j + n - 1).is_multiple_of(2) { acc.add(&t) } else { acc.sub(&t) }
     })
 }
+
+/// gᵀ M g for the symmetric 6×6 matrix `m` (E⁻¹) and six polynomials g: each product once, the
+/// off-diagonal ones twice.
+pub(crate) fn quadratic_form(g: &[Bern], m: &nalgebra::Matrix6<f64>) -> Bern {
+    (0..6).fold(Bern::constant(0.0), |acc, j| {
+        let terms: Vec<(&Bern, f64)> = (j..6).map(|k| (&g[k], if k == j { 1.0 } else { 2.0 } * m[(j, k)])).collect();
+        acc.add(&g[j].mul(&Bern::linear_combination(&terms)))
+    })
+}

@@ -18,7 +18,7 @@ use std::rc::Rc;
 use super::algebra::H;
 use super::load::{inverse_square, with_inertia};
 use super::primitives::{all_of, any_of, GT, LT};
-use super::structure::{minors, structure_numerators, Local};
+use super::structure::{minors, quadratic_form, structure_numerators, Local};
 use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
 use crate::model::Load;
 use crate::poly::{Bern, Partition, Truth};
@@ -108,17 +108,7 @@ impl TensionPolys {
                 _ => dot(&local.load.rows),
             };
             let inertial = local.load.inertial.as_ref().map(dot);
-            let mut b = Bern::constant(0.0);
-            for j in 0..6 {
-                // E⁻¹ symmetric: diagonal once, off-diagonal twice.
-                let twice = |k: usize| if k == j { 1.0 } else { 2.0 };
-                let terms: Vec<(&Bern, f64)> = (j..6).map(|k| (&g[k], twice(k) * wrench.ellipsoid_inv[(j, k)])).collect();
-                b = b.add(&g[j].mul(&Bern::linear_combination(&terms)));
-            }
-            let b = match &local.load.scale {
-                Some(q) => b.mul(&q.mul(q)),
-                None => b,
-            };
+            let b = local.load.scaled_square(quadratic_form(&g, &wrench.ellipsoid_inv));
             columns.push((i, a, b, inertial));
         }
         let len2 = local.len2();

@@ -7,7 +7,7 @@
 use std::sync::atomic::{AtomicUsize, Ordering};
 use crate::conditions::{cables_at_config, for_scenario, Condition, Kind};
 use crate::error::{Error, Result};
-use crate::model::Coord;
+use crate::model::{Coord, Load};
 use crate::scenario::Scenario;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -111,14 +111,15 @@ pub fn whole_turn(c: Coord, range: [f64; 2]) -> bool {
     c.is_angle() && (range[1] - range[0] - 2.0 * PI).abs() <= 1e-9 * 2.0 * PI
 }
 
-fn classify(s: &Scenario, conditions: &[Box<dyn Condition>], q: &[f64]) -> Class {
+/// The class of configuration `q`; `load` is the scenario's ([`Scenario::load`]), made once.
+fn classify(s: &Scenario, load: Option<&Load>, conditions: &[Box<dyn Condition>], q: &[f64]) -> Class {
     let cables = cables_at_config(&s.robot, q);
     let violated = |kind: Kind| conditions.iter().filter(|c| c.kind() == kind).any(|c| c.check(&cables).violated);
     if violated(Kind::Length) {
         return Class::Length;
     }
-    if let Some(load) = s.load() {
-        if s.robot.cables.len() == 6 && cables.tension_ranges(&load).is_none() {
+    if let Some(load) = load {
+        if s.robot.cables.len() == 6 && cables.tension_ranges(load).is_none() {
             return Class::Singular;
         }
     }
@@ -184,13 +185,14 @@ fn classify_rows(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, ra
     }
     // rows in parallel natively (each worker with its own conditions), in order on wasm
     let first = rows.start;
+    let load = s.load();
     let classes = crate::parallel::map_with(rows.len(), || for_scenario(s), |conditions, k| {
         let row = (0..res)
             .map(|i| {
                 let mut c = map.fixed.clone();
                 c[axes[0].index()] = map.center(0, i);
                 c[axes[1].index()] = map.center(1, first + k);
-                classify(s, conditions, &c)
+                classify(s, load.as_ref(), conditions, &c)
             })
             .collect::<Vec<_>>();
         rows_done.fetch_add(1, Ordering::Relaxed);

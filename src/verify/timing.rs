@@ -4,9 +4,10 @@
 //! Under a uniform time scale k (every duration × k) velocities scale by 1/k and accelerations
 //! by 1/k², so at each λ the tension conditions (the load is w_rest + w_inertial/k²) and the winch
 //! limits (l̇² ∝ 1/k², l̈ ∝ 1/k²) are each linear in u = 1/k²: the scales that work at one λ
-//! form an interval of u around 0 when the robot holds there at rest, and so do the scales that
-//! work along the whole trajectory. The least k is therefore found by bisection in k, each step an
-//! exact verification of those conditions (certified feasible, certainly violated, or undecided).
+//! form an interval of u (holding 0 where the robot holds at rest), and so do the scales that
+//! work along the whole trajectory. Its ends — the least k, and the largest where the rest fails —
+//! are therefore found by bisection in k, each step an exact verification of those conditions
+//! (certified feasible, certainly violated, or undecided).
 
 use super::sections::{sections, Sections};
 use super::{one_link, pieces_on, sweeps, BOUNDARY_TOL};
@@ -39,10 +40,9 @@ fn speed_conditions(s: &Scenario) -> Vec<Box<dyn Condition>> {
 }
 
 /// The sections of `conditions` along `sweeps` run in `duration` seconds (`None`: at rest; the
-/// sweeps must have been made at rest then, timed otherwise): the expansions the conditions keep
-/// in the sweeps serve every duration.
-/// Also gives the verdict: where the first infeasible section starts, the conditions certainly
-/// violated just inside it are named.
+/// sweeps must have been made at rest then, timed otherwise: the expansions the conditions keep
+/// in the sweeps serve every duration), and the verdict, which names the conditions certainly
+/// violated just inside the first infeasible section.
 fn sections_at(conditions: &[Box<dyn Condition>], sweeps: &mut [Sweep], duration: Option<f64>) -> (Sections, Verdict) {
     for sweep in sweeps.iter_mut() {
         sweep.duration = duration;

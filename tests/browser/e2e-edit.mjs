@@ -311,7 +311,7 @@ await test('a CASPR model (bodies + cables files) imports', async () => {
 });
 
 await test('every editor control is keyboard-reachable and labelled', async () => {
-  for (const summary of ['Wrench', 'Obstacles', 'Poses', 'Trajectories']) await open(page, summary);
+  for (const summary of ['Mass and winches', 'Wrench', 'Obstacles', 'Poses', 'Trajectories']) await open(page, summary);
   const report = await page.$$eval(
     '[data-testid="scenario-editor"] :is(input, select, button, textarea), [data-testid="share"] :is(input, select, button, textarea)',
     (els) =>

@@ -22,7 +22,7 @@ pub fn label(id: &str) -> &str {
         "cdpr7-box" => "7-cable + box",
         "cdpr7-tree" => "7-cable + tree",
         "robocrane" => "Robocrane (NIST)",
-        "robocrane-timed" => "Robocrane with mass, timed trajectories",
+        "robocrane-timed" => "Robocrane, timed, with mass",
         "blank" => "Blank (8-cable frame, to start from)",
         "bmarm-x4-2" => "4-DoF arm, multi-link",
         other => other,
