@@ -146,6 +146,15 @@ fn cable_states_flag_the_interfering_cables() {
     }
     // at t = 0.3 cable 3 is inside the crown's clearance
     assert!(cable_states(&s, &traj.pose_at(0.3))[2].interfering);
+    // with a mass the seven cables have a wrench report but no per-cable tension ranges (the
+    // tensions are not unique): no margins, and no panic (the page colours cables this way)
+    let mut v: serde_json::Value = serde_json::from_str(TREE).unwrap();
+    v["format"] = serde_json::json!("cablenav-scenario/4");
+    v["robot"]["dynamics"] = serde_json::json!({"mass": 1, "inertia": [[0.04, 0, 0], [0, 0.04, 0], [0, 0, 0.04]]});
+    let heavy = Scenario::from_json(&v.to_string()).unwrap();
+    let pose = traj.pose_at(0.9);
+    assert!(wrench_at(&heavy, &pose).is_some_and(|w| w.tension_min.is_empty()));
+    assert!(cable_states(&heavy, &pose).iter().all(|c| c.tension_margin.is_none()));
 }
 
 #[test]

@@ -185,9 +185,10 @@ fn states_of(s: &Scenario, cables: &PoseCables, wrench: Option<crate::report::Wr
         .map(|(i, c)| CableState {
             interfering: false,
             length_ok: true,
+            // per-cable ranges exist for six cables only (with more the tensions are not unique)
             tension_margin: wrench
                 .as_ref()
-                .map(|w| (w.tension_min[i] - c.tension.min).min(c.tension.max - w.tension_max[i])),
+                .and_then(|w| Some((w.tension_min.get(i)? - c.tension.min).min(c.tension.max - w.tension_max.get(i)?))),
             tension_span: c.tension.max - c.tension.min,
         })
         .collect();

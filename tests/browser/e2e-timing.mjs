@@ -110,7 +110,8 @@ await test('"Give the platform a mass" on the 7-cable preset: format 4, and a ty
   await open('Mass and winches');
   await page.click('[data-testid="add-dynamics"]');
   await page.waitForSelector('[data-testid="dynamics"]', { timeout: TIMEOUT });
-  let doc = JSON.parse(await source());
+  await page.waitForFunction(() => !!JSON.parse(document.querySelector('textarea[data-testid="source"]').value).robot.dynamics, null, { timeout: TIMEOUT });
+  const doc = JSON.parse(await source());
   if (doc.format !== 'cablenav-scenario/4' || !doc.robot.dynamics) throw new Error(`after adding a mass: format ${doc.format}, dynamics ${JSON.stringify(doc.robot.dynamics)}`);
   // with tensions up to 12 N the 1 kg platform is held on the end of "linear" (from the boundary
   // where the weight leaves the available wrench set), a 2 kg one nowhere
