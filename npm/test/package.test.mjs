@@ -69,7 +69,7 @@ test('timed trajectories: seconds, checkAt and the envelope with inertia equal t
     }
   }
   close(cablenav.envelope(text, 'swing', 10), cli('envelope', timed, '--trajectory', 'swing', '--samples', 10));
-  assert.throws(() => cablenav.checkAt(text, 1.5), (e) => e.name === 'ScenarioError' && e.field === '--t');
+  assert.throws(() => cablenav.checkAt(text, 1.5), (e) => e.name === 'ScenarioError' && e.field === 't');
 });
 
 test('check, ray, envelope, slice and plan equal the CLI (to the last bits of libm)', () => {

@@ -65,7 +65,7 @@ def test_timed_trajectories_equal_the_cli(cli):
     assert cablenav.envelope(timed, "swing", samples=10) == cli("envelope", timed, "--trajectory", "swing", "--samples", 10)
     with pytest.raises(cablenav.ScenarioError) as e:
         cablenav.check_at(timed, 1.5)
-    assert e.value.field == "--t"
+    assert e.value.field == "t"
 
 
 def test_plan_takes_the_clis_atlas_options(cli):
