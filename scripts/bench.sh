@@ -204,7 +204,7 @@ function yes(ok) { return ok ? "**met**" : "**missed**" }
 $2 == "before" { med[$2, $3] = $4; best[$2, $3] = $5; summ_before[$3] = $8; next }
 { med[$2, $3] = $4; best[$2, $3] = $5; calls[$2, $3] = $6; samples[$2, $3] = $7; summ[$3] = $8 }
 END {
-  n = split("tree/quadratic/exact tree/quadratic/pointwise-0.01 tree/quadratic/pointwise-0.001 cdpr7/quadratic/exact cdpr7/quadratic/pointwise-0.001 box/linear/exact box/linear/pointwise-0.001 box/ray-fig310-x/exact crane/pose-wrench crane/q1-q2/exact crane/q1-q2/pointwise-0.001 crane/tilt/exact crane/tilt/pointwise-0.001 crane/slice-400", cases, " ")
+  n = split("tree/quadratic/exact tree/quadratic/pointwise-0.01 tree/quadratic/pointwise-0.001 cdpr7/quadratic/exact cdpr7/quadratic/pointwise-0.001 box/linear/exact box/linear/pointwise-0.001 box/ray-fig310-x/exact crane/pose-wrench crane/q1-q2/exact crane/q1-q2/pointwise-0.001 crane/tilt/exact crane/tilt/pointwise-0.001 crane/slice-400 timed/quick-drop/exact timed/quick-drop/pointwise-0.01 timed/quick-drop/pointwise-0.001 timed/swing/exact timed/swing/pointwise-0.01 timed/swing/pointwise-0.001", cases, " ")
   what["tree/quadratic/exact"] = "cdpr7-tree.json, \"quadratic\": exact (`verify_trajectory`)"
   what["tree/quadratic/pointwise-0.01"] = "cdpr7-tree.json, \"quadratic\": point-wise, Δt = 0.01"
   what["tree/quadratic/pointwise-0.001"] = "cdpr7-tree.json, \"quadratic\": point-wise, Δt = 0.001"
@@ -219,6 +219,12 @@ END {
   what["crane/tilt/exact"] = "robocrane.json + slerp q1 → θ = 1.4 (crosses a tension bound): exact"
   what["crane/tilt/pointwise-0.001"] = "the same tilt: point-wise, Δt = 0.001"
   what["crane/slice-400"] = "robocrane.json, 400×400 slice over (φ, θ) through q1"
+  what["timed/quick-drop/exact"] = "robocrane-timed.json, \"quick drop\" (0.12 s; mass, inertia, winch limits): exact, with the least time scale"
+  what["timed/quick-drop/pointwise-0.01"] = "the same: point-wise, Δt = 0.01 (no time scale)"
+  what["timed/quick-drop/pointwise-0.001"] = "the same: point-wise, Δt = 0.001 (no time scale)"
+  what["timed/swing/exact"] = "robocrane-timed.json, \"swing\" (0.8 s): exact, with both ends of the time scales that hold"
+  what["timed/swing/pointwise-0.01"] = "the same: point-wise, Δt = 0.01 (no time scale)"
+  what["timed/swing/pointwise-0.001"] = "the same: point-wise, Δt = 0.001 (no time scale)"
 
   print "# Benchmarks"
   print ""
@@ -291,7 +297,7 @@ END {
   print ""
   print "| trajectory | Δt | native | wasm |"
   print "|---|---:|---:|---:|"
-  nr = split("tree/quadratic/pointwise-0.01:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.01;tree/quadratic/pointwise-0.001:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.001;cdpr7/quadratic/pointwise-0.001:cdpr7/quadratic/exact:cdpr7 \"quadratic\":0.001;box/linear/pointwise-0.001:box/linear/exact:cdpr7-box \"linear\":0.001;crane/q1-q2/pointwise-0.001:crane/q1-q2/exact:robocrane \"slerp q1-q2\" (wrench):0.001;crane/tilt/pointwise-0.001:crane/tilt/exact:robocrane tilt past the bound (wrench):0.001", rows, ";")
+  nr = split("tree/quadratic/pointwise-0.01:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.01;tree/quadratic/pointwise-0.001:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.001;cdpr7/quadratic/pointwise-0.001:cdpr7/quadratic/exact:cdpr7 \"quadratic\":0.001;box/linear/pointwise-0.001:box/linear/exact:cdpr7-box \"linear\":0.001;crane/q1-q2/pointwise-0.001:crane/q1-q2/exact:robocrane \"slerp q1-q2\" (wrench):0.001;crane/tilt/pointwise-0.001:crane/tilt/exact:robocrane tilt past the bound (wrench):0.001;timed/quick-drop/pointwise-0.01:timed/quick-drop/exact:robocrane-timed \"quick drop\" (dynamics, exact with the time scale):0.01;timed/swing/pointwise-0.01:timed/swing/exact:robocrane-timed \"swing\" (dynamics, exact with the time scales):0.01", rows, ";")
   for (i = 1; i <= nr; i++) {
     split(rows[i], f, ":")
     printf "| %s | %s | %s | %s |\n", f[3], f[4], ratio(med["native", f[1]], med["native", f[2]]), ratio(med["wasm", f[1]], med["wasm", f[2]])
