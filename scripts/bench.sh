@@ -175,8 +175,8 @@ LOAD_AFTER=$(cut -d' ' -f1-3 /proc/loadavg)
 grep -h '^BENCH ' "$TMP/before.txt" "$TMP/native.txt" "$TMP/wasm.txt" > "$TMP/all.txt"
 n_native=$(grep '^BENCH native ' "$TMP/all.txt" | grep -vc ' lattice/' || true)
 n_wasm=$(grep '^BENCH wasm ' "$TMP/all.txt" | grep -vc ' lattice/' || true)
-if [ "$n_native" -ne 18 ] || [ "$n_wasm" -ne 18 ]; then
-  say "expected 18 native and 18 wasm results, got $n_native and $n_wasm:"
+if [ "$n_native" -ne 24 ] || [ "$n_wasm" -ne 24 ]; then
+  say "expected 24 native and 24 wasm results, got $n_native and $n_wasm:"
   cat "$TMP/native.txt" "$TMP/wasm.txt" >&2
   exit 1
 fi
