@@ -52,12 +52,6 @@ pub struct Kinematics {
 }
 
 impl Kinematics {
-    /// The same motion run `k` times slower: velocities over k, accelerations over k².
-    pub fn slowed(&self, k: f64) -> Kinematics {
-        let k2 = k * k;
-        Kinematics { velocity: self.velocity / k, acceleration: self.acceleration / k2, omega: self.omega / k, alpha: self.alpha / k2 }
-    }
-
     /// The velocity and acceleration of the platform point `b` (platform frame) at `pose`.
     pub fn of_point(&self, pose: &Pose, b: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
         let r = pose.rotation * b;
