@@ -52,7 +52,7 @@ pub struct VerifyReport {
     /// The sections in seconds and how fast the trajectory may run, for a timed trajectory
     /// (format 4 `duration`); absent for an untimed one.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub seconds: Option<Seconds>,
+    pub seconds: Option<Box<Seconds>>,
 }
 
 /// A timed trajectory's sections in seconds (time = t·duration) and its fastest uniform timing.

@@ -442,7 +442,7 @@ fn six_cable_wrench_set_margin_agrees_with_paper_1() {
         }
         let (p, r) = case.pose(rng.f64());
         let cables: Vec<(Vector3<f64>, Vector3<f64>)> = case.cables.iter().map(|(a, b)| (to_v(*a), p + r * to_v(*b))).collect();
-        let (mut w0, e_inv, point) = case.wrench.clone().unwrap();
+        let (mut w0, e_inv, point) = case.wrench.unwrap();
         w0[2] += case.mass * case.gravity.z; // the weight, as a load
         let c = p + r * to_v(point);
         let bounds = vec![Bounds { min: case.tension.0, max: case.tension.1 }; 6];

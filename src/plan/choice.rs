@@ -138,6 +138,8 @@ pub struct Progress {
 }
 
 /// A planner's own report.
+// one value per planning run: the variants' sizes do not matter enough to box them
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum Details {

@@ -261,7 +261,7 @@ pub fn verify_all_counted(s: &Scenario, pointwise: Option<f64>, done: &AtomicUsi
 }
 
 /// Builds the report of a trajectory from its sections in t.
-fn trajectory_report(along: Along, sec: Sections, method: &str, step: Option<f64>, warnings: Vec<String>, seconds: Option<Seconds>) -> VerifyReport {
+fn trajectory_report(along: Along, sec: Sections, method: &str, step: Option<f64>, warnings: Vec<String>, seconds: Option<Box<Seconds>>) -> VerifyReport {
     let to_tau = |v: &[[f64; 2]]| v.iter().map(|iv| [along.tau_of_t(iv[0]), along.tau_of_t(iv[1])]).collect();
     VerifyReport {
         trajectory: along.name().to_string(),

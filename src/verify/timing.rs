@@ -73,7 +73,7 @@ fn in_seconds(v: &[[f64; 2]], duration: f64) -> Vec<[f64; 2]> {
 
 /// The `seconds` part of a timed trajectory's report: its sections `sec` (in t) in seconds and,
 /// when `scale` is true, its least certified time scale (the point-wise baseline passes false).
-pub(super) fn seconds(s: &Scenario, traj: &Trajectory, sec: &Sections, scale: bool) -> Option<Seconds> {
+pub(super) fn seconds(s: &Scenario, traj: &Trajectory, sec: &Sections, scale: bool) -> Option<Box<Seconds>> {
     let duration = traj.duration?;
     let mut out = Seconds {
         duration,
@@ -90,7 +90,7 @@ pub(super) fn seconds(s: &Scenario, traj: &Trajectory, sec: &Sections, scale: bo
     if scale {
         min_time_scale(s, traj, duration, &mut out);
     }
-    Some(out)
+    Some(Box::new(out))
 }
 
 /// Fills in the least time scale of `traj` (run in `duration` seconds). The scales that work

@@ -225,7 +225,7 @@ mod tests {
     fn a_timed_strip_is_labelled_in_seconds() {
         let mut r = report();
         assert_eq!(strip(&r).axis_label(0.25), "0.25");
-        r.seconds = Some(Seconds {
+        r.seconds = Some(Box::new(Seconds {
             duration: 2.0,
             feasible: vec![],
             infeasible: vec![],
@@ -236,7 +236,7 @@ mod tests {
             max_time_scale: None,
             min_time_scale_note: String::new(),
             infeasible_at_rest: vec![],
-        });
+        }));
         let m = strip(&r);
         assert_eq!(m.axis_label(0.25), "0.5 s");
         assert!(m.ticks[0].label.starts_with("t = 0.25 (τ = 0.2, 0.5 s): "), "{}", m.ticks[0].label);

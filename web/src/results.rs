@@ -66,7 +66,7 @@ pub fn ResultTables(parsed: Memo<Parsed>, verified: Memo<Verified>) -> impl Into
         let notes_view = |report: Option<&VerifyReport>| view! { <Notes notes=logic::notes(&scenario.warnings, report) /> };
         match verified.0.as_ref() {
             Some(Ok(report)) => view! {
-                {report.seconds.clone().map(|seconds| view! { <Timing seconds trajectory=report.trajectory.clone() /> })}
+                {report.seconds.clone().map(|seconds| view! { <Timing seconds=*seconds trajectory=report.trajectory.clone() /> })}
                 <Tables model=logic::strip(report) />
                 {notes_view(Some(report))}
             }

@@ -98,7 +98,7 @@ pub struct WireReport {
     warnings: Vec<String>,
     /// A timed trajectory's sections in seconds (as numbers: JSON's shortest representation
     /// round-trips them exactly).
-    seconds: Option<Seconds>,
+    seconds: Option<Box<Seconds>>,
 }
 
 fn to_bits(v: &[[f64; 2]]) -> Vec<[u64; 2]> {
