@@ -155,6 +155,9 @@ fn cable_states_flag_the_interfering_cables() {
     let pose = traj.pose_at(0.9);
     assert!(wrench_at(&heavy, &pose).is_some_and(|w| w.tension_min.is_empty()));
     assert!(cable_states(&heavy, &pose).iter().all(|c| c.tension_margin.is_none()));
+    // nor an envelope: it says why instead of printing empty rows
+    let e = cablenav::verify::tension_envelope(&heavy, traj, 10).unwrap_err();
+    assert!(e.field == "wrench" && e.reason.contains("six cables"), "{e}");
 }
 
 #[test]
