@@ -461,7 +461,7 @@ fn six_cable_wrench_set_margin_agrees_with_paper_1() {
                 let paper = ranges.iter().map(|t| (t.nominal - t.spread - case.tension.0).min(case.tension.1 - t.nominal - t.spread)).fold(f64::INFINITY, f64::min);
                 let half = 0.5 * (case.tension.1 - case.tension.0);
                 let scale = ranges.iter().map(|t| t.nominal.abs() + t.spread).fold(1.0, f64::max);
-                assert!((f.margin - paper.min(half)).abs() <= 1e-9 * scale, "facets {} vs paper 1 {paper}", f.margin);
+                assert!((f - paper.min(half)).abs() <= 1e-9 * scale, "facets {f} vs paper 1 {paper}");
                 signs[usize::from(paper > 0.0)] += 1;
             }
             (None, None) => {}

@@ -329,7 +329,7 @@ impl Condition for WrenchFeasibility {
     fn check(&self, at: &PoseCables) -> PoseCheck {
         let wrench = &self.load.wrench;
         match wrench_set_margin(&at.cables, &wrench.point_at(&at.pose), &at.nominal(&self.load), &wrench.ellipsoid_inv, &self.bounds) {
-            Some(r) => PoseCheck { violated: !(r.margin > 0.0), distance: Some(r.margin) },
+            Some(margin) => PoseCheck { violated: !(margin > 0.0), distance: Some(margin) },
             None => PoseCheck { violated: true, distance: None },
         }
     }

@@ -14,9 +14,9 @@
 //! The rows are returned scaled as the structure matrix's rows are (forces times w, moments times
 //! w²) and over a common w^q: [`LoadPolys::rows`] = D_w ℓ · w^q.
 
-use super::structure::Local;
+use super::structure::{cross, point_offset, times_const, Local};
 use crate::model::motion::Param;
-use crate::model::{Dynamics, Load, PointFrame};
+use crate::model::{Dynamics, Load};
 use crate::poly::Bern;
 
 /// The load along a motion: D_w ℓ · w^q, row by row, and w^q (`None` when q = 0). Along a timed
@@ -82,17 +82,8 @@ pub(crate) fn time_rate(param: &Param, duration: f64) -> Option<Bern> {
     }
 }
 
-fn cross(a: &[Bern; 3], b: &[Bern; 3]) -> [Bern; 3] {
-    [a[1].mul(&b[2]).sub(&a[2].mul(&b[1])), a[2].mul(&b[0]).sub(&a[0].mul(&b[2])), a[0].mul(&b[1]).sub(&a[1].mul(&b[0]))]
-}
-
 fn mat_vec(m: &[[Bern; 3]; 3], v: &[Bern; 3]) -> [Bern; 3] {
     [0, 1, 2].map(|i| m[i][0].mul(&v[0]).add(&m[i][1].mul(&v[1])).add(&m[i][2].mul(&v[2])))
-}
-
-/// M̂ c for a constant vector c.
-fn mat_const(m: &[[Bern; 3]; 3], c: &nalgebra::Vector3<f64>) -> [Bern; 3] {
-    [0, 1, 2].map(|i| Bern::linear_combination(&[(&m[i][0], c[0]), (&m[i][1], c[1]), (&m[i][2], c[2])]))
 }
 
 /// The load along the motion of `local` (expanded on all of [0, 1] of the motion whose λ maps to
@@ -104,16 +95,9 @@ pub(crate) fn load_polys(local: &Local, load: &Load, rate: Option<&Bern>) -> Loa
     let Some(dynamics) = &load.dynamics else {
         return LoadPolys { rows: std::array::from_fn(|j| if j < 3 { w.scale(w0[j]) } else { w2.scale(w0[j]) }), inertial: None, scale: None };
     };
-    // r̃ = (x_c − c)·w: from the wrench point to the centre of mass
-    let point = &load.wrench.point;
-    let com = mat_const(&local.rotation, &dynamics.com);
-    let r: [Bern; 3] = match load.wrench.frame {
-        PointFrame::Platform => {
-            let at = mat_const(&local.rotation, point);
-            [0, 1, 2].map(|i| com[i].sub(&at[i]))
-        }
-        PointFrame::World => [0, 1, 2].map(|i| com[i].sub(&w.scale(point[i]))),
-    };
+    // r̃ = (x_c − c)·w: from the wrench point to the centre of mass (P̂ cancels)
+    let (com, at) = (times_const(&local.rotation, &dynamics.com), point_offset(local, &load.wrench));
+    let r: [Bern; 3] = [0, 1, 2].map(|i| com[i].sub(&at[i]));
     let weight = dynamics.gravity * dynamics.mass;
     let weight_b: [Bern; 3] = [0, 1, 2].map(|i| Bern::constant(weight[i]));
     // static rows, q = 0: force (w0 + m g)·w, moment w0·w² + (r̃ × m g)·w
@@ -126,15 +110,15 @@ pub(crate) fn load_polys(local: &Local, load: &Load, rate: Option<&Bern>) -> Loa
         }
     });
     let Some(g) = rate else { return LoadPolys { rows: statics, inertial: None, scale: None } };
-    let inertial = inertial_rows(local, dynamics, &r, g);
+    let inertial = inertial_rows(local, dynamics, &com, &r, g);
     // everything over w⁴: the static rows times w⁴
     let w4 = w2.mul(&w2);
     LoadPolys { rows: statics.each_ref().map(|p| p.mul(&w4)), inertial: Some(inertial), scale: Some(w4) }
 }
 
 /// The d'Alembert rows over w⁴ (D_w-scaled): force −m Ã·w², moment
-/// −m (r̃ × Ã)·w² − (M̂ I_b M̂ᵀ α̃)·w − g² Ω̂ × (M̂ I_b M̂ᵀ Ω̂).
-fn inertial_rows(local: &Local, d: &Dynamics, r: &[Bern; 3], g: &Bern) -> [Bern; 6] {
+/// −m (r̃ × Ã)·w² − (M̂ I_b M̂ᵀ α̃)·w − g² Ω̂ × (M̂ I_b M̂ᵀ Ω̂); `com` is M̂ c_b.
+fn inertial_rows(local: &Local, d: &Dynamics, com: &[Bern; 3], r: &[Bern; 3], g: &Bern) -> [Bern; 6] {
     let w = &local.weight;
     let dw = w.derivative();
     let ddw = dw.derivative();
@@ -142,10 +126,10 @@ fn inertial_rows(local: &Local, d: &Dynamics, r: &[Bern; 3], g: &Bern) -> [Bern;
     let gg = g.mul(g);
     let gdg = g.mul(&dg);
     // centre of mass numerator X̂ = P̂ + M̂ c_b
-    let com = mat_const(&local.rotation, &d.com);
     let x: [Bern; 3] = [0, 1, 2].map(|i| local.position[i].add(&com[i]));
     let accel: [Bern; 3] = [0, 1, 2].map(|i| {
-        let (x1, x2) = (x[i].derivative(), x[i].derivative().derivative());
+        let x1 = x[i].derivative();
+        let x2 = x1.derivative();
         let first = x1.mul(w).sub(&x[i].mul(&dw)); // X̂'w − X̂w'
         let second = x2.mul(w).sub(&x[i].mul(&ddw)); // X̂''w − X̂w''
         gdg.mul(&first).mul(w).add(&gg.mul(&second.mul(w).sub(&dw.mul(&first).scale(2.0))))

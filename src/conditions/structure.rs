@@ -59,26 +59,36 @@ impl Local {
     }
 }
 
+/// a × b for polynomial vectors.
+pub(crate) fn cross(a: &[Bern; 3], b: &[Bern; 3]) -> [Bern; 3] {
+    [a[1].mul(&b[2]).sub(&a[2].mul(&b[1])), a[2].mul(&b[0]).sub(&a[0].mul(&b[2])), a[0].mul(&b[1]).sub(&a[1].mul(&b[0]))]
+}
+
+/// M̂ c for a constant vector c.
+pub(crate) fn times_const(m: &[[Bern; 3]; 3], c: &Vector3<f64>) -> [Bern; 3] {
+    [0, 1, 2].map(|i| Bern::linear_combination(&[(&m[i][0], c[0]), (&m[i][1], c[1]), (&m[i][2], c[2])]))
+}
+
+/// The wrench's application point relative to the platform origin, times w: M̂·P for a point
+/// held in the platform frame, w·P for one held world-parallel (so c̃ = P̂ + this).
+pub(crate) fn point_offset(m: &Local, wrench: &Wrench) -> [Bern; 3] {
+    match wrench.frame {
+        PointFrame::World => [0, 1, 2].map(|i| m.weight.scale(wrench.point[i])),
+        PointFrame::Platform => times_const(&m.rotation, &wrench.point),
+    }
+}
+
 /// Numerators of the columns of Ñ: entry [row][cable], rows 0–2 over w, rows 3–5 over w².
 pub(crate) fn structure_numerators(m: &Local, wrench: &Wrench) -> [Vec<Bern>; 6] {
     let w = &m.weight;
     // c̃ = c·w, the application point.
-    let c: [Bern; 3] = [0, 1, 2].map(|i| {
-        let p = m.position[i].clone();
-        match wrench.frame {
-            PointFrame::World => p.add(&w.scale(wrench.point[i])),
-            PointFrame::Platform => (0..3).fold(p, |acc, j| acc.add(&m.rotation[i][j].scale(wrench.point[j]))),
-        }
-    });
+    let offset = point_offset(m, wrench);
+    let c: [Bern; 3] = [0, 1, 2].map(|i| m.position[i].add(&offset[i]));
     let mut rows: [Vec<Bern>; 6] = Default::default();
     for (base, s) in &m.cables {
         // r̃ = a·w − c̃; (x − c) × s = r × s because s × s = 0.
         let r: [Bern; 3] = [0, 1, 2].map(|i| w.scale(base[i]).sub(&c[i]));
-        let moment = [
-            r[1].mul(&s[2]).sub(&r[2].mul(&s[1])),
-            r[2].mul(&s[0]).sub(&r[0].mul(&s[2])),
-            r[0].mul(&s[1]).sub(&r[1].mul(&s[0])),
-        ];
+        let moment = cross(&r, s);
         for k in 0..3 {
             rows[k].push(s[k].clone());
         }

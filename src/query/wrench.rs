@@ -193,19 +193,6 @@ pub fn tension_ranges_at(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector
     Some(std::array::from_fn(|i| TensionRange { nominal: f0[i], spread: v[(i, i)].max(0.0).sqrt() }))
 }
 
-/// The wrench set at one pose against the available wrench set {J f : f_min ≤ f ≤ f_max}
-/// ([`wrench_set_margin`]).
-#[derive(Debug, Clone, PartialEq)]
-pub struct WrenchSetMargin {
-    /// The largest t such that every wrench of the ellipsoid is balanced by tensions within
-    /// [f_min + t, f_max − t]; feasible iff t > 0. For a single wrench (E⁻¹ = 0) it is the
-    /// static-feasibility LP's margin.
-    pub margin: f64,
-    /// The wrench of the ellipsoid that sets the margin: the one furthest out through the facet
-    /// that binds (a witness: at a negative margin no tensions within the bounds balance it).
-    pub worst: Vector6<f64>,
-}
-
 /// Hyperplane shifting (Gouttefarde & Gosselin; Bouchard et al.): the zonotope
 /// Z(t) = {J f : f_min + t ≤ f ≤ f_max − t} has a facet pair for every set S of five columns
 /// spanning a hyperplane, with normal n_S (the cofactors of [J_S | x], so n_S·x = det [J_S | x])
@@ -214,15 +201,16 @@ pub struct WrenchSetMargin {
 /// |n_S·w0| + √(n_Sᵀ E⁻¹ n_S) stays inside on both sides; each side is linear in t, so the
 /// largest t is the least over facets of (h(±n_S) at t = 0 ∓ n_S·w0 − √(n_Sᵀ E⁻¹ n_S)) / Σ_k |d_k|,
 /// and at most half the narrowest finite tension range (the shrunk box is empty beyond).
-/// Any number of cables ≥ 6 (C(m, 5) facets). `None` when J has rank below 6 (no facet has
-/// columns off its hyperplane while some hyperplane holds them all): W, or w0, is then balanced
-/// nowhere but on that hyperplane, reported as singular.
-pub fn wrench_set_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, nominal: &Vector6<f64>, ellipsoid_inv: &Matrix6<f64>, bounds: &[Bounds]) -> Option<WrenchSetMargin> {
+/// The result is that largest t: every wrench of W is balanced within [f_min + t, f_max − t], so
+/// the pose is wrench-feasible iff t > 0; for a single wrench (E⁻¹ = 0) it is the
+/// static-feasibility LP's margin. Any number of cables ≥ 6 (C(m, 5) facets). `None` when J has
+/// rank below 6 (no facet has columns off its hyperplane, or some hyperplane holds them all): W,
+/// or w0, is then balanced nowhere but on that hyperplane, reported as singular.
+pub fn wrench_set_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, nominal: &Vector6<f64>, ellipsoid_inv: &Matrix6<f64>, bounds: &[Bounds]) -> Option<f64> {
     let j = structure_matrix_m(cables, point);
     let m = j.ncols();
     let norms: Vec<f64> = (0..m).map(|i| j.column(i).norm()).collect();
-    let mut best: Option<WrenchSetMargin> = None;
-    let mut spanned = false;
+    let mut best: Option<f64> = None;
     for s in subsets(m, 5) {
         let n = facet_normal(&j, &s);
         let scale: f64 = s.iter().map(|&k| norms[k]).product();
@@ -243,25 +231,15 @@ pub fn wrench_set_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector
         if spread == 0.0 {
             return None; // every column on this hyperplane: rank 5
         }
-        spanned = true;
         let reach = (n.dot(&(ellipsoid_inv * n))).max(0.0).sqrt();
         let centre = n.dot(nominal);
-        for side in [1.0, -1.0] {
-            // side +1: n·w ≤ upper; side −1: n·w ≥ lower
-            let room = if side > 0.0 { upper - centre } else { centre - lower };
-            let t = (room - reach) / spread;
-            if best.as_ref().is_none_or(|b| t < b.margin) {
-                let push = if reach > 0.0 { ellipsoid_inv * n * (side / reach) } else { Vector6::zeros() };
-                best = Some(WrenchSetMargin { margin: t, worst: nominal + push });
-            }
-        }
-    }
-    if !spanned {
-        return None;
+        // n·w ≤ upper and n·w ≥ lower for every w of W, with the box shrunk by t
+        let t = (upper - centre).min(centre - lower) - reach;
+        best = Some(best.map_or(t / spread, |b: f64| b.min(t / spread)));
     }
     // past half the narrowest finite tension range the shrunk box is empty
     let half = bounds.iter().filter(|b| b.max.is_finite()).map(|b| 0.5 * (b.max - b.min)).fold(f64::INFINITY, f64::min);
-    best.map(|b| WrenchSetMargin { margin: b.margin.min(half), ..b })
+    best.map(|b| b.min(half))
 }
 
 /// The normal of the hyperplane through the five columns `s` of the 6×m matrix `j`: the cofactors

@@ -230,10 +230,7 @@ pub fn verify_along(s: &Scenario, along: Along) -> Result<VerifyReport> {
     if !sec.uncertain.is_empty() {
         warnings.push(format!("{} section(s) could not be certified either way; see \"uncertain\"", sec.uncertain.len()));
     }
-    let seconds = match along {
-        Along::Trajectory(traj) => timing::seconds(s, traj, &sec, true),
-        Along::Joints(_) => None,
-    };
+    let seconds = timing::seconds(s, along, &sec, true);
     Ok(trajectory_report(along, sec, "exact", None, warnings, seconds))
 }
 
@@ -392,7 +389,7 @@ fn facet_report(s: &Scenario, at: &PoseCables, load: &Load, bad_length: Option<u
     let bounds: Vec<Bounds> = s.robot.cables.iter().map(|c| c.tension).collect();
     let closed = !wrench.closure || closure_holds(&at.cables, &point);
     let nominal = at.nominal(load);
-    let margin = wrench_set_margin(&at.cables, &point, &nominal, &wrench.ellipsoid_inv, &bounds).map(|r| r.margin);
+    let margin = wrench_set_margin(&at.cables, &point, &nominal, &wrench.ellipsoid_inv, &bounds);
     let tensions = static_margin(&at.cables, &point, &nominal, &bounds).map(|(_, f)| f).unwrap_or_default();
     let active = if let Some(i) = bad_length {
         format!("cable {} length", i + 1)

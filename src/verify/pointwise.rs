@@ -51,9 +51,6 @@ pub fn verify_pointwise_along(s: &Scenario, along: Along, dt: f64) -> Result<Ver
     let overall = pieces_of(&|k| states[k].iter().any(|&v| v));
     let per: Vec<Vec<Piece>> = (0..conditions.len()).map(|i| pieces_of(&|k| states[k][i])).collect();
     let sec = sections(&overall, &per, &|i| conditions[i].label(), 0.0);
-    let seconds = match along {
-        Along::Trajectory(traj) => super::timing::seconds(s, traj, &sec, false),
-        Along::Joints(_) => None,
-    };
+    let seconds = super::timing::seconds(s, along, &sec, false);
     Ok(trajectory_report(along, sec, "pointwise", Some(dt), s.warnings.clone(), seconds))
 }

@@ -10,7 +10,7 @@
 //! (certified feasible, certainly violated, or undecided).
 
 use super::sections::{sections, Sections};
-use super::{one_link, pieces_on, sweeps, BOUNDARY_TOL};
+use super::{one_link, pieces_on, sweeps, Along, BOUNDARY_TOL};
 use crate::conditions::{for_scenario, Condition, Kind, Sweep};
 use crate::model::{Motion, Trajectory};
 use crate::poly::Truth;
@@ -71,9 +71,11 @@ fn in_seconds(v: &[[f64; 2]], duration: f64) -> Vec<[f64; 2]> {
     v.iter().map(|iv| [iv[0] * duration, iv[1] * duration]).collect()
 }
 
-/// The `seconds` part of a timed trajectory's report: its sections `sec` (in t) in seconds and,
-/// when `scale` is true, its least certified time scale (the point-wise baseline passes false).
-pub(super) fn seconds(s: &Scenario, traj: &Trajectory, sec: &Sections, scale: bool) -> Option<Box<Seconds>> {
+/// The `seconds` part of a report along `along`, if it is a timed trajectory: its sections `sec`
+/// (in t) in seconds and, when `scale` is true, its least certified time scale (the point-wise
+/// baseline passes false).
+pub(super) fn seconds(s: &Scenario, along: Along, sec: &Sections, scale: bool) -> Option<Box<Seconds>> {
+    let Along::Trajectory(traj) = along else { return None };
     let duration = traj.duration?;
     let mut out = Seconds {
         duration,
