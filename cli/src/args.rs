@@ -210,6 +210,10 @@ pub enum Command {
         /// The scenario's name [default: the model's, from its file names]
         #[arg(long, value_name = "NAME")]
         name: Option<String>,
+        /// Read the timed trajectories from FILE, another CASPR trajectories file of the same
+        /// model [default: MODEL_DIR's <name>_trajectories.xml, if there]
+        #[arg(long, value_name = "FILE")]
+        trajectories: Option<String>,
     },
     /// Print a shell completion script (e.g. `cablenav completions bash > /etc/bash_completion.d/cablenav`)
     Completions {

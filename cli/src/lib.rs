@@ -91,7 +91,9 @@ where
             clap_complete::generate(shell, &mut Cli::command(), "cablenav", &mut out);
             return Ok(String::from_utf8_lossy(&out).into_owned());
         }
-        Command::Import { dir, out, name } => return Ok(import(&dir, out.as_deref(), name.as_deref(), read, write, list)?),
+        Command::Import { dir, out, name, trajectories } => {
+            return Ok(import(&dir, Model { out: out.as_deref(), name: name.as_deref(), trajectories: trajectories.as_deref() }, read, write, list)?);
+        }
         command => command.invocation()?,
     };
     let path = &invocation.scenario;
@@ -112,20 +114,43 @@ where
     Ok(printed)
 }
 
-/// `cablenav import`: the CASPR model in `dir` as scenario JSON, written to `out` (then a summary
-/// is returned) or returned.
-fn import(dir: &str, out: Option<&str>, name: Option<&str>, read: Read, write: Write, list: List) -> cablenav::Result<String> {
+/// The options of `cablenav import`.
+struct Model<'a> {
+    /// Where to write the scenario.
+    out: Option<&'a str>,
+    /// The scenario's name.
+    name: Option<&'a str>,
+    /// Another trajectories file than the model directory's.
+    trajectories: Option<&'a str>,
+}
+
+/// `cablenav import`: the CASPR model in `dir` (with its trajectories, or those of
+/// `--trajectories`) as scenario JSON, written to `out` (then a summary is returned) or returned.
+fn import(dir: &str, Model { out, name, trajectories }: Model, read: Read, write: Write, list: List) -> cablenav::Result<String> {
     let files = cablenav::scenario::caspr::model_files(&list(dir)?).map_err(|e| cablenav::Error::new(dir, e.reason))?;
     let path = |f: &str| format!("{}/{f}", dir.trim_end_matches('/'));
     let (bodies, cables) = (read(&path(&files.bodies))?, read(&path(&files.cables))?);
-    let imported = cablenav::scenario::caspr::to_json(name.unwrap_or(&files.name), &bodies, &cables)?;
+    let mut imported = cablenav::scenario::caspr::to_json(name.unwrap_or(&files.name), &bodies, &cables)?;
+    let trajectories = match (trajectories, &files.trajectories) {
+        (Some(file), _) => Some(read(file)?),
+        (None, Some(own)) => Some(read(&path(own))?),
+        (None, None) => None,
+    };
+    if let Some(xml) = trajectories {
+        imported = cablenav::scenario::caspr_trajectories::add_trajectories(imported, &bodies, &xml)?;
+    }
     let scenario = Scenario::from_json(&imported.json)?;
     let Some(out) = out else { return Ok(imported.json) };
     write(out, imported.json.as_bytes())?;
     let mut text = format!("wrote {out}: {} ({} cables", scenario.name, scenario.robot.cables.len());
     text += &match &scenario.robot.dynamics {
-        Some(d) => format!(", mass {} kg)\n", d.mass),
-        None => ", massless)\n".to_string(),
+        Some(d) => format!(", mass {} kg", d.mass),
+        None => ", massless".to_string(),
+    };
+    let timed: Vec<&str> = scenario.trajectories.iter().filter(|t| t.knots.is_some()).map(|t| t.name.as_str()).collect();
+    text += &match timed.as_slice() {
+        [] => ")\n".to_string(),
+        names => format!(", timed trajectories {})\n", names.join(", ")),
     };
     for note in &imported.notes {
         text += &format!("  note: {note}\n");

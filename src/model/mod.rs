@@ -3,10 +3,12 @@
 
 pub mod chain;
 pub mod dynamics;
+pub mod knots;
 pub mod motion;
 pub mod pose;
 pub mod robot;
 pub mod trajectory;
+pub mod turn;
 pub mod via;
 pub mod wrench;
 
@@ -15,5 +17,6 @@ pub use dynamics::{Dynamics, Kinematics, Winch};
 pub use motion::Motion;
 pub use pose::{Coord, Pose};
 pub use robot::{Bounds, Cable, Clearance, Robot};
-pub use trajectory::{Orientation, Segment, Trajectory, Translation};
+pub use knots::{Knot, Knots};
+pub use trajectory::{Orientation, Profile, Segment, Trajectory, Translation};
 pub use wrench::{Load, PointFrame, Wrench};

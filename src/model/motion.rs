@@ -250,7 +250,10 @@ impl Motion {
     /// T0 = tan(t0 θ/2), so a translation of degree d in τ becomes P̃(λ)/D(λ)^d with
     /// D = 1 − T0·hλ > 0 (homogeneous Bernstein substitution).
     fn segment(seg: &Segment, [from, to]: [f64; 2]) -> Vec<Motion> {
-        let Orientation::Slerp(qs, qe) = &seg.orientation;
+        let (qs, qe) = match &seg.orientation {
+            Orientation::Slerp(qs, qe) => (qs, qe),
+            Orientation::Turn { from: q0, axis, angle, profile } => return Motion::turn(&seg.translation, q0, axis, *angle, *profile, [from, to]),
+        };
         let theta = seg.theta();
         let cuts = slerp_cuts(theta);
         let pieces = cuts.len() - 1;
@@ -310,6 +313,23 @@ impl Motion {
                 let degree = translation.iter().map(Bern::degree).max().unwrap_or(0);
                 let position = [0, 1, 2].map(|i| position[i].mul(&power(&den, degree - translation[i].degree())));
                 Motion::from_rational(position, power(&den, degree), &n, param)
+            })
+            .collect()
+    }
+
+    /// The motions of a piece that turns (`super::turn`): one per stretch of the turn's
+    /// polynomial enclosure, λ linear in the piece's t (and so in time), the translation (a
+    /// polynomial in t) restricted to the stretch, the rotation `q0`·(c(λ), d(λ)·axis).
+    fn turn(translation: &Translation, q0: &UnitQuaternion<f64>, axis: &nalgebra::Unit<nalgebra::Vector3<f64>>, angle: f64, profile: super::Profile, [from, to]: [f64; 2]) -> Vec<Motion> {
+        let whole = translation_bernstein(translation);
+        let at = |t: f64| if t >= 1.0 { to } else { from + (to - from) * t };
+        super::turn::turn_stretches(angle, profile)
+            .iter()
+            .map(|s| {
+                let position = whole.each_ref().map(|p| p.restrict(s.a, s.b));
+                let relative: QuatPoly = [s.cos.clone(), s.sin.iter().map(|c| c * axis.x).collect(), s.sin.iter().map(|c| c * axis.y).collect(), s.sin.iter().map(|c| c * axis.z).collect()];
+                let n = quat_mul(&quat_const(q0), &relative);
+                Motion::from_parts(position, &n, Param::Trajectory { psi: 0.0, h: 0.0, t0: at(s.a), t1: at(s.b) })
             })
             .collect()
     }

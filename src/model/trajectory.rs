@@ -2,10 +2,15 @@
 //! τ ∈ [0, 1] and an orientation that is a slerp in t ∈ [0, 1], tied by τ = tan(tθ/2)/tan(θ/2).
 //! A piecewise trajectory (format 2) chains such pieces, each starting where the previous ends;
 //! piece k of n covers t ∈ [k/n, (k+1)/n] of the whole.
+//!
+//! A trajectory through timed knots (format 4 `knots`, CASPR's splines: [`super::knots`]) is
+//! piecewise too, one piece per pair of knots, covering its share of the time; its pieces turn
+//! about a fixed axis ([`Orientation::Turn`]) and their translation is polynomial in t itself.
 
 use super::dynamics::Kinematics;
+use super::knots::Knots;
 use super::pose::Pose;
-use nalgebra::{Quaternion, UnitQuaternion, Vector3};
+use nalgebra::{Quaternion, Unit, UnitQuaternion, Vector3};
 
 /// The translation part of a trajectory, a polynomial in τ ∈ [0, 1].
 #[derive(Debug, Clone, PartialEq)]
@@ -24,6 +29,56 @@ pub enum Orientation {
     /// Spherical linear interpolation from the first to the second quaternion. The quaternions'
     /// signs are kept as given: cos θ = Qs·Qe, so a negative dot product takes the long way round.
     Slerp(UnitQuaternion<f64>, UnitQuaternion<f64>),
+    /// CASPR's rotation between two knots: from `from`, a turn about the fixed `axis` (in the
+    /// frame of `from`) by `angle`·s(t), s the rest-to-rest `profile`. The piece's translation
+    /// is then polynomial in t itself (τ = t).
+    Turn {
+        /// The rotation at t = 0.
+        from: UnitQuaternion<f64>,
+        /// The turn's axis in the frame of `from` (also in the moving frame: it does not move).
+        axis: Unit<Vector3<f64>>,
+        /// The whole turn (rad), ≥ 0.
+        angle: f64,
+        /// How the turn proceeds in t.
+        profile: Profile,
+    },
+}
+
+/// A rest-to-rest time profile s(t) on [0, 1]: s(0) = 0, s(1) = 1, ṡ = 0 at both ends (and s̈ = 0
+/// for the quintic).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Profile {
+    /// s = 10t³ − 15t⁴ + 6t⁵ (CASPR's quintic spline between knots at rest).
+    Quintic,
+    /// s = 3t² − 2t³ (CASPR's cubic spline between knots at rest).
+    Cubic,
+}
+
+impl Profile {
+    /// Ascending monomial coefficients of s(t).
+    pub fn coefficients(self) -> &'static [f64] {
+        match self {
+            Profile::Quintic => &[0.0, 0.0, 0.0, 10.0, -15.0, 6.0],
+            Profile::Cubic => &[0.0, 0.0, 3.0, -2.0],
+        }
+    }
+
+    /// s(t), s'(t) and s''(t).
+    pub fn at(self, t: f64) -> [f64; 3] {
+        let c = self.coefficients();
+        let mut out = [0.0; 3];
+        for (k, &a) in c.iter().enumerate() {
+            let k_f = k as f64;
+            out[0] += a * t.powi(k as i32);
+            if k >= 1 {
+                out[1] += a * k_f * t.powi(k as i32 - 1);
+            }
+            if k >= 2 {
+                out[2] += a * k_f * (k_f - 1.0) * t.powi(k as i32 - 2);
+            }
+        }
+        out
+    }
 }
 
 /// A named trajectory.
@@ -40,7 +95,11 @@ pub struct Trajectory {
     pub more: Vec<Segment>,
     /// How long the whole trajectory takes (format 4 `duration`, seconds): t = time/duration, a
     /// uniform time law. `None` for a trajectory without timing (geometry and statics only).
+    /// For a trajectory through knots, the time from the first knot to the last.
     pub duration: Option<f64>,
+    /// The knots a timed spline trajectory was built from (format 4 `knots`), which also set
+    /// each piece's share of t; `None` for the thesis' form.
+    pub knots: Option<Knots>,
 }
 
 /// One piece of a piecewise trajectory: a translation in its own τ and a slerp in its own t.
@@ -55,17 +114,22 @@ pub struct Segment {
 impl Segment {
     /// The slerp angle θ ∈ [0, π] with cos θ = Qs·Qe (the quaternions' signs as given), taken as
     /// 2·atan2(|Qe − Qs|, |Qe + Qs|), which unlike acos stays accurate near 0 and π.
+    /// For a turn, the turn's angle.
     pub fn theta(&self) -> f64 {
-        let Orientation::Slerp(qs, qe) = &self.orientation;
-        let (s, e) = (qs.quaternion(), qe.quaternion());
-        2.0 * (e - s).norm().atan2((e + s).norm())
+        match &self.orientation {
+            Orientation::Slerp(qs, qe) => {
+                let (s, e) = (qs.quaternion(), qe.quaternion());
+                2.0 * (e - s).norm().atan2((e + s).norm())
+            }
+            Orientation::Turn { angle, .. } => *angle,
+        }
     }
 
     /// τ at slerp parameter t: τ = tan(tθ/2)/tan(θ/2), or t when θ = 0; exactly 0 and 1 at the
-    /// ends.
+    /// ends. τ = t along a turn.
     pub fn tau_of_t(&self, t: f64) -> f64 {
         let theta = self.theta();
-        if theta < 1e-9 || t <= 0.0 || t >= 1.0 {
+        if matches!(self.orientation, Orientation::Turn { .. }) || theta < 1e-9 || t <= 0.0 || t >= 1.0 {
             t.clamp(0.0, 1.0)
         } else {
             ((t * theta / 2.0).tan() / (theta / 2.0).tan()).clamp(0.0, 1.0)
@@ -73,15 +137,23 @@ impl Segment {
     }
 
     /// The pose at slerp parameter t, evaluated directly: p(τ(t)) and
-    /// Q(t) = (Qs sin((1−t)θ) + Qe sin(tθ)) / sin θ.
+    /// Q(t) = (Qs sin((1−t)θ) + Qe sin(tθ)) / sin θ; along a turn Q = Q_from·(cos β, sin β·axis),
+    /// β = angle·s(t)/2.
     pub fn pose_at(&self, t: f64) -> Pose {
-        let Orientation::Slerp(qs, qe) = &self.orientation;
-        let theta = self.theta();
-        let (s, e) = (qs.quaternion(), qe.quaternion());
-        let q: Quaternion<f64> = if theta < 1e-9 {
-            s * (1.0 - t) + e * t
-        } else {
-            (s * ((1.0 - t) * theta).sin() + e * (t * theta).sin()) / theta.sin()
+        let q: Quaternion<f64> = match &self.orientation {
+            Orientation::Slerp(qs, qe) => {
+                let theta = self.theta();
+                let (s, e) = (qs.quaternion(), qe.quaternion());
+                if theta < 1e-9 {
+                    s * (1.0 - t) + e * t
+                } else {
+                    (s * ((1.0 - t) * theta).sin() + e * (t * theta).sin()) / theta.sin()
+                }
+            }
+            Orientation::Turn { from, axis, angle, profile } => {
+                let half = 0.5 * angle * profile.at(t.clamp(0.0, 1.0))[0];
+                from.quaternion() * Quaternion::from_parts(half.cos(), axis.into_inner() * half.sin())
+            }
         };
         Pose { position: self.translation.at(self.tau_of_t(t)), rotation: UnitQuaternion::from_quaternion(q) }
     }
@@ -92,7 +164,14 @@ impl Segment {
     /// origin's dp/dt and d²p/dt², and the angular velocity dΦ/dt, constant along a slerp (the
     /// angular acceleration is zero). With τ = tan(tθ/2)/tan(θ/2):
     /// τ' = (θ/2)(1 + T²)/tan(θ/2) and τ'' = (θ²/2)·T(1 + T²)/tan(θ/2), T = tan(tθ/2).
+    /// Along a turn τ = t, ω = R_from·axis·angle·s'(t) and α = R_from·axis·angle·s''(t).
     pub fn rates_at(&self, t: f64) -> Kinematics {
+        if let Orientation::Turn { from, axis, angle, profile } = &self.orientation {
+            let [_, s1, s2] = profile.at(t.clamp(0.0, 1.0));
+            let (p1, p2) = self.translation.derivatives_at(t.clamp(0.0, 1.0));
+            let world = from.transform_vector(axis) * *angle;
+            return Kinematics { velocity: p1, acceleration: p2, omega: world * s1, alpha: world * s2 };
+        }
         let theta = self.theta();
         let (tau, d1, d2) = if theta < 1e-9 {
             (t.clamp(0.0, 1.0), 1.0, 0.0)
@@ -109,8 +188,8 @@ impl Segment {
     /// The slerp's angular velocity per unit of t, in the world frame: Q(t) = Qs·(Qs⁻¹Qe)^t turns
     /// about the axis u (in the platform frame of Qs) of Qs⁻¹Qe = (cos θ, sin θ·u) at the rate
     /// 2θ, which in the world frame is Rs·u·2θ.
-    pub fn angular_rate(&self) -> Vector3<f64> {
-        let Orientation::Slerp(qs, qe) = &self.orientation;
+    fn angular_rate(&self) -> Vector3<f64> {
+        let Orientation::Slerp(qs, qe) = &self.orientation else { return Vector3::zeros() };
         let rel = qs.quaternion().conjugate() * qe.quaternion();
         let theta = self.theta();
         // 2θ·u = 2θ/sin θ · vec(rel); θ/sin θ → 1 as θ → 0
@@ -171,14 +250,14 @@ impl Translation {
 impl Trajectory {
     /// A one-piece trajectory.
     pub fn single(name: impl Into<String>, translation: Translation, orientation: Orientation) -> Trajectory {
-        Trajectory { name: name.into(), translation, orientation, more: vec![], duration: None }
+        Trajectory { name: name.into(), translation, orientation, more: vec![], duration: None, knots: None }
     }
 
     /// A trajectory of one or more pieces (the first must exist: `None` for an empty list).
     pub fn piecewise(name: impl Into<String>, pieces: Vec<Segment>) -> Option<Trajectory> {
         let mut it = pieces.into_iter();
         let first = it.next()?;
-        Some(Trajectory { name: name.into(), translation: first.translation, orientation: first.orientation, more: it.collect(), duration: None })
+        Some(Trajectory { name: name.into(), translation: first.translation, orientation: first.orientation, more: it.collect(), duration: None, knots: None })
     }
 
     /// Number of pieces (1 for an ordinary trajectory).
@@ -192,8 +271,12 @@ impl Trajectory {
         std::iter::once(first).chain(self.more.iter().cloned()).collect()
     }
 
-    /// The share [t0, t1] of the whole t ∈ [0, 1] that piece `k` covers.
+    /// The share [t0, t1] of the whole t ∈ [0, 1] that piece `k` covers: 1/n each, or through
+    /// knots the piece's share of the time.
     pub fn piece_span(&self, k: usize) -> [f64; 2] {
+        if let Some(knots) = &self.knots {
+            return knots.span(k);
+        }
         let n = self.piece_count() as f64;
         [k as f64 / n, if k + 1 == self.piece_count() { 1.0 } else { (k + 1) as f64 / n }]
     }
@@ -202,7 +285,10 @@ impl Trajectory {
     fn locate(&self, t: f64) -> (Segment, usize, f64) {
         let n = self.piece_count();
         let t = t.clamp(0.0, 1.0);
-        let k = ((t * n as f64).floor() as usize).min(n - 1);
+        let k = match &self.knots {
+            Some(_) => (0..n).find(|&k| t < self.piece_span(k)[1]).unwrap_or(n - 1),
+            None => ((t * n as f64).floor() as usize).min(n - 1),
+        };
         let [t0, t1] = self.piece_span(k);
         let seg = if k == 0 {
             Segment { translation: self.translation.clone(), orientation: self.orientation.clone() }
@@ -228,12 +314,13 @@ impl Trajectory {
     }
 
     /// The platform's motion at t, evaluated directly, when the trajectory is run in `duration`
-    /// seconds (time = t·duration): piece k of n covers 1/n of t, so its own t runs n/duration
-    /// per second.
+    /// seconds (time = t·duration): piece k covers [t0, t1] of t, so its own t runs
+    /// 1/((t1 − t0)·duration) per second.
     pub fn kinematics_at(&self, t: f64, duration: f64) -> Kinematics {
-        let (seg, _, local) = self.locate(t);
-        let rate = self.piece_count() as f64 / duration;
-        let k = seg.rates_at(local);
-        Kinematics { velocity: k.velocity * rate, acceleration: k.acceleration * (rate * rate), omega: k.omega * rate, alpha: Vector3::zeros() }
+        let (seg, k, local) = self.locate(t);
+        let [t0, t1] = self.piece_span(k);
+        let rate = 1.0 / ((t1 - t0) * duration);
+        let m = seg.rates_at(local);
+        Kinematics { velocity: m.velocity * rate, acceleration: m.acceleration * (rate * rate), omega: m.omega * rate, alpha: m.alpha * (rate * rate) }
     }
 }

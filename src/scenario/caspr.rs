@@ -94,10 +94,12 @@ pub struct ModelFiles {
     pub bodies: String,
     /// `<name>_cables.xml`.
     pub cables: String,
+    /// `<name>_trajectories.xml`, if the directory has it.
+    pub trajectories: Option<String>,
 }
 
 /// Picks a model's bodies and cables files from the names in its directory: exactly one
-/// `*_bodies.xml`, and the `*_cables.xml` of the same name. Errors (field `model`) say what is
+/// `*_bodies.xml`, and the `*_cables.xml` of the same name (and its `*_trajectories.xml`, if there). Errors (field `model`) say what is
 /// missing or ambiguous.
 pub fn model_files(names: &[String]) -> Result<ModelFiles> {
     let mut bodies: Vec<&String> = names.iter().filter(|n| n.ends_with("_bodies.xml")).collect();
@@ -110,7 +112,8 @@ pub fn model_files(names: &[String]) -> Result<ModelFiles> {
     if !names.contains(&cables) {
         return Err(Error::new("model", format!("{only} has no {cables} beside it")));
     }
-    Ok(ModelFiles { bodies: (*only).clone(), cables, name })
+    let trajectories = Some(format!("{name}_trajectories.xml")).filter(|t| names.contains(t));
+    Ok(ModelFiles { bodies: (*only).clone(), cables, trajectories, name })
 }
 
 /// Converts and validates: the scenario of [`to_json`], parsed by [`Scenario::from_json`].
@@ -313,6 +316,8 @@ struct OutSlerp {
 /// The platform link as the cables need it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Platform {
+    /// The parent location: where q's position counts from.
+    origin: [f64; 3],
     /// Initial position (parent location + q_initial's x, y, z).
     position: [f64; 3],
     /// Initial XYZ Euler angles in radians.
@@ -392,6 +397,12 @@ pub(super) fn child_numbers<const N: usize>(file: &str, node: Node, tag: &str) -
     }
 }
 
+/// Where the platform's joint sits on the base: its parent `location` (the origin `q`'s position
+/// counts from).
+pub(super) fn platform_origin(xml: &str) -> Result<[f64; 3]> {
+    Ok(platform(xml)?.origin)
+}
+
 fn platform(xml: &str) -> Result<Platform> {
     const FILE: &str = "bodies";
     let doc = document(FILE, xml, "bodies_system")?;
@@ -438,6 +449,7 @@ fn platform(xml: &str) -> Result<Platform> {
         None => [0.0; 3],
     };
     Ok(Platform {
+        origin: parent_location,
         position: [parent_location[0] + q[0], parent_location[1] + q[1], parent_location[2] + q[2]],
         euler_rad: [q[3], q[4], q[5]],
         com,

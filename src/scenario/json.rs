@@ -298,6 +298,35 @@ pub struct RawTrajectory {
     /// How long the trajectory takes, in seconds (format 4).
     #[serde(default)]
     pub duration: Option<f64>,
+    /// A timed spline's kind, `"quintic"` (the default) or `"cubic"` (format 4, with `knots`).
+    #[serde(default)]
+    pub spline: Option<String>,
+    /// The timed knots a spline trajectory passes through (format 4).
+    #[serde(default)]
+    pub knots: Option<Vec<RawKnot>>,
+}
+
+/// A knot of a timed spline trajectory: its time, its pose (a named pose, or a position and one
+/// orientation form, as in `poses`), and the origin's velocity and acceleration there (default
+/// zero).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawKnot {
+    pub time: f64,
+    #[serde(default)]
+    pub pose: Option<String>,
+    #[serde(default)]
+    pub position: Option<Fixed<f64, 3>>,
+    #[serde(default)]
+    pub quaternion: Option<Fixed<f64, 4>>,
+    #[serde(default)]
+    pub tilt_torsion: Option<Fixed<f64, 3>>,
+    #[serde(default)]
+    pub euler_xyz_deg: Option<Fixed<f64, 3>>,
+    #[serde(default)]
+    pub velocity: Option<Fixed<f64, 3>>,
+    #[serde(default)]
+    pub acceleration: Option<Fixed<f64, 3>>,
 }
 
 /// One piece of a piecewise trajectory.

@@ -2,6 +2,7 @@
 //! parsing with serde, and validation into the model with errors that name the field.
 
 pub mod caspr;
+pub mod caspr_trajectories;
 mod caspr_links;
 pub mod chain;
 pub mod json;
@@ -181,20 +182,45 @@ impl Scenario {
 }
 
 /// A trajectory as scenario JSON: `translation` and `orientation`, or `pieces` for a piecewise
-/// one (format 2). Orientations are written as quaternions `[w, x, y, z]` with their signs.
+/// one (format 2), or `spline` and `knots` for one through knots (format 4). Orientations are
+/// written as quaternions `[w, x, y, z]` with their signs. (A turning piece built by hand, not
+/// from knots, is written descriptively as `{"turn": …}`, which scenario files do not take.)
 pub fn trajectory_json(traj: &Trajectory) -> serde_json::Value {
     use crate::model::{Orientation, Translation};
     use serde_json::json;
+    let v3 = |p: &nalgebra::Vector3<f64>| json!([p.x, p.y, p.z]);
+    let q = |q: &nalgebra::UnitQuaternion<f64>| json!([q.w, q.i, q.j, q.k]);
+    if let Some(knots) = &traj.knots {
+        let spline = match knots.profile {
+            crate::model::Profile::Quintic => "quintic",
+            crate::model::Profile::Cubic => "cubic",
+        };
+        let points: Vec<serde_json::Value> = knots
+            .points
+            .iter()
+            .map(|k| {
+                let mut v = json!({"time": k.time, "position": v3(&k.pose.position), "quaternion": q(&k.pose.rotation), "velocity": v3(&k.velocity)});
+                if knots.profile == crate::model::Profile::Quintic {
+                    v["acceleration"] = v3(&k.acceleration);
+                }
+                v
+            })
+            .collect();
+        return json!({"name": traj.name, "spline": spline, "knots": points});
+    }
     let piece = |seg: &crate::model::Segment| {
-        let v3 = |p: &nalgebra::Vector3<f64>| json!([p.x, p.y, p.z]);
         let translation = match &seg.translation {
             Translation::Polynomial(c) => json!({"polynomial": c}),
             Translation::Bezier(points) => json!({"bezier": points.iter().map(v3).collect::<Vec<_>>()}),
             Translation::Line(a, b) => json!({"line": [v3(a), v3(b)]}),
         };
-        let Orientation::Slerp(qs, qe) = &seg.orientation;
-        let q = |q: &nalgebra::UnitQuaternion<f64>| json!([q.w, q.i, q.j, q.k]);
-        json!({"translation": translation, "orientation": {"slerp": [q(qs), q(qe)]}})
+        let orientation = match &seg.orientation {
+            Orientation::Slerp(qs, qe) => json!({"slerp": [q(qs), q(qe)]}),
+            Orientation::Turn { from, axis, angle, profile } => {
+                json!({"turn": {"from": q(from), "axis": v3(axis), "angle": angle, "profile": format!("{profile:?}").to_lowercase()}})
+            }
+        };
+        json!({"translation": translation, "orientation": orientation})
     };
     let pieces = traj.pieces();
     if pieces.len() == 1 {

@@ -550,35 +550,40 @@ fn poses(raw: &[(String, RawPose)], warnings: &mut Vec<String>) -> Result<Vec<(S
         if out.iter().any(|(n, _)| n == name) {
             return Err(Error::new(path, format!("duplicate pose name \"{name}\"")));
         }
-        let position = vec3(&format!("{path}.position"), &p.position)?;
-        let given: Vec<&str> = [
-            ("quaternion", p.quaternion.is_some()),
-            ("tilt_torsion", p.tilt_torsion.is_some()),
-            ("euler_xyz_deg", p.euler_xyz_deg.is_some()),
-        ]
-        .iter()
-        .filter(|(_, present)| *present)
-        .map(|(n, _)| *n)
-        .collect();
-        if given.len() != 1 {
-            let got = if given.is_empty() { "none".to_owned() } else { given.join(" and ") };
-            return Err(Error::new(
-                path,
-                format!("give the orientation as exactly one of quaternion, tilt_torsion, euler_xyz_deg; got {got}"),
-            ));
-        }
-        let pose = if let Some(q) = &p.quaternion {
-            Pose { position, rotation: unit_quaternion(&format!("{path}.quaternion"), q.0, warnings)? }
-        } else if let Some(a) = &p.tilt_torsion {
-            canonical(Pose::from_tilt_torsion(position, angles(&format!("{path}.tilt_torsion"), a)?))
-        } else if let Some(a) = &p.euler_xyz_deg {
-            canonical(Pose::from_euler_xyz_deg(position, angles(&format!("{path}.euler_xyz_deg"), a)?))
-        } else {
-            return Err(Error::new(path, "no orientation given"));
-        };
-        out.push((name.clone(), pose));
+        out.push((name.clone(), pose(&path, p, warnings)?));
     }
     Ok(out)
+}
+
+/// One pose at `path`: its position and exactly one orientation form.
+pub(super) fn pose(path: &str, p: &RawPose, warnings: &mut Vec<String>) -> Result<Pose> {
+    let position = vec3(&format!("{path}.position"), &p.position)?;
+    let given: Vec<&str> = [
+        ("quaternion", p.quaternion.is_some()),
+        ("tilt_torsion", p.tilt_torsion.is_some()),
+        ("euler_xyz_deg", p.euler_xyz_deg.is_some()),
+    ]
+    .iter()
+    .filter(|(_, present)| *present)
+    .map(|(n, _)| *n)
+    .collect();
+    if given.len() != 1 {
+        let got = if given.is_empty() { "none".to_owned() } else { given.join(" and ") };
+        return Err(Error::new(
+            path,
+            format!("give the orientation as exactly one of quaternion, tilt_torsion, euler_xyz_deg; got {got}"),
+        ));
+    }
+    let pose = if let Some(q) = &p.quaternion {
+        Pose { position, rotation: unit_quaternion(&format!("{path}.quaternion"), q.0, warnings)? }
+    } else if let Some(a) = &p.tilt_torsion {
+        canonical(Pose::from_tilt_torsion(position, angles(&format!("{path}.tilt_torsion"), a)?))
+    } else if let Some(a) = &p.euler_xyz_deg {
+        canonical(Pose::from_euler_xyz_deg(position, angles(&format!("{path}.euler_xyz_deg"), a)?))
+    } else {
+        return Err(Error::new(path, "no orientation given"));
+    };
+    Ok(pose)
 }
 
 fn angles(field: &str, a: &Fixed<f64, 3>) -> Result<[f64; 3]> {
@@ -648,6 +653,13 @@ fn trajectories(
     for (k, t) in raw.iter().enumerate() {
         let path = format!("trajectories[{k}]");
         unique_name(&path, &t.name, "trajectory", "trajectories", out.iter().map(|o| o.name.as_str()))?;
+        if t.knots.is_some() || t.spline.is_some() {
+            if t.pieces.is_some() || t.translation.is_some() || t.orientation.is_some() {
+                return Err(Error::new(format!("{path}.knots"), "give either knots or translation and orientation (or pieces), not both"));
+            }
+            out.push(super::timing::through_knots(&path, t, poses, warnings)?);
+            continue;
+        }
         let traj = match (&t.pieces, &t.translation, &t.orientation) {
             (Some(pieces), None, None) => {
                 if !version_2 {

@@ -1,0 +1,262 @@
+//! A turn about a fixed axis by angle·s(t), s a polynomial time profile (CASPR's rotation between
+//! knots, [`super::Orientation::Turn`]), as quaternion polynomials with a certified error.
+//!
+//! cos(β(t)) and sin(β(t)), β = angle·s(t)/2, are not rational in t, so no exact rational motion
+//! follows the turn. On each stretch [a, b] of t they are replaced by polynomials of low degree
+//! in λ (t = a + (b − a)λ), with an error bound in two parts:
+//!
+//! 1. the Taylor polynomials of cos and sin about β_m (the stretch's middle) of order n, composed
+//!    exactly with y(λ) = β(t) − β_m: by Taylor's theorem the value is off by at most
+//!    Y^(n+1)/(n+1)!, Y ≥ |y| over the stretch, and the derivatives in t (chain rule) by
+//!    Y^n/n!·B1 and Y^(n−1)/(n−1)!·B1² + Y^n/n!·B2, B1 ≥ |β'|, B2 ≥ |β''|;
+//! 2. that polynomial (degree 5n) is interpolated at Chebyshev points by one of degree d, and the
+//!    difference (and its derivatives) bounded by its largest Bernstein coefficient, which bounds
+//!    a polynomial on [0, 1], with the rounding the Bernstein arithmetic tracks.
+//!
+//! Stretches are halved until the value's error is at most [`TURN_TOLERANCE`] (the first and second
+//! derivatives' 100× and 10⁴× that, per unit of the piece's t). The quaternion (c, d·axis) is
+//! exactly a rotation about the axis, by 2·atan2(d, c), which is within
+//! 2·asin(√2·TURN_TOLERANCE) ≈ 3e-11 rad of CASPR's angle — CASPR itself rounds its angles to
+//! 1e-10. What cablenav certifies along such a trajectory is this polynomial motion.
+
+use super::trajectory::Profile;
+use crate::poly::Bern;
+
+/// The largest error allowed in the cosine and sine of the half-angle; their first and second
+/// derivatives per unit of the piece's t are allowed 100× and 10⁴× that.
+pub const TURN_TOLERANCE: f64 = 1e-11;
+
+/// The derivatives' tolerances, relative to [`TURN_TOLERANCE`].
+const DERIVATIVE_SLACK: [f64; 3] = [1.0, 1e2, 1e4];
+
+/// Highest degree tried before a stretch is halved.
+const MAX_DEGREE: usize = 10;
+
+/// Deepest halving of a stretch (2^−24 of a piece: never reached for angles up to π).
+const MAX_DEPTH: u32 = 24;
+
+/// Highest Taylor order composed.
+const MAX_ORDER: usize = 24;
+
+/// One stretch [a, b] of a turn's t: cos β and sin β (β the half-angle turned since t = 0) as
+/// polynomials in λ ∈ [0, 1], t = a + (b − a)λ, and their certified errors.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TurnStretch {
+    /// Start of the stretch in the piece's t.
+    pub a: f64,
+    /// End of the stretch.
+    pub b: f64,
+    /// cos β, ascending monomial coefficients in λ.
+    pub cos: Vec<f64>,
+    /// sin β, likewise.
+    pub sin: Vec<f64>,
+    /// Bounds on |error|, |d error/dt| and |d² error/dt²| of both, over the stretch.
+    pub error: [f64; 3],
+}
+
+/// p(α + βλ) for ascending coefficients `c`.
+fn compose_linear(c: &[f64], alpha: f64, beta: f64) -> Vec<f64> {
+    // Horner in polynomials: acc = acc·(α + βλ) + c_k
+    let mut acc: Vec<f64> = vec![0.0; c.len()];
+    for &ck in c.iter().rev() {
+        let mut next = vec![0.0; c.len()];
+        for (j, &a) in acc.iter().enumerate() {
+            next[j] += a * alpha;
+            if j + 1 < next.len() {
+                next[j + 1] += a * beta;
+            }
+        }
+        next[0] += ck;
+        acc = next;
+    }
+    acc
+}
+
+/// A bound on |p| over [0, 1]: the largest Bernstein coefficient plus the tracked rounding.
+fn sup(p: &Bern) -> f64 {
+    p.max_abs() + p.err
+}
+
+/// The allowed errors of value, first and second derivative.
+fn tolerances() -> [f64; 3] {
+    DERIVATIVE_SLACK.map(|k| k * TURN_TOLERANCE)
+}
+
+/// The Taylor polynomials of cos β and sin β about the stretch's middle composed with y(λ), as
+/// Bernstein polynomials, and their error bounds (part 1 of the module docs); `None` when no
+/// order up to [`MAX_ORDER`] is within a quarter of the tolerances.
+fn composed(half: f64, profile: Profile, a: f64, b: f64) -> Option<(Bern, Bern, [f64; 3])> {
+    let width = b - a;
+    let beta = Bern::from_monomial(&compose_linear(profile.coefficients(), a, width)).scale(half);
+    let beta_m = half * compose_linear(profile.coefficients(), 0.5 * (a + b), 1.0)[0];
+    let y = beta.sub(&Bern::constant(beta_m));
+    let big_y = sup(&y);
+    let d1 = beta.derivative();
+    let (b1, b2) = (sup(&d1) / width, sup(&d1.derivative()) / (width * width));
+    let tol = tolerances();
+    let factorial = |k: usize| (1..=k).fold(1.0, |acc, j| acc * j as f64);
+    let order = (1..=MAX_ORDER).find(|&n| {
+        let (yn, yn1) = (
+            big_y.powi(n as i32) / factorial(n),
+            big_y.powi(n as i32 - 1) / factorial(n - 1),
+        );
+        big_y.powi(n as i32 + 1) / factorial(n + 1) <= 0.25 * tol[0]
+            && yn * b1 <= 0.25 * tol[1]
+            && yn1 * b1 * b1 + yn * b2 <= 0.25 * tol[2]
+    })?;
+    let error = {
+        let n = order;
+        let (yn, yn1) = (
+            big_y.powi(n as i32) / factorial(n),
+            big_y.powi(n as i32 - 1) / factorial(n - 1),
+        );
+        [
+            big_y.powi(n as i32 + 1) / factorial(n + 1),
+            yn * b1,
+            yn1 * b1 * b1 + yn * b2,
+        ]
+    };
+    // C(y) = Σ (−1)^(j/2) y^j/j! over even j, S(y) over odd j
+    let (mut c, mut s) = (Bern::constant(1.0), Bern::constant(0.0));
+    let mut power = Bern::constant(1.0);
+    for j in 1..=order {
+        power = power.mul(&y);
+        let term = power.scale(if (j / 2) % 2 == 0 { 1.0 } else { -1.0 } / factorial(j));
+        if j % 2 == 0 {
+            c = c.add(&term);
+        } else {
+            s = s.add(&term);
+        }
+    }
+    let (cm, sm) = (beta_m.cos(), beta_m.sin());
+    let cos = Bern::linear_combination(&[(&c, cm), (&s, -sm)]);
+    let sin = Bern::linear_combination(&[(&c, sm), (&s, cm)]);
+    Some((cos, sin, error))
+}
+
+/// The polynomial of degree d through `p` at d + 1 Chebyshev points of [0, 1] (ascending monomial
+/// coefficients), or `None` if the system is singular.
+fn interpolate(p: &Bern, d: usize) -> Option<Vec<f64>> {
+    let nodes: Vec<f64> = (0..=d)
+        .map(|k| 0.5 - 0.5 * (std::f64::consts::PI * (2 * k + 1) as f64 / (2 * d + 2) as f64).cos())
+        .collect();
+    let v = nalgebra::DMatrix::from_fn(d + 1, d + 1, |i, j| nodes[i].powi(j as i32));
+    let rhs = nalgebra::DVector::from_iterator(d + 1, nodes.iter().map(|&x| p.eval(x).0));
+    v.lu().solve(&rhs).map(|c| c.iter().copied().collect())
+}
+
+/// The bounds on |p − q|, |(p − q)'| and |(p − q)''| in t over the stretch of width `width`.
+fn difference(p: &Bern, q: &[f64], width: f64) -> [f64; 3] {
+    let diff = p.sub(&Bern::from_monomial(q));
+    let d1 = diff.derivative();
+    [
+        sup(&diff),
+        sup(&d1) / width,
+        sup(&d1.derivative()) / (width * width),
+    ]
+}
+
+/// The stretches of a turn by `angle` with `profile` over t ∈ [0, 1], each within the tolerances.
+/// A turn by 0 is one stretch with the exact polynomials 1 and 0.
+pub fn turn_stretches(angle: f64, profile: Profile) -> Vec<TurnStretch> {
+    if angle == 0.0 {
+        return vec![TurnStretch {
+            a: 0.0,
+            b: 1.0,
+            cos: vec![1.0],
+            sin: vec![0.0],
+            error: [0.0; 3],
+        }];
+    }
+    let mut out = Vec::new();
+    stretch(0.5 * angle, profile, 0.0, 1.0, 0, &mut out);
+    out
+}
+
+/// The approximation on [a, b], or on its halves.
+fn stretch(half: f64, profile: Profile, a: f64, b: f64, depth: u32, out: &mut Vec<TurnStretch>) {
+    let tol = tolerances();
+    if let Some((cos, sin, taylor)) = composed(half, profile, a, b) {
+        for d in 2..=MAX_DEGREE {
+            let (Some(qc), Some(qs)) = (interpolate(&cos, d), interpolate(&sin, d)) else {
+                continue;
+            };
+            let (ec, es) = (difference(&cos, &qc, b - a), difference(&sin, &qs, b - a));
+            let error: [f64; 3] = std::array::from_fn(|k| taylor[k] + ec[k].max(es[k]));
+            if (0..3).all(|k| error[k] <= tol[k]) || (d == MAX_DEGREE && depth >= MAX_DEPTH) {
+                out.push(TurnStretch {
+                    a,
+                    b,
+                    cos: qc,
+                    sin: qs,
+                    error,
+                });
+                return;
+            }
+        }
+    }
+    let m = 0.5 * (a + b);
+    stretch(half, profile, a, m, depth + 1, out);
+    stretch(half, profile, m, b, depth + 1, out);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn eval(c: &[f64], x: f64) -> f64 {
+        c.iter().rev().fold(0.0, |acc, &a| acc * x + a)
+    }
+
+    /// Dense sampling never finds an error beyond the certified bounds, the bounds are within the
+    /// tolerance, and the stretches tile [0, 1].
+    #[test]
+    fn stretches_follow_the_turn_within_their_bounds() {
+        for profile in [Profile::Quintic, Profile::Cubic] {
+            for angle in [1e-6, 0.3, 1.0, 2.0, std::f64::consts::PI] {
+                let stretches = turn_stretches(angle, profile);
+                assert_eq!(stretches[0].a, 0.0);
+                assert_eq!(stretches.last().unwrap().b, 1.0);
+                for w in stretches.windows(2) {
+                    assert_eq!(w[0].b, w[1].a);
+                }
+                for s in &stretches {
+                    assert!(
+                        s.error[0] <= TURN_TOLERANCE && s.error[1] <= 100.0 * TURN_TOLERANCE,
+                        "{profile:?} {angle}: {:?}",
+                        s.error
+                    );
+                    for i in 0..=200 {
+                        let lam = i as f64 / 200.0;
+                        let t = s.a + (s.b - s.a) * lam;
+                        let beta = 0.5 * angle * profile.at(t)[0];
+                        assert!(
+                            (eval(&s.cos, lam) - beta.cos()).abs() <= s.error[0].max(1e-16),
+                            "{profile:?} {angle} cos at {t}"
+                        );
+                        assert!(
+                            (eval(&s.sin, lam) - beta.sin()).abs() <= s.error[0].max(1e-16),
+                            "{profile:?} {angle} sin at {t}"
+                        );
+                    }
+                }
+                // bigger turns need more stretches, never absurdly many
+                assert!(
+                    stretches.len() <= 64,
+                    "{profile:?} {angle}: {} stretches",
+                    stretches.len()
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn no_turn_is_exact() {
+        let s = turn_stretches(0.0, Profile::Quintic);
+        assert_eq!(s.len(), 1);
+        assert_eq!(
+            (s[0].cos.clone(), s[0].sin.clone(), s[0].error),
+            (vec![1.0], vec![0.0], [0.0; 3])
+        );
+    }
+}

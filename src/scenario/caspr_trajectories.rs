@@ -1,0 +1,110 @@
+//! Import of a CASPR trajectories file (`<name>_trajectories.xml`) for a platform robot: each
+//! `quintic_spline_trajectory` and `cubic_spline_trajectory` of `<joint_trajectories>` becomes a
+//! timed trajectory through knots (format 4 `spline` and `knots`, [`crate::model::knots`]).
+//!
+//! A point's `q = "x y z a b g"` is read as the platform's `q_initial` is (position plus the
+//! parent location, R = Rx(a)·Ry(b)·Rz(g)); `q_dot` and `q_ddot` give the knot's velocity and
+//! acceleration (their translational parts: CASPR refuses angular rates at a spline's knots, and
+//! so does this import). Times are `relative` (each point's `time` counts from the previous point)
+//! or `absolute`, as the element's `time_definition` says; the first point is at 0. Other kinds
+//! of trajectory (linear splines, parabolic blends, operational-space trajectories) are skipped
+//! with a note.
+
+use serde_json::{json, Value};
+
+use super::caspr::{child, children, document, line, numbers, platform_origin, Import};
+use crate::error::{Error, Result};
+
+const FILE: &str = "trajectories";
+
+/// `import` with the trajectories of `trajectories_xml` added (the scenario becomes format 4 when
+/// any is). A multi-link model's trajectories are not read yet: a note says so.
+pub fn add_trajectories(import: Import, bodies_xml: &str, trajectories_xml: &str) -> Result<Import> {
+    let Import { json: text, mut notes } = import;
+    if super::caspr_links::is_multi_link(bodies_xml) {
+        notes.push("the trajectories file was not read: trajectories of multi-link robots are not imported yet".to_string());
+        return Ok(Import { json: text, notes });
+    }
+    let origin = platform_origin(bodies_xml)?;
+    let doc = document(FILE, trajectories_xml, "trajectories")?;
+    let mut value: Value = serde_json::from_str(&text).map_err(|e| Error::new("", format!("internal: {e}")))?;
+    let mut added = Vec::new();
+    for group in doc.root_element().children().filter(|c| c.is_element()) {
+        if group.tag_name().name() != "joint_trajectories" {
+            notes.push(format!("{}: <{}> skipped: only joint-space trajectories are imported", line(group), group.tag_name().name()));
+            continue;
+        }
+        for node in group.children().filter(|c| c.is_element()) {
+            let id = node.attribute("id").unwrap_or_default();
+            let spline = match node.tag_name().name() {
+                "quintic_spline_trajectory" => "quintic",
+                "cubic_spline_trajectory" => "cubic",
+                other => {
+                    notes.push(format!("{}: <{other} id=\"{id}\"> skipped: cablenav takes CASPR's quintic and cubic splines", line(node)));
+                    continue;
+                }
+            };
+            added.push(trajectory(node, id, spline, origin)?);
+        }
+    }
+    if added.is_empty() {
+        notes.push("the trajectories file holds no quintic or cubic spline trajectory".to_string());
+        return Ok(Import { json: text, notes });
+    }
+    value["format"] = json!(super::FORMAT_4);
+    if let Some(list) = value["trajectories"].as_array_mut() {
+        list.extend(added);
+    }
+    let json = serde_json::to_string_pretty(&value).map_err(|e| Error::new("", format!("internal: {e}")))?;
+    Ok(Import { json, notes })
+}
+
+/// One spline trajectory element as scenario JSON.
+fn trajectory(node: roxmltree::Node, id: &str, spline: &str, origin: [f64; 3]) -> Result<Value> {
+    if id.is_empty() {
+        return Err(Error::new(FILE, format!("{}: the trajectory has no id", line(node))));
+    }
+    let absolute = match node.attribute("time_definition").unwrap_or("relative") {
+        "relative" => false,
+        "absolute" => true,
+        other => return Err(Error::new(FILE, format!("{}: time_definition {other:?} is neither \"relative\" nor \"absolute\"", line(node)))),
+    };
+    let points = child(node, "points").ok_or_else(|| Error::new(FILE, format!("{}: trajectory \"{id}\" has no <points>", line(node))))?;
+    let mut knots = Vec::new();
+    let mut time = 0.0;
+    for (j, p) in children(points, "point").enumerate() {
+        if j > 0 {
+            let given: f64 = p
+                .attribute("time")
+                .and_then(|t| t.trim().parse().ok())
+                .filter(|t: &f64| t.is_finite())
+                .ok_or_else(|| Error::new(FILE, format!("{}: point {j} of \"{id}\" needs a finite time attribute", line(p))))?;
+            time = if absolute { given } else { time + given };
+        }
+        let read = |tag: &str| -> Result<[f64; 6]> {
+            match child(p, tag) {
+                Some(c) => numbers(FILE, c, &format!("<{tag}>"), c.text().unwrap_or_default()),
+                None if tag == "q" => Err(Error::new(FILE, format!("{}: point {j} of \"{id}\" has no <q>", line(p)))),
+                None => Ok([0.0; 6]),
+            }
+        };
+        let (q, qd, qdd) = (read("q")?, read("q_dot")?, read("q_ddot")?);
+        if qd[3..].iter().chain(&qdd[3..]).any(|v| *v != 0.0) {
+            return Err(Error::new(
+                FILE,
+                format!("{}: point {j} of \"{id}\" has an angular rate; CASPR's splines (and cablenav's) turn from rest to rest between knots", line(p)),
+            ));
+        }
+        let mut knot = json!({
+            "time": time,
+            "position": [origin[0] + q[0], origin[1] + q[1], origin[2] + q[2]],
+            "euler_xyz_deg": [q[3].to_degrees(), q[4].to_degrees(), q[5].to_degrees()],
+            "velocity": [qd[0], qd[1], qd[2]],
+        });
+        if spline == "quintic" {
+            knot["acceleration"] = json!([qdd[0], qdd[1], qdd[2]]);
+        }
+        knots.push(knot);
+    }
+    Ok(json!({"name": id, "spline": spline, "knots": knots}))
+}
