@@ -220,7 +220,7 @@ fn preset_poses_and_thesis_trajectories() {
     assert!((c[0][1] - (-20.5085 * t)).abs() < 1e-4 && (c[0][2] - 126.9301 * t * t).abs() < 1e-4);
     assert!((c[1][1] - 6.0766 * t).abs() < 1e-4);
     assert!((c[2][1] - 9.1149 * t).abs() < 1e-4 && (c[2][2] - 46.1564 * t * t).abs() < 1e-4);
-    let Orientation::Slerp(qs, qe) = &quad.orientation;
+    let Orientation::Slerp(qs, qe) = &quad.orientation else { panic!("a slerp") };
     assert_eq!(qs, &start.rotation);
     assert!(qs.coords.dot(&qe.coords) > 0.0);
 
@@ -443,7 +443,7 @@ fn slerp_endpoints_and_long_way_warning() {
     let s = ok_with(|v| {
         v["trajectories"][0]["orientation"] = json!({"slerp": [[1, 0, 0, 0], "q1"]});
     });
-    let Orientation::Slerp(qs, qe) = &s.trajectories[0].orientation;
+    let Orientation::Slerp(qs, qe) = &s.trajectories[0].orientation else { panic!("a slerp") };
     assert_eq!(qs.quaternion().w, 1.0);
     assert_eq!(qe, &s.pose("q1").expect("q1").rotation);
     // Negative dot product: kept as given, with a warning.
@@ -455,7 +455,7 @@ fn slerp_endpoints_and_long_way_warning() {
         "{:?}",
         s.warnings
     );
-    let Orientation::Slerp(qs, qe) = &s.trajectories[0].orientation;
+    let Orientation::Slerp(qs, qe) = &s.trajectories[0].orientation else { panic!("a slerp") };
     assert!(qs.coords.dot(&qe.coords) < 0.0, "sign kept");
     // Same quaternion at both ends: constant orientation, fine.
     let s = ok_with(|v| v["trajectories"][0]["orientation"] = json!({"slerp": ["q1", "q1"]}));
@@ -1183,4 +1183,60 @@ fn obstacle_colours_are_kept_and_checked() {
         "obstacles[0].color",
         "invalid type",
     );
+}
+
+/// Timed spline trajectories through knots (format 4): what they accept, and every bad knot named.
+#[test]
+fn knots_are_validated() {
+    let knots = json!([
+        {"time": 0, "pose": "q1"},
+        {"time": 1.5, "position": [1.8, 2.0, 2.0], "tilt_torsion": [10, 20, 0], "velocity": [0.1, 0, 0.2], "acceleration": [0, 0, -0.1]},
+        {"time": 3, "pose": "q2"}
+    ]);
+    let spline = |knots: Value| {
+        move |v: &mut Value| {
+            v["format"] = json!("cablenav-scenario/4");
+            v["trajectories"][0] = json!({"name": "k", "spline": "quintic", "knots": knots});
+        }
+    };
+    let s = ok_with(spline(knots.clone()));
+    let t = &s.trajectories[0];
+    assert_eq!((t.duration, t.piece_count()), (Some(3.0), 2));
+    assert_eq!(t.piece_span(1), [0.5, 1.0]);
+    assert!((t.pose_at(0.5).position - nalgebra::Vector3::new(1.8, 2.0, 2.0)).norm() < 1e-12);
+    // written back, it reads the same
+    let mut v = base();
+    v["format"] = json!("cablenav-scenario/4");
+    v["trajectories"][0] = cablenav::scenario::trajectory_json(t);
+    let again = parse_value(&v).unwrap();
+    assert!((again.trajectories[0].pose_at(0.3).position - t.pose_at(0.3).position).norm() < 1e-12);
+    assert!(again.trajectories[0].pose_at(0.7).rotation.angle_to(&t.pose_at(0.7).rotation) < 1e-12);
+    // the bad inputs
+    expect(|v| v["trajectories"][0] = json!({"name": "k", "knots": [{"time": 0, "pose": "q1"}, {"time": 1, "pose": "q2"}]}), "trajectories[0].knots", "cablenav-scenario/4");
+    let with = |edit: fn(&mut Value)| {
+        let knots = knots.clone();
+        move |v: &mut Value| {
+            spline(knots)(v);
+            edit(&mut v["trajectories"][0]);
+        }
+    };
+    expect(with(|t| t["knots"][2]["time"] = json!(1.0)), "trajectories[0].knots[2].time", "out of order");
+    expect(with(|t| t["knots"][1]["time"] = json!("soon")), "trajectories[0].knots[1].time", "");
+    expect(with(|t| t["knots"][0]["time"] = json!(0.5)), "trajectories[0].knots[0].time", "time 0");
+    expect(with(|t| t["knots"] = json!([{"time": 0, "pose": "q1"}])), "trajectories[0].knots", "2 to");
+    expect(with(|t| t["spline"] = json!("linear")), "trajectories[0].spline", "quintic");
+    expect(with(|t| t["duration"] = json!(2)), "trajectories[0].duration", "from them");
+    expect(with(|t| t["translation"] = json!({"line": [[0, 0, 0], [1, 1, 1]]})), "trajectories[0].knots", "not both");
+    expect(with(|t| t["knots"][0]["pose"] = json!("nowhere")), "trajectories[0].knots[0].pose", "no pose named");
+    expect(with(|t| t["knots"][0]["position"] = json!([0, 0, 0])), "trajectories[0].knots[0].pose", "not both");
+    expect(with(|t| drop(t["knots"][1].as_object_mut().map(|o| o.remove("position")))), "trajectories[0].knots[1].position", "pose name or a position");
+    expect(with(|t| drop(t["knots"][1].as_object_mut().map(|o| o.remove("tilt_torsion")))), "trajectories[0].knots[1]", "exactly one of");
+    expect(with(|t| t["knots"][1]["velocity"] = json!([0, 0])), "trajectories[0].knots[1].velocity", "expected 3");
+    expect(with(|t| t["knots"][1]["spin"] = json!(1)), "trajectories[0].knots[1].spin", "unknown field");
+    expect(with(|t| t["spline"] = json!("cubic")), "trajectories[0].knots[1].acceleration", "cubic");
+    let cubic = ok_with(with(|t| {
+        t["spline"] = json!("cubic");
+        drop(t["knots"][1].as_object_mut().map(|o| o.remove("acceleration")));
+    }));
+    assert_eq!(cubic.trajectories[0].knots.as_ref().unwrap().profile, cablenav::model::Profile::Cubic);
 }
