@@ -130,15 +130,12 @@ fn import(dir: &str, Model { out, name, trajectories }: Model, read: Read, write
     let files = cablenav::scenario::caspr::model_files(&list(dir)?).map_err(|e| cablenav::Error::new(dir, e.reason))?;
     let path = |f: &str| format!("{}/{f}", dir.trim_end_matches('/'));
     let (bodies, cables) = (read(&path(&files.bodies))?, read(&path(&files.cables))?);
-    let mut imported = cablenav::scenario::caspr::to_json(name.unwrap_or(&files.name), &bodies, &cables)?;
     let trajectories = match (trajectories, &files.trajectories) {
         (Some(file), _) => Some(read(file)?),
         (None, Some(own)) => Some(read(&path(own))?),
         (None, None) => None,
     };
-    if let Some(xml) = trajectories {
-        imported = cablenav::scenario::caspr_trajectories::add_trajectories(imported, &bodies, &xml)?;
-    }
+    let imported = cablenav::scenario::caspr::model_to_json(name.unwrap_or(&files.name), &bodies, &cables, trajectories.as_deref())?;
     let scenario = Scenario::from_json(&imported.json)?;
     let Some(out) = out else { return Ok(imported.json) };
     write(out, imported.json.as_bytes())?;

@@ -103,6 +103,12 @@ export interface SliceMap {
   pose_components: Record<string, number | null>;
 }
 
+/** What `importCaspr` returns: the scenario (as `cablenav import` writes it) and notes on the conversion. */
+export interface CasprImport {
+  scenario: Record<string, unknown>;
+  notes: string[];
+}
+
 /** What `plan` returns (`cablenav plan --json`); `seconds` is null in WebAssembly. */
 export interface PlanReport {
   query: string;
@@ -238,6 +244,18 @@ pub fn verify(#[wasm_bindgen(unchecked_param_type = "ScenarioInput")] scenario: 
 #[wasm_bindgen(unchecked_return_type = "PoseReport")]
 pub fn check(#[wasm_bindgen(unchecked_param_type = "ScenarioInput")] scenario: JsValue, pose: String) -> Result<JsValue, JsValue> {
     call(scenario, Ok(Request::Check { pose }))
+}
+
+/// A CASPR model as a scenario: the texts of its bodies and cables files and, optionally, of its
+/// trajectories file (timed quintic and cubic splines), as `cablenav import` converts them.
+#[wasm_bindgen(js_name = importCaspr, unchecked_return_type = "CasprImport")]
+pub fn import_caspr(name: String, bodies: String, cables: String, trajectories: Option<String>) -> Result<JsValue, JsValue> {
+    let imported = cablenav::scenario::caspr::model_to_json(&name, &bodies, &cables, trajectories.as_deref()).map_err(scenario_error)?;
+    let out = js_sys::Object::new();
+    js_sys::Reflect::set(&out, &"scenario".into(), &js_sys::JSON::parse(&imported.json)?)?;
+    let notes: js_sys::Array = imported.notes.iter().map(|n| JsValue::from_str(n)).collect();
+    js_sys::Reflect::set(&out, &"notes".into(), &notes)?;
+    Ok(out.into())
 }
 
 /// `check` where a trajectory (default: the scenario's first) is at t ∈ [0, 1], moving as it

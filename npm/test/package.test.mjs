@@ -210,3 +210,17 @@ test('the TypeScript declarations type every function with its report', () => {
   }
   assert.equal(cablenav.version(), JSON.parse(readFileSync(join(installed, 'package.json'), 'utf8')).version);
 });
+
+test('importCaspr converts a CASPR model as `cablenav import` does, timed splines included', () => {
+  const model = join(root, '..', 'shared', 'models', 'caspr', 'CoGiRo');
+  const read = (f) => readFileSync(join(model, `CoGiRo_${f}.xml`), 'utf8');
+  const written = join(scratch, 'cogiro.json');
+  execFileSync(cliPath, ['import', model, '--out', written]);
+  const { scenario, notes } = cablenav.importCaspr('CoGiRo', read('bodies'), read('cables'), read('trajectories'));
+  close(scenario, JSON.parse(readFileSync(written, 'utf8')));
+  assert.ok(Array.isArray(notes));
+  close(cablenav.verify(scenario, 'long_stable'), cli('verify', written, '--trajectory', 'long_stable'));
+  const untimed = cablenav.importCaspr('CoGiRo', read('bodies'), read('cables'));
+  assert.deepEqual(untimed.scenario.trajectories.map((t) => t.name), ['hold initial']);
+  assert.throws(() => cablenav.importCaspr('x', read('cables'), read('cables')), (e) => e.name === 'ScenarioError' && e.field === 'bodies');
+});

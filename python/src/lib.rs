@@ -303,6 +303,39 @@ fn plan(
     call(py, scenario, request)
 }
 
+/// A CASPR model directory as a scenario: its `<name>_bodies.xml` and `_cables.xml` and its
+/// `_trajectories.xml` if there (or the trajectories file `trajectories`), as `cablenav import`
+/// converts them. Returns `{"scenario": dict, "notes": [str]}`; `name` defaults to the model's.
+#[pyfunction]
+#[pyo3(signature = (model_dir, *, trajectories=None, name=None))]
+fn import_caspr(py: Python<'_>, model_dir: &Bound<'_, PyAny>, trajectories: Option<&Bound<'_, PyAny>>, name: Option<String>) -> PyResult<Py<PyAny>> {
+    let fspath = |p: &Bound<'_, PyAny>| -> PyResult<String> { py.import("os")?.call_method1("fspath", (p,))?.extract() };
+    let dir = fspath(model_dir)?;
+    let trajectories = trajectories.map(fspath).transpose()?;
+    let imported = py
+        .detach(|| -> cablenav::Result<cablenav::scenario::caspr::Import> {
+            let read = |p: &str| std::fs::read_to_string(p).map_err(|e| Error::new(p, format!("cannot read: {e}")));
+            let names: Vec<String> = std::fs::read_dir(&dir)
+                .map_err(|e| Error::new(dir.as_str(), format!("cannot list: {e}")))?
+                .filter_map(|e| e.ok().and_then(|e| e.file_name().into_string().ok()))
+                .collect();
+            let files = cablenav::scenario::caspr::model_files(&names).map_err(|e| Error::new(dir.as_str(), e.reason))?;
+            let path = |f: &str| std::path::Path::new(&dir).join(f).to_string_lossy().into_owned();
+            let traj_text = match (&trajectories, &files.trajectories) {
+                (Some(file), _) => Some(read(file)?),
+                (None, Some(own)) => Some(read(&path(own))?),
+                (None, None) => None,
+            };
+            cablenav::scenario::caspr::model_to_json(name.as_deref().unwrap_or(&files.name), &read(&path(&files.bodies))?, &read(&path(&files.cables))?, traj_text.as_deref())
+        })
+        .map_err(|e| scenario_error(py, e, None))?;
+    let json = py.import("json")?;
+    let out = PyDict::new(py);
+    out.set_item("scenario", json.call_method1("loads", (imported.json,))?)?;
+    out.set_item("notes", imported.notes)?;
+    Ok(out.into_any().unbind())
+}
+
 /// The native module; `cablenav/__init__.py` re-exports it.
 #[pymodule]
 fn _cablenav(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -316,5 +349,6 @@ fn _cablenav(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(slice, m)?)?;
     m.add_function(wrap_pyfunction!(lattice, m)?)?;
     m.add_function(wrap_pyfunction!(plan, m)?)?;
+    m.add_function(wrap_pyfunction!(import_caspr, m)?)?;
     Ok(())
 }

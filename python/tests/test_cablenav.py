@@ -3,6 +3,8 @@
 import ast
 import inspect
 import json
+import os
+import subprocess
 import threading
 from pathlib import Path
 
@@ -205,3 +207,25 @@ def test_every_function_has_a_docstring_and_a_stub():
         assert name in stubbed, name
         assert len(getattr(cablenav, name).__doc__ or "") > 40, name
     assert (Path(cablenav.__file__).parent / "py.typed").exists()
+
+
+def test_import_caspr_equals_the_cli(cli, tmp_path):
+    model = ROOT.parent / "shared" / "models" / "caspr" / "CoGiRo"
+    imported = cablenav.import_caspr(model)
+    written = tmp_path / "cogiro.json"
+    exe = os.environ.get("CABLENAV") or str(ROOT / "target" / "debug" / "cablenav")
+    subprocess.run([exe, "import", str(model), "--out", str(written)], check=True, capture_output=True)
+    assert imported["scenario"] == json.loads(written.read_text())
+    assert [t["name"] for t in imported["scenario"]["trajectories"]][1:] == ["general_1", "general_2", "general_3", "long_stable"]
+    report = cablenav.verify(imported["scenario"], "long_stable")
+    assert report == cli("verify", written, "--trajectory", "long_stable")
+    assert report["seconds"]["duration"] == 18.0 and 0.99 < report["seconds"]["min_time_scale"] < 1.0
+    # another trajectories file of the same model, and a directory without a model
+    only_first = tmp_path / "first.xml"
+    text = (model / "CoGiRo_trajectories.xml").read_text()
+    only_first.write_text(text[: text.index('<quintic_spline_trajectory id="general_2"')] + "</joint_trajectories></trajectories>")
+    names = [t["name"] for t in cablenav.import_caspr(model, trajectories=only_first, name="c")["scenario"]["trajectories"]]
+    assert names == ["hold initial", "general_1"]
+    with pytest.raises(cablenav.ScenarioError) as e:
+        cablenav.import_caspr(tmp_path)
+    assert e.value.field == str(tmp_path) and "bodies" in e.value.reason

@@ -85,6 +85,18 @@ pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import>
     Ok(Import { json, notes })
 }
 
+/// A whole CASPR model as scenario JSON called `name`: its bodies and cables ([`to_json`]) and,
+/// when given, the timed trajectories of its trajectories file
+/// ([`super::caspr_trajectories::add_trajectories`]). The CLI's `import` and the Python and npm
+/// packages call this.
+pub fn model_to_json(name: &str, bodies_xml: &str, cables_xml: &str, trajectories_xml: Option<&str>) -> Result<Import> {
+    let imported = to_json(name, bodies_xml, cables_xml)?;
+    match trajectories_xml {
+        Some(xml) => super::caspr_trajectories::add_trajectories(imported, bodies_xml, xml),
+        None => Ok(imported),
+    }
+}
+
 /// The files of a CASPR model directory: its bodies and cables files, and the model's name.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct ModelFiles {
