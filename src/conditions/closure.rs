@@ -275,30 +275,75 @@ impl WrenchFeasibility {
         }
     }
 
-    /// Bisection over [a, b] ⊆ [0, 1]: pieces of `out` as (end, feasible?).
-    /// `loads` holds each facet's d_0 at the motion's timing.
-    #[allow(clippy::too_many_arguments)]
-    fn bisect(&self, all: &FacetPolys, loads: &[Bern], live: &[usize], (a, b): (f64, f64), tol: f64, budget: &mut usize, out: &mut Vec<(f64, Truth)>) {
-        let restrict = |p: &Bern| p.restrict(a, b);
-        let polys: Vec<LocalFacet> = live
-            .iter()
-            .map(|&i| {
-                let f = &all.facets[i];
-                (f.others.iter().map(|(k, d)| (*k, restrict(d))).collect(), restrict(&loads[i]), f.reach2.as_ref().map(restrict))
-            })
-            .collect();
-        let len2: Vec<Bern> = all.len2.iter().map(restrict).collect();
-        let (truth, open) = self.decide(&polys, &len2, &restrict(&all.weight), all.scale.as_ref().map(restrict).as_ref());
+    /// Bisection over [a, b] ⊆ [0, 1], the facets in `local` (and the squared lengths, weight and
+    /// scale) expanded on it: pieces of `out` as (end, feasible?). Each half is expanded from
+    /// this piece by one de Casteljau split at ½ (not again from [0, 1]), and only the facets
+    /// not yet certainly satisfied go on.
+    fn bisect(&self, local: Piece, (a, b): (f64, f64), tol: f64, budget: &mut usize, out: &mut Vec<(f64, Truth)>) {
+        let (truth, open) = self.decide(&local.facets, &local.len2, &local.weight, local.scale.as_ref());
         // a quarter of the tolerance: two undecided neighbours merged stay narrower than it
         if truth != Truth::Unknown || b - a <= 0.25 * tol || *budget == 0 {
             out.push((b, truth));
             return;
         }
         *budget -= 1;
-        let live: Vec<usize> = open.into_iter().map(|pos| live[pos]).collect();
+        let (left, right) = local.halves(&open);
         let mid = 0.5 * (a + b);
-        self.bisect(all, loads, &live, (a, mid), tol, budget, out);
-        self.bisect(all, loads, &live, (mid, b), tol, budget, out);
+        self.bisect(left, (a, mid), tol, budget, out);
+        self.bisect(right, (mid, b), tol, budget, out);
+    }
+}
+
+/// What the bisection looks at on one piece: the live facets, the squared cable lengths, the
+/// weight and the loads' scale, expanded there.
+struct Piece {
+    facets: Vec<LocalFacet>,
+    len2: Vec<Bern>,
+    weight: Bern,
+    scale: Option<Bern>,
+}
+
+impl Piece {
+    /// The facets `live` of `all` (with the loads `loads`) on all of [0, 1].
+    fn whole(all: &FacetPolys, loads: &[Bern], live: &[usize]) -> Piece {
+        let facets = live.iter().map(|&i| (all.facets[i].others.clone(), loads[i].clone(), all.facets[i].reach2.clone())).collect();
+        Piece { facets, len2: all.len2.clone(), weight: all.weight.clone(), scale: all.scale.clone() }
+    }
+
+    /// The two halves, keeping the facets at positions `open`.
+    fn halves(&self, open: &[usize]) -> (Piece, Piece) {
+        let split_all = |ps: &[Bern]| -> (Vec<Bern>, Vec<Bern>) { ps.iter().map(|p| p.split(0.5)).unzip() };
+        let mut facets = (Vec::with_capacity(open.len()), Vec::with_capacity(open.len()));
+        for &pos in open {
+            let (others, load, reach2) = &self.facets[pos];
+            let (ol, or): (Vec<(usize, Bern)>, Vec<(usize, Bern)>) = others
+                .iter()
+                .map(|(k, d)| {
+                    let (l, r) = d.split(0.5);
+                    ((*k, l), (*k, r))
+                })
+                .unzip();
+            let (ll, lr) = load.split(0.5);
+            let (rl, rr) = match reach2 {
+                Some(p) => {
+                    let (l, r) = p.split(0.5);
+                    (Some(l), Some(r))
+                }
+                None => (None, None),
+            };
+            facets.0.push((ol, ll, rl));
+            facets.1.push((or, lr, rr));
+        }
+        let (len_l, len_r) = split_all(&self.len2);
+        let (w_l, w_r) = self.weight.split(0.5);
+        let (s_l, s_r) = match &self.scale {
+            Some(q) => {
+                let (l, r) = q.split(0.5);
+                (Some(l), Some(r))
+            }
+            None => (None, None),
+        };
+        (Piece { facets: facets.0, len2: len_l, weight: w_l, scale: s_l }, Piece { facets: facets.1, len2: len_r, weight: w_r, scale: s_r })
     }
 }
 
@@ -322,7 +367,7 @@ impl Condition for WrenchFeasibility {
         let mut budget = MAX_NODES;
         let inv_t2 = inverse_square(sweep.duration);
         let loads: Vec<Bern> = polys.facets.iter().map(|f| with_inertia(&f.load.0, f.load.1.as_ref(), inv_t2)).collect();
-        self.bisect(&polys, &loads, &live, (0.0, 1.0), tol, &mut budget, &mut pieces);
+        self.bisect(Piece::whole(&polys, &loads, &live), (0.0, 1.0), tol, &mut budget, &mut pieces);
         Partition::from_pieces(pieces).not()
     }
 
