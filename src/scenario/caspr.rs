@@ -133,13 +133,14 @@ pub fn import(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Scenario
     Scenario::from_json(&to_json(name, bodies_xml, cables_xml)?.json)
 }
 
-/// Which of the two files an XML text is, by its root element: `"bodies"`, `"cables"`, or
-/// `None` (not XML, or another CASPR file such as trajectories).
+/// Which CASPR file an XML text is, by its root element: `"bodies"`, `"cables"`,
+/// `"trajectories"`, or `None` (not XML, or another CASPR file such as operational spaces).
 pub fn kind(xml: &str) -> Option<&'static str> {
     let doc = parse_xml(xml).ok()?;
     match doc.root_element().tag_name().name() {
         "bodies_system" => Some("bodies"),
         "cables" => Some("cables"),
+        "trajectories" => Some("trajectories"),
         _ => None,
     }
 }

@@ -1,5 +1,5 @@
 //! Sharing: the link to this scenario, the embed snippet, JSON export and import by file, and
-//! CASPR model import (bodies + cables XML files).
+//! CASPR model import (bodies + cables XML files, and its trajectories file if chosen too).
 
 use leptos::prelude::*;
 use wasm_bindgen::JsCast;
@@ -79,7 +79,7 @@ pub fn SharePanel(source: RwSignal<String>, origin: RwSignal<&'static str>, sett
                     <input type="file" accept=".json,application/json" data-testid="import-json" on:change=import_json />
                 </label>
                 <label class="file">
-                    "Import CASPR model (choose its bodies and cables XML files together) "
+                    "Import CASPR model (choose its bodies and cables XML files together, and its trajectories XML for its timed splines) "
                     <input type="file" accept=".xml,text/xml" multiple data-testid="import-caspr" on:change=import_caspr />
                 </label>
             </div>
