@@ -175,8 +175,8 @@ LOAD_AFTER=$(cut -d' ' -f1-3 /proc/loadavg)
 grep -h '^BENCH ' "$TMP/before.txt" "$TMP/native.txt" "$TMP/wasm.txt" > "$TMP/all.txt"
 n_native=$(grep '^BENCH native ' "$TMP/all.txt" | grep -vc ' lattice/' || true)
 n_wasm=$(grep '^BENCH wasm ' "$TMP/all.txt" | grep -vc ' lattice/' || true)
-if [ "$n_native" -ne 24 ] || [ "$n_wasm" -ne 24 ]; then
-  say "expected 24 native and 24 wasm results, got $n_native and $n_wasm:"
+if [ "$n_native" -ne 28 ] || [ "$n_wasm" -ne 28 ]; then
+  say "expected 28 native and 28 wasm results, got $n_native and $n_wasm:"
   cat "$TMP/native.txt" "$TMP/wasm.txt" >&2
   exit 1
 fi
@@ -204,7 +204,7 @@ function yes(ok) { return ok ? "**met**" : "**missed**" }
 $2 == "before" { med[$2, $3] = $4; best[$2, $3] = $5; summ_before[$3] = $8; next }
 { med[$2, $3] = $4; best[$2, $3] = $5; calls[$2, $3] = $6; samples[$2, $3] = $7; summ[$3] = $8 }
 END {
-  n = split("tree/quadratic/exact tree/quadratic/pointwise-0.01 tree/quadratic/pointwise-0.001 cdpr7/quadratic/exact cdpr7/quadratic/pointwise-0.001 box/linear/exact box/linear/pointwise-0.001 box/ray-fig310-x/exact crane/pose-wrench crane/q1-q2/exact crane/q1-q2/pointwise-0.001 crane/tilt/exact crane/tilt/pointwise-0.001 crane/slice-400 timed/quick-drop/exact timed/quick-drop/pointwise-0.01 timed/quick-drop/pointwise-0.001 timed/swing/exact timed/swing/pointwise-0.01 timed/swing/pointwise-0.001", cases, " ")
+  n = split("tree/quadratic/exact tree/quadratic/pointwise-0.01 tree/quadratic/pointwise-0.001 cdpr7/quadratic/exact cdpr7/quadratic/pointwise-0.001 box/linear/exact box/linear/pointwise-0.001 box/ray-fig310-x/exact crane/pose-wrench crane/q1-q2/exact crane/q1-q2/pointwise-0.001 crane/tilt/exact crane/tilt/pointwise-0.001 crane/slice-400 timed/quick-drop/exact timed/quick-drop/pointwise-0.01 timed/quick-drop/pointwise-0.001 timed/swing/exact timed/swing/pointwise-0.01 timed/swing/pointwise-0.001 cogiro/general-1/exact-sections cogiro/general-1/exact cogiro/general-1/pointwise-0.01 cogiro/general-1/pointwise-0.001", cases, " ")
   what["tree/quadratic/exact"] = "cdpr7-tree.json, \"quadratic\": exact (`verify_trajectory`)"
   what["tree/quadratic/pointwise-0.01"] = "cdpr7-tree.json, \"quadratic\": point-wise, Δt = 0.01"
   what["tree/quadratic/pointwise-0.001"] = "cdpr7-tree.json, \"quadratic\": point-wise, Δt = 0.001"
@@ -225,6 +225,10 @@ END {
   what["timed/swing/exact"] = "robocrane-timed.json, \"swing\" (0.8 s): exact, with both ends of the time scales that hold"
   what["timed/swing/pointwise-0.01"] = "the same: point-wise, Δt = 0.01 (no time scale)"
   what["timed/swing/pointwise-0.001"] = "the same: point-wise, Δt = 0.001 (no time scale)"
+  what["cogiro/general-1/exact-sections"] = "CoGiRo from CASPR's files (8 cables, 91 kg), quintic spline \"general_1\" (4 s, turns enclosed): exact at its own timing (`verify_sections`)"
+  what["cogiro/general-1/exact"] = "the same: exact, with the least time scale"
+  what["cogiro/general-1/pointwise-0.01"] = "the same: point-wise, Δt = 0.01 (no time scale)"
+  what["cogiro/general-1/pointwise-0.001"] = "the same: point-wise, Δt = 0.001 (no time scale)"
 
   print "# Benchmarks"
   print ""
@@ -297,7 +301,7 @@ END {
   print ""
   print "| trajectory | Δt | native | wasm |"
   print "|---|---:|---:|---:|"
-  nr = split("tree/quadratic/pointwise-0.01:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.01;tree/quadratic/pointwise-0.001:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.001;cdpr7/quadratic/pointwise-0.001:cdpr7/quadratic/exact:cdpr7 \"quadratic\":0.001;box/linear/pointwise-0.001:box/linear/exact:cdpr7-box \"linear\":0.001;crane/q1-q2/pointwise-0.001:crane/q1-q2/exact:robocrane \"slerp q1-q2\" (wrench):0.001;crane/tilt/pointwise-0.001:crane/tilt/exact:robocrane tilt past the bound (wrench):0.001;timed/quick-drop/pointwise-0.01:timed/quick-drop/exact:robocrane-timed \"quick drop\" (dynamics, exact with the time scale):0.01;timed/swing/pointwise-0.01:timed/swing/exact:robocrane-timed \"swing\" (dynamics, exact with the time scales):0.01", rows, ";")
+  nr = split("tree/quadratic/pointwise-0.01:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.01;tree/quadratic/pointwise-0.001:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.001;cdpr7/quadratic/pointwise-0.001:cdpr7/quadratic/exact:cdpr7 \"quadratic\":0.001;box/linear/pointwise-0.001:box/linear/exact:cdpr7-box \"linear\":0.001;crane/q1-q2/pointwise-0.001:crane/q1-q2/exact:robocrane \"slerp q1-q2\" (wrench):0.001;crane/tilt/pointwise-0.001:crane/tilt/exact:robocrane tilt past the bound (wrench):0.001;timed/quick-drop/pointwise-0.01:timed/quick-drop/exact:robocrane-timed \"quick drop\" (dynamics, exact with the time scale):0.01;timed/swing/pointwise-0.01:timed/swing/exact:robocrane-timed \"swing\" (dynamics, exact with the time scales):0.01;cogiro/general-1/pointwise-0.01:cogiro/general-1/exact-sections:CoGiRo \"general_1\" (dynamics, 8 cables, exact at its timing):0.01;cogiro/general-1/pointwise-0.001:cogiro/general-1/exact-sections:CoGiRo \"general_1\" (dynamics, 8 cables, exact at its timing):0.001", rows, ";")
   for (i = 1; i <= nr; i++) {
     split(rows[i], f, ":")
     printf "| %s | %s | %s | %s |\n", f[3], f[4], ratio(med["native", f[1]], med["native", f[2]]), ratio(med["wasm", f[1]], med["wasm", f[2]])
@@ -344,6 +348,9 @@ END {
   printf "| per-pose wrench test (6 cables), native: ≤ 2 µs | %s median (best %s) | %s |\n", us(pp), us(best["native", "crane/pose-wrench"]), yes(pp <= 2)
   printf "| 400×400 slice, wasm: ≤ 0.5 s | %s median (native %s) | %s |\n", us(sl), us(med["native", "crane/slice-400"]), yes(sl <= 500000)
   printf "| exact wrench verification vs point-wise at Δt = 0.001 (Robocrane tilt) | point-wise / exact = %s native, %s wasm | %s |\n", ratio(med["native", "crane/tilt/pointwise-0.001"], med["native", "crane/tilt/exact"]), ratio(med["wasm", "crane/tilt/pointwise-0.001"], med["wasm", "crane/tilt/exact"]), "(a comparison, no target)"
+  cg = med["native", "cogiro/general-1/exact-sections"]
+  printf "| exact dynamic verification of CoGiRo \"general_1\" (8 cables), native: ≤ 1 ms | %s median at its timing (%s with the time-scale search) | %s%s |\n", us(cg), us(med["native", "cogiro/general-1/exact"]), yes(cg <= 1000), (cg > 1000 ? sprintf(" (%.0f× the target)", cg / 1000) : "")
+  printf "| exact wrench verification ≥ point-wise at Δt = 0.01 (CoGiRo \"general_1\") | point-wise / exact = %s native, %s wasm | %s |\n", ratio(med["native", "cogiro/general-1/pointwise-0.01"], cg), ratio(med["wasm", "cogiro/general-1/pointwise-0.01"], med["wasm", "cogiro/general-1/exact-sections"]), yes(med["native", "cogiro/general-1/pointwise-0.01"] >= cg)
   printf "| planner ≥ 50× faster than the paper on q1→q2 (2-D slice, 20 s) | %.0f× native | %s |\n", q12, yes(q12 >= 50)
   printf "| planner ≥ 50× faster than the paper on q3→q4 in its coordinates (2-D slice, 280 s) | %.0f× native | %s |\n", q34, yes(q34 >= 50)
   print ""

@@ -9,7 +9,7 @@
 use cablenav::model::Coord;
 use cablenav::plan::{plan, PlanOutcome, PlanParams, Planner};
 use cablenav::query::wrench::tension_ranges;
-use cablenav::verify::{ray, slice, slice::default_range, verify_pointwise, verify_trajectory};
+use cablenav::verify::{ray, slice, slice::default_range, verify_pointwise, verify_sections, verify_trajectory};
 use cablenav::Scenario;
 
 const CDPR7: &str = include_str!("../../static/scenarios/cdpr7.json");
@@ -17,6 +17,11 @@ const CDPR7_TREE: &str = include_str!("../../static/scenarios/cdpr7-tree.json");
 const CDPR7_BOX: &str = include_str!("../../static/scenarios/cdpr7-box.json");
 const ROBOCRANE: &str = include_str!("../../static/scenarios/robocrane.json");
 const ROBOCRANE_TIMED: &str = include_str!("../../static/scenarios/robocrane-timed.json");
+const COGIRO: [&str; 3] = [
+    include_str!("../../../shared/models/caspr/CoGiRo/CoGiRo_bodies.xml"),
+    include_str!("../../../shared/models/caspr/CoGiRo/CoGiRo_cables.xml"),
+    include_str!("../../../shared/models/caspr/CoGiRo/CoGiRo_trajectories.xml"),
+];
 
 /// The Robocrane preset plus a slerp from q1 tilting on to θ = 1.4, past the tension bound (the
 /// trajectory of `tests/wrench_exact.rs`).
@@ -147,6 +152,17 @@ pub fn run_all(platform: &str, filter: &str, now: &dyn Fn() -> f64, out: &mut dy
         record(measure(now, filter, &format!("timed/{id}/pointwise-0.01"), &mut || pointwise(&timed, &t, 0.01)), out);
         record(measure(now, filter, &format!("timed/{id}/pointwise-0.001"), &mut || pointwise(&timed, &t, 0.001)), out);
     }
+    // CoGiRo (8 cables, 91 kg) imported from CASPR's files: its quintic spline general_1, whose
+    // turns are enclosed by polynomials (docs/dynamics.md), exact at its own timing, exact with the
+    // search of the least time scale, and point-wise.
+    let cogiro = cablenav::scenario::caspr::model_to_json("CoGiRo", COGIRO[0], COGIRO[1], Some(COGIRO[2])).expect("CoGiRo imports");
+    let cogiro = parse(&cogiro.json);
+    let general = traj(&cogiro, "general_1");
+    let sections = |s: &Scenario, t: &cablenav::model::Trajectory| summary_of(&verify_sections(s, t).expect("exact verification"));
+    record(measure(now, filter, "cogiro/general-1/exact-sections", &mut || sections(&cogiro, &general)), out);
+    record(measure(now, filter, "cogiro/general-1/exact", &mut || exact(&cogiro, &general)), out);
+    record(measure(now, filter, "cogiro/general-1/pointwise-0.01", &mut || pointwise(&cogiro, &general, 0.01)), out);
+    record(measure(now, filter, "cogiro/general-1/pointwise-0.001", &mut || pointwise(&cogiro, &general, 0.001)), out);
     record(
         measure(now, filter, "crane/slice-400", &mut || {
             let range = [default_range(Coord::Phi).expect("angle"), default_range(Coord::Theta).expect("angle")];

@@ -220,8 +220,20 @@ pub fn verify_trajectory(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport
     verify_along(s, Along::Trajectory(traj))
 }
 
+/// [`verify_trajectory`] without the search of the least time scale: the sections at the
+/// trajectory's own timing (in t and, if timed, in seconds), the `seconds` object's scale fields
+/// left empty with a note saying so — what a live update needs.
+pub fn verify_sections(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport> {
+    verify_along_with(s, Along::Trajectory(traj), false)
+}
+
 /// Exact verification along a trajectory or a multi-link robot's path ([`verify_trajectory`]).
 pub fn verify_along(s: &Scenario, along: Along) -> Result<VerifyReport> {
+    verify_along_with(s, along, true)
+}
+
+/// [`verify_along`], with the time-scale search or (`scale` false) without.
+fn verify_along_with(s: &Scenario, along: Along, scale: bool) -> Result<VerifyReport> {
     let conditions = for_scenario(s);
     let motions = along.motions(s);
     let (overall, per) = violation_pieces(&conditions, s, &motions, BOUNDARY_TOL, along.duration());
@@ -230,7 +242,7 @@ pub fn verify_along(s: &Scenario, along: Along) -> Result<VerifyReport> {
     if !sec.uncertain.is_empty() {
         warnings.push(format!("{} section(s) could not be certified either way; see \"uncertain\"", sec.uncertain.len()));
     }
-    let seconds = timing::seconds(s, along, &sec, true);
+    let seconds = timing::seconds(s, along, &sec, scale);
     Ok(trajectory_report(along, sec, "exact", None, warnings, seconds))
 }
 

@@ -86,7 +86,7 @@ pub(super) fn seconds(s: &Scenario, along: Along, sec: &Sections, scale: bool) -
         min_time_scale_bracket: None,
         min_duration: None,
         max_time_scale: None,
-        min_time_scale_note: "computed by exact verification only".to_string(),
+        min_time_scale_note: "not searched here: the least time scale comes from the exact verification with its search (cablenav verify)".to_string(),
         infeasible_at_rest: Vec::new(),
     };
     if scale {
