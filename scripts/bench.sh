@@ -225,7 +225,7 @@ END {
   what["timed/swing/exact"] = "robocrane-timed.json, \"swing\" (0.8 s): exact, with both ends of the time scales that hold"
   what["timed/swing/pointwise-0.01"] = "the same: point-wise, Δt = 0.01 (no time scale)"
   what["timed/swing/pointwise-0.001"] = "the same: point-wise, Δt = 0.001 (no time scale)"
-  what["cogiro/general-1/exact-sections"] = "CoGiRo from CASPR's files (8 cables, 91 kg), quintic spline \"general_1\" (4 s, turns enclosed): exact at its own timing (`verify_sections`)"
+  what["cogiro/general-1/exact-sections"] = "CoGiRo from the CASPR files (8 cables, 91 kg), quintic spline \"general_1\" (4 s, turns enclosed): exact at its own timing (`verify_sections`)"
   what["cogiro/general-1/exact"] = "the same: exact, with the least time scale"
   what["cogiro/general-1/pointwise-0.01"] = "the same: point-wise, Δt = 0.01 (no time scale)"
   what["cogiro/general-1/pointwise-0.001"] = "the same: point-wise, Δt = 0.001 (no time scale)"
