@@ -8,6 +8,10 @@
 // - a trajectory's duration typed in the editor: the format becomes 4, the sections and the
 //   timing follow (against the CLI on the page's own scenario text); a duration of 0 stays in
 //   its field with a message and is not written;
+// - the tension envelope of a timed trajectory: its axis in seconds, its tensions with the
+//   platform's inertia (the CLI's `envelope`);
+// - "Make it a timed spline": a trajectory becomes a quintic spline through knots (its start and
+//   end poses, at rest), edited knot by knot, verified as the CLI verifies the page's text;
 // - "Give the platform a mass" on the 7-cable preset: the mass section appears, the format becomes
 //   4, and a mass typed there changes what the page verifies as the CLI does.
 // Screenshots in tests/browser/artifacts/. Ends with "N passed, M failed"; exits 1 on failure.
@@ -85,6 +89,26 @@ await test('the timed Robocrane: strip, sections in seconds and the shortest dur
   return out.join('; ');
 });
 
+await test('the tension envelope of a timed trajectory: axis in seconds, inertia included as `cablenav envelope` has it', async () => {
+  const names = JSON.parse(await source()).trajectories.map((t) => t.name);
+  const swing = names.indexOf('swing');
+  await page.selectOption('select[data-testid="trajectory"]', String(swing));
+  await page.waitForSelector(`section[data-testid="result"][data-trajectory-index="${swing}"]`, { timeout: TIMEOUT });
+  await openTab(page, 'tension');
+  await page.waitForFunction(() => (document.querySelector('[data-testid="tension-axis"]')?.textContent ?? '').startsWith('time'), null, { timeout: TIMEOUT });
+  const ticks = await page.$$eval('[data-testid="tension-tick"]', (ts) => ts.slice(0, 3).map((t) => t.textContent));
+  if (ticks.join('|') !== '0 s|0.4 s|0.8 s') throw new Error(`ticks ${ticks}`);
+  const file = join(scratch, 'page.json');
+  writeFileSync(file, await source());
+  const env = cliJson(root, ['envelope', file, '--trajectory', 'swing', '--samples', '200']);
+  const violated = env.tension_min.some((m, k) => m && m.some((v, i) => v < env.bounds[i][0])) || env.tension_max.some((m) => m && m.some((v, i) => v > env.bounds[i][1]));
+  const panels = await page.$$eval('[data-testid="tension-panel"]', (ps) => ps.map((p) => p.dataset.violated === 'true'));
+  if (panels.length !== 6 || panels.some(Boolean) !== violated) throw new Error(`panels ${panels} vs CLI violated ${violated}`);
+  await page.screenshot({ path: join(artifacts, 'timing-tension.png'), fullPage: true });
+  await openTab(page, 'intervals');
+  return `ticks ${ticks.join(', ')}; bounds left ${violated ? 'somewhere' : 'nowhere'}, as the CLI's envelope says`;
+});
+
 await test('a duration typed in the editor: the format becomes 4 and the page follows the CLI; 0 is refused', async () => {
   // the first trajectory, timed 2 s in the preset: 1 s instead is faster than its 1.796 s minimum
   await page.selectOption('select[data-testid="trajectory"]', '0');
@@ -104,9 +128,40 @@ await test('a duration typed in the editor: the format becomes 4 and the page fo
   return `1 s: ${r.sections} sections like the CLI, 0 kept in the field ("${msg}")`;
 });
 
+await test('"Make it a timed spline": knots from the trajectory\'s ends, edited, verified as the CLI does', async () => {
+  const names = JSON.parse(await source()).trajectories.map((t) => t.name);
+  const swing = names.indexOf('swing');
+  await page.selectOption('select[data-testid="trajectory"]', String(swing));
+  await open('Trajectories');
+  await page.locator('[data-testid="to-spline"]').nth(swing).click();
+  await page.waitForFunction((k) => !!JSON.parse(document.querySelector('textarea[data-testid="source"]').value).trajectories[k].knots, swing, { timeout: TIMEOUT });
+  await page.waitForSelector('[data-testid="spline-item"] [data-testid="knot"]', { timeout: TIMEOUT });
+  let doc = JSON.parse(await source());
+  if (doc.trajectories[swing].knots.length !== 2 || doc.trajectories[swing].knots[1].time !== 0.8) throw new Error(`knots ${JSON.stringify(doc.trajectories[swing].knots)}`);
+  await page.waitForSelector(`[data-testid="timing"][data-trajectory="swing"][data-duration="0.8"]`, { timeout: TIMEOUT });
+  const first = await sameAsCli(await cliOfPage('swing'), 'the swing as a spline');
+  // a third knot, two seconds in, and the second knot moved 10 cm up
+  await page.click('[data-testid="add-knot"]');
+  await page.waitForFunction((k) => JSON.parse(document.querySelector('textarea[data-testid="source"]').value).trajectories[k].knots.length === 3, swing, { timeout: TIMEOUT });
+  await typeInto(field(`trajectories[${swing}].knots[2].time`), '2');
+  const z = doc.trajectories[swing].knots[1].position[2];
+  await typeInto(field(`trajectories[${swing}].knots[1].position[2]`), String(z + 0.1));
+  await page.waitForFunction(([k, z]) => {
+    const t = JSON.parse(document.querySelector('textarea[data-testid="source"]').value).trajectories[k];
+    return t.knots[2].time === 2 && Math.abs(t.knots[1].position[2] - z) < 1e-12;
+  }, [swing, z + 0.1], { timeout: TIMEOUT });
+  await page.waitForSelector(`[data-testid="timing"][data-trajectory="swing"][data-duration="2.0"]`, { timeout: TIMEOUT });
+  const second = await sameAsCli(await cliOfPage('swing'), 'three knots');
+  await page.screenshot({ path: join(artifacts, 'timing-spline.png'), fullPage: true });
+  problems.assertNone();
+  return `two knots: ${first.sections} section(s), shortest ${first.minDuration?.toFixed(4)} s; three: ${second.sections}, shortest ${second.minDuration?.toFixed(4)} s`;
+});
+
 await test('"Give the platform a mass" on the 7-cable preset: format 4, and a typed mass verified as the CLI does', async () => {
   await page.goto(`${base}/#preset=cdpr7`, { waitUntil: 'load' });
   await page.waitForSelector('section[data-testid="result"][data-origin="cdpr7"] svg[data-testid="strip"]', { timeout: TIMEOUT });
+  // the trajectory picked on the previous page stays picked: compare the first one
+  await page.selectOption('select[data-testid="trajectory"]', '0');
   await open('Mass and winches');
   await page.click('[data-testid="add-dynamics"]');
   await page.waitForSelector('[data-testid="dynamics"]', { timeout: TIMEOUT });

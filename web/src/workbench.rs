@@ -75,6 +75,14 @@ impl PathRef<'_> {
         }
     }
 
+    /// The scenario trajectory followed (its name and duration), if the path is one.
+    fn timed(&self) -> Option<(String, Option<f64>)> {
+        match self {
+            PathRef::Trajectory(t) => Some((t.name.clone(), t.duration)),
+            PathRef::Planned(_) => None,
+        }
+    }
+
     fn param(&self) -> &'static str {
         match self {
             PathRef::Trajectory(_) => "t",
@@ -330,7 +338,8 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
     // Worker: a new path sends a job that supersedes the previous one; they follow a drag at its
     // end (the strip and the view follow every move)
     let profile_data = RwSignal::new(None::<Shared<(Result<ClearanceProfile, String>, String)>>);
-    let envelope = RwSignal::new(None::<Shared<(Result<TensionEnvelope, String>, &'static str)>>);
+    // the envelope, the x axis' name and (a timed trajectory) its duration
+    let envelope = RwSignal::new(None::<Shared<(Result<TensionEnvelope, String>, &'static str, Option<f64>)>>);
     let plots_worker: StoredValue<host::Resident, LocalStorage> = StoredValue::new_local(host::Resident::new());
     Effect::new(move |_| {
         if drag_active.get() {
@@ -340,14 +349,14 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
             plots_worker.with_value(host::Resident::forget);
             let e = "not drawn for multi-link robots yet: their clearances are certified in the strip and the intervals (docs/multilink.md)".to_string();
             profile_data.set(Some(Shared::new((Err(e.clone()), String::new()))));
-            envelope.set(Some(Shared::new((Err("a multi-link robot has no wrench set: its wrench condition is joint-space wrench closure, in the strip".to_string()), "t"))));
+            envelope.set(Some(Shared::new((Err("a multi-link robot has no wrench set: its wrench condition is joint-space wrench closure, in the strip".to_string()), "t", None))));
             return;
         }
         let request = followed(parsed, planned, follow, trajectory, |_, path| {
             let samples = path.samples(PLOT_SAMPLES).iter().map(|(t, p)| (*t, pose_to_wire(p))).collect();
-            Some((path.name(), path.param(), samples))
+            Some((path.name(), path.param(), samples, path.timed()))
         });
-        let Some((name, param, samples)) = request else {
+        let Some((name, param, samples, timed)) = request else {
             plots_worker.with_value(host::Resident::forget);
             profile_data.set(None);
             envelope.set(None);
@@ -355,6 +364,10 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         };
         let Some(json) = source.try_get_untracked() else { return };
         let label = format!("{name}; x: {param}");
+        let (trajectory, duration) = match timed {
+            Some((n, d)) => (Some(n), d),
+            None => (None, None),
+        };
         let on_reply = move |reply: Reply| {
             let (clearances, tension) = match reply {
                 Reply::Progress { .. } => return,
@@ -366,13 +379,13 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
                 }
             };
             profile_data.set(Some(Shared::new((clearances, label.clone()))));
-            envelope.set(Some(Shared::new((tension, param))));
+            envelope.set(Some(Shared::new((tension, param, duration))));
         };
-        match plots_worker.with_value(|w| w.send(&Job::Profiles { scenario: json, name: name.clone(), samples }, on_reply)) {
+        match plots_worker.with_value(|w| w.send(&Job::Profiles { scenario: json, name: name.clone(), samples, trajectory }, on_reply)) {
             Ok(()) => {}
             Err(e) => {
                 profile_data.set(Some(Shared::new((Err(e.clone()), format!("{name}; x: {param}")))));
-                envelope.set(Some(Shared::new((Err(e), param))));
+                envelope.set(Some(Shared::new((Err(e), param, duration))));
             }
         }
     });
@@ -669,6 +682,7 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
                 <TensionPlot
                     envelope=Signal::derive(move || envelope.get().map(|e| e.0.0.clone()))
                     param=Signal::derive(move || envelope.get().map_or("t", |e| e.0.1))
+                    duration=Signal::derive(move || envelope.get().and_then(|e| e.0.2))
                 />
             </TabPanel>
             <TabPanel of=Tab::Slice open=tab wide=true>

@@ -3,14 +3,15 @@
 //! [`path`] (paths into the tree and the core's error field they correspond to), [`numbers`]
 //! (reading and writing numbers), and the per-part edits [`robot`] (cables, with per-cable
 //! arrays kept in step), [`links`] (a multi-link robot's links, joints, configurations and paths),
-//! [`obstacles`], [`poses`], [`trajectories`], [`wrench`], [`timing`] (mass, winches, durations:
-//! format 4) and [`caspr`]
+//! [`obstacles`], [`poses`], [`trajectories`], [`knots`] (timed splines), [`wrench`], [`timing`]
+//! (mass, winches, durations: format 4) and [`caspr`]
 //! (templates for new items, conversions done by the core), and [`handles`] (the points the 3-D
 //! view drags). Everything is re-exported here, so
 //! callers write `edit_logic::add_cable`.
 
 pub mod caspr;
 pub mod handles;
+pub mod knots;
 pub mod links;
 pub mod numbers;
 pub mod obstacles;
@@ -23,6 +24,7 @@ pub mod wrench;
 
 pub use caspr::*;
 pub use handles::*;
+pub use knots::*;
 pub use links::*;
 pub use numbers::*;
 pub use obstacles::*;

@@ -6,6 +6,7 @@
 
 pub mod configs;
 pub mod fields;
+pub mod knots;
 pub mod links;
 pub mod obstacles;
 pub mod poses;

@@ -17,11 +17,25 @@ pub fn TrajectoryEditor(ed: Ed) -> impl IntoView {
              parameters agree at the ends). Via points sit at evenly spaced τ."
         </p>
         <For each=move || 0..count.get() key=|i| *i let:i>
-            <TrajectoryItem ed i />
+            <TrajectorySlot ed i />
         </For>
         <button type="button" data-testid="add-trajectory" on:click=move |_| ed.edit(|d| { el::add_trajectory(d); })>
             "Add a trajectory"
         </button>
+    }
+}
+
+/// Trajectory `i` in its form's editor: the thesis' form or a timed spline (re-drawn only when
+/// the form changes, not on every edit, so that typing keeps its field).
+#[component]
+fn TrajectorySlot(ed: Ed, i: usize) -> impl IntoView {
+    let spline = Memo::new(move |_| ed.read(|d| el::is_spline(d, &Path::of(&["trajectories"]).i(i))).unwrap_or(false));
+    move || {
+        if spline.get() {
+            view! { <super::knots::KnotsItem ed i /> }.into_any()
+        } else {
+            view! { <TrajectoryItem ed i /> }.into_any()
+        }
     }
 }
 
@@ -81,6 +95,12 @@ fn TrajectoryItem(ed: Ed, i: usize) -> impl IntoView {
             <FieldMessage local=RwSignal::new(None) core=translation_error />
             <SlerpEnds ed path=path.clone() />
             <FieldMessage local=RwSignal::new(None) core=item_error />
+            <button type="button" data-testid="to-spline" on:click={
+                let path = path.clone();
+                move |_| ed.edit(|d| { el::to_spline(d, &path, i); })
+            }>
+                "Make it a timed spline (start to end, at rest)"
+            </button>
             <button type="button" class="remove" on:click=move |_| ed.edit(|d| { el::remove(d, &remove_path); })>
                 {format!("Delete trajectory {}", i + 1)}
             </button>

@@ -71,9 +71,18 @@ pub fn panels(env: &TensionEnvelope) -> Vec<Panel> {
         .collect()
 }
 
-/// The envelope plot, or why there is none; `param` names the x axis.
+/// The x axis' tick label at t: t, or for a timed trajectory of `duration` the time it is reached.
+pub fn x_label(t: f64, duration: Option<f64>) -> String {
+    match duration {
+        Some(d) => format!("{} s", fmt_num(t * d)),
+        None => fmt_num(t),
+    }
+}
+
+/// The envelope plot, or why there is none; `param` names the x axis, which is in seconds along a
+/// timed trajectory (`duration`; its tensions then include the platform's inertia).
 #[component]
-pub fn TensionPlot(envelope: Signal<Option<Result<TensionEnvelope, String>>>, param: Signal<&'static str>) -> impl IntoView {
+pub fn TensionPlot(envelope: Signal<Option<Result<TensionEnvelope, String>>>, param: Signal<&'static str>, duration: Signal<Option<f64>>) -> impl IntoView {
     move || match envelope.get() {
         None => view! { <p class="empty">"No path to plot."</p> }.into_any(),
         Some(Err(e)) => view! { <p class="empty" data-testid="tension-none">{format!("No tension envelope: {e}")}</p> }.into_any(),
@@ -99,7 +108,7 @@ pub fn TensionPlot(envelope: Signal<Option<Result<TensionEnvelope, String>>>, pa
                                         <text x=LEFT - 4.0 y=y + 4.0 font-size="10" text-anchor="end" fill="#5b6670">{l.clone()}</text>
                                     }).collect_view()}
                                     {[0.0, 0.5, 1.0].map(|t| view! {
-                                        <text x=x.at(t) y=PANEL_H - 6.0 font-size="10" text-anchor="middle" fill="#5b6670">{fmt_num(t)}</text>
+                                        <text x=x.at(t) y=PANEL_H - 6.0 font-size="10" text-anchor="middle" fill="#5b6670" data-testid="tension-tick">{x_label(t, duration.get())}</text>
                                     })}
                                     <path d=p.band.clone() fill="#3b6fd8" fill-opacity="0.25" stroke="none" />
                                     <path d=p.min_line.clone() fill="none" stroke="#3b6fd8" stroke-width="1.2" />
@@ -113,7 +122,12 @@ pub fn TensionPlot(envelope: Signal<Option<Result<TensionEnvelope, String>>>, pa
                             }
                         })
                         .collect_view()}
-                    <text x=w / 2.0 y=h - 2.0 font-size="11" text-anchor="middle" fill="#5b6670">{param.get()}</text>
+                    <text x=w / 2.0 y=h - 2.0 font-size="11" text-anchor="middle" fill="#5b6670" data-testid="tension-axis">
+                        {match duration.get() {
+                            Some(d) => format!("time (s; {} = t·{} s, with the platform's inertia)", param.get(), fmt_num(d)),
+                            None => param.get().to_string(),
+                        }}
+                    </text>
                 </Chart>
             }
             .into_any()

@@ -130,7 +130,7 @@ pub fn run(job: Job, report: &mut dyn FnMut(Reply), now: fn() -> f64) {
         Job::LatticeRays { scenario, pose, axes, ranges, steps, rays } => {
             lattice_rays(&scenario, &pose, &axes, ranges, steps, rays, report, now)
         }
-        Job::Profiles { scenario, name, samples } => profiles(&scenario, &name, &samples),
+        Job::Profiles { scenario, name, samples, trajectory } => profiles(&scenario, &name, &samples, trajectory.as_deref()),
         Job::Verify { scenario, index } => Ok(verify(&scenario, index, now)),
     };
     report(last.unwrap_or_else(|error| Reply::Failed { error }));
@@ -194,12 +194,21 @@ pub fn planned_trajectory(json: &str, t: &cablenav::model::Trajectory) -> Result
     Ok(PlannedTrajectory { scenario: text, name, report })
 }
 
-fn profiles(json: &str, name: &str, samples: &[(f64, [u64; 7])]) -> Result<Reply, String> {
+fn profiles(json: &str, name: &str, samples: &[(f64, [u64; 7])], trajectory: Option<&str>) -> Result<Reply, String> {
     use cablenav::verify::profile::{clearances_at, tension_at};
     let s = scenario(json)?;
     let samples: Vec<(f64, Pose)> = samples.iter().map(|(t, p)| (*t, super::protocol::pose_from_wire(p))).collect();
     let clearances = clearances_at(&s, &samples).map(Into::into).map_err(|e| e.to_string());
-    let tension = tension_at(&s, name, &samples).map(Into::into).map_err(|e| e.to_string());
+    // a timed trajectory's tensions with its inertia, as `cablenav envelope` gives them
+    let timed = trajectory.and_then(|n| s.trajectory(Some(n)).ok()).filter(|t| t.duration.is_some());
+    let tension = match timed {
+        Some(traj) => cablenav::verify::tension_envelope(&s, traj, samples.len().saturating_sub(1)).map(|mut e| {
+            e.trajectory = name.to_string();
+            e
+        }),
+        None => tension_at(&s, name, &samples),
+    };
+    let tension = tension.map(Into::into).map_err(|e| e.to_string());
     Ok(Reply::Profiles { clearances, tension })
 }
 
@@ -404,7 +413,7 @@ mod tests {
         let samples: Vec<(f64, Pose)> = (0..=8).map(|k| k as f64 / 8.0).map(|u| (u, t.pose_at(u))).collect();
         let mut replies = vec![];
         let wire = samples.iter().map(|(u, p)| (*u, pose_to_wire(p))).collect();
-        run(Job::Profiles { scenario: json.into(), name: t.name.clone(), samples: wire }, &mut |r| replies.push(r), clock);
+        run(Job::Profiles { scenario: json.into(), name: t.name.clone(), samples: wire, trajectory: Some(t.name.clone()) }, &mut |r| replies.push(r), clock);
         // through JSON, as the page gets it
         let text = super::super::protocol::encode_reply(1, replies.last().unwrap());
         let Some(Ok(envelope)) = super::super::protocol::decode_reply(&text) else { panic!("{text}") };
@@ -425,8 +434,21 @@ mod tests {
         // no wrench set: the core's reason
         let mut replies = vec![];
         let plain = PRESETS[find("cdpr7-tree").unwrap()].json;
-        run(Job::Profiles { scenario: plain.into(), name: "x".into(), samples: vec![] }, &mut |r| replies.push(r), clock);
+        run(Job::Profiles { scenario: plain.into(), name: "x".into(), samples: vec![], trajectory: None }, &mut |r| replies.push(r), clock);
         assert!(matches!(replies.last(), Some(Reply::Profiles { clearances: Ok(_), tension: Err(error) }) if error.contains("wrench")), "{replies:?}");
+        // a timed trajectory with a mass: the inertia is in the tensions, as `cablenav envelope` has them
+        let json = PRESETS[find("robocrane-timed").unwrap()].json;
+        let s = Scenario::from_json(json).unwrap();
+        let t = s.trajectory(Some("swing")).unwrap();
+        let wire = (0..=8).map(|k| k as f64 / 8.0).map(|u| (u, pose_to_wire(&t.pose_at(u)))).collect();
+        let mut replies = vec![];
+        run(Job::Profiles { scenario: json.into(), name: "swing".into(), samples: wire, trajectory: Some("swing".into()) }, &mut |r| replies.push(r), clock);
+        let Some(Reply::Profiles { tension: Ok(tension), .. }) = replies.last() else { panic!("{replies:?}") };
+        let got = cablenav::report::TensionEnvelope::from(tension.clone());
+        let core = cablenav::verify::tension_envelope(&s, t, 8).unwrap();
+        assert_eq!(got.tension_max, core.tension_max);
+        let at_rest = cablenav::verify::profile::tension_at(&s, "swing", &(0..=8).map(|k| k as f64 / 8.0).map(|u| (u, t.pose_at(u))).collect::<Vec<_>>()).unwrap();
+        assert_ne!(got.tension_max, at_rest.tension_max, "the swing's inertia changes its tensions");
     }
 
     #[test]

@@ -39,8 +39,10 @@ pub enum Job {
     /// and joins them with [`super::jobs::join_lattice`]).
     LatticeRays { scenario: String, pose: String, axes: Vec<String>, ranges: Vec<[f64; 2]>, steps: usize, rays: [usize; 2] },
     /// The plots along the path `name` at the samples `(t, pose)` (see [`pose_to_wire`]): its
-    /// clearances and its tension envelope.
-    Profiles { scenario: String, name: String, samples: Vec<(f64, [u64; 7])> },
+    /// clearances and its tension envelope. `trajectory` names the scenario's trajectory the
+    /// samples follow, if they do: when it is timed, its tensions include the platform's inertia
+    /// (the samples must then be at t = k/n, as `cablenav envelope` takes them).
+    Profiles { scenario: String, name: String, samples: Vec<(f64, [u64; 7])>, trajectory: Option<String> },
     /// The exact verification of trajectory `index` (clamped to the scenario's) of the scenario
     /// (a drag's live verification, [`crate::live`]).
     Verify { scenario: String, index: usize },
