@@ -21,10 +21,12 @@ const CDPR7_CABLES: &str = model!("CDPR_7c_6Dof/CDPR_7c_6Dof_cables.xml");
 const NIST_BODIES: &str = model!("NIST_ROBOCRANE/NIST_RoboCrane_bodies.xml");
 const NIST_CABLES: &str = model!("NIST_ROBOCRANE/NIST_RoboCrane_cables.xml");
 const ARM_BODIES: &str = model!("BMArm/BMArm_bodies.xml");
+const ARM_CABLES: &str = model!("BMArm/BMArm_cables.xml");
 const EXAMPLE_BODIES: &str = model!("Example_spatial/Example_spatial_bodies.xml");
 const EXAMPLE_CABLES: &str = model!("Example_spatial/Example_spatial_cables.xml");
 const COGIRO_BODIES: &str = model!("CoGiRo/CoGiRo_bodies.xml");
 const COGIRO_CABLES: &str = model!("CoGiRo/CoGiRo_cables.xml");
+const COGIRO_TRAJECTORIES: &str = model!("CoGiRo/CoGiRo_trajectories.xml");
 const CDPR7_PRESET: &str = include_str!("../static/scenarios/cdpr7.json");
 
 fn v(x: f64, y: f64, z: f64) -> Vector3<f64> {
@@ -115,7 +117,8 @@ fn per_cable_tensions_when_only_some_cables_give_them() {
 fn files_are_recognised_by_their_root() {
     assert_eq!(kind(NIST_BODIES), Some("bodies"));
     assert_eq!(kind(NIST_CABLES), Some("cables"));
-    assert_eq!(kind("<trajectories/>"), None);
+    assert_eq!(kind("<trajectories/>"), Some("trajectories"));
+    assert_eq!(kind("<operational_spaces/>"), None);
     assert_eq!(kind("not xml"), None);
 }
 
@@ -209,4 +212,56 @@ fn a_model_directory_names_its_files() {
     assert_eq!(model_files(&names(&["a_cables.xml"])).unwrap_err().field, "model");
     assert!(model_files(&names(&["a_bodies.xml", "b_bodies.xml"])).unwrap_err().reason.contains("exactly one"));
     assert!(model_files(&names(&["a_bodies.xml", "b_cables.xml"])).unwrap_err().reason.contains("a_cables.xml"));
+}
+
+/// CASPR's trajectories file: its splines become timed trajectories through knots (relative or
+/// absolute times, the parent location added), other kinds are skipped with a note, and an
+/// angular rate at a knot or an unknown time definition is refused naming the file and line.
+#[test]
+fn trajectories_import_as_timed_splines() {
+    use cablenav::scenario::caspr::model_to_json;
+    let out = model_to_json("CoGiRo", COGIRO_BODIES, COGIRO_CABLES, Some(COGIRO_TRAJECTORIES)).unwrap();
+    assert!(out.notes.is_empty(), "{:?}", out.notes);
+    let s = Scenario::from_json(&out.json).unwrap();
+    let names: Vec<&str> = s.trajectories.iter().map(|t| t.name.as_str()).collect();
+    assert_eq!(names, ["hold initial", "general_1", "general_2", "general_3", "long_stable"]);
+    let long = s.trajectory(Some("long_stable")).unwrap();
+    assert_eq!((long.duration, long.piece_count()), (Some(18.0), 9));
+    let knots = long.knots.as_ref().unwrap();
+    assert_eq!(knots.points[3].pose.position, Vector3::new(0.0, 2.0, 0.0));
+    let first = s.trajectory(Some("general_1")).unwrap().knots.clone().unwrap();
+    let got = first.points[0].pose.rotation.to_rotation_matrix();
+    let rx = nalgebra::Rotation3::from_axis_angle(&Vector3::x_axis(), -0.5);
+    let ry = nalgebra::Rotation3::from_axis_angle(&Vector3::y_axis(), 0.2);
+    let rz = nalgebra::Rotation3::from_axis_angle(&Vector3::z_axis(), 0.3);
+    assert!((got.matrix() - (rx * ry * rz).matrix()).norm() < 1e-12, "R = Rx(a)·Ry(b)·Rz(g)");
+    // absolute times, a skipped kind, an operational trajectory
+    let xml = COGIRO_TRAJECTORIES
+        .replacen("time_definition=\"relative\"", "time_definition=\"absolute\"", 1)
+        .replacen("<point time=\"2.0\">", "<point time=\"1.5\">", 1)
+        .replacen("<quintic_spline_trajectory id=\"general_2\"", "<linear_spline_trajectory id=\"general_2\"", 1)
+        .replacen("</quintic_spline_trajectory>\n        <quintic_spline_trajectory id=\"general_3\"", "</linear_spline_trajectory>\n        <quintic_spline_trajectory id=\"general_3\"", 1)
+        .replace("</trajectories>", "<operational_trajectories/></trajectories>");
+    let out = model_to_json("c", COGIRO_BODIES, COGIRO_CABLES, Some(&xml)).unwrap();
+    assert!(out.notes.iter().any(|n| n.contains("linear_spline_trajectory id=\"general_2\"") && n.contains("skipped")), "{:?}", out.notes);
+    assert!(out.notes.iter().any(|n| n.contains("operational_trajectories")), "{:?}", out.notes);
+    let s = Scenario::from_json(&out.json).unwrap();
+    let g1 = s.trajectory(Some("general_1")).unwrap();
+    // absolute: knots at 0, 1.5 and 2.0 s
+    assert_eq!(g1.knots.as_ref().unwrap().points.iter().map(|k| k.time).collect::<Vec<_>>(), [0.0, 1.5, 2.0]);
+    // refusals
+    let spin = COGIRO_TRAJECTORIES.replacen("<q_dot>0.0 0.0 0.0 0.0 0.0 0.0</q_dot>", "<q_dot>0.0 0.0 0.0 0.1 0.0 0.0</q_dot>", 1);
+    let e = model_to_json("c", COGIRO_BODIES, COGIRO_CABLES, Some(&spin)).unwrap_err();
+    assert!(e.field == "trajectories" && e.reason.contains("line 7") && e.reason.contains("angular rate"), "{e}");
+    let odd = COGIRO_TRAJECTORIES.replacen("time_definition=\"relative\"", "time_definition=\"soon\"", 1);
+    let e = model_to_json("c", COGIRO_BODIES, COGIRO_CABLES, Some(&odd)).unwrap_err();
+    assert!(e.field == "trajectories" && e.reason.contains("soon"), "{e}");
+    let e = model_to_json("c", COGIRO_BODIES, COGIRO_CABLES, Some("<bodies_system/>")).unwrap_err();
+    assert!(e.field == "trajectories" && e.reason.contains("<trajectories>"), "{e}");
+    let bad_time = COGIRO_TRAJECTORIES.replacen("<point time=\"2.0\">", "<point time=\"later\">", 1);
+    let e = model_to_json("c", COGIRO_BODIES, COGIRO_CABLES, Some(&bad_time)).unwrap_err();
+    assert!(e.reason.contains("finite time"), "{e}");
+    // a multi-link model's trajectories are not read, with a note
+    let out = model_to_json("arm", ARM_BODIES, ARM_CABLES, Some(COGIRO_TRAJECTORIES)).unwrap();
+    assert!(out.notes.iter().any(|n| n.contains("multi-link")), "{:?}", out.notes);
 }
