@@ -292,16 +292,24 @@ fn long_commands_draw_bars_on_a_terminal_and_print_the_same_report_when_piped() 
     }
 }
 
-/// `cablenav import MODEL_DIR`: the bodies and cables files found in the directory, the scenario
-/// written to --out (a summary printed) or printed; a directory without a model is an error
-/// naming it.
+/// `cablenav import MODEL_DIR`: the bodies, cables and trajectories files found in the directory
+/// (or another trajectories file, `--trajectories`), the scenario written to --out (a summary
+/// printed) or printed; a directory without a model is an error naming it.
 #[test]
 fn import_reads_a_model_directory() {
     let bodies = include_str!("../../../shared/models/caspr/CoGiRo/CoGiRo_bodies.xml");
     let cables = include_str!("../../../shared/models/caspr/CoGiRo/CoGiRo_cables.xml");
+    let trajectories = include_str!("../../../shared/models/caspr/CoGiRo/CoGiRo_trajectories.xml");
+    let only_long = trajectories.replacen("<quintic_spline_trajectory id=\"general_1\"", "<linear_spline_trajectory id=\"general_1\"", 1).replacen(
+        "</quintic_spline_trajectory>\n        <quintic_spline_trajectory id=\"general_2\"",
+        "</linear_spline_trajectory>\n        <quintic_spline_trajectory id=\"general_2\"",
+        1,
+    );
     let read = |p: &str| match p {
         "m/CoGiRo_bodies.xml" => Ok(bodies.to_string()),
         "m/CoGiRo_cables.xml" => Ok(cables.to_string()),
+        "m/CoGiRo_trajectories.xml" => Ok(trajectories.to_string()),
+        "other.xml" => Ok(only_long.clone()),
         _ => Err(cablenav::Error::new(p, "no such file")),
     };
     let list = |p: &str| if p == "m" || p == "m/" { Ok(vec!["CoGiRo_trajectories.xml".to_string(), "CoGiRo_cables.xml".into(), "CoGiRo_bodies.xml".into()]) } else { Ok(vec![]) };
@@ -311,13 +319,15 @@ fn import_reads_a_model_directory() {
         Ok(())
     };
     let printed = run("import m/ --out cogiro.json".split(' '), &read, &write, &list, &mut |_| {}).unwrap();
-    assert!(printed.contains("wrote cogiro.json: CoGiRo (8 cables, mass 91.058 kg)"), "{printed}");
+    assert!(printed.contains("wrote cogiro.json: CoGiRo (8 cables, mass 91.058 kg, timed trajectories general_1, general_2, general_3, long_stable)"), "{printed}");
     let (path, text) = written.borrow()[0].clone();
     assert_eq!(path, "cogiro.json");
     let s = cablenav::Scenario::from_json(&text).unwrap();
     assert_eq!((s.name.as_str(), s.robot.dynamics.as_ref().unwrap().mass), ("CoGiRo", 91.058));
     let printed = run("import m --name crane".split(' '), &read, &write, &list, &mut |_| {}).unwrap();
     assert_eq!(cablenav::Scenario::from_json(&printed).unwrap().name, "crane");
+    let printed = run("import m --trajectories other.xml --out o.json".split(' '), &read, &write, &list, &mut |_| {}).unwrap();
+    assert!(printed.contains("timed trajectories general_2, general_3, long_stable)") && printed.contains("note: ") && printed.contains("linear_spline_trajectory"), "{printed}");
     let e = run("import empty".split(' '), &read, &write, &list, &mut |_| {}).unwrap_err();
     assert_eq!(e.field(), "empty");
 }
