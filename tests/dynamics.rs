@@ -587,6 +587,11 @@ fn cogiro_spline_trajectories_match_the_reference() {
             assert!(before != Some(enters) && after != Some(!enters), "{id}: boundary t = {} not matched: {before:?} → {after:?}", b.t);
         }
         let sec = r.seconds.as_ref().expect("timed");
+        if id == "general_2" {
+            // it fails at rest around its middle knot, where it stops at every timing: no scale
+            assert!(sec.min_time_scale.is_none() && sec.min_time_scale_note.contains("knot 1"), "{sec:?}");
+            assert!(case.at(0.5, duration * 1e3, &mut rng).verdict == Some(false) && case.at(0.5, duration * 1e-3, &mut rng).verdict == Some(false));
+        }
         if let (Some(k), Some([lo, _])) = (sec.min_time_scale, sec.min_time_scale_bracket) {
             let holds = |k: f64, rng: &mut Rng| (0..samples).all(|i| case.at((i as f64 + 0.5) / samples as f64, duration * k, rng).verdict != Some(false));
             assert!(holds(k * (1.0 + 1e-6), &mut rng), "{id}: a sample fails at the certified scale {k}");

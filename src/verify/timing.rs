@@ -7,7 +7,9 @@
 //! form an interval of u (holding 0 where the robot holds at rest), and so do the scales that
 //! work along the whole trajectory. Its ends — the least k, and the largest where the rest fails —
 //! are therefore found by bisection in k, each step an exact verification of those conditions
-//! (certified feasible, certainly violated, or undecided).
+//! (certified feasible, certainly violated, or undecided). A spline that stops at a knot (zero
+//! velocity and acceleration) stops there at every timing: if it fails at rest around that knot,
+//! no scale helps, and the answer is "none" without a search.
 
 use super::sections::{sections, Sections};
 use super::{one_link, pieces_on, sweeps, Along, BOUNDARY_TOL};
@@ -111,6 +113,15 @@ fn min_time_scale(s: &Scenario, traj: &Trajectory, duration: f64, out: &mut Seco
     let (at_rest, rest_verdict) = sections_at(&conditions, &mut sweeps(s, &motions, BOUNDARY_TOL, None), None);
     out.infeasible_at_rest = at_rest.infeasible.clone();
     let rest_holds = rest_verdict == Verdict::Holds;
+    if let Some((j, t)) = stop_inside(traj, &at_rest.infeasible) {
+        // there the platform stands still at every timing: no scale can help
+        out.min_time_scale_note = format!(
+            "none: at knot {j} (t = {t:.6}, {:.6} s) the platform stops whatever the timing, and it fails at rest there (t ∈ {})",
+            t * duration,
+            list(&at_rest.infeasible)
+        );
+        return;
+    }
     let mut timed = sweeps(s, &motions, BOUNDARY_TOL, Some(duration));
     let mut check = |k: f64| sections_at(&conditions, &mut timed, Some(duration * k)).1;
     // a scale that holds: 1, 2, 4, … when the rest holds (slower always helps then); else 1, ½,
@@ -204,6 +215,20 @@ fn edge(check: &mut impl FnMut(f64) -> Verdict, k_hold: f64, step: f64, limit: f
         }
     }
     (End { holds, fails }, binding)
+}
+
+/// A knot where the trajectory stops at every timing (a quintic spline's knot with zero velocity
+/// and acceleration: its turn stops there too) strictly inside one of the stretches `infeasible`
+/// at rest: its index and t.
+fn stop_inside(traj: &Trajectory, infeasible: &[[f64; 2]]) -> Option<(usize, f64)> {
+    let knots = traj.knots.as_ref().filter(|k| k.profile == crate::model::Profile::Quintic)?;
+    let start = knots.points.first()?.time;
+    let duration = knots.duration();
+    knots.points.iter().enumerate().find_map(|(j, k)| {
+        let t = (k.time - start) / duration;
+        let stops = k.velocity == nalgebra::Vector3::zeros() && k.acceleration == nalgebra::Vector3::zeros();
+        (stops && infeasible.iter().any(|iv| iv[0] < t && t < iv[1])).then_some((j, t))
+    })
 }
 
 fn list(v: &[[f64; 2]]) -> String {
