@@ -102,7 +102,8 @@ pub struct Trajectory {
     pub knots: Option<Knots>,
 }
 
-/// One piece of a piecewise trajectory: a translation in its own τ and a slerp in its own t.
+/// One piece of a piecewise trajectory: a translation in its own τ and an orientation in its own
+/// t (a slerp, or a spline's turn, for which τ = t).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Segment {
     /// Translation in τ ∈ [0, 1].
