@@ -212,7 +212,10 @@ const MAX_NODES: usize = 4_000;
 
 /// One facet on a piece of the motion: (k, d_k) for the other columns, d_0 at the motion's
 /// timing, r_S².
-type LocalFacet = (Vec<(usize, Bern)>, Bern, Option<Bern>);
+/// A facet's other columns on a piece: (k, d_k).
+type Others = Vec<(usize, Bern)>;
+
+type LocalFacet = (Others, Bern, Option<Bern>);
 
 impl WrenchFeasibility {
     /// The truth of "wrench-feasible" on the piece of the motion where `polys` are expanded
@@ -316,7 +319,7 @@ impl Piece {
         let mut facets = (Vec::with_capacity(open.len()), Vec::with_capacity(open.len()));
         for &pos in open {
             let (others, load, reach2) = &self.facets[pos];
-            let (ol, or): (Vec<(usize, Bern)>, Vec<(usize, Bern)>) = others
+            let (ol, or): (Others, Others) = others
                 .iter()
                 .map(|(k, d)| {
                     let (l, r) = d.split(0.5);

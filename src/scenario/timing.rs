@@ -133,7 +133,7 @@ fn knot_pose(kf: &str, k: &RawKnot, poses: &[(String, Pose)], warnings: &mut Vec
         (Some(name), false) => poses
             .iter()
             .find(|(n, _)| n == name)
-            .map(|(_, p)| p.clone())
+            .map(|(_, p)| *p)
             .ok_or_else(|| Error::new(format!("{kf}.pose"), format!("no pose named \"{name}\""))),
         (None, _) => {
             let Some(position) = k.position.clone() else { return Err(Error::new(format!("{kf}.position"), "a knot needs a pose name or a position")) };
