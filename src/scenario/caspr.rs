@@ -44,17 +44,33 @@ pub struct Import {
 
 /// Converts a CASPR bodies file and cables file into scenario JSON called `name`.
 pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import> {
+    model_to_json(name, bodies_xml, cables_xml, None)
+}
+
+/// A whole CASPR model as scenario JSON called `name`: its bodies and cables ([`to_json`]) and,
+/// when given, the timed trajectories of its trajectories file
+/// ([`super::caspr_trajectories`]; format 4 when there are any). The CLI's `import`, the Python
+/// and npm packages and the page call this.
+pub fn model_to_json(name: &str, bodies_xml: &str, cables_xml: &str, trajectories_xml: Option<&str>) -> Result<Import> {
     if super::caspr_links::is_multi_link(bodies_xml) {
-        return super::caspr_links::to_json(name, bodies_xml, cables_xml);
+        let mut out = super::caspr_links::to_json(name, bodies_xml, cables_xml)?;
+        if trajectories_xml.is_some() {
+            out.notes.push("the trajectories file was not read: trajectories of multi-link robots are not imported yet".to_string());
+        }
+        return Ok(out);
     }
     let platform = platform(bodies_xml)?;
     let cables = cables(cables_xml, &platform)?;
     let mut notes = Vec::new();
+    let splines = match trajectories_xml {
+        Some(xml) => super::caspr_trajectories::splines(xml, platform.origin, &mut notes)?,
+        None => Vec::new(),
+    };
     let Properties { diameter, tension, per_cable } = Properties::of(cables.iter().map(|c| [c.force_min, c.force_max, c.diameter]).collect(), &mut notes);
 
     let dynamics = platform.physical.and_then(|ph| ph.dynamics(&mut notes));
     let out = OutScenario {
-        format: if dynamics.is_some() { FORMAT_4 } else { FORMAT },
+        format: if dynamics.is_some() || !splines.is_empty() { FORMAT_4 } else { FORMAT },
         name,
         robot: OutRobot {
             dynamics,
@@ -75,26 +91,16 @@ pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import>
             "initial",
             OutPose { position: platform.position, euler_xyz_deg: platform.euler_rad.map(f64::to_degrees) },
         )]),
-        trajectories: vec![OutTrajectory {
+        trajectories: std::iter::once(OutTrajectory::Hold {
             name: "hold initial",
             translation: OutLine { line: [platform.position, platform.position] },
             orientation: OutSlerp { slerp: ["initial", "initial"] },
-        }],
+        })
+        .chain(splines.into_iter().map(OutTrajectory::Spline))
+        .collect(),
     };
     let json = serde_json::to_string_pretty(&out).map_err(|e| Error::new("", format!("internal: {e}")))?;
     Ok(Import { json, notes })
-}
-
-/// A whole CASPR model as scenario JSON called `name`: its bodies and cables ([`to_json`]) and,
-/// when given, the timed trajectories of its trajectories file
-/// ([`super::caspr_trajectories::add_trajectories`]). The CLI's `import` and the Python and npm
-/// packages call this.
-pub fn model_to_json(name: &str, bodies_xml: &str, cables_xml: &str, trajectories_xml: Option<&str>) -> Result<Import> {
-    let imported = to_json(name, bodies_xml, cables_xml)?;
-    match trajectories_xml {
-        Some(xml) => super::caspr_trajectories::add_trajectories(imported, bodies_xml, xml),
-        None => Ok(imported),
-    }
 }
 
 /// The files of a CASPR model directory: its bodies and cables files, and the model's name.
@@ -309,11 +315,12 @@ struct OutPose {
     euler_xyz_deg: [f64; 3],
 }
 
+/// A trajectory as written: the initial pose held, or a spline of the trajectories file.
 #[derive(Serialize)]
-struct OutTrajectory {
-    name: &'static str,
-    translation: OutLine,
-    orientation: OutSlerp,
+#[serde(untagged)]
+enum OutTrajectory {
+    Hold { name: &'static str, translation: OutLine, orientation: OutSlerp },
+    Spline(super::caspr_trajectories::OutSpline),
 }
 
 #[derive(Serialize)]
@@ -408,12 +415,6 @@ pub(super) fn child_numbers<const N: usize>(file: &str, node: Node, tag: &str) -
         None => Ok(None),
         Some(c) => numbers(file, c, &format!("<{tag}>"), c.text().unwrap_or_default()).map(Some),
     }
-}
-
-/// Where the platform's joint sits on the base: its parent `location` (the origin `q`'s position
-/// counts from).
-pub(super) fn platform_origin(xml: &str) -> Result<[f64; 3]> {
-    Ok(platform(xml)?.origin)
 }
 
 fn platform(xml: &str) -> Result<Platform> {

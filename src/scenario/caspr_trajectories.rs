@@ -8,27 +8,39 @@
 //! so does this import). Times are `relative` (each point's `time` counts from the previous point)
 //! or `absolute`, as the element's `time_definition` says; the first point is at 0. Other kinds
 //! of trajectory (linear splines, parabolic blends, operational-space trajectories) are skipped
-//! with a note.
+//! with a note. [`super::caspr::model_to_json`] writes them after the bodies and cables.
 
-use serde_json::{json, Value};
+use serde::Serialize;
 
-use super::caspr::{child, children, document, line, numbers, platform_origin, Import};
+use super::caspr::{child, children, document, line, numbers};
 use crate::error::{Error, Result};
 
 const FILE: &str = "trajectories";
 
-/// `import` with the trajectories of `trajectories_xml` added (the scenario becomes format 4 when
-/// any is). A multi-link model's trajectories are not read yet: a note says so.
-pub fn add_trajectories(import: Import, bodies_xml: &str, trajectories_xml: &str) -> Result<Import> {
-    let Import { json: text, mut notes } = import;
-    if super::caspr_links::is_multi_link(bodies_xml) {
-        notes.push("the trajectories file was not read: trajectories of multi-link robots are not imported yet".to_string());
-        return Ok(Import { json: text, notes });
-    }
-    let origin = platform_origin(bodies_xml)?;
+/// A spline trajectory as written (format 4 `spline` and `knots`).
+#[derive(Serialize)]
+pub(super) struct OutSpline {
+    name: String,
+    spline: &'static str,
+    knots: Vec<OutKnot>,
+}
+
+/// A knot as written.
+#[derive(Serialize)]
+struct OutKnot {
+    time: f64,
+    position: [f64; 3],
+    euler_xyz_deg: [f64; 3],
+    velocity: [f64; 3],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    acceleration: Option<[f64; 3]>,
+}
+
+/// The spline trajectories of `trajectories_xml` for a platform whose joint sits at `origin` on
+/// the base; what is skipped goes into `notes`.
+pub(super) fn splines(trajectories_xml: &str, origin: [f64; 3], notes: &mut Vec<String>) -> Result<Vec<OutSpline>> {
     let doc = document(FILE, trajectories_xml, "trajectories")?;
-    let mut value: Value = serde_json::from_str(&text).map_err(|e| Error::new("", format!("internal: {e}")))?;
-    let mut added = Vec::new();
+    let mut out = Vec::new();
     for group in doc.root_element().children().filter(|c| c.is_element()) {
         if group.tag_name().name() != "joint_trajectories" {
             notes.push(format!("{}: <{}> skipped: only joint-space trajectories are imported", line(group), group.tag_name().name()));
@@ -44,23 +56,17 @@ pub fn add_trajectories(import: Import, bodies_xml: &str, trajectories_xml: &str
                     continue;
                 }
             };
-            added.push(trajectory(node, id, spline, origin)?);
+            out.push(trajectory(node, id, spline, origin)?);
         }
     }
-    if added.is_empty() {
+    if out.is_empty() {
         notes.push("the trajectories file holds no quintic or cubic spline trajectory".to_string());
-        return Ok(Import { json: text, notes });
     }
-    value["format"] = json!(super::FORMAT_4);
-    if let Some(list) = value["trajectories"].as_array_mut() {
-        list.extend(added);
-    }
-    let json = serde_json::to_string_pretty(&value).map_err(|e| Error::new("", format!("internal: {e}")))?;
-    Ok(Import { json, notes })
+    Ok(out)
 }
 
-/// One spline trajectory element as scenario JSON.
-fn trajectory(node: roxmltree::Node, id: &str, spline: &str, origin: [f64; 3]) -> Result<Value> {
+/// One spline trajectory element.
+fn trajectory(node: roxmltree::Node, id: &str, spline: &'static str, origin: [f64; 3]) -> Result<OutSpline> {
     if id.is_empty() {
         return Err(Error::new(FILE, format!("{}: the trajectory has no id", line(node))));
     }
@@ -95,16 +101,13 @@ fn trajectory(node: roxmltree::Node, id: &str, spline: &str, origin: [f64; 3]) -
                 format!("{}: point {j} of \"{id}\" has an angular rate; CASPR's splines (and cablenav's) turn from rest to rest between knots", line(p)),
             ));
         }
-        let mut knot = json!({
-            "time": time,
-            "position": [origin[0] + q[0], origin[1] + q[1], origin[2] + q[2]],
-            "euler_xyz_deg": [q[3].to_degrees(), q[4].to_degrees(), q[5].to_degrees()],
-            "velocity": [qd[0], qd[1], qd[2]],
+        knots.push(OutKnot {
+            time,
+            position: [origin[0] + q[0], origin[1] + q[1], origin[2] + q[2]],
+            euler_xyz_deg: [q[3].to_degrees(), q[4].to_degrees(), q[5].to_degrees()],
+            velocity: [qd[0], qd[1], qd[2]],
+            acceleration: (spline == "quintic").then_some([qdd[0], qdd[1], qdd[2]]),
         });
-        if spline == "quintic" {
-            knot["acceleration"] = json!([qdd[0], qdd[1], qdd[2]]);
-        }
-        knots.push(knot);
     }
-    Ok(json!({"name": id, "spline": spline, "knots": knots}))
+    Ok(OutSpline { name: id.to_string(), spline, knots })
 }

@@ -2,7 +2,7 @@
 //! parsing with serde, and validation into the model with errors that name the field.
 
 pub mod caspr;
-pub mod caspr_trajectories;
+mod caspr_trajectories;
 mod caspr_links;
 pub mod chain;
 pub mod json;
