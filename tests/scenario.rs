@@ -1240,20 +1240,3 @@ fn knots_are_validated() {
     }));
     assert_eq!(cubic.trajectories[0].knots.as_ref().unwrap().profile, cablenav::model::Profile::Cubic);
 }
-
-/// A trajectory added to a scenario's text (`plan --out`) keeps the user's key order, poses in
-/// particular (serde_json's preserve_order is the core's own feature, not only the page's).
-#[test]
-fn an_added_trajectory_keeps_the_files_order() {
-    let mut v = base();
-    let poses = v["poses"].as_object().unwrap().clone();
-    v["poses"] = Value::Object(poses.into_iter().rev().collect());
-    let text = serde_json::to_string_pretty(&v).unwrap();
-    let s = Scenario::from_json(&text).unwrap();
-    let (out, name) = cablenav::scenario::with_trajectory(&text, &s.trajectories[0]).unwrap();
-    assert_eq!(name, "t1 2");
-    let written: Value = serde_json::from_str(&out).unwrap();
-    let keys = |v: &Value| v.as_object().unwrap().keys().cloned().collect::<Vec<_>>();
-    assert_eq!(keys(&written["poses"]), ["q2", "q1"]);
-    assert_eq!(keys(&written), keys(&v));
-}
