@@ -88,35 +88,23 @@ fn tolerances() -> [f64; 3] {
 /// order up to [`MAX_ORDER`] is within a quarter of the tolerances.
 fn composed(half: f64, profile: Profile, a: f64, b: f64) -> Option<(Bern, Bern, [f64; 3])> {
     let width = b - a;
+    // composed in monomial form, not by Bernstein restriction: restriction's tracked rounding,
+    // divided by the width squared, swamps the second derivative's bound on short stretches
     let beta = Bern::from_monomial(&compose_linear(profile.coefficients(), a, width)).scale(half);
-    let beta_m = half * compose_linear(profile.coefficients(), 0.5 * (a + b), 1.0)[0];
+    let beta_m = half * profile.at(0.5 * (a + b))[0];
     let y = beta.sub(&Bern::constant(beta_m));
     let big_y = sup(&y);
     let d1 = beta.derivative();
     let (b1, b2) = (sup(&d1) / width, sup(&d1.derivative()) / (width * width));
     let tol = tolerances();
     let factorial = |k: usize| (1..=k).fold(1.0, |acc, j| acc * j as f64);
-    let order = (1..=MAX_ORDER).find(|&n| {
-        let (yn, yn1) = (
-            big_y.powi(n as i32) / factorial(n),
-            big_y.powi(n as i32 - 1) / factorial(n - 1),
-        );
-        big_y.powi(n as i32 + 1) / factorial(n + 1) <= 0.25 * tol[0]
-            && yn * b1 <= 0.25 * tol[1]
-            && yn1 * b1 * b1 + yn * b2 <= 0.25 * tol[2]
-    })?;
-    let error = {
-        let n = order;
-        let (yn, yn1) = (
-            big_y.powi(n as i32) / factorial(n),
-            big_y.powi(n as i32 - 1) / factorial(n - 1),
-        );
-        [
-            big_y.powi(n as i32 + 1) / factorial(n + 1),
-            yn * b1,
-            yn1 * b1 * b1 + yn * b2,
-        ]
+    // the Taylor remainder's bounds at order n: value, first and second derivative
+    let bounds = |n: usize| {
+        let (yn, yn1) = (big_y.powi(n as i32) / factorial(n), big_y.powi(n as i32 - 1) / factorial(n - 1));
+        [big_y.powi(n as i32 + 1) / factorial(n + 1), yn * b1, yn1 * b1 * b1 + yn * b2]
     };
+    let order = (1..=MAX_ORDER).find(|&n| (0..3).all(|k| bounds(n)[k] <= 0.25 * tol[k]))?;
+    let error = bounds(order);
     // C(y) = Σ (−1)^(j/2) y^j/j! over even j, S(y) over odd j
     let (mut c, mut s) = (Bern::constant(1.0), Bern::constant(0.0));
     let mut power = Bern::constant(1.0);
