@@ -27,32 +27,61 @@ pub enum LpResult {
     Unbounded,
 }
 
-/// A simplex tableau: rows [A | b] in canonical form for `basis`, objective row last.
+/// A simplex tableau: rows [A | b] in canonical form for `basis`, objective row last, stored row
+/// by row (a pivot updates whole rows in place).
 struct Tableau {
-    t: DMatrix<f64>,
+    t: Vec<f64>,
+    width: usize,
     basis: Vec<usize>,
     eps: f64,
 }
 
+/// Consecutive degenerate pivots after which the entering rule turns from the steepest reduced
+/// cost (few pivots) to Bland's (no cycling) for the rest of the run.
+const DEGENERATE_STREAK: usize = 30;
+
 impl Tableau {
+    fn new(rows: usize, cols: usize, basis: Vec<usize>, eps: f64) -> Tableau {
+        Tableau { t: vec![0.0; (rows + 1) * (cols + 1)], width: cols + 1, basis, eps }
+    }
+
     fn rows(&self) -> usize {
-        self.t.nrows() - 1
+        self.t.len() / self.width - 1
     }
 
     fn cols(&self) -> usize {
-        self.t.ncols() - 1
+        self.width - 1
+    }
+
+    fn at(&self, r: usize, c: usize) -> f64 {
+        self.t[r * self.width + c]
+    }
+
+    fn set(&mut self, r: usize, c: usize, x: f64) {
+        self.t[r * self.width + c] = x;
+    }
+
+    /// Row `target` −= f · row `source`.
+    fn subtract_row(&mut self, target: usize, source: usize, f: f64) {
+        let w = self.width;
+        let (lo, hi) = (target.min(source), target.max(source));
+        let (head, tail) = self.t.split_at_mut(hi * w);
+        let (a, b) = (&mut head[lo * w..(lo + 1) * w], &mut tail[..w]);
+        let (dst, src) = if target < source { (a, &*b) } else { (b, &*a) };
+        for (d, s) in dst.iter_mut().zip(src) {
+            *d -= f * s;
+        }
     }
 
     fn pivot(&mut self, r: usize, c: usize) {
-        let p = self.t[(r, c)];
-        let row = self.t.row(r) / p;
-        self.t.set_row(r, &row);
-        for i in 0..self.t.nrows() {
+        let w = self.width;
+        let p = self.at(r, c);
+        self.t[r * w..(r + 1) * w].iter_mut().for_each(|x| *x /= p);
+        for i in 0..=self.rows() {
             if i != r {
-                let f = self.t[(i, c)];
+                let f = self.at(i, c);
                 if f != 0.0 {
-                    let new = self.t.row(i) - row.clone() * f;
-                    self.t.set_row(i, &new);
+                    self.subtract_row(i, r, f);
                 }
             }
         }
@@ -60,18 +89,30 @@ impl Tableau {
     }
 
     /// Runs the simplex iterations on the objective row (reduced costs stored negated: entering
-    /// columns have a negative entry) over the columns `< allowed`. `false` if unbounded.
+    /// columns have a negative entry) over the columns `< allowed`. `false` if unbounded. The
+    /// entering column is the most negative reduced cost until [`DEGENERATE_STREAK`] degenerate
+    /// pivots in a row, then Bland's rule (the first negative one), which cannot cycle.
     fn optimise(&mut self, allowed: usize) -> bool {
         let obj = self.rows();
+        let rhs = self.cols();
+        let (mut streak, mut bland) = (0, false);
         // Bland's rule guarantees termination; the cap only guards against rounding loops.
         for _ in 0..10_000 {
-            let Some(c) = (0..allowed).find(|&j| self.t[(obj, j)] < -self.eps) else { return true };
-            let rhs = self.cols();
+            let entering = if bland {
+                (0..allowed).find(|&j| self.at(obj, j) < -self.eps)
+            } else {
+                (0..allowed).filter(|&j| self.at(obj, j) < -self.eps).min_by(|&i, &j| self.at(obj, i).total_cmp(&self.at(obj, j)))
+            };
+            let Some(c) = entering else { return true };
             let mut best: Option<(f64, usize)> = None;
             for r in 0..obj {
-                let a = self.t[(r, c)];
-                if a > self.eps {
-                    let ratio = self.t[(r, rhs)] / a;
+                let a = self.at(r, c);
+                // an artificial left basic (at zero) in a degenerate row after phase 1 must stay
+                // at zero: its row takes part in the ratio test at ratio 0 whatever the sign of
+                // the entry, so that the entering column replaces it rather than lifting it
+                let artificial = self.basis[r] >= allowed;
+                if a > self.eps || (artificial && a < -self.eps) {
+                    let ratio = if artificial { 0.0 } else { self.at(r, rhs) / a };
                     let better = match best {
                         None => true,
                         Some((q, br)) => ratio < q - self.eps || (ratio <= q + self.eps && self.basis[r] < self.basis[br]),
@@ -81,7 +122,9 @@ impl Tableau {
                     }
                 }
             }
-            let Some((_, r)) = best else { return false };
+            let Some((ratio, r)) = best else { return false };
+            streak = if ratio <= self.eps { streak + 1 } else { 0 };
+            bland |= streak >= DEGENERATE_STREAK;
             self.pivot(r, c);
         }
         true
@@ -94,49 +137,47 @@ pub fn maximise(a: &DMatrix<f64>, b: &DVector<f64>, c: &DVector<f64>) -> LpResul
     let scale = a.amax().max(b.amax()).max(1.0);
     let eps = EPS * scale;
     // Phase 1: artificials y ≥ 0 with A x + y = b (rows negated where b < 0), minimise Σy.
-    let mut t = DMatrix::zeros(k + 1, n + k + 1);
+    let mut tab = Tableau::new(k, n + k, (n..n + k).collect(), eps);
     for i in 0..k {
         let s = if b[i] < 0.0 { -1.0 } else { 1.0 };
         for j in 0..n {
-            t[(i, j)] = s * a[(i, j)];
+            tab.set(i, j, s * a[(i, j)]);
         }
-        t[(i, n + i)] = 1.0;
-        t[(i, n + k)] = s * b[i];
+        tab.set(i, n + i, 1.0);
+        tab.set(i, n + k, s * b[i]);
     }
     // Objective row of phase 1 (maximise −Σy), made canonical for the artificial basis.
     for i in 0..k {
-        for j in 0..n {
-            t[(k, j)] -= t[(i, j)];
-        }
-        t[(k, n + k)] -= t[(i, n + k)];
+        tab.subtract_row(k, i, 1.0);
     }
-    let mut tab = Tableau { t, basis: (n..n + k).collect(), eps };
+    for i in 0..k {
+        // the artificials' own entries cancel: their reduced costs are zero
+        tab.set(k, n + i, 0.0);
+    }
     tab.optimise(n + k);
     // the artificials' sum left by phase 1 carries the tableau's rounding, which grows with the
     // pivots: a program is infeasible only when it stays clearly above that
-    if -tab.t[(k, n + k)] > INFEASIBLE * scale * (k as f64 + 1.0) {
+    if -tab.at(k, n + k) > INFEASIBLE * scale * (k as f64 + 1.0) {
         return LpResult::Infeasible;
     }
     // Drive artificials out of the basis where possible (degenerate rows stay, at zero).
     for r in 0..k {
         if tab.basis[r] >= n {
-            if let Some(j) = (0..n).find(|&j| tab.t[(r, j)].abs() > eps) {
+            if let Some(j) = (0..n).find(|&j| tab.at(r, j).abs() > eps) {
                 tab.pivot(r, j);
             }
         }
     }
     // Phase 2: the real objective (maximise cᵀx ⇒ row holds −c, made canonical).
-    for j in 0..tab.t.ncols() {
-        tab.t[(k, j)] = if j < n { -c[j] } else { 0.0 };
+    for j in 0..=n + k {
+        tab.set(k, j, if j < n { -c[j] } else { 0.0 });
     }
     for r in 0..k {
         let bj = tab.basis[r];
         if bj < n {
-            let f = tab.t[(k, bj)];
+            let f = tab.at(k, bj);
             if f != 0.0 {
-                let row = tab.t.row(r) * f;
-                let new = tab.t.row(k) - row;
-                tab.t.set_row(k, &new);
+                tab.subtract_row(k, r, f);
             }
         }
     }
@@ -146,7 +187,7 @@ pub fn maximise(a: &DMatrix<f64>, b: &DVector<f64>, c: &DVector<f64>) -> LpResul
     let mut x = DVector::zeros(n);
     for r in 0..k {
         if tab.basis[r] < n {
-            x[tab.basis[r]] = tab.t[(r, n + k)].max(0.0);
+            x[tab.basis[r]] = tab.at(r, n + k).max(0.0);
         }
     }
     let value = c.dot(&x);
