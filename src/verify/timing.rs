@@ -22,6 +22,12 @@ use crate::scenario::Scenario;
 /// Relative width of the bracket [k_lo, k_hi] the bisection stops at.
 pub const SCALE_TOL: f64 = 1e-4;
 
+/// Width (in t) below which the scale search leaves a piece undecided. A verdict at one scale
+/// needs no boundary to [`BOUNDARY_TOL`]; near the least scale the trajectory grazes the boundary
+/// over a stretch whose margin is below the enclosures' rounding, and resolving that stretch at
+/// 1e-10 cost thousands of pieces per scale tried.
+const VERDICT_TOL: f64 = 1e-7;
+
 /// Largest and smallest scales tried: beyond them the answer is reported as such.
 const SCALE_RANGE: (f64, f64) = (1e-6, 1e6);
 
@@ -122,7 +128,7 @@ fn min_time_scale(s: &Scenario, traj: &Trajectory, duration: f64, out: &mut Seco
         );
         return;
     }
-    let mut timed = sweeps(s, &motions, BOUNDARY_TOL, Some(duration));
+    let mut timed = sweeps(s, &motions, VERDICT_TOL, Some(duration));
     let mut check = |k: f64| sections_at(&conditions, &mut timed, Some(duration * k)).1;
     // a scale that holds: 1, 2, 4, … when the rest holds (slower always helps then); else 1, ½,
     // 2, ¼, 4, …
