@@ -350,6 +350,11 @@ impl Case {
 /// A random robot with 6 to 10 cables and mass, a random load and a random timed trajectory.
 fn random_case(rng: &mut Rng) -> Case {
     let m = rng.int(6, 10);
+    random_case_of(rng, m)
+}
+
+/// [`random_case`] with `m` cables.
+fn random_case_of(rng: &mut Rng, m: usize) -> Case {
     let (b, a) = (rng.range(1.5, 2.5), rng.range(0.6, 1.0));
     let r3 = 3f64.sqrt();
     let cables: Vec<(V3, V3)> = if m == 6 {
@@ -453,6 +458,32 @@ fn dynamic_sections_match_an_independent_reference_on_random_robots() {
     assert!(mixed * 5 >= n, "only {mixed} of {n} trajectories have both kinds of section");
     let samples = env_usize("CABLENAV_DYNAMICS_SAMPLES", SAMPLES);
     assert!(boundaries >= n / 12 && compared > n * samples / 2, "{boundaries} boundaries, {compared} samples");
+}
+
+/// A single wrench for any number of cables (11 to 24, and some up to 64; mass and no wrench
+/// ellipsoid: the linear-program certificates of `conditions::wrench_lp`), against the same
+/// reference.
+#[test]
+fn many_cables_by_linear_programs_match_the_reference() {
+    let mut rng = Rng::new(26);
+    let n = if cfg!(target_arch = "wasm32") { 6 } else { 40 };
+    let cases: Vec<Case> = (0..n)
+        .map(|_| {
+            let m = if rng.chance(0.15) { rng.int(25, 64) } else { rng.int(11, 24) };
+            let mut case = random_case_of(&mut rng, m);
+            case.wrench = None;
+            case
+        })
+        .collect();
+    #[cfg(not(target_arch = "wasm32"))]
+    let results = support::on_two_threads(cases.len(), &|k| run_case(k, &cases[k]));
+    #[cfg(target_arch = "wasm32")]
+    let results: Vec<_> = cases.iter().enumerate().map(|(k, c)| run_case(k, c)).collect();
+    let failures: Vec<&String> = results.iter().flat_map(|r| &r.1).collect();
+    assert!(failures.is_empty(), "{} contradictions, first: {}", failures.len(), failures[0]);
+    let mixed = results.iter().filter(|r| r.3).count();
+    let boundaries: usize = results.iter().map(|r| r.2).sum();
+    assert!(mixed * 5 >= n && boundaries * 12 >= n, "{mixed} of {n} trajectories with both kinds of section, {boundaries} boundaries checked");
 }
 
 /// The least time scale of six-cable trajectories (no winch limits) against the reference's:

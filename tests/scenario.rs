@@ -394,7 +394,8 @@ fn wrench_section_is_validated() {
     expect(|v| { six(v); v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1, "point_frame": "moon"}); }, "wrench.point_frame", "moon");
     expect(|v| { six(v); v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1, "mass": 3}); }, "wrench.mass", "unknown field");
     // The 7-cable base scenario takes a wrench section (the ellipsoid inside the available wrench
-    // set; closure only when asked for, in format 4), without a warning; 11 cables are too many.
+    // set; closure only when asked for, in format 4), without a warning; with 11 cables the
+    // ellipsoid and closure are too much (facets), the nominal wrench alone is taken.
     let s = ok_with(|v| v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1}));
     assert!(s.warnings.is_empty(), "{:?}", s.warnings);
     assert!(!s.wrench.as_ref().unwrap().closure);
@@ -412,9 +413,29 @@ fn wrench_section_is_validated() {
             }
             v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "radius": 1});
         },
-        "wrench",
+        "wrench.radius",
         "up to 10 cables",
     );
+    let eleven = |v: &mut Value| {
+        for k in 0..4 {
+            let cable = json!({"base": [4, k, 4], "platform": [0.1 * k as f64, 0, 0]});
+            v["robot"]["cables"].as_array_mut().unwrap().push(cable);
+        }
+    };
+    expect(
+        |v| {
+            eleven(v);
+            v["format"] = json!("cablenav-scenario/4");
+            v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "closure": true});
+        },
+        "wrench.closure",
+        "up to 10 cables",
+    );
+    let s = ok_with(|v| {
+        eleven(v);
+        v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0]});
+    });
+    assert_eq!(s.robot.cables.len(), 11);
 }
 
 #[test]

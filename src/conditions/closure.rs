@@ -20,6 +20,7 @@
 
 use std::rc::Rc;
 
+use super::interval::Iv;
 use super::load::{inverse_square, with_inertia};
 use super::primitives::{GT, LT};
 use super::structure::{det_with, minors, quadratic_form, structure_numerators, Local};
@@ -67,7 +68,7 @@ impl FacetPolys {
         let w = &local.weight;
         let w2 = w.mul(w);
         let e_inv = &load.wrench.ellipsoid_inv;
-        let single = e_inv.iter().all(|x| *x == 0.0);
+        let single = load.wrench.is_single();
         let (rows, inertial) = (&local.load.rows, local.load.inertial.as_ref());
         let m = local.cables.len();
         let facets = subsets(m, 5)
@@ -167,44 +168,6 @@ pub struct WrenchFeasibility {
     pub load: Rc<Load>,
     /// Tension bounds per cable.
     pub bounds: Vec<Bounds>,
-}
-
-/// A closed interval [lo, hi] of reals (possibly infinite ends).
-#[derive(Debug, Clone, Copy)]
-struct Iv {
-    lo: f64,
-    hi: f64,
-}
-
-impl Iv {
-    /// The range of a Bernstein polynomial over its whole domain, rounding error included.
-    fn of(p: &Bern) -> Iv {
-        let (lo, hi) = p.c.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &c| (l.min(c), h.max(c)));
-        Iv { lo: lo - p.err, hi: hi + p.err }
-    }
-
-    fn add(self, o: Iv) -> Iv {
-        Iv { lo: self.lo + o.lo, hi: self.hi + o.hi }
-    }
-
-    fn mul(self, o: Iv) -> Iv {
-        let p = [self.lo * o.lo, self.lo * o.hi, self.hi * o.lo, self.hi * o.hi];
-        if p.iter().any(|x| x.is_nan()) {
-            return Iv { lo: f64::NEG_INFINITY, hi: f64::INFINITY };
-        }
-        Iv { lo: p.iter().copied().fold(f64::INFINITY, f64::min), hi: p.iter().copied().fold(f64::NEG_INFINITY, f64::max) }
-    }
-
-    /// c·x for a constant c (possibly infinite).
-    fn scale(self, c: f64) -> Iv {
-        self.mul(Iv { lo: c, hi: c })
-    }
-
-    /// Pointwise min and max of c·x and e·x over the interval of x.
-    fn min_max_of_scaled(self, c: f64, e: f64) -> (Iv, Iv) {
-        let (a, b) = (self.scale(c), self.scale(e));
-        (Iv { lo: a.lo.min(b.lo), hi: a.hi.min(b.hi) }, Iv { lo: a.lo.max(b.lo), hi: a.hi.max(b.hi) })
-    }
 }
 
 /// Deepest bisection of the static-feasibility decision before a piece is reported undecided.

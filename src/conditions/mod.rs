@@ -13,6 +13,7 @@ mod cable_cable;
 mod cable_length;
 mod cable_link;
 mod cable_shape;
+mod interval;
 pub mod primitives;
 mod closure;
 pub mod exists;
@@ -23,6 +24,7 @@ mod structure;
 mod tension;
 pub mod tube;
 mod winch;
+mod wrench_lp;
 
 pub use cable_cable::CableCable;
 pub use cable_length::CableLength;
@@ -32,6 +34,7 @@ pub use closure::{FacetPolys, WrenchClosure, WrenchFeasibility};
 pub use joint_closure::JointClosure;
 pub use tension::{CableTension, Side, TensionPolys};
 pub use winch::{Rate, WinchLimit};
+pub use wrench_lp::WrenchFeasibilityLp;
 
 use std::cell::OnceCell;
 use std::rc::Rc;
@@ -384,7 +387,13 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
             }
         } else {
             let bounds = robot.cables.iter().map(|c| c.tension).collect();
-            out.push(Box::new(WrenchFeasibility { load, bounds }));
+            if load.wrench.is_single() {
+                // one wrench: linear programs, for any number of cables
+                out.push(Box::new(WrenchFeasibilityLp { load, bounds }));
+            } else {
+                // an ellipsoid: its reach against each facet (validation caps the cables)
+                out.push(Box::new(WrenchFeasibility { load, bounds }));
+            }
         }
     }
     out

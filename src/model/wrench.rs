@@ -46,6 +46,11 @@ impl Wrench {
         }
     }
 
+    /// Whether the set is the nominal wrench alone (E⁻¹ = 0: no ellipsoid around it).
+    pub fn is_single(&self) -> bool {
+        self.ellipsoid_inv.iter().all(|x| *x == 0.0)
+    }
+
     /// The application point in the world frame at `pose`.
     pub fn point_at(&self, pose: &Pose) -> Vector3<f64> {
         match self.frame {

@@ -117,7 +117,11 @@ pub fn subsets(m: usize, k: usize) -> Vec<Vec<usize>> {
 /// those tensions. Feasible (strictly within the bounds) iff t > 0. `None` if no tensions at all
 /// balance w0 (J f = w0 has no solution).
 pub fn static_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, w0: &Vector6<f64>, bounds: &[Bounds]) -> Option<(f64, Vec<f64>)> {
-    let j = structure_matrix_m(cables, point);
+    static_margin_of(&structure_matrix_m(cables, point), w0, bounds)
+}
+
+/// [`static_margin`] for the structure matrix `j` (6×m) itself.
+pub fn static_margin_of(j: &DMatrix<f64>, w0: &Vector6<f64>, bounds: &[Bounds]) -> Option<(f64, Vec<f64>)> {
     let m = j.ncols();
     // f = f_min + t·1 + g with g ≥ 0 and t = tp − tn; rows: J g + J1 (tp − tn) = w0 − J f_min;
     // g_k + 2 (tp − tn) + s_k = f_max,k − f_min,k for finite f_max; tp + s = CAP.
@@ -128,7 +132,7 @@ pub fn static_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f6
     let mut a = DMatrix::zeros(rows, nvar);
     let mut b = DVector::zeros(rows);
     let fmin = DVector::from_iterator(m, bounds.iter().map(|b| b.min));
-    let rhs = w0 - &j * &fmin;
+    let rhs = w0 - j * &fmin;
     let ones = j.column_sum();
     for r in 0..6 {
         for k in 0..m {
@@ -155,6 +159,63 @@ pub fn static_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f6
     match maximise(&a, &b, &c) {
         LpResult::Optimal { x, value } => Some((value, (0..m).map(|k| bounds[k].min + value + x[k]).collect())),
         LpResult::Infeasible | LpResult::Unbounded => None,
+    }
+}
+
+/// A wrench direction y (|y_i| ≤ 1) that shows `w0` unbalanced by tensions within their bounds
+/// at the structure matrix `j` (6×m): y·w0 exceeds the support Σ_k max(f_min,k y·j_k,
+/// f_max,k y·j_k) of the zonotope {J f : f_min ≤ f ≤ f_max} (with an infinite f_max, y·j_k ≤ 0).
+/// Found by a linear program (the dual of the static-feasibility program); returns y and its
+/// excess as the program computed it (the caller re-checks it), or `None` when no direction has
+/// a positive excess (w0 lies in the zonotope).
+pub fn separating_direction(j: &DMatrix<f64>, w0: &Vector6<f64>, bounds: &[Bounds]) -> Option<(Vector6<f64>, f64)> {
+    let m = j.ncols();
+    // max(f_min a, f_max a) = f_min a + (f_max − f_min) max(a, 0), a = y·j_k: with v_k ≥ a_k,
+    // v_k ≥ 0 (v_k − a_k − s_k = 0), maximise y·w0 − Σ_k (f_min,k a_k + (f_max,k − f_min,k) v_k);
+    // an infinite f_max needs a_k ≤ 0 instead (a_k + s_k = 0).
+    // variables: y⁺ (6), y⁻ (6), v (m), s (m), p (6), q (6), all ≥ 0; y = y⁺ − y⁻, y⁺ + p = 1, y⁻ + q = 1
+    let (yp, yn, v, sl, pp, qq) = (0, 6, 12, 12 + m, 12 + 2 * m, 18 + 2 * m);
+    let nvar = 24 + 2 * m;
+    let rows = m + 12;
+    let mut a = DMatrix::zeros(rows, nvar);
+    let mut b = DVector::zeros(rows);
+    let mut c = DVector::zeros(nvar);
+    for r in 0..6 {
+        c[yp + r] = w0[r];
+        c[yn + r] = -w0[r];
+    }
+    for k in 0..m {
+        let finite = bounds[k].max.is_finite();
+        if finite {
+            a[(k, v + k)] = 1.0;
+            a[(k, sl + k)] = -1.0;
+            c[v + k] = -(bounds[k].max - bounds[k].min);
+        } else {
+            a[(k, sl + k)] = 1.0;
+        }
+        let sign = if finite { -1.0 } else { 1.0 };
+        for r in 0..6 {
+            let d = j[(r, k)];
+            a[(k, yp + r)] = sign * d;
+            a[(k, yn + r)] = -sign * d;
+            // −f_min a_k in the objective
+            c[yp + r] -= bounds[k].min * d;
+            c[yn + r] += bounds[k].min * d;
+        }
+    }
+    for r in 0..6 {
+        a[(m + r, yp + r)] = 1.0;
+        a[(m + r, pp + r)] = 1.0;
+        b[m + r] = 1.0;
+        a[(m + 6 + r, yn + r)] = 1.0;
+        a[(m + 6 + r, qq + r)] = 1.0;
+        b[m + 6 + r] = 1.0;
+    }
+    // an excess within the program's rounding is none
+    let size = w0.amax() + j.amax() * bounds.iter().map(|b| b.min.abs().max(if b.max.is_finite() { b.max.abs() } else { 0.0 })).sum::<f64>();
+    match maximise(&a, &b, &c) {
+        LpResult::Optimal { x, value } if value > 1e-12 * (1.0 + size) => Some((Vector6::from_fn(|r, _| x[yp + r] - x[yn + r]), value)),
+        _ => None,
     }
 }
 
@@ -250,4 +311,48 @@ fn facet_normal(j: &DMatrix<f64>, s: &[usize]) -> Vector6<f64> {
         let sign = if (r + 5) % 2 == 0 { 1.0 } else { -1.0 };
         sign * minor.determinant()
     })
+}
+
+#[cfg(test)]
+mod separating_tests {
+    use super::*;
+
+    /// Random 6×m matrices and loads: a direction is found exactly when the static margin is
+    /// negative, and it separates: y·w0 above the zonotope's support.
+    #[test]
+    fn a_separating_direction_exists_iff_the_margin_is_negative() {
+        let mut seed = 7u64;
+        let mut rnd = move || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
+        };
+        let (mut found, mut none) = (0, 0);
+        for _ in 0..300 {
+            let m = 7 + (rnd().abs() * 10.0) as usize;
+            let j = DMatrix::from_fn(6, m, |_, _| rnd());
+            let w0 = Vector6::from_fn(|_, _| 1.5 * rnd());
+            let bounds: Vec<Bounds> = (0..m).map(|_| Bounds { min: 0.1, max: 2.0 }).collect();
+            let (t, f) = static_margin_of(&j, &w0, &bounds).expect("full rank");
+            let f = DVector::from_vec(f);
+            let residual = (&j * &f - DVector::from_iterator(6, w0.iter().copied())).amax();
+            assert!(residual < 1e-9 * (1.0 + w0.amax()), "the margin's tensions leave J f = w0 by {residual} (margin {t})");
+            assert!(f.iter().all(|x| *x >= 0.1 + t - 1e-9 && *x <= 2.0 - t + 1e-9), "tensions {f} outside the box shrunk by {t}");
+            match separating_direction(&j, &w0, &bounds) {
+                Some((y, excess)) => {
+                    let support: f64 = (0..m).map(|k| {
+                        let d = y.dot(&j.column(k).into_owned().fixed_rows::<6>(0).into_owned());
+                        (d * 0.1).max(d * 2.0)
+                    }).sum();
+                    assert!((y.dot(&w0) - support - excess).abs() < 1e-9 * (1.0 + excess), "excess {excess} vs {}", y.dot(&w0) - support);
+                    assert!(t < 1e-9, "separated, yet margin {t}");
+                    found += 1;
+                }
+                None => {
+                    assert!(t > -1e-9, "margin {t} but no direction");
+                    none += 1;
+                }
+            }
+        }
+        assert!(found > 30 && none > 30, "{found} separated, {none} not");
+    }
 }

@@ -58,17 +58,18 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
     if let Some(w) = &mut wrench {
         w.closure = super::timing::closure(&raw, version)?;
     }
-    let loaded = wrench.is_some() || robot.dynamics.is_some();
-    if loaded && robot.cables.len() > MAX_WRENCH_CABLES {
-        let field = if wrench.is_some() { "wrench" } else { "robot.dynamics" };
-        return Err(Error::new(
-            field,
-            format!(
-                "tension conditions are supported for up to {MAX_WRENCH_CABLES} cables (the wrench set is tested \
-                 against every facet of the available wrench set, one per 5 structure-matrix columns); this robot has {}",
-                robot.cables.len()
-            ),
-        ));
+    let m = robot.cables.len();
+    if let Some(w) = wrench.as_ref().filter(|_| m > MAX_WRENCH_CABLES) {
+        let why = "(the ellipsoid and closure are tested against every facet of the available wrench set, one per 5 \
+                   structure-matrix columns; beyond that the nominal wrench and the platform's dynamics are tested by \
+                   linear programs)";
+        if !w.is_single() {
+            let field = if raw.wrench.as_ref().is_some_and(|r| r.radius.is_some()) { "wrench.radius" } else { "wrench.ellipsoid" };
+            return Err(Error::new(field, format!("a wrench ellipsoid is supported for up to {MAX_WRENCH_CABLES} cables {why}; this robot has {m}")));
+        }
+        if w.closure {
+            return Err(Error::new("wrench.closure", format!("wrench closure is supported for up to {MAX_WRENCH_CABLES} cables {why}; this robot has {m}")));
+        }
     }
     Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses, trajectories, queries, wrench, configs, joint_paths: Vec::new(), warnings })
 }
@@ -123,8 +124,9 @@ fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clearance, warni
     super::chain::configurations(&raw.configurations, robot, chain, warnings)
 }
 
-/// Most cables a robot with a wrench section may have: the m > 6 conditions test all C(m, 5)
-/// facets of the structure matrix (252 for 10 cables).
+/// Most cables for which the wrench conditions test all C(m, 5) facets of the structure matrix
+/// (252 for 10 cables): a wrench ellipsoid and wrench closure are supported up to this; beyond
+/// it the nominal load is tested by linear programs ([`crate::conditions::WrenchFeasibilityLp`]).
 pub const MAX_WRENCH_CABLES: usize = 10;
 
 /// A finite number at `field`.

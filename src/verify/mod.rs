@@ -401,8 +401,10 @@ fn facet_report(s: &Scenario, at: &PoseCables, load: &Load, bad_length: Option<u
     let bounds: Vec<Bounds> = s.robot.cables.iter().map(|c| c.tension).collect();
     let closed = !wrench.closure || closure_holds(&at.cables, &point);
     let nominal = at.nominal(load);
-    let margin = wrench_set_margin(&at.cables, &point, &nominal, &wrench.ellipsoid_inv, &bounds);
-    let tensions = static_margin(&at.cables, &point, &nominal, &bounds).map(|(_, f)| f).unwrap_or_default();
+    let lp = static_margin(&at.cables, &point, &nominal, &bounds);
+    // a single wrench's margin is the linear program's; an ellipsoid's, hyperplane shifting's
+    let margin = if wrench.is_single() { lp.as_ref().map(|(t, _)| *t) } else { wrench_set_margin(&at.cables, &point, &nominal, &wrench.ellipsoid_inv, &bounds) };
+    let tensions = lp.map(|(_, f)| f).unwrap_or_default();
     let active = if let Some(i) = bad_length {
         format!("cable {} length", i + 1)
     } else if !closed {

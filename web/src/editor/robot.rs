@@ -48,7 +48,7 @@ pub fn RobotEditor(ed: Ed) -> impl IntoView {
         <button type="button" data-testid="add-cable" on:click=move |_| ed.edit(el::add_cable)>
             "Add a cable"
         </button>
-        <p class="hint">"A 6-DoF robot needs 6 to 64 cables; a wrench set needs exactly 6."</p>
+        <p class="hint">"A 6-DoF robot needs 6 to 64 cables. A wrench ellipsoid or closure is tested for up to 10; a single wrench and the platform's mass for any number."</p>
         <div class="bounds">
             <BoundsGroup ed what="length" title="Cable length bounds" unit="m" />
             <BoundsGroup ed what="tension" title="Cable tension bounds" unit="N" />

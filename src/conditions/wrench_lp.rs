@@ -1,0 +1,326 @@
+//! Wrench feasibility of a single wrench by linear programs, for any number of cables (the method
+//! that scales: no C(m, 5) facets as in [`super::closure`]): along a motion, the nominal load —
+//! the wrench set's w0 plus the platform's weight and inertia — must be balanced by tensions
+//! strictly within their bounds. The verifier uses it for every robot with more than six cables
+//! whose wrench set has no ellipsoid.
+//!
+//! The system is written scaled so that only the cable lengths stay non-polynomial: with N the
+//! structure numerators ([`structure_numerators`]), `load` the load rows and W = w·w^q their
+//! positive factor, J f = w_required ⇔ N φ = load with φ_k = W f_k / L_k (L_k = √P_k, P_k the
+//! squared cable length times w²). On a piece of the motion (its polynomials re-expanded there by
+//! halving) each 1/L_k is its linear Taylor polynomial s_k(λ) at the middle within ±ε_k (the
+//! remainder bounded from enclosures of P_k, P_k', P_k''), and the middle's linear programs give
+//! the certificates:
+//!
+//! * **Feasible**: f* and t* > 0, the largest-margin tensions at the middle
+//!   ([`crate::query::wrench::static_margin_of`]). The tension law φ = W ψ, ψ_k = s_k f*_k +
+//!   (λ − ½) γ_k, with γ chosen so that the residual ρ = load − N φ vanishes to first order at
+//!   the middle, leaves a residual of second order; the correction δ with N δ = ρ has ‖δ‖ ≤
+//!   ‖Dρ‖/σ_min(DN) (D a row scaling, σ_min(DN(λ)) bounded below from the middle's by the
+//!   entries' ranges). The piece is feasible when every cable keeps
+//!   ψ_k − f_min,k s_k − |f_min,k| ε_k − ‖δ‖/W > 0 and likewise below f_max,k.
+//! * **Infeasible**: a direction y from the middle ([`crate::query::wrench::separating_direction`])
+//!   with y·load above the zonotope's support Σ_k u_k max(f_min,k a_k, f_max,k a_k) (a_k = y·n_k,
+//!   u_k = W/L_k) throughout; each max is bounded above by its chord over a_k's range (exact when
+//!   a_k keeps its sign), so the excess is one polynomial less Σ_k W ε_k |…|.
+//! * Otherwise the piece is halved, down to the boundary tolerance; what stays is undecided.
+//!
+//! Both certificates are sufficient and both margins are exact polynomials up to second-order
+//! terms, so each certificate holds on small enough pieces wherever the condition holds (or
+//! fails) strictly: only the boundaries' neighbourhoods stay undecided, and stretches that graze
+//! the boundary need pieces of width ~√(margin), not ~margin. The cost per piece is two linear
+//! programs in O(m) variables and O(m) polynomial products of one factor of degree one.
+
+use std::rc::Rc;
+
+use nalgebra::{DMatrix, DVector, Vector6};
+
+use super::interval::Iv;
+use super::load::{inverse_square, with_inertia};
+use super::structure::{structure_numerators, Local};
+use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
+use crate::model::{Bounds, Load};
+use crate::poly::{Bern, Partition, Truth};
+use crate::query::wrench::{separating_direction, static_margin, static_margin_of};
+
+/// Most pieces one motion is bisected into before the rest is reported undecided.
+const MAX_NODES: usize = 4_000;
+
+/// Relative slack for the rounding of scalar steps outside the polynomials' tracked error.
+const SLACK: f64 = 1e-13;
+
+/// Wrench feasibility of the nominal load by linear programs (module docs).
+#[derive(Debug, Clone)]
+pub struct WrenchFeasibilityLp {
+    /// The load (its wrench set without an ellipsoid).
+    pub load: Rc<Load>,
+    /// Each cable's tension bounds.
+    pub bounds: Vec<Bounds>,
+}
+
+/// The scaled system on a piece of the motion: N (6 × m), the load rows at the motion's timing,
+/// their factor W = w·w^q, and per cable P_k with its first and second derivatives in the
+/// motion's parameter (taken on the whole motion and halved along: derivatives of the local
+/// expansions would carry rounding amplified by the degree at every level), and the piece's width.
+#[derive(Debug, Clone)]
+struct Piece {
+    n: [Vec<Bern>; 6],
+    load: [Bern; 6],
+    w: Bern,
+    len2: Vec<[Bern; 3]>,
+    width: f64,
+}
+
+impl Piece {
+    fn of(sweep: &Sweep, load: &Load) -> Piece {
+        let local = Local::of(sweep, load);
+        let n = structure_numerators(&local, &load.wrench);
+        let k = inverse_square(sweep.duration);
+        let inertial = local.load.inertial.as_ref();
+        let rows = std::array::from_fn(|j| with_inertia(&local.load.rows[j], inertial.map(|r| &r[j]), k));
+        let w = match &local.load.scale {
+            Some(q) => local.weight.mul(q),
+            None => local.weight.clone(),
+        };
+        let len2 = local
+            .len2()
+            .into_iter()
+            .map(|p| {
+                let d = p.derivative();
+                let dd = d.derivative();
+                [p, d, dd]
+            })
+            .collect();
+        Piece { len2, n, load: rows, w, width: 1.0 }
+    }
+
+    fn halves(&self) -> (Piece, Piece) {
+        let split_all = |ps: &[Bern]| -> (Vec<Bern>, Vec<Bern>) { ps.iter().map(|p| p.split(0.5)).unzip() };
+        let (mut nl, mut nr): ([Vec<Bern>; 6], [Vec<Bern>; 6]) = Default::default();
+        for j in 0..6 {
+            (nl[j], nr[j]) = split_all(&self.n[j]);
+        }
+        let (ll, lr): (Vec<Bern>, Vec<Bern>) = split_all(&self.load);
+        let rows = |v: Vec<Bern>| -> [Bern; 6] { std::array::from_fn(|j| v[j].clone()) };
+        let (wl, wr) = self.w.split(0.5);
+        let (pl, pr) = self
+            .len2
+            .iter()
+            .map(|ps| {
+                let (l, r): (Vec<Bern>, Vec<Bern>) = split_all(ps);
+                let three = |v: Vec<Bern>| -> [Bern; 3] { std::array::from_fn(|j| v[j].clone()) };
+                (three(l), three(r))
+            })
+            .unzip();
+        let width = 0.5 * self.width;
+        (Piece { n: nl, load: rows(ll), w: wl, len2: pl, width }, Piece { n: nr, load: rows(lr), w: wr, len2: pr, width })
+    }
+}
+
+/// A cable's inverse length 1/L on a piece: the affine s with |1/L − s| ≤ `eps` throughout, and
+/// its value at the middle.
+struct InverseLength {
+    s: Bern,
+    mid: f64,
+    eps: f64,
+}
+
+impl InverseLength {
+    /// From P = L² (positive on the piece; `None` otherwise) with its derivatives in the motion's
+    /// parameter, on a piece `h` wide: the linear Taylor polynomial of P^(−1/2) at ½ and the
+    /// bound |g''| ≤ ¾ P^(−5/2) P'² + ½ P^(−3/2) |P''| (local derivatives: h P', h² P'') on its
+    /// remainder (times (λ − ½)²/2 ≤ 1/8), plus the rounding of the middle's value and slope.
+    fn of([p, d1, d2]: &[Bern; 3], h: f64) -> Option<InverseLength> {
+        let range = Iv::of(p);
+        if !(range.lo > 0.0 && range.hi.is_finite()) {
+            return None;
+        }
+        let ((pc, e0), (p1, e1)) = (p.eval(0.5), d1.eval(0.5));
+        let (p1, e1) = (h * p1, h * e1);
+        let g = 1.0 / pc.sqrt();
+        let g1 = -0.5 * g / pc * p1;
+        let (m1, m2) = (h * Iv::of(d1).mag(), h * h * Iv::of(d2).mag());
+        let (r15, r25) = (range.lo.powf(-1.5), range.lo.powf(-2.5));
+        let remainder = (0.75 * r25 * m1 * m1 + 0.5 * r15 * m2) / 8.0;
+        let rounding = 0.5 * r15 * e0 + 0.5 * (0.75 * r25 * p1.abs() * e0 + 0.5 * r15 * e1) + SLACK * (g + g1.abs());
+        let eps = remainder + rounding;
+        eps.is_finite().then(|| InverseLength { s: Bern::from_bernstein(vec![g - 0.5 * g1, g + 0.5 * g1]), mid: g, eps })
+    }
+}
+
+/// Σ_k n_k·(c_k,0 (1 − λ) + c_k,1 λ): a row of N against affine polynomials given by their two
+/// Bernstein coefficients, as two linear combinations (no product per cable).
+fn affine_sum(row: &[Bern], c: &[[f64; 2]]) -> Bern {
+    let side = |j: usize| Bern::linear_combination(&row.iter().zip(c).map(|(p, ck)| (p, ck[j])).collect::<Vec<_>>());
+    side(0).mul(&Bern::from_bernstein(vec![1.0, 0.0])).add(&side(1).mul(&Bern::from_bernstein(vec![0.0, 1.0])))
+}
+
+/// The least value of a polynomial on its piece (its Bernstein coefficients' least, less its
+/// error).
+fn least(p: &Bern) -> f64 {
+    Iv::of(p).lo
+}
+
+impl WrenchFeasibilityLp {
+    /// Feasible (True), infeasible (False) or undecided on the piece.
+    fn decide(&self, piece: &Piece) -> Truth {
+        let w = Iv::of(&piece.w);
+        if !(w.lo > 0.0 && w.hi.is_finite()) {
+            return Truth::Unknown;
+        }
+        let Some(inv) = piece.len2.iter().map(|p| InverseLength::of(p, piece.width)).collect::<Option<Vec<_>>>() else { return Truth::Unknown };
+        let m = inv.len();
+        let wc = piece.w.eval(0.5).0;
+        let nc = DMatrix::from_fn(6, m, |r, k| piece.n[r][k].eval(0.5).0);
+        // the scaled structure matrix at the middle: columns n_k·W/L_k, and the load rows
+        let j = DMatrix::from_fn(6, m, |r, k| nc[(r, k)] * wc * inv[k].mid);
+        let b = Vector6::from_fn(|r, _| piece.load[r].eval(0.5).0);
+        match static_margin_of(&j, &b, &self.bounds) {
+            Some((t, f)) if t > 0.0 => self.feasible(piece, &inv, &nc, &f, w),
+            _ => match separating_direction(&j, &b, &self.bounds) {
+                Some((y, _)) => self.infeasible(piece, &inv, &y, w),
+                None => Truth::Unknown,
+            },
+        }
+    }
+
+    /// True when the tensions `f` at the middle, carried along the piece to first order and
+    /// corrected, stay strictly within the bounds throughout (module docs).
+    fn feasible(&self, piece: &Piece, inv: &[InverseLength], nc: &DMatrix<f64>, f: &[f64], w: Iv) -> Truth {
+        let m = inv.len();
+        let wc = piece.w.eval(0.5).0;
+        // ψ0_k = s_k f_k; P_r = Σ_k n_rk ψ0_k and ρ0 = load − W P, of which only ρ0'(½) is needed
+        let psi0: Vec<[f64; 2]> = inv.iter().zip(f).map(|(i, fk)| [i.s.c[0] * fk, i.s.c[1] * fk]).collect();
+        let (wc1, load1) = (piece.w.derivative().eval(0.5).0, |r: usize| piece.load[r].derivative().eval(0.5).0);
+        // rows scaled to unit largest entry at the middle
+        let d: Vec<f64> = (0..6).map(|r| 1.0 / nc.row(r).amax()).collect();
+        if d.iter().any(|x| !x.is_finite()) {
+            return Truth::Unknown;
+        }
+        let slope = DVector::from_fn(6, |r, _| {
+            let p = affine_sum(&piece.n[r], &psi0);
+            d[r] * (load1(r) - wc1 * p.eval(0.5).0 - wc * p.derivative().eval(0.5).0) / wc
+        });
+        let dn = DMatrix::from_fn(6, m, |r, k| d[r] * nc[(r, k)]);
+        let svd = dn.svd(true, true);
+        let (smin, smax) = (svd.singular_values.min(), svd.singular_values.max());
+        // γ: least-norm solution of N(½) γ = ρ0'(½)/W(½), so that ρ vanishes to first order:
+        // ψ_k = s_k f_k + (λ − ½) γ_k and ρ = load − W Σ_k n_k ψ_k
+        let Ok(gamma) = svd.solve(&slope, SLACK * smax) else { return Truth::Unknown };
+        let psi: Vec<[f64; 2]> = psi0.iter().zip(gamma.iter()).map(|(p, g)| [p[0] - 0.5 * g, p[1] + 0.5 * g]).collect();
+        let residual = (0..6)
+            .map(|r| (d[r] * Iv::of(&piece.load[r].sub(&piece.w.mul(&affine_sum(&piece.n[r], &psi)))).mag()).powi(2))
+            .sum::<f64>()
+            .sqrt();
+        // σ_min(D N(λ)) ≥ σ_min(D N(½)) − ‖D (N(λ) − N(½))‖_F
+        let mut drift = 0.0;
+        for r in 0..6 {
+            for k in 0..m {
+                let range = Iv::of(&piece.n[r][k]);
+                let dev = (range.hi - nc[(r, k)]).max(nc[(r, k)] - range.lo) + piece.n[r][k].eval(0.5).1;
+                drift += (d[r] * dev).powi(2);
+            }
+        }
+        let sigma = smin - drift.sqrt() - SLACK * smax;
+        if !(sigma > 0.0) {
+            return Truth::Unknown;
+        }
+        // |δ_k|/W for the correction δ = N⁺ρ
+        let correction = residual / sigma / w.lo;
+        // ψ_k − f_min s_k and f_max s_k − ψ_k (affine: least at an end) must clear ε_k and δ
+        let clear = |p: &[f64; 2], s: &Bern, bound: f64, sign: f64, eps: f64| {
+            let end = |j: usize| sign * (p[j] - bound * s.c[j]) - SLACK * (p[j].abs() + (bound * s.c[j]).abs());
+            end(0).min(end(1)) - bound.abs() * eps - correction > 0.0
+        };
+        for (k, (il, p)) in inv.iter().zip(&psi).enumerate() {
+            let Bounds { min, max } = self.bounds[k];
+            if !clear(p, &il.s, min, 1.0, il.eps) || (max.is_finite() && !clear(p, &il.s, max, -1.0, il.eps)) {
+                return Truth::Unknown;
+            }
+        }
+        Truth::True
+    }
+
+    /// False when the direction `y` keeps y·load above the zonotope's support on the whole piece
+    /// (module docs).
+    fn infeasible(&self, piece: &Piece, inv: &[InverseLength], y: &Vector6<f64>, w: Iv) -> Truth {
+        let m = inv.len();
+        // max(f_min a_k, f_max a_k) ≤ α_k + β_k a_k on the range of a_k = y·n_k (the chord of a
+        // convex function); the support's polynomial part over W is Σ_k s_k (α_k + β_k a_k) =
+        // Σ_k α_k s_k + Σ_r y_r Σ_k β_k s_k n_rk, and Σ_k ε_k |α_k + β_k a_k| bounds the rest
+        let (mut constant, mut rest) = ([0.0; 2], 0.0);
+        let mut weights = Vec::with_capacity(m);
+        for (k, il) in inv.iter().enumerate() {
+            let a = Bern::linear_combination(&(0..6).map(|r| (&piece.n[r][k], y[r])).collect::<Vec<_>>());
+            let range = Iv::of(&a);
+            let Bounds { min, max } = self.bounds[k];
+            let (alpha, beta) = if range.hi <= 0.0 {
+                (0.0, min)
+            } else if !max.is_finite() {
+                return Truth::Unknown; // the support may be unbounded
+            } else if range.lo >= 0.0 {
+                (0.0, max)
+            } else {
+                let (lo, hi) = (min * range.lo, max * range.hi);
+                let beta = (hi - lo) / (range.hi - range.lo);
+                (lo - beta * range.lo + SLACK * (lo.abs() + hi.abs()), beta)
+            };
+            rest += il.eps * (alpha.abs() + beta.abs() * range.mag());
+            for j in 0..2 {
+                constant[j] += alpha * il.s.c[j];
+            }
+            weights.push([beta * il.s.c[0], beta * il.s.c[1]]);
+        }
+        let mut support = Bern::from_bernstein(constant.to_vec());
+        for r in 0..6 {
+            let c: Vec<[f64; 2]> = weights.iter().map(|b| [y[r] * b[0], y[r] * b[1]]).collect();
+            support = support.add(&affine_sum(&piece.n[r], &c));
+        }
+        let excess = Bern::linear_combination(&(0..6).map(|r| (&piece.load[r], y[r])).collect::<Vec<_>>()).sub(&piece.w.mul(&support));
+        if least(&excess) - w.hi * rest - SLACK * excess.max_abs() > 0.0 {
+            Truth::False
+        } else {
+            Truth::Unknown
+        }
+    }
+
+    /// Bisection of `piece` = [a, b]: pieces of `out` as (end, feasible?).
+    fn bisect(&self, piece: Piece, (a, b): (f64, f64), tol: f64, budget: &mut usize, out: &mut Vec<(f64, Truth)>) {
+        let truth = self.decide(&piece);
+        // a quarter of the tolerance: two undecided neighbours merged stay narrower than it
+        if truth != Truth::Unknown || b - a <= 0.25 * tol || *budget == 0 {
+            out.push((b, truth));
+            return;
+        }
+        *budget -= 1;
+        let (left, right) = piece.halves();
+        let mid = 0.5 * (a + b);
+        self.bisect(left, (a, mid), tol, budget, out);
+        self.bisect(right, (mid, b), tol, budget, out);
+    }
+}
+
+impl Condition for WrenchFeasibilityLp {
+    fn kind(&self) -> Kind {
+        Kind::Tension
+    }
+
+    fn label(&self) -> String {
+        "wrench feasibility".to_string()
+    }
+
+    fn violation(&self, sweep: &mut Sweep) -> Partition {
+        let mut pieces = Vec::new();
+        let mut budget = MAX_NODES;
+        self.bisect(Piece::of(sweep, &self.load), (0.0, 1.0), sweep.tol, &mut budget, &mut pieces);
+        Partition::from_pieces(pieces).not()
+    }
+
+    fn check(&self, at: &PoseCables) -> PoseCheck {
+        let wrench = &self.load.wrench;
+        match static_margin(&at.cables, &wrench.point_at(&at.pose), &at.nominal(&self.load), &self.bounds) {
+            Some((margin, _)) => PoseCheck { violated: !(margin > 0.0), distance: Some(margin) },
+            None => PoseCheck { violated: true, distance: None },
+        }
+    }
+}
