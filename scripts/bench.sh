@@ -175,8 +175,8 @@ LOAD_AFTER=$(cut -d' ' -f1-3 /proc/loadavg)
 grep -h '^BENCH ' "$TMP/before.txt" "$TMP/native.txt" "$TMP/wasm.txt" > "$TMP/all.txt"
 n_native=$(grep '^BENCH native ' "$TMP/all.txt" | grep -vc ' lattice/' || true)
 n_wasm=$(grep '^BENCH wasm ' "$TMP/all.txt" | grep -vc ' lattice/' || true)
-if [ "$n_native" -ne 28 ] || [ "$n_wasm" -ne 28 ]; then
-  say "expected 28 native and 28 wasm results, got $n_native and $n_wasm:"
+if [ "$n_native" -ne 30 ] || [ "$n_wasm" -ne 30 ]; then
+  say "expected 30 native and 30 wasm results, got $n_native and $n_wasm:"
   cat "$TMP/native.txt" "$TMP/wasm.txt" >&2
   exit 1
 fi
@@ -204,7 +204,7 @@ function yes(ok) { return ok ? "**met**" : "**missed**" }
 $2 == "before" { med[$2, $3] = $4; best[$2, $3] = $5; summ_before[$3] = $8; next }
 { med[$2, $3] = $4; best[$2, $3] = $5; calls[$2, $3] = $6; samples[$2, $3] = $7; summ[$3] = $8 }
 END {
-  n = split("tree/quadratic/exact tree/quadratic/pointwise-0.01 tree/quadratic/pointwise-0.001 cdpr7/quadratic/exact cdpr7/quadratic/pointwise-0.001 box/linear/exact box/linear/pointwise-0.001 box/ray-fig310-x/exact crane/pose-wrench crane/q1-q2/exact crane/q1-q2/pointwise-0.001 crane/tilt/exact crane/tilt/pointwise-0.001 crane/slice-400 timed/quick-drop/exact timed/quick-drop/pointwise-0.01 timed/quick-drop/pointwise-0.001 timed/swing/exact timed/swing/pointwise-0.01 timed/swing/pointwise-0.001 cogiro/general-1/exact-sections cogiro/general-1/exact cogiro/general-1/pointwise-0.01 cogiro/general-1/pointwise-0.001", cases, " ")
+  n = split("tree/quadratic/exact tree/quadratic/pointwise-0.01 tree/quadratic/pointwise-0.001 cdpr7/quadratic/exact cdpr7/quadratic/pointwise-0.001 box/linear/exact box/linear/pointwise-0.001 box/ray-fig310-x/exact crane/pose-wrench crane/q1-q2/exact crane/q1-q2/pointwise-0.001 crane/tilt/exact crane/tilt/pointwise-0.001 crane/slice-400 timed/quick-drop/exact timed/quick-drop/pointwise-0.01 timed/quick-drop/pointwise-0.001 timed/swing/exact timed/swing/pointwise-0.01 timed/swing/pointwise-0.001 cogiro/general-1/exact-sections cogiro/general-1/exact cogiro/general-1/pointwise-0.01 cogiro/general-1/pointwise-0.001 ring64/sweep/exact-sections ring64/sweep/pointwise-0.01", cases, " ")
   what["tree/quadratic/exact"] = "cdpr7-tree.json, \"quadratic\": exact (`verify_trajectory`)"
   what["tree/quadratic/pointwise-0.01"] = "cdpr7-tree.json, \"quadratic\": point-wise, Δt = 0.01"
   what["tree/quadratic/pointwise-0.001"] = "cdpr7-tree.json, \"quadratic\": point-wise, Δt = 0.001"
@@ -229,6 +229,8 @@ END {
   what["cogiro/general-1/exact"] = "the same: exact, with the least time scale"
   what["cogiro/general-1/pointwise-0.01"] = "the same: point-wise, Δt = 0.01 (no time scale)"
   what["cogiro/general-1/pointwise-0.001"] = "the same: point-wise, Δt = 0.001 (no time scale)"
+  what["ring64/sweep/exact-sections"] = "64 cables hanging from a ring (1 kg, a single wrench: linear programs, not C(64, 5) facets), timed slerp \"sweep\" (1 s): exact at its own timing"
+  what["ring64/sweep/pointwise-0.01"] = "the same: point-wise, Δt = 0.01"
 
   print "# Benchmarks"
   print ""
@@ -301,7 +303,7 @@ END {
   print ""
   print "| trajectory | Δt | native | wasm |"
   print "|---|---:|---:|---:|"
-  nr = split("tree/quadratic/pointwise-0.01:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.01;tree/quadratic/pointwise-0.001:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.001;cdpr7/quadratic/pointwise-0.001:cdpr7/quadratic/exact:cdpr7 \"quadratic\":0.001;box/linear/pointwise-0.001:box/linear/exact:cdpr7-box \"linear\":0.001;crane/q1-q2/pointwise-0.001:crane/q1-q2/exact:robocrane \"slerp q1-q2\" (wrench):0.001;crane/tilt/pointwise-0.001:crane/tilt/exact:robocrane tilt past the bound (wrench):0.001;timed/quick-drop/pointwise-0.01:timed/quick-drop/exact:robocrane-timed \"quick drop\" (dynamics, exact with the time scale):0.01;timed/swing/pointwise-0.01:timed/swing/exact:robocrane-timed \"swing\" (dynamics, exact with the time scales):0.01;cogiro/general-1/pointwise-0.01:cogiro/general-1/exact-sections:CoGiRo \"general_1\" (dynamics, 8 cables, exact at its timing):0.01;cogiro/general-1/pointwise-0.001:cogiro/general-1/exact-sections:CoGiRo \"general_1\" (dynamics, 8 cables, exact at its timing):0.001", rows, ";")
+  nr = split("tree/quadratic/pointwise-0.01:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.01;tree/quadratic/pointwise-0.001:tree/quadratic/exact:cdpr7-tree \"quadratic\":0.001;cdpr7/quadratic/pointwise-0.001:cdpr7/quadratic/exact:cdpr7 \"quadratic\":0.001;box/linear/pointwise-0.001:box/linear/exact:cdpr7-box \"linear\":0.001;crane/q1-q2/pointwise-0.001:crane/q1-q2/exact:robocrane \"slerp q1-q2\" (wrench):0.001;crane/tilt/pointwise-0.001:crane/tilt/exact:robocrane tilt past the bound (wrench):0.001;timed/quick-drop/pointwise-0.01:timed/quick-drop/exact:robocrane-timed \"quick drop\" (dynamics, exact with the time scale):0.01;timed/swing/pointwise-0.01:timed/swing/exact:robocrane-timed \"swing\" (dynamics, exact with the time scales):0.01;cogiro/general-1/pointwise-0.01:cogiro/general-1/exact-sections:CoGiRo \"general_1\" (dynamics, 8 cables, exact at its timing):0.01;cogiro/general-1/pointwise-0.001:cogiro/general-1/exact-sections:CoGiRo \"general_1\" (dynamics, 8 cables, exact at its timing):0.001;ring64/sweep/pointwise-0.01:ring64/sweep/exact-sections:64-cable ring \"sweep\" (dynamics, exact at its timing):0.01", rows, ";")
   for (i = 1; i <= nr; i++) {
     split(rows[i], f, ":")
     printf "| %s | %s | %s | %s |\n", f[3], f[4], ratio(med["native", f[1]], med["native", f[2]]), ratio(med["wasm", f[1]], med["wasm", f[2]])

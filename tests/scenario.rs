@@ -431,11 +431,15 @@ fn wrench_section_is_validated() {
         "wrench.closure",
         "up to 10 cables",
     );
+    // format 4 takes the nominal wrench alone (no ellipsoid), for any number of cables
     let s = ok_with(|v| {
         eleven(v);
-        v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0]});
+        v["format"] = json!("cablenav-scenario/4");
+        v["wrench"] = json!({"nominal": [0, 0, 1, 0, 0, 0], "point": [0, 0, 0.1]});
     });
     assert_eq!(s.robot.cables.len(), 11);
+    let w = s.wrench.as_ref().unwrap();
+    assert!(w.is_single() && w.nominal[2] == 1.0 && w.point[2] == 0.1);
 }
 
 #[test]

@@ -35,6 +35,40 @@ fn robocrane_tilt() -> Scenario {
     Scenario::from_json(&v.to_string()).expect("robocrane tilt parses")
 }
 
+/// A cable-suspended platform on 64 cables (a ring of anchors above, two below; 1 kg, tensions
+/// in [0, 3] N, no wrench ellipsoid: the linear-program certificates of `conditions::wrench_lp`)
+/// on a timed slerp with a linear translation, 1 s.
+fn ring64() -> Scenario {
+    let cables: Vec<serde_json::Value> = (0..64)
+        .map(|k| {
+            let angle = 2.0 * std::f64::consts::PI * k as f64 / 64.0;
+            let below = k < 2;
+            let twist = if k % 2 == 0 { 0.6 } else { -0.6 };
+            serde_json::json!({
+                "base": [2.0 * angle.cos(), 2.0 * angle.sin(), if below { 4.0 } else { 0.0 }],
+                "platform": [0.4 * (angle + twist).cos(), 0.4 * (angle + twist).sin(), if below { 0.1 } else { -0.1 }]
+            })
+        })
+        .collect();
+    let q = [1.0, 0.1, 0.1, 0.18];
+    let norm = q.iter().map(|x: &f64| x * x).sum::<f64>().sqrt();
+    let v = serde_json::json!({
+        "format": "cablenav-scenario/4",
+        "name": "ring64",
+        "robot": {
+            "cables": cables,
+            "tension": {"min": 0.0, "max": 3.0},
+            "dynamics": {"mass": 1.0, "com": [0, 0, -0.02], "inertia": [[0.05, 0, 0], [0, 0.05, 0], [0, 0, 0.08]], "gravity": [0, 0, 10.0]}
+        },
+        "trajectories": [{
+            "name": "sweep", "duration": 1.0,
+            "translation": {"polynomial": [[0.0, 0.3], [0.0, -0.2], [2.2, 0.1]]},
+            "orientation": {"slerp": [[1, 0, 0, 0], q.map(|x| x / norm)]}
+        }]
+    });
+    Scenario::from_json(&v.to_string()).expect("ring64 parses")
+}
+
 /// Wall time spent measuring each case (after warm-up), in milliseconds.
 pub const CASE_MS: f64 = 1000.0;
 /// Each sample repeats the call until it lasts at least this long (timer resolution), in ms.
@@ -163,6 +197,11 @@ pub fn run_all(platform: &str, filter: &str, now: &dyn Fn() -> f64, out: &mut dy
     record(measure(now, filter, "cogiro/general-1/exact", &mut || exact(&cogiro, &general)), out);
     record(measure(now, filter, "cogiro/general-1/pointwise-0.01", &mut || pointwise(&cogiro, &general, 0.01)), out);
     record(measure(now, filter, "cogiro/general-1/pointwise-0.001", &mut || pointwise(&cogiro, &general, 0.001)), out);
+    // 64 cables, a single wrench (weight and inertia): linear programs instead of C(64, 5) facets
+    let ring = ring64();
+    let sweep = traj(&ring, "sweep");
+    record(measure(now, filter, "ring64/sweep/exact-sections", &mut || sections(&ring, &sweep)), out);
+    record(measure(now, filter, "ring64/sweep/pointwise-0.01", &mut || pointwise(&ring, &sweep, 0.01)), out);
     record(
         measure(now, filter, "crane/slice-400", &mut || {
             let range = [default_range(Coord::Phi).expect("angle"), default_range(Coord::Theta).expect("angle")];

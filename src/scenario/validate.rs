@@ -54,7 +54,7 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
     let mut trajectories = trajectories(&raw.trajectories, version >= 2, &poses, &mut warnings)?;
     super::timing::durations(&raw, version, &mut trajectories)?;
     let queries = queries(&raw.queries, &poses)?;
-    let mut wrench = raw.wrench.as_ref().map(wrench).transpose()?;
+    let mut wrench = raw.wrench.as_ref().map(|w| wrench(w, version)).transpose()?;
     if let Some(w) = &mut wrench {
         w.closure = super::timing::closure(&raw, version)?;
     }
@@ -514,22 +514,13 @@ pub(super) fn spd<const N: usize>(field: &str, m: &Fixed<Fixed<f64, N>, N>, what
     Ok(sym)
 }
 
-/// The wrench section: E from `ellipsoid` or from `radius` (E = I/radius²), exactly one of them.
-fn wrench(raw: &RawWrench) -> Result<Wrench> {
+/// The wrench section: E from `ellipsoid` or from `radius` (E = I/radius²), at most one of them;
+/// neither (format 4): the nominal wrench alone (E⁻¹ = 0, as [`Wrench::zero`]).
+fn wrench(raw: &RawWrench, version: u8) -> Result<Wrench> {
     let nominal = Vector6::from_fn(|i, _| raw.nominal.0[i]);
     for i in 0..6 {
         num(&format!("wrench.nominal[{i}]"), nominal[i])?;
     }
-    let ellipsoid = match (&raw.ellipsoid, raw.radius) {
-        (Some(m), None) => spd("wrench.ellipsoid", m, "the wrench set {w : (w−w0)ᵀE(w−w0) ≤ 1} needs E with positive eigenvalues")?,
-        (None, Some(r)) => Matrix6::identity() / positive("wrench.radius", r)?.powi(2),
-        (Some(_), Some(_)) => return Err(Error::new("wrench", "give either \"ellipsoid\" or \"radius\", not both")),
-        (None, None) => return Err(Error::new("wrench", "needs \"ellipsoid\" (a 6×6 SPD matrix E) or \"radius\"")),
-    };
-    let ellipsoid_inv = ellipsoid
-        .try_inverse()
-        .filter(|m| m.iter().all(|x| x.is_finite()))
-        .ok_or_else(|| Error::new("wrench.ellipsoid", "cannot be inverted in floating point"))?;
     let point = match &raw.point {
         Some(p) => vec3("wrench.point", p)?,
         None => Vector3::zeros(),
@@ -539,6 +530,19 @@ fn wrench(raw: &RawWrench) -> Result<Wrench> {
         Some("world") => PointFrame::World,
         Some(other) => return Err(Error::new("wrench.point_frame", format!("{other:?} is not \"platform\" or \"world\""))),
     };
+    let ellipsoid = match (&raw.ellipsoid, raw.radius) {
+        (Some(m), None) => spd("wrench.ellipsoid", m, "the wrench set {w : (w−w0)ᵀE(w−w0) ≤ 1} needs E with positive eigenvalues")?,
+        (None, Some(r)) => Matrix6::identity() / positive("wrench.radius", r)?.powi(2),
+        (Some(_), Some(_)) => return Err(Error::new("wrench", "give either \"ellipsoid\" or \"radius\", not both")),
+        (None, None) if version >= 4 => return Ok(Wrench { nominal, point, frame, ..Wrench::zero() }),
+        (None, None) => {
+            return Err(Error::new("wrench", "needs \"ellipsoid\" (a 6×6 SPD matrix E) or \"radius\" (format 4 also takes the nominal wrench alone)"))
+        }
+    };
+    let ellipsoid_inv = ellipsoid
+        .try_inverse()
+        .filter(|m| m.iter().all(|x| x.is_finite()))
+        .ok_or_else(|| Error::new("wrench.ellipsoid", "cannot be inverted in floating point"))?;
     Ok(Wrench { nominal, ellipsoid, ellipsoid_inv, point, frame, closure: false })
 }
 
