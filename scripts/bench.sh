@@ -175,8 +175,8 @@ LOAD_AFTER=$(cut -d' ' -f1-3 /proc/loadavg)
 grep -h '^BENCH ' "$TMP/before.txt" "$TMP/native.txt" "$TMP/wasm.txt" > "$TMP/all.txt"
 n_native=$(grep '^BENCH native ' "$TMP/all.txt" | grep -vc ' lattice/' || true)
 n_wasm=$(grep '^BENCH wasm ' "$TMP/all.txt" | grep -vc ' lattice/' || true)
-if [ "$n_native" -ne 30 ] || [ "$n_wasm" -ne 30 ]; then
-  say "expected 30 native and 30 wasm results, got $n_native and $n_wasm:"
+if [ "$n_native" -ne 32 ] || [ "$n_wasm" -ne 32 ]; then
+  say "expected 32 native and 32 wasm results, got $n_native and $n_wasm:"
   cat "$TMP/native.txt" "$TMP/wasm.txt" >&2
   exit 1
 fi
@@ -204,7 +204,7 @@ function yes(ok) { return ok ? "**met**" : "**missed**" }
 $2 == "before" { med[$2, $3] = $4; best[$2, $3] = $5; summ_before[$3] = $8; next }
 { med[$2, $3] = $4; best[$2, $3] = $5; calls[$2, $3] = $6; samples[$2, $3] = $7; summ[$3] = $8 }
 END {
-  n = split("tree/quadratic/exact tree/quadratic/pointwise-0.01 tree/quadratic/pointwise-0.001 cdpr7/quadratic/exact cdpr7/quadratic/pointwise-0.001 box/linear/exact box/linear/pointwise-0.001 box/ray-fig310-x/exact crane/pose-wrench crane/q1-q2/exact crane/q1-q2/pointwise-0.001 crane/tilt/exact crane/tilt/pointwise-0.001 crane/slice-400 timed/quick-drop/exact timed/quick-drop/pointwise-0.01 timed/quick-drop/pointwise-0.001 timed/swing/exact timed/swing/pointwise-0.01 timed/swing/pointwise-0.001 cogiro/general-1/exact-sections cogiro/general-1/exact cogiro/general-1/pointwise-0.01 cogiro/general-1/pointwise-0.001 ring64/sweep/exact-sections ring64/sweep/pointwise-0.01", cases, " ")
+  n = split("tree/quadratic/exact tree/quadratic/pointwise-0.01 tree/quadratic/pointwise-0.001 cdpr7/quadratic/exact cdpr7/quadratic/pointwise-0.001 box/linear/exact box/linear/pointwise-0.001 box/ray-fig310-x/exact crane/pose-wrench crane/q1-q2/exact crane/q1-q2/pointwise-0.001 crane/tilt/exact crane/tilt/pointwise-0.001 crane/slice-400 timed/quick-drop/exact timed/quick-drop/exact-sections timed/quick-drop/pointwise-0.01 timed/quick-drop/pointwise-0.001 timed/swing/exact timed/swing/exact-sections timed/swing/pointwise-0.01 timed/swing/pointwise-0.001 cogiro/general-1/exact-sections cogiro/general-1/exact cogiro/general-1/pointwise-0.01 cogiro/general-1/pointwise-0.001 ring64/sweep/exact-sections ring64/sweep/pointwise-0.01", cases, " ")
   what["tree/quadratic/exact"] = "cdpr7-tree.json, \"quadratic\": exact (`verify_trajectory`)"
   what["tree/quadratic/pointwise-0.01"] = "cdpr7-tree.json, \"quadratic\": point-wise, Δt = 0.01"
   what["tree/quadratic/pointwise-0.001"] = "cdpr7-tree.json, \"quadratic\": point-wise, Δt = 0.001"
@@ -220,9 +220,11 @@ END {
   what["crane/tilt/pointwise-0.001"] = "the same tilt: point-wise, Δt = 0.001"
   what["crane/slice-400"] = "robocrane.json, 400×400 slice over (φ, θ) through q1"
   what["timed/quick-drop/exact"] = "robocrane-timed.json, \"quick drop\" (0.12 s; mass, inertia, winch limits): exact, with the least time scale"
+  what["timed/quick-drop/exact-sections"] = "the same: exact at its own timing, no time-scale search (what the page runs live during a drag)"
   what["timed/quick-drop/pointwise-0.01"] = "the same: point-wise, Δt = 0.01 (no time scale)"
   what["timed/quick-drop/pointwise-0.001"] = "the same: point-wise, Δt = 0.001 (no time scale)"
   what["timed/swing/exact"] = "robocrane-timed.json, \"swing\" (0.8 s): exact, with both ends of the time scales that hold"
+  what["timed/swing/exact-sections"] = "the same: exact at its own timing, no time-scale search (what the page runs live during a drag)"
   what["timed/swing/pointwise-0.01"] = "the same: point-wise, Δt = 0.01 (no time scale)"
   what["timed/swing/pointwise-0.001"] = "the same: point-wise, Δt = 0.001 (no time scale)"
   what["cogiro/general-1/exact-sections"] = "CoGiRo from the CASPR files (8 cables, 91 kg), quintic spline \"general_1\" (4 s, turns enclosed): exact at its own timing (`verify_sections`)"
@@ -350,6 +352,8 @@ END {
   printf "| per-pose wrench test (6 cables), native: ≤ 2 µs | %s median (best %s) | %s |\n", us(pp), us(best["native", "crane/pose-wrench"]), yes(pp <= 2)
   printf "| 400×400 slice, wasm: ≤ 0.5 s | %s median (native %s) | %s |\n", us(sl), us(med["native", "crane/slice-400"]), yes(sl <= 500000)
   printf "| exact wrench verification vs point-wise at Δt = 0.001 (Robocrane tilt) | point-wise / exact = %s native, %s wasm | %s |\n", ratio(med["native", "crane/tilt/pointwise-0.001"], med["native", "crane/tilt/exact"]), ratio(med["wasm", "crane/tilt/pointwise-0.001"], med["wasm", "crane/tilt/exact"]), "(a comparison, no target)"
+  lq = med["wasm", "timed/quick-drop/exact-sections"]; ls = med["wasm", "timed/swing/exact-sections"]
+  printf "| live update of a timed preset in the page ≤ 5 ms (robocrane-timed, exact at its timing, wasm in node) | quick drop %s, swing %s (native %s, %s) | %s |\n", us(lq), us(ls), us(med["native", "timed/quick-drop/exact-sections"]), us(med["native", "timed/swing/exact-sections"]), yes(lq <= 5000 && ls <= 5000)
   cg = med["native", "cogiro/general-1/exact-sections"]
   printf "| exact dynamic verification of CoGiRo \"general_1\" (8 cables), native: ≤ 1 ms | %s median at its timing (%s with the time-scale search) | %s%s |\n", us(cg), us(med["native", "cogiro/general-1/exact"]), yes(cg <= 1000), (cg > 1000 ? sprintf(" (%.0f× the target)", cg / 1000) : "")
   printf "| exact wrench verification ≥ point-wise at Δt = 0.01 (CoGiRo \"general_1\") | point-wise / exact = %s native, %s wasm | %s |\n", ratio(med["native", "cogiro/general-1/pointwise-0.01"], cg), ratio(med["wasm", "cogiro/general-1/pointwise-0.01"], med["wasm", "cogiro/general-1/exact-sections"]), yes(med["native", "cogiro/general-1/pointwise-0.01"] >= cg)

@@ -183,6 +183,8 @@ pub fn run_all(platform: &str, filter: &str, now: &dyn Fn() -> f64, out: &mut dy
         let t = traj(&timed, name);
         let id = name.replace(' ', "-");
         record(measure(now, filter, &format!("timed/{id}/exact"), &mut || exact(&timed, &t)), out);
+        // what the page's live update runs while a drag goes on: the sections at its timing
+        record(measure(now, filter, &format!("timed/{id}/exact-sections"), &mut || summary_of(&verify_sections(&timed, &t).expect("exact verification"))), out);
         record(measure(now, filter, &format!("timed/{id}/pointwise-0.01"), &mut || pointwise(&timed, &t, 0.01)), out);
         record(measure(now, filter, &format!("timed/{id}/pointwise-0.001"), &mut || pointwise(&timed, &t, 0.001)), out);
     }

@@ -224,7 +224,12 @@ pub fn verify_trajectory(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport
 /// trajectory's own timing (in t and, if timed, in seconds), the `seconds` object's scale fields
 /// left empty with a note saying so — what a live update needs.
 pub fn verify_sections(s: &Scenario, traj: &Trajectory) -> Result<VerifyReport> {
-    verify_along_with(s, Along::Trajectory(traj), false)
+    verify_along_sections(s, Along::Trajectory(traj))
+}
+
+/// [`verify_sections`] along a trajectory or a multi-link robot's path.
+pub fn verify_along_sections(s: &Scenario, along: Along) -> Result<VerifyReport> {
+    verify_along_with(s, along, false)
 }
 
 /// Exact verification along a trajectory or a multi-link robot's path ([`verify_trajectory`]).

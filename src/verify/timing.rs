@@ -19,6 +19,10 @@ use crate::poly::Truth;
 use crate::report::Seconds;
 use crate::scenario::Scenario;
 
+/// The `min_time_scale_note` of a report made without the search of the least time scale
+/// ([`super::verify_sections`], a live update).
+pub const NOT_SEARCHED: &str = "not searched here: the least time scale comes from the exact verification with its search (cablenav verify)";
+
 /// Relative width of the bracket [k_lo, k_hi] the bisection stops at.
 pub const SCALE_TOL: f64 = 1e-4;
 
@@ -94,7 +98,7 @@ pub(super) fn seconds(s: &Scenario, along: Along, sec: &Sections, scale: bool) -
         min_time_scale_bracket: None,
         min_duration: None,
         max_time_scale: None,
-        min_time_scale_note: "not searched here: the least time scale comes from the exact verification with its search (cablenav verify)".to_string(),
+        min_time_scale_note: NOT_SEARCHED.to_string(),
         infeasible_at_rest: Vec::new(),
     };
     if scale {

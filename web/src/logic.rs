@@ -86,10 +86,20 @@ pub fn parse_scenario(text: &str) -> Result<Scenario, String> {
 /// Verifies trajectory `index` of `scenario` (a multi-link robot's path through configurations
 /// alike) with the core.
 pub fn verify(scenario: &Scenario, index: usize) -> Result<VerifyReport, String> {
-    let along = *cablenav::verify::all_along(scenario)
-        .get(index)
-        .ok_or_else(|| format!("trajectory #{index}: the scenario has no such trajectory"))?;
+    let along = along(scenario, index)?;
     cablenav::verify::verify_along(scenario, along).map_err(|e| e.to_string())
+}
+
+/// [`verify`] without the search of the least time scale: the sections at the trajectory's own
+/// timing, what a drag's live update needs (the search follows when the drag ends).
+pub fn verify_sections(scenario: &Scenario, index: usize) -> Result<VerifyReport, String> {
+    let along = along(scenario, index)?;
+    cablenav::verify::verify_along_sections(scenario, along).map_err(|e| e.to_string())
+}
+
+/// Trajectory (or multi-link path) `index` of the scenario.
+fn along(scenario: &Scenario, index: usize) -> Result<cablenav::verify::Along<'_>, String> {
+    cablenav::verify::all_along(scenario).get(index).copied().ok_or_else(|| format!("trajectory #{index}: the scenario has no such trajectory"))
 }
 
 /// Names of the scenario's trajectories (a multi-link robot's paths), in file order.
@@ -122,6 +132,7 @@ pub fn time_scale_summary(s: &Seconds) -> String {
         }
         (Some(k), Some(d), None) if k <= 1.0 => format!("Could run in {} s (time scale {}; certified for every slower timing)", fmt_num(d), fmt_num(k)),
         (Some(k), Some(d), None) => format!("Must run slower: at least {} s (time scale {})", fmt_num(d), fmt_num(k)),
+        _ if s.min_time_scale_note == cablenav::verify::timing::NOT_SEARCHED => return "The fastest timing is searched when the drag ends.".to_string(),
         _ => "No certified timing".to_string(),
     };
     format!("{lead}. {}", s.min_time_scale_note)

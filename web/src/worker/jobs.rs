@@ -136,12 +136,13 @@ pub fn run(job: Job, report: &mut dyn FnMut(Reply), now: fn() -> f64) {
     report(last.unwrap_or_else(|error| Reply::Failed { error }));
 }
 
-/// Trajectory `index` (clamped) of the scenario, verified exactly, timed by `now`.
+/// Trajectory `index` (clamped) of the scenario, verified exactly at its own timing (without the
+/// search of the least time scale, which the page runs when the drag ends), timed by `now`.
 fn verify(json: &str, index: usize, now: fn() -> f64) -> Reply {
     let started = now();
     let report = scenario(json).and_then(|s| {
         let i = crate::logic::trajectory_index(&s, index).ok_or("the scenario has no trajectory")?;
-        crate::logic::verify(&s, i)
+        crate::logic::verify_sections(&s, i)
     });
     Reply::Verified { report: report.as_ref().map(WireReport::from).map_err(Clone::clone), ms: now() - started }
 }
@@ -370,8 +371,20 @@ mod tests {
             let text = super::super::protocol::encode_reply(1, replies.last().unwrap());
             let Some(Ok(envelope)) = super::super::protocol::decode_reply(&text) else { panic!("{text}") };
             let Reply::Verified { report: Ok(r), .. } = envelope.body else { panic!("{text}") };
-            assert_eq!(r.report(), crate::logic::verify(&s, want).unwrap(), "index {index}: clamped to the last");
+            assert_eq!(r.report(), crate::logic::verify_sections(&s, want).unwrap(), "index {index}: clamped to the last");
         }
+        // a timed trajectory: the sections of the full verification, without its time-scale search
+        let json = PRESETS[find("robocrane-timed").unwrap()].json;
+        let s = Scenario::from_json(json).unwrap();
+        let mut replies = vec![];
+        run(Job::Verify { scenario: json.into(), index: 0 }, &mut |r| replies.push(r), clock);
+        let Some(Reply::Verified { report: Ok(r), .. }) = replies.last() else { panic!("{replies:?}") };
+        let (live, full) = (r.report(), crate::logic::verify(&s, 0).unwrap());
+        assert_eq!((&live.feasible, &live.infeasible, &live.uncertain), (&full.feasible, &full.infeasible, &full.uncertain));
+        let (ls, fs) = (live.seconds.as_ref().unwrap(), full.seconds.as_ref().unwrap());
+        assert_eq!((&ls.feasible, &ls.infeasible), (&fs.feasible, &fs.infeasible));
+        assert!(ls.min_time_scale.is_none() && fs.min_time_scale.is_some() && ls.min_time_scale_note == cablenav::verify::timing::NOT_SEARCHED);
+        assert_eq!(crate::logic::time_scale_summary(ls), "The fastest timing is searched when the drag ends.");
         let mut replies = vec![];
         run(Job::Verify { scenario: "{".into(), index: 0 }, &mut |r| replies.push(r), clock);
         assert!(matches!(&replies[0], Reply::Verified { report: Err(_), .. }), "{replies:?}");

@@ -44,7 +44,8 @@ pub enum Job {
     /// (the samples must then be at t = k/n, as `cablenav envelope` takes them).
     Profiles { scenario: String, name: String, samples: Vec<(f64, [u64; 7])>, trajectory: Option<String> },
     /// The exact verification of trajectory `index` (clamped to the scenario's) of the scenario
-    /// (a drag's live verification, [`crate::live`]).
+    /// at its own timing, without the time-scale search (a drag's live verification,
+    /// [`crate::live`]: the page adds the search when the drag ends).
     Verify { scenario: String, index: usize },
 }
 
