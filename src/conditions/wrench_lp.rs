@@ -29,7 +29,7 @@
 //! terms, so each certificate holds on small enough pieces wherever the condition holds (or
 //! fails) strictly: only the boundaries' neighbourhoods stay undecided, and stretches that graze
 //! the boundary need pieces of width ~√(margin), not ~margin. The cost per piece is two linear
-//! programs in O(m) variables and O(m) polynomial products of one factor of degree one.
+//! programs in O(m) variables, O(m) polynomial linear combinations and a few products.
 
 use std::rc::Rc;
 
