@@ -9,7 +9,7 @@ use cablenav::conditions::{cables_at_config, for_scenario, Kind};
 use cablenav::lattice::{point_grid, Lattice, LatticeSpec};
 use cablenav::model::Coord;
 use cablenav::scenario::caspr::to_json;
-use cablenav::verify::profile::{cable_states, cable_states_at};
+use cablenav::verify::profile::cable_states_at;
 use cablenav::verify::{check_config, ray_sections};
 use cablenav::Scenario;
 use serde_json::{json, Value};
@@ -275,6 +275,7 @@ fn as_chain(text: &str) -> Option<(Scenario, Scenario)> {
 #[cfg(not(target_arch = "wasm32"))]
 #[test]
 fn one_free_link_equals_the_platform_robot_on_every_preset() {
+    use cablenav::verify::profile::cable_states;
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/static/scenarios");
     let mut compared = 0;
     for entry in std::fs::read_dir(dir).unwrap() {
