@@ -175,6 +175,13 @@ await test('the wrench ellipsoid E is checked positive definite by the core', as
   const frames = await page.$$eval('select[data-testid="point-frame"] option', (os) => os.map((o) => o.value));
   if (frames.join() !== 'platform,world') throw new Error(`point frames ${frames}`);
   await page.screenshot({ path: join(artifacts, 'edit-wrench.png'), fullPage: true });
+  // the nominal wrench alone (format 4): no ellipsoid in the file, and the core reads it
+  await page.selectOption('select[data-testid="ellipsoid-mode"]', 'none');
+  await page.waitForSelector('[data-testid="editor-status"].ok');
+  const single = JSON.parse(await source(page));
+  if ('ellipsoid' in single.wrench || 'radius' in single.wrench || single.format !== 'cablenav-scenario/4') {
+    throw new Error(`wrench ${JSON.stringify(single.wrench)}, format ${single.format}`);
+  }
   // back to the edited 7-cable scenario, through the JSON box
   await page.click('details.editor summary');
   await page.fill('textarea[data-testid="source"]', saved);

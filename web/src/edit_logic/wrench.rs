@@ -5,11 +5,15 @@ use serde_json::{json, Value};
 use super::{get, number, remove, round12, set, Path};
 
 /// How the wrench ellipsoid is edited: `radius` (one radius, E = I/r²), `radii` (one radius
-/// per axis, E diagonal) or `matrix` (the full 6×6 E).
+/// per axis, E diagonal), `matrix` (the full 6×6 E) or `none` (format 4: the nominal wrench
+/// alone, no ellipsoid around it).
 pub fn ellipsoid_mode(doc: &Value) -> &'static str {
     let w = Path::of(&["wrench"]);
     if get(doc, &w.k("radius")).is_some() {
         return "radius";
+    }
+    if get(doc, &w.k("ellipsoid")).is_none() {
+        return "none";
     }
     match ellipsoid_matrix(doc) {
         Some(e) if is_diagonal(&e) => "radii",
@@ -64,10 +68,16 @@ pub fn set_ellipsoid_radii(doc: &mut Value, radii: [f64; 6]) {
 
 /// Switches the ellipsoid's editing mode, converting the current values: a ball becomes its
 /// diagonal matrix; a matrix becomes one radius (the mean of the per-axis radii) only in
-/// `radius` mode.
+/// `radius` mode; `none` removes the ellipsoid (raising the file to format 4, which reads a
+/// wrench section without one), and an ellipsoid comes back as radius 1.
 pub fn set_ellipsoid_mode(doc: &mut Value, mode: &str) {
     let radii = ellipsoid_radii(doc).map(|r| r.unwrap_or(1.0));
     match mode {
+        "none" => {
+            remove(doc, &Path::of(&["wrench", "ellipsoid"]));
+            remove(doc, &Path::of(&["wrench", "radius"]));
+            super::timing::require_format_4(doc);
+        }
         "radius" => {
             let mean = round12(radii.iter().sum::<f64>() / 6.0);
             remove(doc, &Path::of(&["wrench", "ellipsoid"]));
@@ -120,6 +130,13 @@ mod tests {
         set_ellipsoid_mode(&mut d, "radius");
         assert_eq!(d["wrench"]["radius"], json!(1));
         assert!(d["wrench"].get("ellipsoid").is_none());
+        // the nominal wrench alone: no ellipsoid, format 4, read by the core as a single wrench
+        set_ellipsoid_mode(&mut d, "none");
+        assert_eq!(ellipsoid_mode(&d), "none");
+        assert_eq!(d["format"], json!(crate::edit_logic::timing::FORMAT_4));
+        assert!(Scenario::from_json(&d.to_string()).unwrap().wrench.unwrap().is_single());
+        set_ellipsoid_mode(&mut d, "radius");
+        assert_eq!(d["wrench"]["radius"], json!(1));
         d["wrench"] = wrench_template();
         Scenario::from_json(&d.to_string()).unwrap();
     }

@@ -86,6 +86,7 @@ fn Ellipsoid(ed: Ed) -> impl IntoView {
                 ("radius".to_string(), "one radius (E = I/r²)".to_string()),
                 ("radii".to_string(), "a radius per axis (E diagonal)".to_string()),
                 ("matrix".to_string(), "the full 6×6 matrix".to_string()),
+                ("none".to_string(), "none: the nominal wrench alone".to_string()),
             ]
             current=Signal::derive(move || mode.get().to_string())
             on_pick=Callback::new(move |m: String| {
@@ -97,6 +98,7 @@ fn Ellipsoid(ed: Ed) -> impl IntoView {
         {move || match mode.get() {
             "radius" => view! { <NumField ed path=Path::of(&["wrench", "radius"]) label="Radius r" unit="N, N·m" /> }.into_any(),
             "radii" => view! { <Radii ed /> }.into_any(),
+            "none" => view! { <p class="hint">"Only the nominal wrench (with the platform's weight and inertia) must be balanced: no ellipsoid of wrenches around it."</p> }.into_any(),
             _ => view! { <MatrixField ed path=Path::of(&["wrench", "ellipsoid"]) rows=6 cols=6 label="E (symmetric positive definite)" /> }.into_any(),
         }}
     }
