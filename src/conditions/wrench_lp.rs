@@ -100,20 +100,17 @@ impl Piece {
         for j in 0..6 {
             (nl[j], nr[j]) = split_all(&self.n[j]);
         }
-        let (ll, lr): (Vec<Bern>, Vec<Bern>) = split_all(&self.load);
-        let rows = |v: Vec<Bern>| -> [Bern; 6] { std::array::from_fn(|j| v[j].clone()) };
+        // the halves of an array's polynomials, as two arrays (moved, not copied)
+        fn split_array<const N: usize>(ps: &[Bern; N]) -> ([Bern; N], [Bern; N]) {
+            let (l, r): (Vec<Bern>, Vec<Bern>) = ps.iter().map(|p| p.split(0.5)).unzip();
+            let array = |v: Vec<Bern>| v.try_into().unwrap_or_else(|_| unreachable!("N halves of N polynomials"));
+            (array(l), array(r))
+        }
+        let (ll, lr) = split_array(&self.load);
         let (wl, wr) = self.w.split(0.5);
-        let (pl, pr) = self
-            .len2
-            .iter()
-            .map(|ps| {
-                let (l, r): (Vec<Bern>, Vec<Bern>) = split_all(ps);
-                let three = |v: Vec<Bern>| -> [Bern; 3] { std::array::from_fn(|j| v[j].clone()) };
-                (three(l), three(r))
-            })
-            .unzip();
+        let (pl, pr) = self.len2.iter().map(split_array).unzip();
         let width = 0.5 * self.width;
-        (Piece { n: nl, load: rows(ll), w: wl, len2: pl, width }, Piece { n: nr, load: rows(lr), w: wr, len2: pr, width })
+        (Piece { n: nl, load: ll, w: wl, len2: pl, width }, Piece { n: nr, load: lr, w: wr, len2: pr, width })
     }
 }
 
