@@ -1,15 +1,20 @@
 #!/usr/bin/env bash
 # Builds the web page without trunk: the same app, HTML, CSS and assets that `trunk serve` builds
-# from web/index.html, in release mode, into an output directory (default target/page).
+# from web/index.html, into an output directory (default target/page): the page as deployed, built
+# for size (Cargo.toml's `page` profile, which the rust link names in data-cargo-profile-release)
+# and shrunk by wasm-opt -Oz.
 #   scripts/build-page.sh [OUT_DIR]
-# Needs the wasm32 target and wasm-bindgen-cli 0.2.130 (scripts/install.sh). Prints the gzip size.
+# Needs the wasm32 target, wasm-bindgen-cli 0.2.130 and npm's binaryen in scripts/wasm-opt/;
+# scripts/install.sh installs them. Prints the gzip size.
 #
 # Each `<link data-trunk ...>` line of web/index.html is handled as Trunk handles it:
-#   rel="rust"      -> cargo build + wasm-bindgen --target web; a module script that inits it
+#   rel="rust"      -> cargo build --profile P (P from data-cargo-profile-release) + wasm-bindgen
+#                      --target web + wasm-opt -Oz; a module script that inits it
 #   rel="css"       -> copied; a plain stylesheet link
 #   rel="copy-dir"  -> the directory copied into OUT_DIR under its own name
 #   rel="copy-file" -> the file copied into OUT_DIR
-# (no content hashes in the file names; wasm-opt is off, as in web/index.html)
+# (no content hashes in the file names). Trunk's own wasm-opt stays off (data-wasm-opt="0"): it
+# would download binaryen, which this network refuses; `trunk serve` is the quick dev loop.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -28,16 +33,29 @@ attr() { # attr NAME LINE: the value of NAME="..." in LINE
 }
 
 command -v wasm-bindgen >/dev/null || die "wasm-bindgen not found: run scripts/install.sh"
+WASM_OPT=scripts/wasm-opt/node_modules/.bin/wasm-opt   # npm's binaryen, pinned in scripts/wasm-opt/
+[ -x "$WASM_OPT" ] || die "$WASM_OPT not found: run scripts/install.sh"
 
-say "cargo build --release --target wasm32-unknown-unknown -p $CRATE"
-cargo build --release --target wasm32-unknown-unknown -p "$CRATE"
-WASM="$TARGET_DIR/wasm32-unknown-unknown/release/$CRATE.wasm"
+RUST_LINK=$(grep '<link[^>]*data-trunk[^>]*rel="rust"' "$SRC_HTML" || true)
+PROFILE=$(attr data-cargo-profile-release "$RUST_LINK")
+[ -n "$PROFILE" ] || die "web/index.html: the rust link must name its data-cargo-profile-release"
+
+# The wasm features rustc emits for wasm32-unknown-unknown; wasm-opt must accept them all.
+WASM_FEATURES=(--enable-bulk-memory --enable-sign-ext --enable-mutable-globals
+  --enable-nontrapping-float-to-int --enable-reference-types --enable-multivalue)
+
+say "cargo build --profile $PROFILE --target wasm32-unknown-unknown -p $CRATE"
+cargo build --profile "$PROFILE" --target wasm32-unknown-unknown -p "$CRATE"
+WASM="$TARGET_DIR/wasm32-unknown-unknown/$PROFILE/$CRATE.wasm"
 [ -f "$WASM" ] || die "no $WASM after the build"
 
 rm -rf "$OUT"
 mkdir -p "$OUT"
 say "wasm-bindgen --target web --no-typescript -> $OUT"
 wasm-bindgen --target web --no-typescript --out-dir "$OUT" --out-name "$CRATE" "$WASM"
+say "wasm-opt -Oz ($("$WASM_OPT" --version))"
+"$WASM_OPT" -Oz "${WASM_FEATURES[@]}" "$OUT/${CRATE}_bg.wasm" -o "$OUT/${CRATE}_bg.opt.wasm"
+mv "$OUT/${CRATE}_bg.opt.wasm" "$OUT/${CRATE}_bg.wasm"
 
 # Derive OUT/index.html from web/index.html, line by line.
 HTML_OUT="$OUT/index.html"

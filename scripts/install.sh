@@ -2,7 +2,7 @@
 # Installs every tool cablenav needs, idempotently and pinned. Safe to run again: each step
 # checks first and does nothing when the right version is already there.
 #   scripts/install.sh            tools for the tests (wasm target, wasm-bindgen, wasm-pack, chromium,
-#                                 chromium-driver, playwright-core, and a Python virtual environment
+#                                 chromium-driver, playwright-core, npm's binaryen (wasm-opt), and a Python virtual environment
 #                                 target/venv with maturin, pytest and dask[distributed])
 #   scripts/install.sh --serve    also trunk, for `scripts/serve.sh`
 set -euo pipefail
@@ -12,6 +12,9 @@ WASM_BINDGEN_VERSION=0.2.130   # must match the `wasm-bindgen = "=0.2.130"` pin 
 WASM_PACK_VERSION=0.15.1
 TRUNK_VERSION=0.21.14          # 0.22 needs a newer rustc than these machines have
 PLAYWRIGHT_CORE_VERSION=1.64.1
+# wasm-opt for the page (scripts/wasm-opt/package.json): npm's binaryen, because Debian's 108 breaks
+# wasm-bindgen's externref table and binaryen's GitHub releases cannot be downloaded here.
+BINARYEN_VERSION=132.0.0
 # The Python package's build and tests (python/): pinned, installed into target/venv.
 PYTHON_TOOLS=(maturin==1.16.0 pytest==9.2.0 "dask[distributed]==2026.8.0")
 
@@ -75,6 +78,12 @@ if [ ! -f tests/browser/node_modules/playwright-core/package.json ] || \
   say "installing playwright-core $PLAYWRIGHT_CORE_VERSION (npm; drives Debian's chromium, downloads no browser)"
   (cd tests/browser && PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm install --no-audit --no-fund --no-package-lock --silent)
 fi
+if [ ! -f scripts/wasm-opt/node_modules/binaryen/package.json ] || \
+   ! grep -q "\"version\": \"$BINARYEN_VERSION\"" scripts/wasm-opt/node_modules/binaryen/package.json; then
+  say "installing binaryen $BINARYEN_VERSION (npm): the wasm-opt that scripts/build-page.sh runs"
+  (cd scripts/wasm-opt && npm install --no-audit --no-fund --no-package-lock --silent)
+fi
+
 VENV=target/venv
 if [ ! -x "$VENV/bin/python" ]; then
   say "creating the Python virtual environment $VENV"

@@ -6,7 +6,9 @@
 #                                      fragment), no panic allowed; prints the counts
 #   2. wasm-pack test --node           the core's tests compiled to wasm32, run in node
 #   3. wasm-pack test --chrome web     the editor's component tests, in headless Chromium (chromedriver)
-#   4. scripts/build-page.sh           the page, built as `trunk serve` builds it (no trunk needed)
+#   4. scripts/build-page.sh           the page as deployed (profile `page`, wasm-opt -Oz; no trunk needed)
+#   4b. tests/browser/first-load.mjs   its first load on a throttled network (slow 4G): wasm + js over
+#                                      the wire at most 1.0 MB, the time to the first strip printed
 #   5. tests/browser/smoke.mjs         the built page in headless Chromium
 #   6. tests/browser/e2e-edit.mjs      editing, reload, shared link, embed, files, CASPR (checked
 #                                      against the CLI that step 1 built)
@@ -58,6 +60,9 @@ wasm-pack test --chrome --headless --chromedriver "$(command -v chromedriver)" w
 
 step "build the page"
 scripts/build-page.sh target/page
+
+step "the page's first load on a throttled network"
+node tests/browser/first-load.mjs target/page
 
 step "browser smoke test"
 node tests/browser/smoke.mjs target/page

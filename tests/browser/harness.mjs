@@ -6,6 +6,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdirSync, mkdtempSync } from 'node:fs';
 import { createServer } from 'node:http';
 import { readFileSync, statSync } from 'node:fs';
+import { gzipSync } from 'node:zlib';
 import { tmpdir } from 'node:os';
 import { dirname, extname, join, normalize, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -22,8 +23,16 @@ const TYPES = {
   '.svg': 'image/svg+xml',
 };
 
-/** Serves `dir` on 127.0.0.1 (a free port); `extra` maps paths to HTML served as is. */
+// What a static host compresses: the page's text and its wasm (PNG is compressed already).
+const GZIP = new Set(['.html', '.js', '.mjs', '.wasm', '.css', '.json', '.svg']);
+
+/**
+ * Serves `dir` on 127.0.0.1 (a free port); `extra` maps paths to HTML served as is. Files are sent
+ * gzip-compressed (level 9, as scripts/build-page.sh measures them) to a client that accepts it,
+ * and cacheable for ten minutes, as a static host would.
+ */
 export function serve(dir, extra = {}) {
+  const gzipped = new Map(); // file -> its gzip, made once
   const server = createServer((req, res) => {
     const path = decodeURIComponent(new URL(req.url, 'http://x').pathname);
     if (extra[path] !== undefined) {
@@ -38,7 +47,18 @@ export function serve(dir, extra = {}) {
     try {
       if (statSync(file).isDirectory()) file = join(file, 'index.html');
       const body = readFileSync(file);
-      res.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' });
+      const headers = {
+        'content-type': TYPES[extname(file)] ?? 'application/octet-stream',
+        'cache-control': 'max-age=600', // as GitHub Pages sends: the worker's import of the glue hits the cache
+        'last-modified': statSync(file).mtime.toUTCString(),
+      };
+      if (GZIP.has(extname(file)) && /\bgzip\b/.test(req.headers['accept-encoding'] ?? '')) {
+        if (!gzipped.has(file)) gzipped.set(file, gzipSync(body, { level: 9 }));
+        headers['content-encoding'] = 'gzip';
+        res.writeHead(200, headers);
+        return res.end(gzipped.get(file));
+      }
+      res.writeHead(200, headers);
       res.end(body);
     } catch {
       res.writeHead(404, { 'content-type': 'text/plain' });
