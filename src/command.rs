@@ -10,9 +10,9 @@ use crate::error::{Error, Result};
 use crate::model::Coord;
 use crate::lattice::{Lattice, LatticeReport, LatticeSpec};
 use crate::model::Trajectory;
-use crate::plan::choice::{self, Details, PlannerKind, PlannerOptions};
+use crate::plan::atlas::{PlanParams, PlanReport};
 use crate::plan::lattice::{LatticeParams, LatticePlanReport};
-use crate::plan::{PlanParams, PlanReport, PlanStatus};
+use crate::plan::{self, Details, PlanStatus, PlannerKind, PlannerOptions};
 use crate::report::{PoseReport, RayReport, Side, TensionEnvelope, VerifyReport};
 use crate::verify::slice::{default_range, slice_counted, Class, SliceMap};
 use crate::verify::{along, check_along, check_config, check_pose, ray, tension_envelope, verify_all_counted, verify_along, verify_pointwise_along};
@@ -201,7 +201,7 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
             let options = PlannerOptions { kind: *planner, atlas: *params, lattice: *lattice };
             // the planner is picked by name and stepped through the common interface
             let (result, seconds) = timed(|| -> Result<_> {
-                let mut p = choice::planner(scenario, query, &options).map_err(option)?;
+                let mut p = plan::planner(scenario, query, &options).map_err(option)?;
                 loop {
                     let step = p.step(1000);
                     if step.done.is_some() {

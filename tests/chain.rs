@@ -5,9 +5,10 @@
 #[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
-use cablenav::conditions::{cables_at_config, for_scenario, Kind};
+use cablenav::conditions::{for_scenario, Kind};
 use cablenav::lattice::{point_grid, Lattice, LatticeSpec};
 use cablenav::model::Coord;
+use cablenav::query::cables::cables_at_config;
 use cablenav::scenario::caspr::to_json;
 use cablenav::verify::profile::cable_states_at;
 use cablenav::verify::{check_config, ray_sections};

@@ -9,8 +9,7 @@ use wasm_bindgen_test::wasm_bindgen_test as test;
 
 use cablenav::lattice::{point_grid, Lattice, LatticeSpec};
 use cablenav::model::{Coord, Pose};
-use cablenav::plan::choice::{planner, PlannerKind, PlannerOptions};
-use cablenav::plan::PlanStatus;
+use cablenav::plan::{planner, PlanStatus, PlannerKind, PlannerOptions};
 use cablenav::verify::check_pose;
 use cablenav::Scenario;
 use serde_json::{json, Value};
@@ -210,9 +209,9 @@ fn a_whole_turn_of_an_angle_axis_closes_the_lattice() {
 fn a_lattice_plan_crosses_the_seam_of_a_whole_turn() {
     let s = Scenario::from_json(&seam()).unwrap();
     let pi = std::f64::consts::PI;
-    let r = cablenav::plan::choice::run(&s, "across", &PlannerOptions::new(PlannerKind::Lattice), &|| 0.0).unwrap();
+    let r = cablenav::plan::run(&s, "across", &PlannerOptions::new(PlannerKind::Lattice), &|| 0.0).unwrap();
     assert_eq!(r.status, PlanStatus::Found);
-    let cablenav::plan::choice::Details::Lattice(d) = &r.details else { panic!("a lattice report") };
+    let cablenav::plan::Details::Lattice(d) = &r.details else { panic!("a lattice report") };
     assert_eq!(d.components, 1, "{d:?}");
     // the polyline is continuous: past σ = π it goes on to σ = π + 0.68 (the goal's −2.6 + 2π)
     let sigma: Vec<f64> = d.polyline.iter().map(|c| c[5]).collect();
@@ -266,7 +265,7 @@ fn atlas_and_lattice_behind_one_interface() {
         let traj = p.result(0.0).unwrap().trajectory.expect("a trajectory");
         let r = cablenav::verify::verify_trajectory(&s, &traj).unwrap();
         assert_eq!(r.feasible, vec![[0.0, 1.0]], "{kind:?}: {r:?}");
-        if let cablenav::plan::choice::Details::Lattice(d) = p.result(0.0).unwrap().details {
+        if let cablenav::plan::Details::Lattice(d) = p.result(0.0).unwrap().details {
             // The shortest lattice path: θ down to 0 (0.9 rad), φ across at θ = 0 where every φ is
             // the same rotation (cost 0), θ up again (0.9 rad) — the same natively and in wasm32.
             // (A* once recomputed an entry's cost as f − h, which rounding made exceed g: live

@@ -9,10 +9,11 @@ use wasm_bindgen_test::wasm_bindgen_test as test;
 mod support;
 
 use cablenav::model::{Coord, Pose};
-use cablenav::plan::atlas::AtlasParams;
-use cablenav::plan::manifold::{BoundKind, CableManifold, Manifold};
-use cablenav::plan::search::{Continuation, Ended};
-use cablenav::plan::{plan, verify_path, PlanParams, PlanStatus, Planner};
+use cablenav::plan::atlas::atlas::AtlasParams;
+use cablenav::plan::atlas::manifold::{BoundKind, CableManifold, Manifold};
+use cablenav::plan::atlas::search::{Continuation, Ended};
+use cablenav::plan::atlas::{plan, verify_path, AtlasPlanner, PlanParams};
+use cablenav::plan::PlanStatus;
 use cablenav::shape::{Obstacle, Shape};
 use cablenav::query::wrench::tension_ranges;
 use cablenav::scenario::Query;
@@ -432,7 +433,7 @@ fn robocrane_q3_q4_in_the_paper_coordinates() {
     let s = robocrane();
     let (a, b) = paper_coords("q3-q4");
     let params = PlanParams { identify_angles: false, ..PlanParams::default() };
-    let mut p = Planner::between_coords(&s, a, b, &[Coord::X, Coord::Y, Coord::Z, Coord::Sigma], params).unwrap();
+    let mut p = AtlasPlanner::between_coords(&s, a, b, &[Coord::X, Coord::Y, Coord::Z, Coord::Sigma], params).unwrap();
     while p.step(500).done.is_none() {}
     let out = p.outcome().unwrap();
     assert_eq!(out.status, PlanStatus::Found);
@@ -592,7 +593,7 @@ fn robocrane_full_6d_query_is_found_with_default_options() {
 #[test]
 fn stepping_matches_a_single_run() {
     let s = robocrane();
-    let mut p = Planner::new(&s, "q1-q2", PlanParams::default()).unwrap();
+    let mut p = AtlasPlanner::new(&s, "q1-q2", PlanParams::default()).unwrap();
     assert!(p.outcome().is_none());
     let mut charts = 0;
     let mut steps = 0;
@@ -616,7 +617,7 @@ fn stepping_matches_a_single_run() {
 #[test]
 fn bad_input_is_reported() {
     let mut s = robocrane();
-    let err = |s: &Scenario, q: &str, p: PlanParams| Planner::new(s, q, p).err().expect("an error");
+    let err = |s: &Scenario, q: &str, p: PlanParams| AtlasPlanner::new(s, q, p).err().expect("an error");
     let e = err(&s, "nope", PlanParams::default());
     assert_eq!(e.field, "query");
     assert!(e.reason.contains("q1-q2"), "{}", e.reason);
@@ -647,7 +648,7 @@ fn bad_input_is_reported() {
     let e = err(&s, "singular-goal", PlanParams::default());
     assert!(e.field.ends_with(".goal") && e.reason.contains("singular"), "{e}");
     let nan = [f64::NAN, 0.0, 2.0, 0.0, 0.5, 0.0];
-    assert_eq!(Planner::between_coords(&s, nan, [0.0, 0.0, 2.0, 0.0, 0.5, 0.0], &[], PlanParams::default()).err().unwrap().field, "start[0]");
+    assert_eq!(AtlasPlanner::between_coords(&s, nan, [0.0, 0.0, 2.0, 0.0, 0.5, 0.0], &[], PlanParams::default()).err().unwrap().field, "start[0]");
     // A scenario without a wrench section cannot be planned on.
     let mut nowrench = robocrane();
     nowrench.wrench = None;
@@ -666,7 +667,7 @@ fn bad_input_is_reported() {
 fn every_step_unit_does_bounded_work() {
     let mut s = robocrane();
     s.queries.push(Query { name: "q1-q3".to_string(), start: "q1".to_string(), goal: "q3".to_string(), fixed: vec![Coord::X, Coord::Y, Coord::Z, Coord::Sigma], region: vec![] });
-    let mut p = Planner::new(&s, "q1-q3", PlanParams::default()).unwrap();
+    let mut p = AtlasPlanner::new(&s, "q1-q3", PlanParams::default()).unwrap();
     let mut last = p.work();
     let (mut most_evaluations, mut most_trajectories, mut most_poses, mut units) = (0, 0, 0, 0);
     while p.step(1).done.is_none() {

@@ -3,8 +3,9 @@
 #[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
-use cablenav::conditions::{cables_at, for_scenario, Condition};
+use cablenav::conditions::{for_scenario, Condition};
 use cablenav::model::{Coord, Pose};
+use cablenav::query::cables::cables_at;
 use cablenav::verify::ray;
 use cablenav::Scenario;
 

@@ -4,8 +4,8 @@
 #[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
-use cablenav::conditions::cables_at;
 use cablenav::model::Coord;
+use cablenav::query::cables::cables_at;
 use cablenav::query::segment_segment_dist;
 use cablenav::report::Side;
 use cablenav::verify::{ray, verify_pointwise, verify_trajectory};

@@ -35,7 +35,7 @@ fn robocrane_poses_are_feasible_with_a_world_parallel_point() {
     for q in ["q1", "q2", "q3", "q4", "q5", "q6"] {
         let w = wrench_at(&s, s.pose(q).unwrap()).unwrap();
         assert!(w.feasible && !w.singular, "{q}: {w:?}");
-        assert!(w.margin.unwrap() > 0.04, "{q}: {w:?}");
+        assert!(w.margin.unwrap() >= 0.05, "{q}: {w:?} (docs/wrench.md: margins ≥ 0.05)");
     }
     // With the load point rotating with the platform, q3–q5 are not (see docs/wrench.md).
     let mut rotating = s.clone();

@@ -5,8 +5,8 @@
 #[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
-use cablenav::conditions::cables_at;
 use cablenav::model::{Bounds, Pose};
+use cablenav::query::cables::cables_at;
 use cablenav::query::lp::{maximise, LpResult};
 use cablenav::query::wrench::{closure_holds, static_margin, structure_matrix_m};
 use cablenav::verify::{verify_trajectory, wrench_at};

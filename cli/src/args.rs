@@ -2,8 +2,8 @@
 //! `--help`, turned into a [`Request`] for the core.
 
 use cablenav::command::Request;
-use cablenav::plan::choice::{self, PlannerKind};
-use cablenav::plan::PlanParams;
+use cablenav::plan::atlas::PlanParams;
+use cablenav::plan::{atlas_params, lattice_params, AtlasOptions, PlannerKind};
 use clap::{Parser, Subcommand};
 use clap_complete::Shell;
 
@@ -275,9 +275,9 @@ impl Command {
             }
             Command::Plan { scenario, query, planner, steps, out, max_charts, radius, min_radius, heuristic_weight, epsilon, json } => {
                 let planner = PlannerKind::parse(&planner)?;
-                let lattice = choice::lattice_params(planner, steps, "--planner lattice")?;
-                let atlas = choice::AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon };
-                let params = choice::atlas_params(planner, &atlas, "--planner atlas")?;
+                let lattice = lattice_params(planner, steps, "--planner lattice")?;
+                let atlas = AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon };
+                let params = atlas_params(planner, &atlas, "--planner atlas")?;
                 Ok(Invocation { scenario, request: Request::Plan { query, params, planner, lattice }, json, png: None, out })
             }
             Command::Completions { .. } => Err(cablenav::Error::new("completions", "reads no scenario")),

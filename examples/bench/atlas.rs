@@ -9,7 +9,7 @@
 //! 6-D query run out of a 1500-chart budget after minutes).
 
 use cablenav::model::Coord;
-use cablenav::plan::{PlanOutcome, PlanParams, Planner};
+use cablenav::plan::atlas::{AtlasPlanner, PlanOutcome, PlanParams};
 use cablenav::scenario::Query;
 use cablenav::Scenario;
 use std::f64::consts::PI;
@@ -50,8 +50,8 @@ pub fn run_atlas() {
             let once = || {
                 let start = Instant::now();
                 let mut p = match problem {
-                    Problem::Query(q) => Planner::new(&crane, q, *params),
-                    Problem::PaperCoords(a, b) => Planner::between_coords(&crane, *a, *b, &slice, PlanParams { identify_angles: false, ..*params }),
+                    Problem::Query(q) => AtlasPlanner::new(&crane, q, *params),
+                    Problem::PaperCoords(a, b) => AtlasPlanner::between_coords(&crane, *a, *b, &slice, PlanParams { identify_angles: false, ..*params }),
                 }
                 .expect("planner");
                 while p.step(1000).done.is_none() {}

@@ -7,7 +7,7 @@
 //! `BENCH <platform> <case> <median_us> <best_us> <calls> <samples> <summary>`.
 
 use cablenav::model::Coord;
-use cablenav::plan::{plan, PlanOutcome, PlanParams, Planner};
+use cablenav::plan::atlas::{plan, AtlasPlanner, PlanOutcome, PlanParams};
 use cablenav::query::wrench::tension_ranges;
 use cablenav::verify::{ray, slice, slice::default_range, verify_pointwise, verify_sections, verify_trajectory};
 use cablenav::Scenario;
@@ -233,7 +233,7 @@ pub fn run_all(platform: &str, filter: &str, now: &dyn Fn() -> f64, out: &mut dy
             let sigma = 7.0 * std::f64::consts::PI / 36.0;
             let params = PlanParams { identify_angles: false, ..PlanParams::default() };
             let fixed = [Coord::X, Coord::Y, Coord::Z, Coord::Sigma];
-            let mut p = Planner::between_coords(&crane, [0.0, 0.0, 2.0, 0.8, -2.4, sigma], [0.0, 0.0, 2.0, -2.4, 2.4, sigma], &fixed, params).expect("planner");
+            let mut p = AtlasPlanner::between_coords(&crane, [0.0, 0.0, 2.0, 0.8, -2.4, sigma], [0.0, 0.0, 2.0, -2.4, 2.4, sigma], &fixed, params).expect("planner");
             while p.step(1000).done.is_none() {}
             summary(p.outcome().expect("outcome"))
         }),

@@ -4,7 +4,7 @@
 //! accept (it returns whether the input got past parsing, for the driver's statistics); what it
 //! must never do is panic.
 
-use cablenav::scenario::{caspr, link};
+use cablenav::scenario::{caspr, share_url};
 use cablenav::verify::{ray, verify_all};
 use cablenav::Scenario;
 
@@ -64,5 +64,5 @@ pub fn url_fragment(data: &[u8]) -> bool {
     let Ok(hash) = std::str::from_utf8(data) else { return false };
     let h = hash.strip_prefix('#').unwrap_or(hash);
     let Some(encoded) = h.strip_prefix("s=") else { return false };
-    link::decode_scenario(encoded).is_ok_and(|json| Scenario::from_json(&json).is_ok())
+    share_url::decode_scenario(encoded).is_ok_and(|json| Scenario::from_json(&json).is_ok())
 }

@@ -7,7 +7,7 @@
 //! The TypeScript interfaces of the reports are declared below and returned by name.
 
 use cablenav::command::{self, Request};
-use cablenav::plan::choice::{self, PlannerKind};
+use cablenav::plan::{atlas_params, lattice_params, AtlasOptions, PlannerKind};
 use cablenav::{Error, Scenario};
 use wasm_bindgen::prelude::*;
 
@@ -357,10 +357,10 @@ pub fn plan(
     #[wasm_bindgen(js_name = minRadius)] min_radius: Option<f64>,
     #[wasm_bindgen(js_name = heuristicWeight)] heuristic_weight: Option<f64>,
 ) -> Result<JsValue, JsValue> {
-    let atlas = choice::AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon };
+    let atlas = AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon };
     let request = PlannerKind::parse(planner.as_deref().unwrap_or("atlas")).and_then(|planner| {
-        let lattice = choice::lattice_params(planner, steps, "the \"lattice\" planner")?;
-        let params = choice::atlas_params(planner, &atlas, "the \"atlas\" planner")?;
+        let lattice = lattice_params(planner, steps, "the \"lattice\" planner")?;
+        let params = atlas_params(planner, &atlas, "the \"atlas\" planner")?;
         Ok(Request::Plan { query, params, planner, lattice })
     });
     call(scenario, request)

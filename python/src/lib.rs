@@ -8,7 +8,7 @@
 //! parameter) in `.field`.
 
 use cablenav::command::{self, Request};
-use cablenav::plan::choice::{self, PlannerKind};
+use cablenav::plan::{atlas_params, lattice_params, AtlasOptions, PlannerKind};
 use cablenav::{Error, Scenario};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
@@ -294,10 +294,10 @@ fn plan(
     heuristic_weight: Option<f64>,
     epsilon: Option<f64>,
 ) -> PyResult<Py<PyAny>> {
-    let atlas = choice::AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon };
+    let atlas = AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon };
     let request = PlannerKind::parse(planner).and_then(|planner| {
-        let lattice = choice::lattice_params(planner, steps, "planner=\"lattice\"")?;
-        let params = choice::atlas_params(planner, &atlas, "planner=\"atlas\"")?;
+        let lattice = lattice_params(planner, steps, "planner=\"lattice\"")?;
+        let params = atlas_params(planner, &atlas, "planner=\"atlas\"")?;
         Ok(Request::Plan { query, params, planner, lattice })
     });
     call(py, scenario, request)

@@ -3,8 +3,9 @@
 
 use super::algebra::{hvec_const, HVec};
 use super::primitives::{segment_segment, ALL_ENDS};
-use super::{on_undecided, subtract, Condition, Cost, Kind, PoseCables, PoseCheck, Sweep};
+use super::{on_undecided, subtract, Condition, Cost, Kind, PoseCheck, Sweep};
 use crate::poly::Partition;
+use crate::query::cables::PoseCables;
 use crate::query::segment_segment_dist;
 
 /// Clearance between cables `i` and `j` (0-based; reports number them from 1).

@@ -2,9 +2,10 @@
 
 use super::algebra::H;
 use super::primitives::{all_of, any_of, GT, LT};
-use super::{on_undecided, Condition, Kind, PoseCables, PoseCheck, Sweep};
+use super::{on_undecided, Condition, Kind, PoseCheck, Sweep};
 use crate::model::Bounds;
 use crate::poly::{Partition, Truth};
+use crate::query::cables::PoseCables;
 
 /// Length bounds of one cable.
 #[derive(Debug, Clone)]

@@ -5,8 +5,9 @@
 
 use super::algebra::{HVec, H};
 use super::primitives::{point_segment, segment_segment, ALL_ENDS};
-use super::{on_undecided, Condition, Cost, Kind, PoseCables, PoseCheck, Sweep};
+use super::{on_undecided, Condition, Cost, Kind, PoseCheck, Sweep};
 use crate::poly::{Bern, Partition};
+use crate::query::cables::PoseCables;
 use crate::query::{point_segment_dist2, segment_segment_dist};
 use nalgebra::Vector3;
 

@@ -7,8 +7,9 @@ use super::algebra::{hvec_const, HVec};
 use super::offset::{cone_near, cylinder_near, ellipsoid_clear};
 use super::primitives::{point_segment, segment_cone, segment_face, segment_segment, ConeSolid, ALL_ENDS};
 use super::tube::Bound;
-use super::{on_undecided, Condition, Cost, Kind, PoseCables, PoseCheck, Sweep};
+use super::{on_undecided, Condition, Cost, Kind, PoseCheck, Sweep};
 use crate::poly::{Partition, Truth};
+use crate::query::cables::PoseCables;
 use crate::query::{
     point_cone_dist, point_cylinder_dist, point_segment_dist2, segment_crosses_triangle, segment_meets_cone, segment_min_convex,
     segment_triangle_dist, EllipsoidFrame,

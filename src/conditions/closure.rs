@@ -23,10 +23,11 @@ use std::rc::Rc;
 use super::interval::Iv;
 use super::load::{inverse_square, with_inertia};
 use super::primitives::{GT, LT};
-use super::structure::{det_with, minors, quadratic_form, structure_numerators, Local};
-use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
+use super::structure::{det_with, minors, quadratic_form, structure_numerators};
+use super::{Condition, Kind, Local, PoseCheck, Sweep};
 use crate::model::{Bounds, Load};
 use crate::poly::{Bern, Partition, Truth};
+use crate::query::cables::PoseCables;
 use crate::query::wrench::{closure_holds, subsets, wrench_set_margin};
 
 /// One facet candidate: five columns S, d_k for the other columns, d_0 and the ellipsoid's reach.

@@ -21,9 +21,10 @@ use std::rc::Rc;
 use super::algebra::H;
 use super::closure::not_spanning;
 use super::structure::{det_with, minors};
-use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
+use super::{Condition, Kind, PoseCheck, Sweep};
 use crate::model::{Chain, Joint};
 use crate::poly::{Bern, Partition, Truth};
+use crate::query::cables::PoseCables;
 use crate::query::wrench::{positively_spans, subsets};
 use nalgebra::{DMatrix, Vector3};
 

@@ -14,7 +14,8 @@
 //! The rows are returned scaled as the structure matrix's rows are (forces times w, moments times
 //! w²) and over a common w^q: [`LoadPolys::rows`] = D_w ℓ · w^q.
 
-use super::structure::{cross, point_offset, times_const, Local};
+use super::structure::{cross, point_offset, times_const};
+use super::Local;
 use crate::model::motion::Param;
 use crate::model::{Dynamics, Load};
 use crate::poly::Bern;

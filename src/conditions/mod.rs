@@ -32,19 +32,18 @@ pub use cable_link::CableLink;
 pub use cable_shape::CableShape;
 pub use closure::{FacetPolys, WrenchClosure, WrenchFeasibility};
 pub use joint_closure::JointClosure;
-pub use tension::{CableTension, Side, TensionPolys};
+pub use tension::{CableTension, TensionPolys, TensionSide};
 pub use winch::{Rate, WinchLimit};
 pub use wrench_lp::WrenchFeasibilityLp;
 
-use std::cell::OnceCell;
 use std::rc::Rc;
 
-use crate::model::chain::Frame;
-use crate::model::{Kinematics, Load, Motion, Pose, Robot};
+use crate::model::{Load, Motion, Robot};
 use crate::poly::{Bern, Partition, Truth};
-use crate::query::wrench::{tension_ranges_at, TensionRange};
+use crate::query::cables::{attached_inside, PoseCables};
 use crate::scenario::Scenario;
 use algebra::{Alg, HVec};
+use load::{load_polys, time_rate, LoadPolys};
 use tube::Tube;
 use nalgebra::Vector3;
 
@@ -122,6 +121,57 @@ impl Sweep {
     }
 }
 
+/// A motion's polynomials on a sub-interval of λ (all of [0, 1] or a piece being refined),
+/// re-expanded there so that error bounds scale with the local magnitudes.
+#[derive(Debug, Clone)]
+pub(crate) struct Local {
+    /// P̂ = p·w.
+    pub(crate) position: [Bern; 3],
+    /// M̂ = R·w.
+    pub(crate) rotation: [[Bern; 3]; 3],
+    /// w.
+    pub(crate) weight: Bern,
+    /// (base anchor, s̃ = s·w) per cable.
+    pub(crate) cables: Vec<(Vector3<f64>, [Bern; 3])>,
+    /// The wrench the cables balance ([`load`]).
+    pub(crate) load: LoadPolys,
+}
+
+impl Local {
+    /// The sweep's motion and the load along it (with the inertial wrench, for any duration, when
+    /// the sweep is timed).
+    pub(crate) fn of(sweep: &Sweep, load: &Load) -> Local {
+        let m = sweep.motion();
+        let mut local = Local {
+            position: m.position.clone(),
+            rotation: m.rotation.clone(),
+            weight: m.weight.clone(),
+            cables: sweep.cables.iter().map(|c| (c.base, [c.s[0].p.clone(), c.s[1].p.clone(), c.s[2].p.clone()])).collect(),
+            load: LoadPolys { rows: std::array::from_fn(|_| Bern::constant(0.0)), inertial: None, scale: None },
+        };
+        // timed: the inertial rows for one second, scaled to the sweep's duration when used
+        let rate = sweep.duration.and_then(|_| time_rate(&m.param, 1.0));
+        local.load = load_polys(&local, load, rate.as_ref());
+        local
+    }
+
+    /// P_i = ‖s̃_i‖² per cable (the squared cable lengths times w²).
+    pub(crate) fn len2(&self) -> Vec<Bern> {
+        self.cables.iter().map(|(_, s)| s[0].mul(&s[0]).add(&s[1].mul(&s[1])).add(&s[2].mul(&s[2]))).collect()
+    }
+
+    pub(crate) fn restrict(&self, a: f64, b: f64) -> Local {
+        let r = |p: &Bern| p.restrict(a, b);
+        Local {
+            position: self.position.each_ref().map(r),
+            rotation: self.rotation.each_ref().map(|row| row.each_ref().map(r)),
+            weight: r(&self.weight),
+            cables: self.cables.iter().map(|(base, s)| (*base, s.each_ref().map(r))).collect(),
+            load: self.load.restrict(a, b),
+        }
+    }
+}
+
 /// The violation set of a condition that the tube pruning decided outside `undecided` (ordered,
 /// disjoint λ-intervals): `False` there, `Unknown` where the sweep's `settled` intervals spare the
 /// work, and on each remaining interval (a, b) what `exact` finds on the motion restricted to it —
@@ -190,83 +240,6 @@ pub struct PoseCheck {
     /// The distance the condition is about (cable–cable, cable–obstacle, length), where one is
     /// computed exactly; `None` where only membership is decided.
     pub distance: Option<f64>,
-}
-
-/// The cables at one pose — base anchor and platform anchor in the world frame, indexable as a
-/// slice of pairs — with the pose itself, every link's frame, and the tension ranges, computed at
-/// most once per pose for all the tension conditions that ask.
-#[derive(Debug, Clone)]
-pub struct PoseCables {
-    /// The pose (of the platform, or of a multi-link robot's first link).
-    pub pose: Pose,
-    /// (base anchor, platform anchor) per cable.
-    pub cables: Vec<(Vector3<f64>, Vector3<f64>)>,
-    /// Every link's frame (the platform's alone for a platform robot).
-    pub links: Vec<Frame>,
-    /// How the platform moves there, on a timed trajectory; `None`: at rest.
-    pub kinematics: Option<Kinematics>,
-    tensions: OnceCell<Option<[TensionRange; 6]>>,
-}
-
-impl std::ops::Deref for PoseCables {
-    type Target = [(Vector3<f64>, Vector3<f64>)];
-    fn deref(&self) -> &Self::Target {
-        &self.cables
-    }
-}
-
-impl PoseCables {
-    /// The six cables' tension ranges under `load` (the scenario's only one), or `None` at a
-    /// singular pose or when the robot does not have six cables.
-    pub fn tension_ranges(&self, load: &Load) -> Option<[TensionRange; 6]> {
-        *self.tensions.get_or_init(|| tension_ranges_at(&self.cables, &load.wrench.point_at(&self.pose), &self.nominal(load), &load.wrench))
-    }
-
-    /// The nominal wrench the cables balance here under `load` (with the platform's weight and,
-    /// when moving, its inertia).
-    pub fn nominal(&self, load: &Load) -> nalgebra::Vector6<f64> {
-        load.nominal_at(&self.pose, self.kinematics.as_ref())
-    }
-
-    /// The same cables with the platform moving as `kin`.
-    pub fn moving(mut self, kin: Kinematics) -> PoseCables {
-        self.kinematics = Some(kin);
-        self.tensions = OnceCell::new();
-        self
-    }
-}
-
-/// The cables of a platform robot at `pose`.
-pub fn cables_at(robot: &Robot, pose: &Pose) -> PoseCables {
-    PoseCables {
-        pose: *pose,
-        cables: robot.cables.iter().map(|c| (c.base, pose.transform(&c.platform))).collect(),
-        links: vec![(pose.position, pose.matrix())],
-        kinematics: None,
-        tensions: OnceCell::new(),
-    }
-}
-
-/// The cables of `robot` at configuration `q`: the pose coordinates (x, y, z, φ, θ, σ) of a
-/// platform robot, the joint coordinates of a multi-link robot.
-pub fn cables_at_config(robot: &Robot, q: &[f64]) -> PoseCables {
-    match &robot.chain {
-        Some(chain) => cables_of_chain(robot, chain.frames(q)),
-        None => cables_at(robot, &Pose::from_coords([q[0], q[1], q[2], q[3], q[4], q[5]])),
-    }
-}
-
-/// The cables of a multi-link `robot` with its links at `links`.
-fn cables_of_chain(robot: &Robot, links: Vec<Frame>) -> PoseCables {
-    let (p, r) = links[0];
-    let pose = Pose { position: p, rotation: nalgebra::UnitQuaternion::from_matrix(&r) };
-    PoseCables {
-        pose,
-        cables: robot.cables.iter().map(|c| (c.base, links[c.link].0 + links[c.link].1 * c.platform)).collect(),
-        links,
-        kinematics: None,
-        tensions: OnceCell::new(),
-    }
 }
 
 /// The three families of conditions.
@@ -380,7 +353,7 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
         }
         if m == 6 {
             for (i, cable) in robot.cables.iter().enumerate() {
-                let bounds = [(Side::Lower, cable.tension.min), (Side::Upper, cable.tension.max)];
+                let bounds = [(TensionSide::Lower, cable.tension.min), (TensionSide::Upper, cable.tension.max)];
                 for (side, bound) in bounds.into_iter().filter(|(_, b)| b.is_finite()) {
                     out.push(Box::new(CableTension { cable: i, side, bound, load: Rc::clone(&load) }));
                 }
@@ -397,10 +370,4 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
         }
     }
     out
-}
-
-/// Whether the anchor `b` (in its link's frame) lies within distance `r` of the link's body
-/// segment: the cable then starts inside the clearance zone of its own link.
-pub fn attached_inside(b: &Vector3<f64>, body: &[Vector3<f64>; 2], r: f64) -> bool {
-    crate::query::point_segment_dist2(b, &body[0], &(body[1] - body[0]), None) < r * r
 }

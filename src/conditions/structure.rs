@@ -2,62 +2,10 @@
 //! motion's weight w, and the minors the wrench conditions are written in. Shared by the 6-cable
 //! tension conditions and the m-cable closure and static-feasibility conditions.
 
-use super::load::{load_polys, time_rate, LoadPolys};
-use super::Sweep;
-use crate::model::{Load, PointFrame, Wrench};
+use super::Local;
+use crate::model::{PointFrame, Wrench};
 use crate::poly::Bern;
 use nalgebra::Vector3;
-
-/// A motion's polynomials on a sub-interval of λ (all of [0, 1] or a piece being refined),
-/// re-expanded there so that error bounds scale with the local magnitudes.
-#[derive(Debug, Clone)]
-pub(crate) struct Local {
-    /// P̂ = p·w.
-    pub(crate) position: [Bern; 3],
-    /// M̂ = R·w.
-    pub(crate) rotation: [[Bern; 3]; 3],
-    /// w.
-    pub(crate) weight: Bern,
-    /// (base anchor, s̃ = s·w) per cable.
-    pub(crate) cables: Vec<(Vector3<f64>, [Bern; 3])>,
-    /// The wrench the cables balance ([`super::load`]).
-    pub(crate) load: LoadPolys,
-}
-
-impl Local {
-    /// The sweep's motion and the load along it (with the inertial wrench, for any duration, when
-    /// the sweep is timed).
-    pub(crate) fn of(sweep: &Sweep, load: &Load) -> Local {
-        let m = sweep.motion();
-        let mut local = Local {
-            position: m.position.clone(),
-            rotation: m.rotation.clone(),
-            weight: m.weight.clone(),
-            cables: sweep.cables.iter().map(|c| (c.base, [c.s[0].p.clone(), c.s[1].p.clone(), c.s[2].p.clone()])).collect(),
-            load: LoadPolys { rows: std::array::from_fn(|_| Bern::constant(0.0)), inertial: None, scale: None },
-        };
-        // timed: the inertial rows for one second, scaled to the sweep's duration when used
-        let rate = sweep.duration.and_then(|_| time_rate(&m.param, 1.0));
-        local.load = load_polys(&local, load, rate.as_ref());
-        local
-    }
-
-    /// P_i = ‖s̃_i‖² per cable (the squared cable lengths times w²).
-    pub(crate) fn len2(&self) -> Vec<Bern> {
-        self.cables.iter().map(|(_, s)| s[0].mul(&s[0]).add(&s[1].mul(&s[1])).add(&s[2].mul(&s[2]))).collect()
-    }
-
-    pub(crate) fn restrict(&self, a: f64, b: f64) -> Local {
-        let r = |p: &Bern| p.restrict(a, b);
-        Local {
-            position: self.position.each_ref().map(r),
-            rotation: self.rotation.each_ref().map(|row| row.each_ref().map(r)),
-            weight: r(&self.weight),
-            cables: self.cables.iter().map(|(base, s)| (*base, s.each_ref().map(r))).collect(),
-            load: self.load.restrict(a, b),
-        }
-    }
-}
 
 /// a × b for polynomial vectors.
 pub(crate) fn cross(a: &[Bern; 3], b: &[Bern; 3]) -> [Bern; 3] {

@@ -18,14 +18,15 @@ use std::rc::Rc;
 use super::algebra::H;
 use super::load::{inverse_square, with_inertia};
 use super::primitives::{all_of, any_of, GT, LT};
-use super::structure::{minors, quadratic_form, structure_numerators, Local};
-use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
+use super::structure::{minors, quadratic_form, structure_numerators};
+use super::{Condition, Kind, Local, PoseCheck, Sweep};
 use crate::model::Load;
 use crate::poly::{Bern, Partition, Truth};
+use crate::query::cables::PoseCables;
 
 /// Which tension bound a [`CableTension`] condition is about.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Side {
+pub enum TensionSide {
     /// f0,i − v_ii > f_min,i.
     Lower,
     /// f0,i + v_ii < f_max,i.
@@ -38,7 +39,7 @@ pub struct CableTension {
     /// The cable (0-based, < 6).
     pub cable: usize,
     /// Which bound.
-    pub side: Side,
+    pub side: TensionSide,
     /// The bound's value (f_min,i or f_max,i; finite).
     pub bound: f64,
     /// What the cables balance (wrench set, weight, inertia), shared by the twelve conditions of
@@ -169,8 +170,8 @@ impl CableTension {
         };
         match self.side {
             // √P (a − √β) > k with k ≥ 0: a > √β, then square.
-            Side::Lower if self.bound == 0.0 => all_of!(tol; h(a.clone()) => GT, h(a2_minus_b()) => GT),
-            Side::Lower => {
+            TensionSide::Lower if self.bound == 0.0 => all_of!(tol; h(a.clone()) => GT, h(a2_minus_b()) => GT),
+            TensionSide::Lower => {
                 let k = scaled_bound();
                 let l = || p.mul(&a.mul(&a).add(beta)).sub(&k.mul(&k));
                 all_of!(tol;
@@ -182,7 +183,7 @@ impl CableTension {
             }
             // √P (a + √β) < K; with M = K² − P (a² + β): for a ≥ 0 iff M > 2 P a √β; for a < 0
             // it holds when a + √β ≤ 0, else iff M > −2 P |a| √β.
-            Side::Upper => {
+            TensionSide::Upper => {
                 let kk = scaled_bound();
                 let m = || kk.mul(&kk).sub(&p.mul(&a.mul(&a).add(beta)));
                 any_of!(
@@ -205,8 +206,8 @@ impl Condition for CableTension {
 
     fn label(&self) -> String {
         let side = match self.side {
-            Side::Lower => "lower",
-            Side::Upper => "upper",
+            TensionSide::Lower => "lower",
+            TensionSide::Upper => "upper",
         };
         format!("cable {} tension {side} bound", self.cable + 1)
     }
@@ -255,8 +256,8 @@ impl Condition for CableTension {
             Some(ranges) => {
                 let r = ranges[self.cable];
                 let margin = match self.side {
-                    Side::Lower => r.nominal - r.spread - self.bound,
-                    Side::Upper => self.bound - r.nominal - r.spread,
+                    TensionSide::Lower => r.nominal - r.spread - self.bound,
+                    TensionSide::Upper => self.bound - r.nominal - r.spread,
                 };
                 PoseCheck { violated: !(margin > 0.0), distance: Some(margin) }
             }

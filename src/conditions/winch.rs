@@ -11,8 +11,9 @@
 //! A motion without time (a ray, an untimed trajectory) is at rest: the limits hold.
 
 use super::load::time_rate;
-use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
+use super::{Condition, Kind, PoseCheck, Sweep};
 use crate::poly::{Bern, Partition, Truth};
+use crate::query::cables::PoseCables;
 
 /// Which rate a [`WinchLimit`] bounds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -37,10 +37,11 @@ use nalgebra::{DMatrix, DVector, Vector6};
 
 use super::interval::Iv;
 use super::load::{inverse_square, with_inertia};
-use super::structure::{structure_numerators, Local};
-use super::{Condition, Kind, PoseCables, PoseCheck, Sweep};
+use super::structure::structure_numerators;
+use super::{Condition, Kind, Local, PoseCheck, Sweep};
 use crate::model::{Bounds, Load};
 use crate::poly::{Bern, Partition, Truth};
+use crate::query::cables::PoseCables;
 use crate::query::wrench::{separating_direction, static_margin, static_margin_of};
 
 /// Most pieces one motion is bisected into before the rest is reported undecided.

@@ -5,7 +5,8 @@
 //! instead.
 
 use super::{LatticeSpec, UnionFind};
-use crate::conditions::{cables_at_config, for_scenario};
+use crate::conditions::for_scenario;
+use crate::query::cables::cables_at_config;
 use crate::scenario::Scenario;
 use serde::Serialize;
 

@@ -6,49 +6,10 @@
 //! `generateTrajectoryQuinticSpline` does for a `SPATIAL_EULER_XYZ` joint. CASPR supports no
 //! angular velocity at a knot, and nor does this form.
 
-use super::pose::Pose;
-use super::trajectory::{Orientation, Profile, Segment, Trajectory, Translation};
+use super::trajectory::{Knot, Knots, Orientation, Profile, Segment, Trajectory, Translation};
 use nalgebra::{Unit, Vector3};
 
-/// One knot: when the platform is where, and how its origin moves there.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Knot {
-    /// Seconds from the first knot (0 there), strictly increasing.
-    pub time: f64,
-    /// The pose at that time.
-    pub pose: Pose,
-    /// The origin's velocity (m/s).
-    pub velocity: Vector3<f64>,
-    /// The origin's acceleration (m/s²); unused by a cubic spline.
-    pub acceleration: Vector3<f64>,
-}
-
-/// The knots of a timed spline trajectory and the spline through them.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Knots {
-    /// Quintic (positions, velocities, accelerations met) or cubic (positions, velocities).
-    pub profile: Profile,
-    /// Two or more knots in time order.
-    pub points: Vec<Knot>,
-}
-
 impl Knots {
-    /// Seconds from the first knot to the last.
-    pub fn duration(&self) -> f64 {
-        self.points.last().map_or(0.0, |k| k.time) - self.points.first().map_or(0.0, |k| k.time)
-    }
-
-    /// The share [t0, t1] of t ∈ [0, 1] (time / duration) between knot `k` and knot `k + 1`.
-    pub fn span(&self, k: usize) -> [f64; 2] {
-        let (start, d) = (self.points[0].time, self.duration());
-        let end = if k + 2 >= self.points.len() {
-            1.0
-        } else {
-            (self.points[k + 1].time - start) / d
-        };
-        [(self.points[k].time - start) / d, end]
-    }
-
     /// The pieces between consecutive knots, each in its own t ∈ [0, 1] (its time share).
     pub fn segments(&self) -> Vec<Segment> {
         self.points
@@ -117,6 +78,7 @@ impl Trajectory {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::Pose;
     use nalgebra::UnitQuaternion;
 
     fn knot(time: f64, p: [f64; 3], angles: [f64; 3], v: [f64; 3], a: [f64; 3]) -> Knot {

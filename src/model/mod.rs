@@ -17,6 +17,5 @@ pub use dynamics::{Dynamics, Kinematics, Winch};
 pub use motion::Motion;
 pub use pose::{Coord, Pose};
 pub use robot::{Bounds, Cable, Clearance, Robot};
-pub use knots::{Knot, Knots};
-pub use trajectory::{Orientation, Profile, Segment, Trajectory, Translation};
+pub use trajectory::{Knot, Knots, Orientation, Profile, Segment, Trajectory, Translation};
 pub use wrench::{Load, PointFrame, Wrench};

@@ -8,9 +8,14 @@
 //! about a fixed axis ([`Orientation::Turn`]) and their translation is polynomial in t itself.
 
 use super::dynamics::Kinematics;
-use super::knots::Knots;
 use super::pose::Pose;
 use nalgebra::{Quaternion, Unit, UnitQuaternion, Vector3};
+
+/// Highest polynomial degree of a translation the scenario format accepts (and so at most
+/// `MAX_DEGREE + 1` Bézier points): the exact conditions multiply the translation with itself and
+/// with the rotation, so their degree grows several times faster than this, and the limit keeps
+/// exact verification tractable.
+pub const MAX_DEGREE: usize = 10;
 
 /// The translation part of a trajectory, a polynomial in τ ∈ [0, 1].
 #[derive(Debug, Clone, PartialEq)]
@@ -323,5 +328,46 @@ impl Trajectory {
         let rate = 1.0 / ((t1 - t0) * duration);
         let m = seg.rates_at(local);
         Kinematics { velocity: m.velocity * rate, acceleration: m.acceleration * (rate * rate), omega: m.omega * rate, alpha: m.alpha * (rate * rate) }
+    }
+}
+
+/// One knot: when the platform is where, and how its origin moves there.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Knot {
+    /// Seconds from the first knot (0 there), strictly increasing.
+    pub time: f64,
+    /// The pose at that time.
+    pub pose: Pose,
+    /// The origin's velocity (m/s).
+    pub velocity: Vector3<f64>,
+    /// The origin's acceleration (m/s²); unused by a cubic spline.
+    pub acceleration: Vector3<f64>,
+}
+
+/// The knots of a timed spline trajectory and the spline through them (its pieces:
+/// [`super::knots`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Knots {
+    /// Quintic (positions, velocities, accelerations met) or cubic (positions, velocities).
+    pub profile: Profile,
+    /// Two or more knots in time order.
+    pub points: Vec<Knot>,
+}
+
+impl Knots {
+    /// Seconds from the first knot to the last.
+    pub fn duration(&self) -> f64 {
+        self.points.last().map_or(0.0, |k| k.time) - self.points.first().map_or(0.0, |k| k.time)
+    }
+
+    /// The share [t0, t1] of t ∈ [0, 1] (time / duration) between knot `k` and knot `k + 1`.
+    pub fn span(&self, k: usize) -> [f64; 2] {
+        let (start, d) = (self.points[0].time, self.duration());
+        let end = if k + 2 >= self.points.len() {
+            1.0
+        } else {
+            (self.points[k + 1].time - start) / d
+        };
+        [(self.points[k].time - start) / d, end]
     }
 }

@@ -7,7 +7,7 @@
 //! differences and expanded into the ascending coefficients the scenario format stores.
 
 use crate::error::{finite, Error, Result};
-use crate::scenario::validate::MAX_DEGREE;
+use super::trajectory::MAX_DEGREE;
 
 /// Fewest via points (a line).
 pub const MIN_POINTS: usize = 2;

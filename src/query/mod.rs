@@ -1,6 +1,7 @@
 //! Point-wise geometric queries for one pose: distances between cable segments, points,
 //! triangles, and membership tests against solid shapes. Free functions over plain vectors.
 
+pub mod cables;
 pub mod lp;
 pub mod wrench;
 

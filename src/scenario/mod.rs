@@ -2,12 +2,8 @@
 //! parsing with serde, and validation into the model with errors that name the field.
 
 pub mod caspr;
-mod caspr_trajectories;
-mod caspr_links;
-pub mod chain;
 pub mod json;
-pub mod link;
-mod timing;
+pub mod share_url;
 pub mod validate;
 
 use crate::error::{Error, Result};
@@ -15,7 +11,7 @@ use crate::model::{Clearance, Coord, Pose, Robot, Trajectory, Wrench};
 use crate::shape::Obstacle;
 
 pub use json::{FORMAT, FORMAT_3, FORMAT_4};
-pub use timing::STANDARD_GRAVITY;
+pub use validate::STANDARD_GRAVITY;
 
 /// A planning query between two named poses, optionally on a slice with some coordinates fixed.
 #[derive(Debug, Clone, PartialEq)]

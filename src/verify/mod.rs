@@ -12,8 +12,9 @@ pub use sections::{push_merged, sections, Piece, Sections};
 pub use slice::{slice, SliceMap};
 
 use std::sync::atomic::{AtomicUsize, Ordering};
-use crate::conditions::{cables_at, cables_at_config, for_scenario, Condition, PoseCables, Sweep};
+use crate::conditions::{for_scenario, Condition, Sweep};
 use crate::model::{Bounds, Load};
+use crate::query::cables::{cables_at, cables_at_config, PoseCables};
 use crate::query::wrench::{closure_holds, static_margin, wrench_set_margin};
 use crate::error::{Error, Result};
 use crate::model::motion::Param;
@@ -167,7 +168,7 @@ impl Along<'_> {
     }
 
     /// The configuration at t: a multi-link robot's joint coordinates, or the platform pose's six
-    /// coordinates (x, y, z, φ, θ, σ), as [`crate::conditions::cables_at_config`] takes them.
+    /// coordinates (x, y, z, φ, θ, σ), as [`crate::query::cables::cables_at_config`] takes them.
     pub fn config_at(&self, s: &Scenario, t: f64) -> Vec<f64> {
         match (self, &s.robot.chain) {
             (Along::Joints(p), Some(chain)) => p.config_at(chain, t),

@@ -4,9 +4,10 @@
 //! of every cable at one pose (interference, length, tension margin), for drawing it.
 
 use super::wrench_at;
-use crate::conditions::{self, cables_at, cables_at_config, for_scenario, Condition, PoseCables};
+use crate::conditions::{self, for_scenario, Condition};
 use crate::error::{Error, Result};
 use crate::model::{Pose, Trajectory};
+use crate::query::cables::{cables_at, cables_at_config, PoseCables};
 use crate::scenario::Scenario;
 use serde::Serialize;
 
@@ -15,7 +16,7 @@ pub const MAX_SAMPLES: usize = 100_000;
 
 /// What a tagged condition is about.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Kind {
+enum Profiled {
     CableCable,
     /// A cable's clearance to an obstacle, or to a link of a multi-link robot.
     CableBody,
@@ -24,7 +25,7 @@ enum Kind {
 
 /// A condition with the cables it concerns.
 struct Tagged {
-    kind: Kind,
+    kind: Profiled,
     cables: Vec<usize>,
     condition: Box<dyn Condition>,
 }
@@ -38,9 +39,9 @@ fn tagged_conditions(s: &Scenario) -> Vec<Tagged> {
         .filter_map(|condition| {
             let cables = condition.cables();
             let kind = match (condition.kind(), cables.len()) {
-                (conditions::Kind::Length, _) => Kind::Length,
-                (conditions::Kind::Interference, 2) => Kind::CableCable,
-                (conditions::Kind::Interference, _) => Kind::CableBody,
+                (conditions::Kind::Length, _) => Profiled::Length,
+                (conditions::Kind::Interference, 2) => Profiled::CableCable,
+                (conditions::Kind::Interference, _) => Profiled::CableBody,
                 (conditions::Kind::Tension | conditions::Kind::Winch, _) => return None,
             };
             Some(Tagged { kind, cables, condition })
@@ -126,8 +127,8 @@ pub fn clearances_at(s: &Scenario, samples: &[(f64, Pose)]) -> Result<ClearanceP
                 sample.violated.push(c.condition.label());
             }
             match (c.kind, r.distance) {
-                (Kind::CableCable, Some(d)) => least(&mut sample.cable_cable, d, || c.condition.label()),
-                (Kind::CableBody, Some(d)) => least(&mut sample.cable_obstacle, d, || c.condition.label()),
+                (Profiled::CableCable, Some(d)) => least(&mut sample.cable_cable, d, || c.condition.label()),
+                (Profiled::CableBody, Some(d)) => least(&mut sample.cable_obstacle, d, || c.condition.label()),
                 _ => {}
             }
         }
@@ -136,7 +137,7 @@ pub fn clearances_at(s: &Scenario, samples: &[(f64, Pose)]) -> Result<ClearanceP
     let probe = samples.first().map(|(_, p)| cables_at(&s.robot, p));
     let membership_only = conditions
         .iter()
-        .filter(|c| c.kind == Kind::CableBody && probe.as_ref().is_some_and(|cables| c.condition.check(cables).distance.is_none()))
+        .filter(|c| c.kind == Profiled::CableBody && probe.as_ref().is_some_and(|cables| c.condition.check(cables).distance.is_none()))
         .map(|c| c.condition.label())
         .collect();
     Ok(ClearanceProfile {
@@ -196,8 +197,8 @@ fn states_of(s: &Scenario, cables: &PoseCables, wrench: Option<crate::report::Wr
         if c.condition.check(cables).violated {
             for &i in &c.cables {
                 match c.kind {
-                    Kind::Length => out[i].length_ok = false,
-                    Kind::CableCable | Kind::CableBody => out[i].interfering = true,
+                    Profiled::Length => out[i].length_ok = false,
+                    Profiled::CableCable | Profiled::CableBody => out[i].interfering = true,
                 }
             }
         }
@@ -236,7 +237,7 @@ pub fn tension_at(s: &Scenario, name: &str, samples: &[(f64, Pose)]) -> Result<c
 }
 
 /// [`tension_at`] with the cables at each sample given (moving, along a timed trajectory).
-pub fn tension_of(s: &Scenario, name: &str, samples: &[(f64, crate::conditions::PoseCables)]) -> Result<crate::report::TensionEnvelope> {
+pub fn tension_of(s: &Scenario, name: &str, samples: &[(f64, PoseCables)]) -> Result<crate::report::TensionEnvelope> {
     let mut env = tension_at(s, name, &[])?;
     if samples.len() > MAX_SAMPLES {
         return Err(Error::new("samples", format!("at most {MAX_SAMPLES} samples, got {}", samples.len())));

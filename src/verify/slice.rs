@@ -5,9 +5,10 @@
 //! whole turn (e.g. φ ∈ [−π, π]) closes on itself: its first and last cells are neighbours.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
-use crate::conditions::{cables_at_config, for_scenario, Condition, Kind};
+use crate::conditions::{for_scenario, Condition, Kind};
 use crate::error::{Error, Result};
 use crate::model::{Coord, Load};
+use crate::query::cables::cables_at_config;
 use crate::scenario::Scenario;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;

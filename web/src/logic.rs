@@ -7,7 +7,7 @@ use cablenav::Scenario;
 
 /// What a t-section of the strip is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Kind {
+pub enum SectionKind {
     /// Every constraint holds.
     Feasible,
     /// Some constraint is violated.
@@ -16,13 +16,13 @@ pub enum Kind {
     Uncertain,
 }
 
-impl Kind {
+impl SectionKind {
     /// The name used in `data-kind`, CSS classes and the table.
     pub fn as_str(self) -> &'static str {
         match self {
-            Kind::Feasible => "feasible",
-            Kind::Infeasible => "infeasible",
-            Kind::Uncertain => "uncertain",
+            SectionKind::Feasible => "feasible",
+            SectionKind::Infeasible => "infeasible",
+            SectionKind::Uncertain => "uncertain",
         }
     }
 }
@@ -31,7 +31,7 @@ impl Kind {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Section {
     /// What it is.
-    pub kind: Kind,
+    pub kind: SectionKind,
     /// Start in t.
     pub t0: f64,
     /// End in t.
@@ -148,13 +148,13 @@ pub fn fmt_exact(x: f64) -> String {
 pub fn strip(report: &VerifyReport) -> StripModel {
     let mut sections = Vec::new();
     for (i, &[t0, t1]) in report.feasible.iter().enumerate() {
-        sections.push(Section { kind: Kind::Feasible, t0, t1, tau: report.feasible_tau.get(i).copied() });
+        sections.push(Section { kind: SectionKind::Feasible, t0, t1, tau: report.feasible_tau.get(i).copied() });
     }
     for (i, &[t0, t1]) in report.infeasible.iter().enumerate() {
-        sections.push(Section { kind: Kind::Infeasible, t0, t1, tau: report.infeasible_tau.get(i).copied() });
+        sections.push(Section { kind: SectionKind::Infeasible, t0, t1, tau: report.infeasible_tau.get(i).copied() });
     }
     for &[t0, t1] in &report.uncertain {
-        sections.push(Section { kind: Kind::Uncertain, t0, t1, tau: None });
+        sections.push(Section { kind: SectionKind::Uncertain, t0, t1, tau: None });
     }
     sections.sort_by(|a, b| a.t0.total_cmp(&b.t0).then(a.t1.total_cmp(&b.t1)));
 
@@ -280,7 +280,7 @@ mod tests {
     fn sections_are_sorted_and_keep_their_tau() {
         let m = strip(&report());
         let kinds: Vec<_> = m.sections.iter().map(|s| s.kind).collect();
-        assert_eq!(kinds, [Kind::Feasible, Kind::Infeasible, Kind::Uncertain, Kind::Feasible]);
+        assert_eq!(kinds, [SectionKind::Feasible, SectionKind::Infeasible, SectionKind::Uncertain, SectionKind::Feasible]);
         assert_eq!(m.sections[0].tau, Some([0.0, 0.2]));
         assert_eq!(m.sections[2].tau, None);
         assert_eq!(m.sections[3].tau, Some([0.6, 1.0]));
@@ -299,7 +299,7 @@ mod tests {
 
     #[test]
     fn gaps_are_found() {
-        let s = |t0, t1| Section { kind: Kind::Feasible, t0, t1, tau: None };
+        let s = |t0, t1| Section { kind: SectionKind::Feasible, t0, t1, tau: None };
         assert_eq!(gaps(&[]), vec![[0.0, 1.0]]);
         assert_eq!(gaps(&[s(0.0, 0.5), s(0.6, 1.0)]), vec![[0.5, 0.6]]);
         assert_eq!(gaps(&[s(0.1, 0.9)]), vec![[0.0, 0.1], [0.9, 1.0]]);
@@ -360,7 +360,7 @@ mod tests {
         assert_eq!(trajectory_names(&arm), ["across the gap"]);
         let r = verify(&arm, 0).unwrap();
         let m = strip(&r);
-        assert_eq!(m.sections.iter().map(|s| s.kind).collect::<Vec<_>>(), [Kind::Feasible, Kind::Infeasible, Kind::Feasible]);
+        assert_eq!(m.sections.iter().map(|s| s.kind).collect::<Vec<_>>(), [SectionKind::Feasible, SectionKind::Infeasible, SectionKind::Feasible]);
         assert!(m.ticks.iter().all(|t| t.constraint == "cables 2-3"));
         assert!(verify(&arm, 1).is_err());
     }

@@ -14,7 +14,7 @@ use wasm_bindgen::JsCast;
 
 use crate::presets::{self, PRESETS};
 use crate::state::{Settings, Tab};
-pub use cablenav::scenario::link::{decode_scenario, encode_scenario, MAX_SHARED_BYTES};
+pub use cablenav::scenario::share_url::{decode_scenario, encode_scenario, MAX_SHARED_BYTES};
 
 /// The localStorage key of the autosaved scenario.
 pub const STORAGE_KEY: &str = "cablenav.autosave";
@@ -84,7 +84,7 @@ pub fn parse_settings(hash: &str) -> Settings {
         match key {
             "tab" => s.tab = Tab::from_id(value).unwrap_or(s.tab),
             "planner" => {
-                if let Some((id, _, true)) = crate::planning::PLANNERS.iter().find(|p| p.0 == value) {
+                if let Some((id, _, true)) = crate::state::PLANNERS.iter().find(|p| p.0 == value) {
                     s.planner = *id;
                 }
             }

@@ -3,18 +3,13 @@
 //! progress and the path, so typing, scrolling and orbiting stay smooth; Cancel terminates the
 //! worker.
 
-use crate::state::{Motion, Parsed, Planned, Settings, Shared};
-use crate::view3d::scene::Rgba;
+use crate::state::{PlannedMotion, Parsed, Planned, Settings, Shared, PLANNERS};
+use crate::palette::Rgba;
 use crate::worker::host::{self, Running};
 use crate::worker::protocol::{pose_from_wire, Job, Reply};
 use leptos::prelude::*;
 use std::cell::RefCell;
 use std::rc::Rc;
-
-/// The planners the page offers: (id, label, available). The id goes to the worker
-/// ([`crate::worker::jobs::planner`] sets it up).
-pub const PLANNERS: [(&str, &str, bool); 2] =
-    [("continuation", "Atlas continuation (Bohigas et al.)", true), ("ray-lattice", "Ray lattice + A* + Bézier (Zhang)", true)];
 
 /// The lattice planner's id in [`PLANNERS`].
 const LATTICE: &str = "ray-lattice";
@@ -105,10 +100,10 @@ fn apply(reply: Reply, query: &str, ui: Ui) -> bool {
 
 /// The planned trajectory as the page keeps it: read back from the scenario the worker wrote
 /// (a parse, no verification: the worker verified it).
-fn motion(t: crate::worker::protocol::PlannedTrajectory) -> Option<Motion> {
+fn motion(t: crate::worker::protocol::PlannedTrajectory) -> Option<PlannedMotion> {
     let s = crate::logic::parse_scenario(&t.scenario).ok()?;
     let trajectory = s.trajectories.into_iter().find(|x| x.name == t.name)?;
-    Some(Motion { scenario: t.scenario, trajectory, report: t.report.map(|r| r.report()) })
+    Some(PlannedMotion { scenario: t.scenario, trajectory, report: t.report.map(|r| r.report()) })
 }
 
 /// The planning controls.

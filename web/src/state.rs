@@ -65,12 +65,12 @@ pub struct Planned {
     pub polyline: Vec<Pose>,
     /// The planned motion as a trajectory of the scenario format, verified exactly (both planners
     /// give one when they find a path).
-    pub motion: Option<Motion>,
+    pub motion: Option<PlannedMotion>,
 }
 
 /// A planned motion as a trajectory: shown in the strip and the 3-D view like any trajectory.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Motion {
+pub struct PlannedMotion {
     /// The scenario JSON with the trajectory added (what "Scenario with the plan" exports).
     pub scenario: String,
     /// The trajectory (named as in `scenario`).
@@ -166,13 +166,18 @@ impl Tab {
     }
 }
 
+/// The planners the page offers: (id, label, available). The id goes to the worker
+/// ([`crate::worker::jobs::planner`] sets it up).
+pub const PLANNERS: [(&str, &str, bool); 2] =
+    [("continuation", "Atlas continuation (Bohigas et al.)", true), ("ray-lattice", "Ray lattice + A* + Bézier (Zhang)", true)];
+
 /// What the page's address keeps beside the scenario (`#preset=…&tab=…`, [`crate::persist`]):
 /// the open results tab and the planning choices.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Settings {
     /// The open results tab.
     pub tab: Tab,
-    /// The planner's id (one of [`crate::planning::PLANNERS`]).
+    /// The planner's id (one of [`PLANNERS`]).
     pub planner: &'static str,
     /// The lattice planner's grid values per free coordinate, as typed (checked by the core when
     /// a plan starts, as `cablenav plan --planner lattice --steps N` checks it).
@@ -184,7 +189,7 @@ impl Default for Settings {
     fn default() -> Settings {
         Settings {
             tab: Tab::Intervals,
-            planner: crate::planning::PLANNERS[0].0,
+            planner: PLANNERS[0].0,
             steps: cablenav::plan::lattice::LatticeParams::default().steps.to_string(),
         }
     }

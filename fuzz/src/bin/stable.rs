@@ -255,7 +255,7 @@ impl Corpus {
                 } else {
                     mutate_value(rng.pick(&self.values), &self.values, &mut rng).to_string()
                 };
-                // the page deflates at level 9 (scenario::link::encode_scenario); any level decodes
+                // the page deflates at level 9 (scenario::share_url::encode_scenario); any level decodes
                 // alike, and level 1 keeps the generator cheap
                 let deflated = miniz_oxide::deflate::compress_to_vec(json.as_bytes(), 1);
                 let link = format!("#s={}", base64::engine::general_purpose::URL_SAFE_NO_PAD.encode(deflated));

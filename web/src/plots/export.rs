@@ -134,15 +134,15 @@ pub fn save_canvas(canvas: &web_sys::HtmlCanvasElement, name: &str) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::logic::{Kind, Section, Tick};
+    use crate::logic::{SectionKind, Section, Tick};
     use nalgebra::Vector3;
 
     #[test]
     fn intervals_round_trip_through_csv() {
         let model = StripModel {
             sections: vec![
-                Section { kind: Kind::Infeasible, t0: 0.0, t1: 0.6948514220984694, tau: Some([0.0, 0.7]) },
-                Section { kind: Kind::Uncertain, t0: 0.6948514220984694, t1: 1.0, tau: None },
+                Section { kind: SectionKind::Infeasible, t0: 0.0, t1: 0.6948514220984694, tau: Some([0.0, 0.7]) },
+                Section { kind: SectionKind::Uncertain, t0: 0.6948514220984694, t1: 1.0, tau: None },
             ],
             ticks: vec![Tick { t: 0.6948514220984694, tau: 0.7, constraint: "cable 3 - crown, \"x\"".into(), enters: "feasible", label: String::new() }],
             gaps: vec![],

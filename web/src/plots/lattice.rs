@@ -4,15 +4,12 @@
 //! feasible, in its piece's component colour, with the start, the goal, the planned path and the
 //! lattice planner's A* polyline over it.
 
-use super::geom::{polyline, ticks, Scale};
-use super::section::{CrossSection, SectionControls};
-use super::slice::{config_points, path_points, row_blocks, slice_copies, Overlay};
-use super::strip::css;
-use super::Chart;
-use crate::logic::{fmt_exact, fmt_num};
+use super::section::{scales, CrossSection, Overlay, PathLook, SectionControls, SectionFrame};
+use crate::logic::fmt_exact;
+use crate::palette::{component_colour, COMPONENTS, INFEASIBLE};
+use crate::rays::ray_pieces;
 use crate::state::Shared;
-use crate::view3d::scene::Rgba;
-use crate::worker::host::{self, FanOut};
+use crate::worker::host::{self, row_blocks, FanOut};
 use crate::worker::jobs::{join_lattice, lattice_spec};
 use crate::worker::protocol::{Job, LatticeResult, RaySections, Reply};
 use cablenav::model::Coord;
@@ -20,71 +17,6 @@ use leptos::prelude::*;
 
 /// A lattice as the page holds it: the worker's result, or why there is none.
 pub type LatticeState = Option<Shared<Result<LatticeResult, String>>>;
-
-const W: f64 = 520.0;
-const H: f64 = 500.0;
-const LEFT: f64 = 56.0;
-const RIGHT: f64 = 14.0;
-const TOP: f64 = 14.0;
-const BOTTOM: f64 = 46.0;
-/// Colour of infeasible ray parts.
-pub const INFEASIBLE: &str = "#d03b3b";
-/// Component colours, in turn (the first is the thesis' green).
-pub const COMPONENTS: [&str; 8] = ["#2ea043", "#3b6fd8", "#8e44ad", "#e0a800", "#16a2b8", "#c2185b", "#6d8b00", "#795548"];
-
-/// The colour of a ray piece: its component's, or [`INFEASIBLE`]; as CSS.
-pub fn colour(component: Option<usize>) -> &'static str {
-    component.map_or(INFEASIBLE, |c| COMPONENTS[c % COMPONENTS.len()])
-}
-
-/// The same colour for the 3-D view.
-pub fn rgba(component: Option<usize>) -> Rgba {
-    let hex = colour(component);
-    let byte = |k: usize| u8::from_str_radix(&hex[1 + 2 * k..3 + 2 * k], 16).unwrap_or(0) as f32 / 255.0;
-    [byte(0), byte(1), byte(2), 1.0]
-}
-
-/// One stretch of one ray in every coordinate: the ray's configuration `at`, its varied
-/// coordinate running from `from` to `to`, feasible in `component` or not (`None`: infeasible or
-/// uncertain).
-#[derive(Debug, Clone, PartialEq)]
-pub struct RayPiece {
-    /// The varied coordinate's index in the configuration.
-    pub vary: usize,
-    /// Whether it is an angle.
-    pub angle: bool,
-    /// The other coordinates (the varied one's entry is unused).
-    pub at: Vec<f64>,
-    /// Where the stretch starts, in the varied coordinate.
-    pub from: f64,
-    /// Where it ends.
-    pub to: f64,
-    /// The component of a feasible stretch.
-    pub component: Option<usize>,
-}
-
-/// Every ray of a lattice cut into its feasible pieces and the gaps between them, end to end
-/// over the ray's range.
-pub fn ray_pieces(r: &LatticeResult) -> Vec<RayPiece> {
-    let mut out = vec![];
-    for ray in &r.rays {
-        let Some(a) = r.axes.iter().position(|n| *n == ray.vary) else { continue };
-        let (vary, angle, [lo, hi]) = (r.axis_index[a], r.axis_angle[a], r.ranges[a]);
-        let piece = |from: f64, to: f64, component: Option<usize>| RayPiece { vary, angle, at: ray.at.clone(), from, to, component };
-        let mut cursor = lo;
-        for (iv, &c) in ray.feasible.iter().zip(&ray.components) {
-            if iv[0] > cursor {
-                out.push(piece(cursor, iv[0], None));
-            }
-            out.push(piece(iv[0], iv[1], Some(c)));
-            cursor = iv[1];
-        }
-        if cursor < hi {
-            out.push(piece(cursor, hi, None));
-        }
-    }
-    out
-}
 
 /// One drawn stretch of a ray, in data coordinates: (a0, b0) → (a1, b1) and its colour.
 #[derive(Debug, Clone, PartialEq)]
@@ -111,7 +43,7 @@ pub fn stretches(r: &LatticeResult) -> Vec<Stretch> {
                 c[p.vary] = v;
                 (c[a], c[b])
             };
-            Stretch { from: at(p.from), to: at(p.to), colour: colour(p.component), component: p.component }
+            Stretch { from: at(p.from), to: at(p.to), colour: component_colour(p.component), component: p.component }
         })
         .collect()
 }
@@ -208,51 +140,26 @@ pub fn LatticePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>
     }
 }
 
-/// The rays, the axes and the overlay.
+/// The rays in the cross-section's frame, with the overlay.
 #[component]
 fn LatticeView(report: LatticeResult, axes: [Coord; 2], overlay: Signal<Overlay>) -> impl IntoView {
     let range = [report.ranges[0], report.ranges[1]];
-    let x = Scale::new(range[0][0], range[0][1], LEFT, W - RIGHT);
-    let y = Scale::new(range[1][0], range[1][1], H - BOTTOM, TOP);
+    let (x, y) = scales(range);
     let title = format!(
         "Ray lattice over {} × {} ({} rays, {} of {} grid points feasible, {} component(s))",
         report.axes[0], report.axes[1], report.rays.len(), report.feasible_points, report.grid_points, report.components
     );
     let lines = stretches(&report);
-    let to_px = move |p: Option<(f64, f64)>| p.map(|(a, b)| (x.at(a), y.at(b)));
-    let markers = move |pose: Option<cablenav::model::Pose>| pose.map_or(vec![], |p| slice_copies(&p, axes, range).into_iter().map(|q| (x.at(q.0), y.at(q.1))).collect());
-    let joint_marker = move |q: &Option<Vec<f64>>| q.as_ref().and_then(|q| config_points(std::slice::from_ref(q), axes, range)[0]).map(|p| (x.at(p.0), y.at(p.1)));
+    let names = [report.axes[0].clone(), report.axes[1].clone()];
     view! {
-        <Chart id="lattice" title width=W height=H>
-            <rect x=LEFT y=TOP width=W - LEFT - RIGHT height=H - TOP - BOTTOM fill="#ffffff" stroke="#5b6670" />
+        <SectionFrame id="lattice" title range axes names background="#ffffff" look=PathLook::Dashed overlay>
             {lines.into_iter().map(|s| view! {
                 <line data-testid="lattice-ray" data-component=s.component.map_or("none".to_string(), |c| c.to_string())
                     data-from=format!("{},{}", fmt_exact(s.from.0), fmt_exact(s.from.1)) data-to=format!("{},{}", fmt_exact(s.to.0), fmt_exact(s.to.1))
                     x1=x.at(s.from.0) y1=y.at(s.from.1) x2=x.at(s.to.0) y2=y.at(s.to.1)
                     stroke=s.colour stroke-width=if s.component.is_some() { "2.5" } else { "1.2" } />
             }).collect_view()}
-            {ticks(range[0][0], range[0][1], 6).into_iter().map(|v| view! {
-                <text x=x.at(v) y=H - BOTTOM + 16.0 font-size="11" text-anchor="middle" fill="#5b6670">{fmt_num(v)}</text>
-            }).collect_view()}
-            {ticks(range[1][0], range[1][1], 6).into_iter().map(|v| view! {
-                <text x=LEFT - 5.0 y=y.at(v) + 4.0 font-size="11" text-anchor="end" fill="#5b6670">{fmt_num(v)}</text>
-            }).collect_view()}
-            <text x=(LEFT + W - RIGHT) / 2.0 y=H - 12.0 font-size="12" text-anchor="middle" fill="#1d2329">{report.axes[0].clone()}</text>
-            <text x=14 y=(TOP + H - BOTTOM) / 2.0 font-size="12" text-anchor="middle" fill="#1d2329" transform=format!("rotate(-90 14 {})", (TOP + H - BOTTOM) / 2.0)>{report.axes[1].clone()}</text>
-            {move || {
-                let o = overlay.get();
-                view! {
-                    {o.pieces.iter().map(|piece| (piece.colour, path_points(&piece.poses, axes, range)))
-                        .chain(o.joint_pieces.iter().map(|(colour, qs)| (*colour, config_points(qs, axes, range))))
-                        .map(|(colour, points)| {
-                        let d = polyline(&points.into_iter().map(to_px).collect::<Vec<_>>());
-                        view! { <path data-testid="lattice-path" d=d fill="none" stroke=css(colour) stroke-width="2" stroke-dasharray="5 3" /> }
-                    }).collect_view()}
-                    {markers(o.start).into_iter().chain(joint_marker(&o.joint_ends[0])).map(|(cx, cy)| view! { <circle cx=cx cy=cy r="6" fill="#ffffff" stroke="#1d2329" stroke-width="2"><title>"start"</title></circle> }).collect_view()}
-                    {markers(o.goal).into_iter().chain(joint_marker(&o.joint_ends[1])).map(|(cx, cy)| view! { <rect x=cx - 6.0 y=cy - 6.0 width="12" height="12" fill="#1d2329"><title>"goal"</title></rect> }).collect_view()}
-                }
-            }}
-        </Chart>
+        </SectionFrame>
         <p class="legend">
             "Rays: " <span class="swatch" style=format!("background: {INFEASIBLE}")></span> "infeasible or uncertain; feasible pieces coloured by connected component ("
             <span class="swatch" style=format!("background: {}", COMPONENTS[0])></span> "first, "
@@ -290,13 +197,6 @@ mod tests {
         // in 3-D: the last link's poses along each piece
         let drawn = crate::view3d::scene::lattice_polylines(&s, &r, true);
         assert_eq!(drawn.len(), pieces.len());
-    }
-
-    #[test]
-    fn colours_are_the_same_in_both_views() {
-        assert_eq!(rgba(None), [208.0 / 255.0, 59.0 / 255.0, 59.0 / 255.0, 1.0]);
-        assert_eq!(rgba(Some(0)), [46.0 / 255.0, 160.0 / 255.0, 67.0 / 255.0, 1.0]);
-        assert_eq!(colour(Some(COMPONENTS.len() + 1)), COMPONENTS[1], "colours repeat");
     }
 
     #[test]

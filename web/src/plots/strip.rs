@@ -6,17 +6,12 @@
 
 use super::{ExportButtons, FONT};
 use crate::logic::{fmt_exact, fmt_num, Section, StripModel, Tick};
-use crate::view3d::scene::{kind_colour, Rgba};
+use crate::palette::{css, kind_colour};
 use leptos::prelude::*;
 
 const STRIP_W: f64 = 1000.0;
 const STRIP_Y: f64 = 6.0;
 const STRIP_H: f64 = 36.0;
-
-/// A colour as CSS `rgb(..)`.
-pub fn css(c: Rgba) -> String {
-    format!("rgb({}, {}, {})", (c[0] * 255.0).round(), (c[1] * 255.0).round(), (c[2] * 255.0).round())
-}
 
 /// The horizontal strip over t ∈ [0, 1].
 #[component]
@@ -141,7 +136,7 @@ fn TickMark(tick: Tick, picked: RwSignal<Option<String>>) -> impl IntoView {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::view3d::scene::{GREEN, RED};
+    use crate::palette::{GREEN, RED};
 
     #[test]
     fn colours_as_css() {

@@ -4,7 +4,8 @@
 //! core's results; the GL side only uploads and draws these buffers.
 
 use super::tessellate::{self, dv, Tris};
-use crate::logic::{Kind, StripModel};
+use crate::logic::StripModel;
+use crate::palette::*;
 use cablenav::model::chain::Frame;
 use cablenav::model::{Chain, Pose};
 use cablenav::verify::profile::CableState;
@@ -14,38 +15,6 @@ use nalgebra::Vector3;
 
 /// Floats per vertex: position (3), normal (3, zero for unlit), colour RGBA (4).
 pub const STRIDE: usize = 10;
-
-/// An RGBA colour.
-pub type Rgba = [f32; 4];
-
-/// Feasible sections (the page's green).
-pub const GREEN: Rgba = [0.18, 0.62, 0.29, 1.0];
-/// Infeasible sections and interfering cables (the page's red).
-pub const RED: Rgba = [0.83, 0.23, 0.23, 1.0];
-/// Uncertain sections.
-pub const GREY: Rgba = [0.6, 0.6, 0.6, 1.0];
-/// The planned path.
-pub const PATH: Rgba = [0.42, 0.23, 0.83, 1.0];
-/// Cables when there is no tension information.
-const CABLE: Rgba = [0.2, 0.25, 0.3, 1.0];
-/// Cable colour at a comfortable tension margin (a quarter of the bounds' span or more).
-const CABLE_EASY: Rgba = [0.23, 0.44, 0.85, 1.0];
-/// Cable colour at zero tension margin.
-const CABLE_TIGHT: Rgba = [0.9, 0.57, 0.12, 1.0];
-/// Cable colour when its tension range leaves its bounds.
-const CABLE_OUT: Rgba = [0.56, 0.23, 0.83, 1.0];
-const PLATFORM: Rgba = [0.35, 0.4, 0.47, 0.6];
-const ANCHOR: Rgba = [0.12, 0.14, 0.16, 1.0];
-/// Clearance tubes at a boundary.
-const TUBE: Rgba = [0.83, 0.23, 0.23, 0.3];
-/// Draggable handles, and the selected one.
-const HANDLE: Rgba = [0.95, 0.78, 0.1, 1.0];
-const HANDLE_SELECTED: Rgba = [1.0, 0.45, 0.0, 1.0];
-const GRID: Rgba = [0.8, 0.83, 0.86, 1.0];
-const AXES: [Rgba; 3] = [[0.85, 0.2, 0.2, 1.0], [0.2, 0.65, 0.25, 1.0], [0.2, 0.35, 0.9, 1.0]];
-/// Obstacle colours, by obstacle index, translucent.
-const OBSTACLES: [Rgba; 5] =
-    [[0.55, 0.45, 0.3, 0.55], [0.3, 0.55, 0.5, 0.55], [0.6, 0.5, 0.2, 0.55], [0.45, 0.45, 0.65, 0.55], [0.6, 0.35, 0.45, 0.55]];
 
 /// Vertex data for the three passes.
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -72,15 +41,6 @@ fn push_tris(out: &mut Vec<f32>, t: &Tris, c: Rgba) {
 fn line(out: &mut Vec<f32>, a: DVec3, b: DVec3, c: Rgba) {
     push(out, a, DVec3::ZERO, c);
     push(out, b, DVec3::ZERO, c);
-}
-
-/// The colour of a section kind.
-pub fn kind_colour(kind: Kind) -> Rgba {
-    match kind {
-        Kind::Feasible => GREEN,
-        Kind::Infeasible => RED,
-        Kind::Uncertain => GREY,
-    }
 }
 
 /// How a cable is drawn, by its state: its class name (for the legend and tests) and colour.
@@ -145,13 +105,12 @@ pub fn end_pose(chain: &Chain, q: &[f64]) -> Pose {
 /// Samples along an angle ray piece (position rays are straight: their two ends).
 const ANGLE_SAMPLES: usize = 16;
 
-/// A ray lattice's pieces as coloured poses (see [`crate::plots::lattice::ray_pieces`]): feasible
+/// A ray lattice's pieces as coloured poses (see [`crate::rays::ray_pieces`]): feasible
 /// pieces in their component's colour, as in the cross-section panel; the infeasible ones in red
 /// when `infeasible`, else left out. A multi-link robot's pieces are its last link's poses
 /// ([`end_pose`]).
 pub fn lattice_polylines(s: &Scenario, l: &crate::worker::protocol::LatticeResult, infeasible: bool) -> Vec<Polyline> {
-    use crate::plots::lattice::{ray_pieces, rgba};
-    ray_pieces(l)
+    crate::rays::ray_pieces(l)
         .into_iter()
         .filter(|p| infeasible || p.component.is_some())
         .map(|p| {
@@ -166,7 +125,7 @@ pub fn lattice_polylines(s: &Scenario, l: &crate::worker::protocol::LatticeResul
                     }
                 })
                 .collect();
-            Polyline { colour: rgba(p.component), poses }
+            Polyline { colour: component_rgba(p.component), poses }
         })
         .collect()
 }
@@ -575,7 +534,7 @@ mod tests {
         // the x-ray at z = 0.8667: red from x = 0.2, then green from x ≈ 2.0016, at y = 2
         let ray: Vec<&Polyline> = all.iter().filter(|p| (p.poses[0].position.z - 0.8666666666666667).abs() < 1e-12 && p.poses[0].position.x != p.poses[1].position.x).collect();
         assert_eq!(ray.len(), 2);
-        assert_eq!((ray[0].colour, ray[1].colour), (lattice_red(), crate::plots::lattice::rgba(Some(0))));
+        assert_eq!((ray[0].colour, ray[1].colour), (lattice_red(), crate::palette::component_rgba(Some(0))));
         assert!((ray[1].poses[0].position.x - 2.0016).abs() < 1e-3 && ray[1].poses[0].position.y == 2.0);
         let bare = build(&SceneInput { scenario: &s, shown: None, cables: &[], trajectory: &[], paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] }, bounds(&s));
         let g = build(&SceneInput { scenario: &s, shown: None, cables: &[], trajectory: &[], paths: &[], lattice: &all, handles: &[], selected: None, axis: None, tubes: &[] }, bounds(&s));
@@ -615,7 +574,7 @@ mod tests {
     }
 
     fn lattice_red() -> Rgba {
-        crate::plots::lattice::rgba(None)
+        crate::palette::component_rgba(None)
     }
 
     #[test]

@@ -39,6 +39,13 @@ pub fn parallelism() -> usize {
     web_sys::window().map_or(1.0, |w| w.navigator().hardware_concurrency()).clamp(1.0, 8.0) as usize
 }
 
+/// `res` rows split into at most `workers` consecutive blocks of nearly equal size, as
+/// `[from, to)` pairs covering `0..res`.
+pub fn row_blocks(res: usize, workers: usize) -> Vec<[usize; 2]> {
+    let k = workers.clamp(1, res.max(1));
+    (0..k).map(|b| [b * res / k, (b + 1) * res / k]).filter(|r| r[0] < r[1]).collect()
+}
+
 /// The absolute URL of the page's JS module, from the preload link that both builds write into
 /// the page (`<link rel="modulepreload">`).
 fn module_url() -> Result<String, String> {
@@ -374,4 +381,20 @@ pub fn start_all<T: 'static>(
         }
     }
     Ok(started)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn row_blocks_cover_the_rows_once() {
+        assert_eq!(row_blocks(10, 3), [[0, 3], [3, 6], [6, 10]]);
+        assert_eq!(row_blocks(2, 8), [[0, 1], [1, 2]], "no empty block");
+        assert_eq!(row_blocks(64, 1), [[0, 64]]);
+        for (res, k) in [(256, 7), (33, 4), (1, 2)] {
+            let b = row_blocks(res, k);
+            assert!(b[0][0] == 0 && b.last().unwrap()[1] == res && b.windows(2).all(|w| w[0][1] == w[1][0]), "{b:?}");
+        }
+    }
 }

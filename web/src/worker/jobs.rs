@@ -5,8 +5,8 @@ use super::protocol::{pose_to_wire, Job, LatticeResult, PlannedTrajectory, RaySe
 use cablenav::lattice::{Lattice, LatticeSpec};
 use crate::logic::fmt_num;
 use cablenav::model::Pose;
-use cablenav::plan::choice::{self, Details, PathPlanner, PlanResult, PlannerKind, PlannerOptions, Progress};
-use cablenav::plan::{PathPose, PlanStatus};
+use cablenav::plan::{Details, PathPlanner, PlanProgress, PlanResult, PlannerKind, PlannerOptions};
+use cablenav::plan::{atlas::PathPose, PlanStatus};
 use nalgebra::{Quaternion, UnitQuaternion};
 use cablenav::Scenario;
 
@@ -30,7 +30,7 @@ pub struct Finished {
     pub polyline: Vec<Pose>,
 }
 
-/// The core's planner kind for a page planner id (of [`crate::planning::PLANNERS`]).
+/// The core's planner kind for a page planner id (of [`crate::state::PLANNERS`]).
 pub fn kind_of(id: &str) -> Option<PlannerKind> {
     match id {
         "continuation" => Some(PlannerKind::Atlas),
@@ -47,7 +47,7 @@ pub fn planner(id: &str, s: &Scenario, query: &str, max_charts: usize, steps: us
     let mut options = PlannerOptions::new(kind);
     options.atlas.max_charts = max_charts;
     options.lattice.steps = steps;
-    choice::planner(s, query, &options).map_err(|e| e.to_string())
+    cablenav::plan::planner(s, query, &options).map_err(|e| e.to_string())
 }
 
 /// One line describing a result.
@@ -114,7 +114,7 @@ fn path_pose(p: &PathPose) -> Pose {
 }
 
 /// Progress as a fraction for the bar, never going back, below 1 until the end.
-pub fn fraction(p: &Progress, shown: f64) -> f64 {
+pub fn fraction(p: &PlanProgress, shown: f64) -> f64 {
     if p.done.is_some() {
         return 1.0;
     }
@@ -291,7 +291,7 @@ mod tests {
 
     #[test]
     fn the_bar_only_moves_forward() {
-        let step = |fraction: f64, done: bool| Progress { stage: String::new(), fraction, done: done.then_some(PlanStatus::Found) };
+        let step = |fraction: f64, done: bool| PlanProgress { stage: String::new(), fraction, done: done.then_some(PlanStatus::Found) };
         assert_eq!(fraction(&step(0.0, false), 0.0), 0.0);
         assert_eq!(fraction(&step(0.5, false), 0.0), 0.5);
         assert_eq!(fraction(&step(0.25, false), 0.5), 0.5, "a worse front does not move it back");

@@ -19,7 +19,7 @@ pub const READY: &str = r#"{"ready":true}"#;
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Job {
     /// Plan query `query` of the scenario JSON `scenario` with planner `planner` (an id of
-    /// [`crate::planning::PLANNERS`]), at most `max_charts` charts (or the planner's own budget);
+    /// [`crate::state::PLANNERS`]), at most `max_charts` charts (or the planner's own budget);
     /// the lattice planner with `steps` grid values per free coordinate (`--steps`).
     Plan { scenario: String, query: String, planner: String, max_charts: usize, steps: usize },
     /// The slice map over `axes` (coordinate names) of `range`, `res` cells a side, the other

@@ -8,11 +8,11 @@
 //! so does this import). Times are `relative` (each point's `time` counts from the previous point)
 //! or `absolute`, as the element's `time_definition` says; the first point is at 0. Other kinds
 //! of trajectory (linear splines, parabolic blends, operational-space trajectories) are skipped
-//! with a note. [`super::caspr::model_to_json`] writes them after the bodies and cables.
+//! with a note. [`super::model_to_json`] writes them after the bodies and cables.
 
 use serde::Serialize;
 
-use super::caspr::{child, children, document, line, numbers};
+use super::xml::{child, children, document, line, numbers};
 use crate::error::{Error, Result};
 
 const FILE: &str = "trajectories";

@@ -18,9 +18,11 @@
 //! w_j = −κ ln μ_j → ∞ at the boundary. The logarithm keeps the auxiliaries of order κ·ln(1/μ)
 //! instead of 1/μ, so the atlas does not spend most of its charts climbing the barrier.
 
-use crate::conditions::{cables_at, for_scenario, Condition};
+use crate::conditions::{for_scenario, Condition};
 use crate::model::pose::{rot_y, rot_z, wrap_angle};
 use crate::model::{Coord, PointFrame, Pose, Robot, Wrench};
+use crate::plan::edge_trajectory;
+use crate::query::cables::cables_at;
 use crate::query::wrench::structure_matrix;
 use crate::scenario::Scenario;
 use crate::verify::verify_trajectory;
@@ -394,6 +396,6 @@ impl Manifold for CableManifold {
             return true;
         }
         let (pa, pb) = (Pose::from_coords(self.coords(a)), Pose::from_coords(self.coords(b)));
-        verify_trajectory(&self.scenario, &super::edge_trajectory(0, &pa, &pb)).is_ok_and(|r| r.infeasible.is_empty() && r.uncertain.is_empty())
+        verify_trajectory(&self.scenario, &edge_trajectory(0, &pa, &pb)).is_ok_and(|r| r.infeasible.is_empty() && r.uncertain.is_empty())
     }
 }

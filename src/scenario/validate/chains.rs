@@ -3,24 +3,67 @@
 //! the named configurations. Errors name the JSON path; a configuration outside the joint ranges
 //! is kept with a warning (a cross-section may need the limits widened, thesis Fig. 3.12).
 
-use super::json::{Fixed, Ordered, RawCable, RawLink, RawTrajectory};
-use crate::error::{finite, Error, Result};
-use crate::model::{Chain, Joint, JointCoord, JointPath, Link, Robot};
 use nalgebra::Vector3;
 use std::f64::consts::PI;
 
-/// Most links of one robot.
-pub const MAX_LINKS: usize = 64;
-/// Most joint coordinates of one robot.
-pub const MAX_DOF: usize = 64;
+use super::{vec3, MAX_DOF, MAX_LINKS};
+use crate::error::{finite, Error, Result};
+use crate::model::{Chain, Clearance, Joint, JointCoord, JointPath, Link, Robot};
+use crate::query::cables::{attached_inside, cables_at_config};
+use crate::scenario::json::{Ordered, RawCable, RawLink, RawScenario, RawTrajectory, FORMAT_3};
 
-fn vec3(field: &str, v: &Fixed<f64, 3>) -> Result<Vector3<f64>> {
-    let [x, y, z] = v.0;
-    Ok(Vector3::new(finite(&format!("{field}[0]"), x)?, finite(&format!("{field}[1]"), y)?, finite(&format!("{field}[2]"), z)?))
+/// The multi-link sections (format 3): the chain and each cable's link go into `robot`; returns
+/// the named configurations. A platform robot must not use them, and a multi-link robot is
+/// configured by configurations only (no poses, trajectories, queries or wrench set yet).
+pub(super) fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clearance, warnings: &mut Vec<String>) -> Result<Vec<(String, Vec<f64>)>> {
+    let Some(links) = &raw.robot.links else {
+        if let Some(k) = raw.trajectories.iter().position(|t| t.through.is_some()) {
+            return Err(Error::new(format!("trajectories[{k}].through"), "only a multi-link robot's trajectories pass through configurations; a platform robot's have translation and orientation"));
+        }
+        if let Some(i) = raw.robot.cables.iter().position(|c| c.link.is_some()) {
+            return Err(Error::new(format!("robot.cables[{i}].link"), "only the cables of a multi-link robot (robot.links) name a link"));
+        }
+        if !raw.configurations.0.is_empty() {
+            return Err(Error::new("configurations", "only multi-link robots (robot.links) have configurations; a platform robot has poses"));
+        }
+        return Ok(Vec::new());
+    };
+    if crate::scenario::json::version(&raw.format).unwrap_or(1) < 3 {
+        return Err(Error::new("robot.links", format!("multi-link robots need \"format\": \"{}\"", FORMAT_3)));
+    }
+    let chain = chain(links)?;
+    for (cable, link) in robot.cables.iter_mut().zip(cable_links(&raw.robot.cables, &chain)?) {
+        cable.link = link;
+    }
+    for (field, given) in [("poses", !raw.poses.0.is_empty()), ("queries", !raw.queries.is_empty()), ("wrench", raw.wrench.is_some())] {
+        if given {
+            return Err(Error::new(
+                field,
+                "not supported for multi-link robots yet: they are configured by named joint configurations \
+                 (`configurations`, paths through them in `trajectories`), and their wrench condition is \
+                 joint-space wrench closure, always checked",
+            ));
+        }
+    }
+    for (i, cable) in robot.cables.iter().enumerate() {
+        let link = &chain.links[cable.link];
+        let zone = link.radius + clearance.cable_link;
+        if zone > 0.0 && attached_inside(&cable.platform, &link.body, zone) {
+            warnings.push(format!(
+                "robot.cables[{i}]: cable {} is attached within {zone} (radius + clearance) of its own link {}'s body; \
+                 its clearance to that link is not checked",
+                i + 1,
+                link.name
+            ));
+        }
+    }
+    robot.chain = Some(chain);
+    let chain = robot.chain.as_ref().ok_or_else(|| Error::new("robot.links", "internal: chain missing"))?;
+    configurations(&raw.configurations, robot, chain, warnings)
 }
 
 /// The links of `raw` as a chain, parents before children (file order otherwise).
-pub fn chain(raw: &[RawLink]) -> Result<Chain> {
+fn chain(raw: &[RawLink]) -> Result<Chain> {
     if raw.is_empty() {
         return Err(Error::new("robot.links", "a multi-link robot needs at least one link"));
     }
@@ -175,7 +218,7 @@ fn coordinates(path: &str, l: &RawLink, joint: &Joint, all: &mut Vec<String>) ->
 }
 
 /// Each cable's link, by name (every cable of a multi-link robot names one).
-pub fn cable_links(cables: &[RawCable], chain: &Chain) -> Result<Vec<usize>> {
+fn cable_links(cables: &[RawCable], chain: &Chain) -> Result<Vec<usize>> {
     cables
         .iter()
         .enumerate()
@@ -192,7 +235,7 @@ pub fn cable_links(cables: &[RawCable], chain: &Chain) -> Result<Vec<usize>> {
 
 /// The named configurations: every coordinate of the robot given once, finite. One outside its
 /// joint's range gets a warning.
-pub fn configurations(raw: &Ordered<Ordered<f64>>, robot: &Robot, chain: &Chain, warnings: &mut Vec<String>) -> Result<Vec<(String, Vec<f64>)>> {
+fn configurations(raw: &Ordered<Ordered<f64>>, robot: &Robot, chain: &Chain, warnings: &mut Vec<String>) -> Result<Vec<(String, Vec<f64>)>> {
     let names: Vec<&str> = chain.coords().map(|(_, _, c)| c.name.as_str()).collect();
     let mut out: Vec<(String, Vec<f64>)> = Vec::with_capacity(raw.0.len());
     for (name, values) in &raw.0 {
@@ -222,7 +265,7 @@ pub fn configurations(raw: &Ordered<Ordered<f64>>, robot: &Robot, chain: &Chain,
                 warnings.push(format!("{path}.{}: {} is outside the joint's range [{}, {}]", c.name, q[i], c.range[0], c.range[1]));
             }
         }
-        let at = crate::conditions::cables_at_config(robot, &q);
+        let at = cables_at_config(robot, &q);
         for (i, (a, x)) in at.iter().enumerate() {
             if (x - a).norm() <= 1e-12 * (1.0 + a.norm().max(x.norm())) {
                 return Err(Error::new(path, format!("cable {} has zero length at configuration {name}", i + 1)));
@@ -235,7 +278,7 @@ pub fn configurations(raw: &Ordered<Ordered<f64>>, robot: &Robot, chain: &Chain,
 
 /// A multi-link robot's trajectories: each a `name` and the configurations it passes `through`
 /// (at least two, by name).
-pub fn joint_paths(raw: &[RawTrajectory], configs: &[(String, Vec<f64>)]) -> Result<Vec<JointPath>> {
+pub(super) fn joint_paths(raw: &[RawTrajectory], configs: &[(String, Vec<f64>)]) -> Result<Vec<JointPath>> {
     let mut out: Vec<JointPath> = Vec::with_capacity(raw.len());
     for (k, t) in raw.iter().enumerate() {
         let path = format!("trajectories[{k}]");

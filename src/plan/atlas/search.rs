@@ -27,7 +27,7 @@ pub enum Ended {
 
 /// Progress of a continuation.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Progress {
+pub struct ContinuationProgress {
     /// Charts in the atlas.
     pub charts: usize,
     /// Entries in the open list.
@@ -191,8 +191,8 @@ impl<M: Manifold> Continuation<M> {
     }
 
     /// The current progress.
-    pub fn progress(&self) -> Progress {
-        Progress {
+    pub fn progress(&self) -> ContinuationProgress {
+        ContinuationProgress {
             charts: self.atlas.charts.len(),
             open: self.open.len(),
             best_heuristic: self.open.iter().map(|e| e.h).fold(f64::INFINITY, f64::min),
@@ -204,7 +204,7 @@ impl<M: Manifold> Continuation<M> {
     /// expansion direction, with its step shrinking), one pop of the open list, or one edge of a
     /// path being built (two walks, each with a capped number of projections, and the motion
     /// validator on their steps) — and returns the progress.
-    pub fn step(&mut self, budget: usize) -> Progress {
+    pub fn step(&mut self, budget: usize) -> ContinuationProgress {
         let mut left = budget;
         while left > 0 && self.ended.is_none() {
             left -= 1;

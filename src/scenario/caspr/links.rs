@@ -20,16 +20,19 @@ use roxmltree::Node;
 use serde::Serialize;
 use std::collections::BTreeMap;
 
-use super::caspr::{cable_set, child, child_numbers, children, document, line, parse_xml, properties, Import, OutCable, OutCableBounds, OutRobot, Properties};
-use super::json::FORMAT_3;
+use super::out::{OutBody, OutCable, OutCableBounds, OutJoint, OutLink, OutRobot, Properties};
+use super::xml::{cable_set, child, child_numbers, children, document, line, parse_xml, properties};
+use super::Import;
 use crate::error::{Error, Result};
+use crate::scenario::FORMAT_3;
 
 const BODIES: &str = "bodies";
+
 const CABLES: &str = "cables";
 
 /// Whether a bodies file describes a multi-link robot: more than one link, or one whose joint is
 /// not the free `SPATIAL_EULER_XYZ` of a platform.
-pub fn is_multi_link(bodies_xml: &str) -> bool {
+pub(super) fn is_multi_link(bodies_xml: &str) -> bool {
     let Ok(doc) = parse_xml(bodies_xml) else { return false };
     let Some(links) = child(doc.root_element(), "links") else { return false };
     let all: Vec<Node> = links.children().filter(|c| c.is_element()).collect();
@@ -53,6 +56,7 @@ struct LinkIn {
     com: [f64; 3],
 }
 
+/// The links of the bodies file, in order, each with its joint, coordinates and body.
 fn links(xml: &str) -> Result<Vec<LinkIn>> {
     let doc = document(BODIES, xml, "bodies_system")?;
     let root = doc.root_element();
@@ -129,6 +133,7 @@ struct CableIn {
     props: [Option<f64>; 3],
 }
 
+/// The cables of the cable set, each from the base (link 0) to one link.
 fn cables(xml: &str, links: &[LinkIn]) -> Result<Vec<CableIn>> {
     let doc = document(CABLES, xml, "cables")?;
     let set = cable_set(doc.root_element())?;
@@ -166,6 +171,7 @@ fn cables(xml: &str, links: &[LinkIn]) -> Result<Vec<CableIn>> {
     Ok(out)
 }
 
+/// The scenario as written.
 #[derive(Serialize)]
 struct Out<'a> {
     format: &'static str,
@@ -174,35 +180,8 @@ struct Out<'a> {
     configurations: BTreeMap<&'static str, BTreeMap<String, f64>>,
 }
 
-/// A link as written.
-#[derive(Serialize)]
-pub(super) struct OutLink {
-    name: String,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    parent: Option<String>,
-    location: [f64; 3],
-    joint: OutJoint,
-    body: OutBody,
-}
-
-#[derive(Serialize)]
-struct OutJoint {
-    #[serde(rename = "type")]
-    kind: &'static str,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    axis: Option<[f64; 3]>,
-    coordinates: Vec<String>,
-    range: Vec<[f64; 2]>,
-}
-
-#[derive(Serialize)]
-struct OutBody {
-    from: [f64; 3],
-    to: [f64; 3],
-}
-
 /// Converts a CASPR multi-link bodies file and cables file into scenario JSON called `name`.
-pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import> {
+pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import> {
     let links = links(bodies_xml)?;
     let cables = cables(cables_xml, &links)?;
     let mut notes = vec!["multi-link robot: clearances are left at 0 (the thesis' case study uses ε = 0.02, clearance.cable_cable and clearance.cable_link); link bodies are segments of radius 0".to_string()];

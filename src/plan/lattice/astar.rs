@@ -1,0 +1,163 @@
+//! A* over the lattice's points and the special points (edge cost: the pose-metric length along
+//! the ray; heuristic: the pose-metric distance to the goal), through the seam of an angle axis
+//! over a whole turn at cost 0; the path found is unwrapped across that seam.
+
+use super::graph::Key;
+use super::smooth::{initial_runs, turning_points};
+use super::{metric, six, LatticePlanner, Stage};
+use crate::model::Pose;
+use crate::plan::PlanStatus;
+use std::cmp::Ordering;
+
+/// An open-list entry (least f first, ties: least h). `g` is the cost from the start with which
+/// `v` was pushed: the entry is stale exactly when `g` is no longer `v`'s best cost (an exact
+/// comparison of the stored number; recomputing it as f − h can exceed it by a rounding error,
+/// which skipped live entries, platform-dependently).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Open {
+    f: f64,
+    h: f64,
+    g: f64,
+    v: usize,
+}
+
+impl PartialEq for Open {
+    fn eq(&self, o: &Self) -> bool {
+        self.cmp(o) == Ordering::Equal
+    }
+}
+
+impl Eq for Open {}
+
+impl PartialOrd for Open {
+    fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
+        Some(self.cmp(o))
+    }
+}
+
+impl Ord for Open {
+    fn cmp(&self, o: &Self) -> Ordering {
+        o.f.total_cmp(&self.f).then(o.h.total_cmp(&self.h)).then(o.v.cmp(&self.v))
+    }
+}
+
+impl LatticePlanner {
+    fn heuristic(&self, v: usize) -> f64 {
+        metric(&Pose::from_coords(self.coords_of(v)), &self.goal, self.params.rotation_length)
+    }
+
+    pub(super) fn start_search(&mut self) {
+        let s = self.ends[0];
+        let h = self.heuristic(s);
+        self.g.insert(s, 0.0);
+        self.open.push(Open { f: h, h, g: 0.0, v: s });
+        self.stage = Stage::Search;
+    }
+
+    /// The neighbours of `v` with edge costs: grid neighbours along each axis within one feasible
+    /// piece of the ray between them, and the extra edges of special points and segments.
+    fn neighbours(&self, v: usize) -> Vec<(usize, f64)> {
+        let mut out = self.extra.get(&v).cloned().unwrap_or_default();
+        if v < self.points() {
+            let spec = &self.lattice.spec;
+            let idx = spec.point_indices(v);
+            let here = Pose::from_coords(six(&spec.coords(&idx)));
+            for a in 0..spec.axes.len() {
+                let r = spec.ray_index(a, &idx);
+                let ray = &self.lattice.rays[r];
+                let Some(piece) = ray.piece_at(spec.value(a, idx[a])) else { continue };
+                for j in [idx[a].wrapping_sub(1), idx[a] + 1] {
+                    if j < spec.steps[a] && ray.piece_at(spec.value(a, j)) == Some(piece) {
+                        let mut n = idx.clone();
+                        n[a] = j;
+                        let w = spec.point_index(&n);
+                        out.push((w, metric(&here, &Pose::from_coords(six(&spec.coords(&n))), self.params.rotation_length)));
+                    }
+                }
+            }
+        }
+        out.extend(self.seam_twins(v).into_iter().map(|w| (w, 0.0)));
+        out
+    }
+
+    /// The vertices that are the same pose as `v` across the seam of an angle axis over a whole
+    /// turn: `v`'s value at one end of the range exchanged for the other end (grid points, and
+    /// special points whose twin the start's or goal's rays also made).
+    fn seam_twins(&self, v: usize) -> Vec<usize> {
+        let spec = &self.lattice.spec;
+        let wrapping = (0..spec.axes.len()).filter(|&a| spec.wraps(a));
+        if v < self.points() {
+            let idx = spec.point_indices(v);
+            return wrapping.filter_map(|a| spec.seam_twin(&idx, a)).map(|twin| spec.point_index(&twin)).collect();
+        }
+        let c = self.coords_of(v);
+        let keys = self.keys(&c);
+        let mut out = vec![];
+        for a in wrapping {
+            let Key::Grid(i) = keys[a] else { continue };
+            let last = spec.steps[a] - 1;
+            if i == 0 || i == last {
+                let mut twin = c;
+                twin[spec.axes[a].index()] = spec.value(a, last - i);
+                out.extend(self.specials.iter().position(|s| *s == twin).map(|j| self.points() + j));
+            }
+        }
+        out
+    }
+
+    pub(super) fn search_unit(&mut self) {
+        let goal = self.ends[1];
+        let Some(Open { g: g_pushed, v, .. }) = self.open.pop() else {
+            self.status = Some(PlanStatus::NoPath);
+            self.stage = Stage::Done;
+            return;
+        };
+        if g_pushed > self.g.get(&v).copied().unwrap_or(f64::INFINITY) {
+            return; // a stale entry: v was reached more cheaply since
+        }
+        self.expanded += 1;
+        if v == goal {
+            let mut path = vec![v];
+            while let Some(&p) = self.parent.get(path.last().unwrap_or(&v)) {
+                path.push(p);
+            }
+            path.reverse();
+            self.polyline = self.unwrapped(&path);
+            self.waypoints = turning_points(&self.polyline);
+            self.runs = initial_runs(&self.waypoints);
+            self.stage = Stage::Smooth { next: 0 };
+            return;
+        }
+        let gv = self.g.get(&v).copied().unwrap_or(f64::INFINITY);
+        for (w, cost) in self.neighbours(v) {
+            let gw = gv + cost;
+            if gw < self.g.get(&w).copied().unwrap_or(f64::INFINITY) {
+                self.g.insert(w, gw);
+                self.parent.insert(w, v);
+                let h = self.heuristic(w);
+                self.open.push(Open { f: gw + h, h, g: gw, v: w });
+            }
+        }
+    }
+
+    /// The coordinates of the A* path `path`, continuous across the seam of a wrapping angle
+    /// axis: a hop to the seam twin (the same pose) is dropped and the points after it keep going
+    /// past the range's end (φ = π + 0.1 rather than −π + 0.1), so that every edge and every
+    /// halving of it runs the short way along its ray.
+    fn unwrapped(&self, path: &[usize]) -> Vec<[f64; 6]> {
+        let mut shift = [0.0; 6];
+        let mut out: Vec<[f64; 6]> = Vec::with_capacity(path.len());
+        for (k, &w) in path.iter().enumerate() {
+            let c = self.coords_of(w);
+            if k > 0 && self.seam_twins(path[k - 1]).contains(&w) {
+                let before = self.coords_of(path[k - 1]);
+                for i in 0..6 {
+                    shift[i] += before[i] - c[i];
+                }
+                continue;
+            }
+            out.push(std::array::from_fn(|i| c[i] + shift[i]));
+        }
+        out
+    }
+}

@@ -1,0 +1,128 @@
+//! The scenario JSON as the CASPR readers write it: the robot (links, cables, tension bounds,
+//! diameter, dynamics), and the robot-level cable properties combined from each cable's.
+
+use serde::Serialize;
+
+/// The robot-level cable properties of an import: the diameter (the largest given), the tension
+/// bounds (one number when all cables agree), or whether the bounds go on each cable.
+pub(super) struct Properties {
+    pub(super) diameter: Option<f64>,
+    pub(super) tension: Option<OutBounds>,
+    pub(super) per_cable: bool,
+}
+
+impl Properties {
+    /// From each cable's `[force_min, force_max, diameter]`; a note when diameters differ.
+    pub(super) fn of(each: Vec<[Option<f64>; 3]>, notes: &mut Vec<String>) -> Properties {
+        let diameters: Vec<f64> = each.iter().filter_map(|c| c[2]).collect();
+        let diameter = diameters.iter().copied().reduce(f64::max);
+        if let Some(d) = diameter {
+            if diameters.iter().any(|x| *x != d) {
+                notes.push(format!("cable diameters differ; robot.diameter is the largest, {d}"));
+            }
+        }
+        let (min, max) = (combine(each.iter().map(|c| c[0])), combine(each.iter().map(|c| c[1])));
+        let per_cable = min.is_none() && each.iter().any(|c| c[0].is_some()) || max.is_none() && each.iter().any(|c| c[1].is_some());
+        let tension = (!per_cable && (min.is_some() || max.is_some())).then_some(OutBounds { min, max });
+        Properties { diameter, tension, per_cable }
+    }
+}
+
+/// One value for all cables when they agree, one per cable when all give one, else `None`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(untagged)]
+pub(super) enum OneOrEach {
+    One(f64),
+    Each(Vec<f64>),
+}
+
+/// The value of every cable when all give one: one number when they agree.
+fn combine(values: impl Iterator<Item = Option<f64>>) -> Option<OneOrEach> {
+    let all: Option<Vec<f64>> = values.collect();
+    let all = all?;
+    let first = *all.first()?;
+    Some(if all.iter().all(|x| *x == first) { OneOrEach::One(first) } else { OneOrEach::Each(all) })
+}
+
+/// The robot as written: its links (multi-link robots only), cables, tension bounds, diameter.
+#[derive(Serialize)]
+pub(super) struct OutRobot {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) links: Option<Vec<OutLink>>,
+    pub(super) cables: Vec<OutCable>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) tension: Option<OutBounds>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) diameter: Option<f64>,
+    /// The platform's mass and inertia (format 4), platform robots only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) dynamics: Option<OutDynamics>,
+}
+
+/// `robot.dynamics` as written.
+#[derive(Serialize)]
+pub(super) struct OutDynamics {
+    pub(super) mass: f64,
+    pub(super) com: [f64; 3],
+    pub(super) inertia: [[f64; 3]; 3],
+    pub(super) gravity: [f64; 3],
+}
+
+/// A cable as written: its base anchor, the link it pulls (multi-link robots only), its anchor
+/// there, its own tension bounds.
+#[derive(Serialize)]
+pub(super) struct OutCable {
+    pub(super) base: [f64; 3],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) link: Option<String>,
+    pub(super) platform: [f64; 3],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) tension: Option<OutCableBounds>,
+}
+
+/// Robot-level tension bounds as written.
+#[derive(Serialize)]
+pub(super) struct OutBounds {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) min: Option<OneOrEach>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) max: Option<OneOrEach>,
+}
+
+/// A cable's own tension bounds as written.
+#[derive(Serialize)]
+pub(super) struct OutCableBounds {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) min: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) max: Option<f64>,
+}
+
+/// A link as written.
+#[derive(Serialize)]
+pub(super) struct OutLink {
+    pub(super) name: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) parent: Option<String>,
+    pub(super) location: [f64; 3],
+    pub(super) joint: OutJoint,
+    pub(super) body: OutBody,
+}
+
+/// A link's joint as written.
+#[derive(Serialize)]
+pub(super) struct OutJoint {
+    #[serde(rename = "type")]
+    pub(super) kind: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) axis: Option<[f64; 3]>,
+    pub(super) coordinates: Vec<String>,
+    pub(super) range: Vec<[f64; 2]>,
+}
+
+/// A link's body as written: the segment from its joint.
+#[derive(Serialize)]
+pub(super) struct OutBody {
+    pub(super) from: [f64; 3],
+    pub(super) to: [f64; 3],
+}
