@@ -750,6 +750,16 @@ fn coincident_anchors() {
 }
 
 #[test]
+fn coordinates_beyond_a_sane_range_are_refused_by_field() {
+    // 1e308 once passed as finite and overflowed into "cable 1 has zero length"
+    expect(|v| v["robot"]["cables"][0]["base"][0] = json!(1e308), "robot.cables[0].base[0]", "within ±1e6");
+    expect(|v| v["robot"]["cables"][2]["platform"][2] = json!(-2e6), "robot.cables[2].platform[2]", "within ±1e6");
+    expect(|v| v["poses"]["q1"] = json!({"position": [0, 1e7, 1], "quaternion": [1, 0, 0, 0]}), "poses.q1.position[1]", "got 1e7");
+    // the bound itself is accepted
+    ok_with(|v| v["robot"]["cables"][0]["base"][0] = json!(1e6));
+}
+
+#[test]
 fn zero_cable_length_at_a_pose() {
     // Cable 3: base (4, 2, 0), platform anchor (0.15, 0, 0.3) → zero length at position (3.85, 2, −0.3).
     let e = err_with(|v| v["poses"]["q1"] = json!({"position": [3.85, 2, -0.3], "quaternion": [1, 0, 0, 0]}));

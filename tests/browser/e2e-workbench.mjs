@@ -63,6 +63,29 @@ async function checkLayout(page, what) {
   return `canvas ${r.canvas.top.toFixed(0)}..${r.canvas.bottom.toFixed(0)}, strip ${r.strip.top.toFixed(0)}..${r.strip.bottom.toFixed(0)} of ${r.H}`;
 }
 
+/**
+ * The editor's cable table (its sections open) is not cut at the side panel's edge: on a wide
+ * screen a platform robot's table fits its panel (`fit`); otherwise every column is reachable by
+ * scrolling the table's own box sideways.
+ */
+async function checkCableTable(page, what, fit) {
+  const r = await page.evaluate(() => {
+    const table = document.querySelector('[data-testid="cable-table"]');
+    const box = document.querySelector('[data-testid="cable-table-scroll"]');
+    const panel = document.querySelector('[data-testid="side-panel"]') ?? box.parentElement;
+    const right = (e) => e.getBoundingClientRect().right;
+    return {
+      table: right(table), box: right(box), panel: right(panel),
+      scrolls: getComputedStyle(box).overflowX === 'auto' && box.scrollWidth > box.clientWidth,
+      overflows: box.scrollWidth > box.clientWidth + 1,
+    };
+  });
+  if (r.box > r.panel + 1) throw new Error(`${what}: the cable table's box ends at ${r.box}, past the panel's edge ${r.panel}`);
+  if (fit && r.overflows) throw new Error(`${what}: the cable table is wider than its panel (${JSON.stringify(r)})`);
+  if (r.overflows && !r.scrolls) throw new Error(`${what}: the cable table is cut at its box's edge and does not scroll (${JSON.stringify(r)})`);
+  return r;
+}
+
 // ---------- run ----------
 
 for (const [w, h] of [[1366, 768], [390, 844]]) {
@@ -79,6 +102,7 @@ for (const [w, h] of [[1366, 768], [390, 844]]) {
     for (const d of await page.$$('[data-testid="scenario-editor"] details:not([open]) > summary')) await d.click();
     await page.evaluate(() => window.scrollTo(0, 0));
     await checkLayout(page, `${w}×${h}, editor open`).catch(async (e) => { await page.screenshot({ path: join(artifacts, `layout-${w}x${h}-open.png`), fullPage: true }); throw e; });
+    await checkCableTable(page, `${w}×${h}`, w >= 1366);
     await page.screenshot({ path: join(artifacts, `layout-${w}x${h}-full.png`), fullPage: true });
     // embed mode: the view and the strip only
     await page.goto(`${base}/?embed=1#preset=cdpr7-tree`, { waitUntil: 'load' });
@@ -103,6 +127,12 @@ for (const [w, h] of [[1366, 768], [390, 844]]) {
     await page.waitForSelector('[data-testid="joint-sliders"]', { timeout: TIMEOUT });
     const detail = await checkLayout(page, `arm ${w}×${h}`).catch(async (e) => { await page.screenshot({ path: join(artifacts, `layout-arm-${w}x${h}.png`), fullPage: true }); throw e; });
     await page.screenshot({ path: join(artifacts, `layout-arm-${w}x${h}.png`) });
+    // its editor: hints and fields that apply to a multi-link robot, the cable table reachable
+    for (const d of await page.$$('[data-testid="scenario-editor"] details:not([open]) > summary')) await d.click();
+    const hint = await page.textContent('[data-testid="robot-hint"]');
+    if (/6 to 64|wrench ellipsoid/.test(hint)) throw new Error(`arm: the robot hint is a platform's: ${hint}`);
+    if (await page.$('legend:has-text("Cable tension bounds")')) throw new Error('arm: tension bounds offered, which no condition of a chain reads');
+    await checkCableTable(page, `arm ${w}×${h}`, false);
     problems.assertNone();
     await context.close();
     return detail;

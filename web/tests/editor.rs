@@ -158,7 +158,7 @@ async fn cables_are_added_and_removed() {
     // five cables: the core's error, at the table
     let status = m.q("[data-testid=\"editor-status\"]").text_content().unwrap();
     assert!(status.contains("robot.cables") && status.contains("at least 6"), "{status}");
-    assert!(m.q("table.cables + [data-testid=\"field-error\"]").text_content().unwrap().contains("at least 6"));
+    assert!(m.q("[data-testid=\"cable-table-scroll\"] + [data-testid=\"field-error\"]").text_content().unwrap().contains("at least 6"));
 }
 
 #[wasm_bindgen_test]

@@ -37,6 +37,12 @@ pub const JOIN_TOLERANCE: f64 = 1e-9;
 /// Largest deviation of a quaternion's norm from 1 accepted without a warning.
 pub const UNIT_TOLERANCE: f64 = 1e-9;
 
+/// Largest coordinate accepted in a point or vector (metres, or the unit of the field): a cable
+/// robot's scene is metres to tens of metres across, and coordinates far beyond this overflow the
+/// exact arithmetic (squares of lengths, polynomial coefficients) into infinities that would
+/// surface as misleading errors elsewhere (a base anchor at 1e308 read as a cable of zero length).
+pub const MAX_COORD: f64 = 1e6;
+
 /// Most links of one robot.
 pub const MAX_LINKS: usize = 64;
 /// Most joint coordinates of one robot.
@@ -116,7 +122,16 @@ fn positive(field: &str, x: f64) -> Result<f64> {
 /// A point or vector of three finite numbers at `field`.
 fn vec3(field: &str, v: &Fixed<f64, 3>) -> Result<Vector3<f64>> {
     let [x, y, z] = v.0;
-    Ok(Vector3::new(num(&format!("{field}[0]"), x)?, num(&format!("{field}[1]"), y)?, num(&format!("{field}[2]"), z)?))
+    Ok(Vector3::new(coordinate(&format!("{field}[0]"), x)?, coordinate(&format!("{field}[1]"), y)?, coordinate(&format!("{field}[2]"), z)?))
+}
+
+/// A finite number within ±[`MAX_COORD`] at `field`.
+fn coordinate(field: &str, x: f64) -> Result<f64> {
+    let x = num(field, x)?;
+    if x.abs() > MAX_COORD {
+        return Err(Error::new(field, format!("must be within ±{MAX_COORD:e} (a sane range for a cable robot's scene), got {x:e}")));
+    }
+    Ok(x)
 }
 
 /// Largest absolute component.

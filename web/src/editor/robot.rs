@@ -19,6 +19,9 @@ pub fn RobotEditor(ed: Ed) -> impl IntoView {
     let chain = Memo::new(move |_| ed.read(el::is_multi_link).unwrap_or(false));
     view! {
         <TextField ed path=Path::of(&["name"]) label="Scenario name" />
+        // the table scrolls sideways inside the side panel when it is wider (a multi-link robot's
+        // link column on a narrow panel) rather than being cut at the panel's edge
+        <div class="table-scroll" data-testid="cable-table-scroll">
         <table class="cables" data-testid="cable-table">
             <caption>
                 {move || if chain.get() {
@@ -27,15 +30,19 @@ pub fn RobotEditor(ed: Ed) -> impl IntoView {
                     "Cables: base anchor aᵢ (world frame) and platform anchor bᵢ (platform frame), in metres"
                 }}
             </caption>
+            // two header rows: the anchor over its three coordinates, so that each column is as
+            // narrow as its number field
             <thead>
                 <tr>
-                    <th scope="col">"#"</th>
-                    <th scope="col">"base x"</th><th scope="col">"base y"</th><th scope="col">"base z"</th>
-                    {move || chain.get().then(|| view! { <th scope="col">"link"</th> })}
-                    <th scope="col">{move || if chain.get() { "on link x" } else { "platform x" }}</th>
-                    <th scope="col">{move || if chain.get() { "on link y" } else { "platform y" }}</th>
-                    <th scope="col">{move || if chain.get() { "on link z" } else { "platform z" }}</th>
-                    <th scope="col"><span class="sr-only">"remove"</span></th>
+                    <th scope="col" rowspan="2">"#"</th>
+                    <th scope="colgroup" colspan="3">"base aᵢ"</th>
+                    {move || chain.get().then(|| view! { <th scope="col" rowspan="2">"link"</th> })}
+                    <th scope="colgroup" colspan="3">{move || if chain.get() { "on the link bᵢ" } else { "platform bᵢ" }}</th>
+                    <th scope="col" rowspan="2"><span class="sr-only">"remove"</span></th>
+                </tr>
+                <tr>
+                    <th scope="col">"x"</th><th scope="col">"y"</th><th scope="col">"z"</th>
+                    <th scope="col">"x"</th><th scope="col">"y"</th><th scope="col">"z"</th>
                 </tr>
             </thead>
             <tbody>
@@ -44,14 +51,22 @@ pub fn RobotEditor(ed: Ed) -> impl IntoView {
                 </For>
             </tbody>
         </table>
+        </div>
         <FieldMessage local=RwSignal::new(None) core=table_error />
         <button type="button" data-testid="add-cable" on:click=move |_| ed.edit(el::add_cable)>
             "Add a cable"
         </button>
-        <p class="hint">"A 6-DoF robot needs 6 to 64 cables. A wrench ellipsoid or closure is tested for up to 10; a single wrench and the platform's mass for any number."</p>
+        <p class="hint" data-testid="robot-hint">{move || if chain.get() {
+            "A multi-link robot's cables pull on its links; it is checked for cable–cable, cable–link and cable–obstacle \
+             interference, cable lengths and joint-space wrench closure (docs/multilink.md). Tensions and a wrench set do \
+             not apply to it yet."
+        } else {
+            "A 6-DoF robot needs 6 to 64 cables. A wrench ellipsoid or closure is tested for up to 10; a single wrench and the platform's mass for any number."
+        }}</p>
         <div class="bounds">
             <BoundsGroup ed what="length" title="Cable length bounds" unit="m" />
-            <BoundsGroup ed what="tension" title="Cable tension bounds" unit="N" />
+            // no condition of a multi-link robot reads tension bounds yet: not offered for one
+            {move || (!chain.get()).then(|| view! { <BoundsGroup ed what="tension" title="Cable tension bounds" unit="N" /> })}
             <NumField ed path=Path::of(&["robot", "diameter"]) label="Cable diameter" unit="m" optional=true />
             <NumField ed path=Path::of(&["clearance", "cable_cable"]) label="Clearance cable–cable" unit="m" optional=true />
             <NumField ed path=Path::of(&["clearance", "cable_obstacle"]) label="Clearance cable–obstacle" unit="m" optional=true />
