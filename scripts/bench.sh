@@ -154,6 +154,9 @@ if [ -n "$BEFORE" ]; then
     mkdir -p "$SRC"
     git archive "$BEFORE_ID" | tar -x -C "$SRC"
   fi
+  # the benchmark reads models beside the repository (../shared, e.g. CoGiRo's CASPR files): the
+  # exported tree finds them at the same relative path through a link
+  [ -e target/bench-before/shared ] || [ ! -d ../shared ] || ln -s "$(cd .. && pwd)/shared" target/bench-before/shared
   CARGO_TARGET_DIR="$PWD/target/bench-before/target" cargo build --release --example bench --manifest-path "$SRC/Cargo.toml" >&2
 fi
 cargo test --release --target wasm32-unknown-unknown --features bench --test bench_wasm --no-run >&2
