@@ -32,7 +32,7 @@ const GZIP = new Set(['.html', '.js', '.mjs', '.wasm', '.css', '.json', '.svg'])
  * and cacheable for ten minutes, as a static host would.
  */
 export function serve(dir, extra = {}) {
-  const gzipped = new Map(); // file -> its gzip, made once
+  const gzipped = new Map(); // file@mtime -> its gzip
   const server = createServer((req, res) => {
     const path = decodeURIComponent(new URL(req.url, 'http://x').pathname);
     if (extra[path] !== undefined) {
@@ -45,21 +45,26 @@ export function serve(dir, extra = {}) {
       return res.end();
     }
     try {
-      if (statSync(file).isDirectory()) file = join(file, 'index.html');
-      const body = readFileSync(file);
+      let stat = statSync(file);
+      if (stat.isDirectory()) {
+        file = join(file, 'index.html');
+        stat = statSync(file);
+      }
       const headers = {
         'content-type': TYPES[extname(file)] ?? 'application/octet-stream',
         'cache-control': 'max-age=600', // as GitHub Pages sends: the worker's import of the glue hits the cache
-        'last-modified': statSync(file).mtime.toUTCString(),
+        'last-modified': stat.mtime.toUTCString(),
       };
       if (GZIP.has(extname(file)) && /\bgzip\b/.test(req.headers['accept-encoding'] ?? '')) {
-        if (!gzipped.has(file)) gzipped.set(file, gzipSync(body, { level: 9 }));
+        // compressed once per file and version
+        const key = `${file}@${stat.mtimeMs}`;
+        if (!gzipped.has(key)) gzipped.set(key, gzipSync(readFileSync(file), { level: 9 }));
         headers['content-encoding'] = 'gzip';
         res.writeHead(200, headers);
-        return res.end(gzipped.get(file));
+        return res.end(gzipped.get(key));
       }
       res.writeHead(200, headers);
-      res.end(body);
+      res.end(readFileSync(file));
     } catch {
       res.writeHead(404, { 'content-type': 'text/plain' });
       res.end('not found');

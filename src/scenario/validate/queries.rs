@@ -24,10 +24,7 @@ pub(super) fn queries(raw: &[RawQuery], poses: &[(String, Pose)]) -> Result<Vec<
         let mut fixed = Vec::with_capacity(q.fixed.len());
         for (i, s) in q.fixed.iter().enumerate() {
             let f = format!("{path}.fixed[{i}]");
-            let Some(c) = Coord::parse(s) else {
-                let names: Vec<&str> = Coord::ALL.iter().map(|c| c.name()).collect();
-                return Err(Error::new(f, format!("unknown coordinate \"{s}\"; expected one of {}", names.join(", "))));
-            };
+            let c = coordinate(&f, s)?;
             if fixed.contains(&c) {
                 return Err(Error::new(f, format!("coordinate \"{s}\" is listed twice")));
             }
@@ -36,10 +33,7 @@ pub(super) fn queries(raw: &[RawQuery], poses: &[(String, Pose)]) -> Result<Vec<
         let mut region: Vec<(Coord, [f64; 2])> = Vec::new();
         for (name, Fixed([lo, hi])) in q.region.iter().flat_map(|r| r.0.iter()) {
             let f = format!("{path}.region.{name}");
-            let Some(c) = Coord::parse(name) else {
-                let names: Vec<&str> = Coord::ALL.iter().map(|c| c.name()).collect();
-                return Err(Error::new(f, format!("unknown coordinate \"{name}\"; expected one of {}", names.join(", "))));
-            };
+            let c = coordinate(&f, name)?;
             if fixed.contains(&c) {
                 return Err(Error::new(f, format!("coordinate \"{name}\" is fixed by this query: it has no range")));
             }
@@ -55,4 +49,12 @@ pub(super) fn queries(raw: &[RawQuery], poses: &[(String, Pose)]) -> Result<Vec<
         out.push(Query { name: q.name.clone(), start: q.start.clone(), goal: q.goal.clone(), fixed, region });
     }
     Ok(out)
+}
+
+/// The coordinate named `name` at `field`, or an error listing the names.
+fn coordinate(field: &str, name: &str) -> Result<Coord> {
+    Coord::parse(name).ok_or_else(|| {
+        let names: Vec<&str> = Coord::ALL.iter().map(|c| c.name()).collect();
+        Error::new(field, format!("unknown coordinate \"{name}\"; expected one of {}", names.join(", ")))
+    })
 }

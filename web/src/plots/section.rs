@@ -15,9 +15,9 @@ use leptos::prelude::*;
 use std::f64::consts::{PI, TAU};
 
 /// The plot's width (SVG viewBox units).
-pub const W: f64 = 520.0;
+const W: f64 = 520.0;
 /// Plot height.
-pub const H: f64 = 500.0;
+const H: f64 = 500.0;
 const LEFT: f64 = 56.0;
 const RIGHT: f64 = 14.0;
 const TOP: f64 = 14.0;
