@@ -87,10 +87,12 @@ pub enum Request {
         /// Grid values: one number for every axis, or one per axis.
         steps: Vec<usize>,
     },
-    /// A feasible path for one of the scenario's queries, by the atlas or the lattice planner.
+    /// A feasible path for each of the scenario's queries named, in order, by the atlas or the
+    /// lattice planner; the atlas planner answers later queries on the same slice from the atlas
+    /// it kept from the earlier ones.
     Plan {
-        /// Query name.
-        query: String,
+        /// Query names (at least one).
+        queries: Vec<String>,
         /// Atlas planner parameters (defaults: [`PlanParams::default`]).
         params: PlanParams,
         /// Which planner.
@@ -123,6 +125,9 @@ pub enum Output {
     Lattice(LatticeReport),
     /// Of [`Request::Plan`] with the lattice planner, and its smoothed trajectory.
     LatticePlan(LatticePlanReport, Option<Trajectory>),
+    /// Of [`Request::Plan`] with several queries: one [`Output::Plan`] or [`Output::LatticePlan`]
+    /// per query, in order.
+    Plans(Vec<Output>),
 }
 
 /// How far a long command has come, for progress bars: `done` of `total` units of `stage`.
@@ -193,34 +198,29 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
         Request::Plan { .. } if scenario.robot.chain.is_some() => {
             return Err(Error::new("plan", "planning for multi-link robots is not available yet (docs/multilink.md); `lattice --axes …` shows the connected regions"));
         }
-        Request::Plan { query, params, planner, lattice } => {
+        Request::Plan { queries, params, planner, lattice } => {
             let option = |e: Error| match e.field.as_str() {
                 "radius" | "min_radius" | "heuristic_weight" | "epsilon" | "max_charts" => Error::new(format!("--{}", e.field.replace('_', "-")), e.reason),
                 _ => e,
             };
+            if queries.is_empty() {
+                return Err(Error::new("--query", "name at least one query"));
+            }
             let options = PlannerOptions { kind: *planner, atlas: *params, lattice: *lattice };
             // the planner is picked by name and stepped through the common interface
-            let (result, seconds) = timed(|| -> Result<_> {
-                let mut p = plan::planner(scenario, query, &options).map_err(option)?;
-                loop {
-                    let step = p.step(1000);
-                    if step.done.is_some() {
-                        break;
-                    }
-                    progress(Progress { stage: "planning (‰)", done: (step.fraction * 1000.0) as usize, total: 1000 });
-                }
-                p.result(0.0).ok_or_else(|| Error::new("plan", "the planner stopped without a result"))
-            });
-            let result = result?;
-            match result.details {
-                Details::Atlas(mut r) => {
-                    r.seconds = seconds;
-                    Output::Plan(r, result.trajectory)
-                }
-                Details::Lattice(mut r) => {
-                    r.seconds = seconds;
-                    Output::LatticePlan(r, result.trajectory)
-                }
+            let mut hear = |step: &plan::PlanProgress| progress(Progress { stage: "planning (‰)", done: (step.fraction * 1000.0) as usize, total: 1000 });
+            let results = plan::run_queries(scenario, queries, &options, &clock(), &mut hear).map_err(option)?;
+            let mut outputs: Vec<Output> = results
+                .into_iter()
+                .map(|result| match result.details {
+                    Details::Atlas(r) => Output::Plan(r, result.trajectory),
+                    Details::Lattice(r) => Output::LatticePlan(r, result.trajectory),
+                })
+                .collect();
+            if outputs.len() == 1 {
+                outputs.pop().ok_or_else(|| Error::new("plan", "no result"))?
+            } else {
+                Output::Plans(outputs)
             }
         }
     })
@@ -261,6 +261,10 @@ impl Output {
             Output::Plan(r, _) => to_json(r),
             Output::Lattice(r) => to_json(r),
             Output::LatticePlan(r, _) => to_json(r),
+            Output::Plans(outputs) => {
+                let each: Vec<serde_json::Value> = outputs.iter().map(|o| serde_json::from_str(&o.json()).unwrap_or(serde_json::Value::Null)).collect();
+                to_json(&each)
+            }
         };
         // Serialising these plain structs cannot fail; non-finite floats become null.
         text.unwrap_or_else(|e| format!("{{\"error\": {:?}}}", e.to_string()))
@@ -278,6 +282,7 @@ impl Output {
             Output::Plan(r, _) => plan_text(r),
             Output::Lattice(r) => lattice_text(r),
             Output::LatticePlan(r, _) => lattice_plan_text(r),
+            Output::Plans(outputs) => outputs.iter().map(Output::text).collect::<Vec<_>>().join("\n"),
         }
     }
 
@@ -427,17 +432,16 @@ fn envelope_text(e: &TensionEnvelope) -> String {
     out
 }
 
-/// Runs `f` and measures its wall-clock seconds (NaN on wasm32, which has no `Instant`).
-fn timed<T>(f: impl FnOnce() -> T) -> (T, f64) {
+/// A wall clock in seconds since it was made (NaN on wasm32, which has no `Instant`).
+fn clock() -> impl Fn() -> f64 {
     #[cfg(not(target_arch = "wasm32"))]
     {
         let start = std::time::Instant::now();
-        let out = f();
-        (out, start.elapsed().as_secs_f64())
+        move || start.elapsed().as_secs_f64()
     }
     #[cfg(target_arch = "wasm32")]
     {
-        (f(), f64::NAN)
+        || f64::NAN
     }
 }
 

@@ -478,6 +478,83 @@ fn robocrane_other_component_is_no_path() {
     assert!(out.charts > 1);
 }
 
+/// The pose at the centre of the grid cell of the 72×72 (φ, θ) slice map through q1 that lies in
+/// the small component around (2.66, 2.23), apart from q1's (`robocrane_other_component_is_no_path`
+/// checks that it is), added to `s` as pose "island" with the query "island-q1".
+fn with_island(s: &mut Scenario) {
+    let map = cablenav::verify::slice(s, "q1", [Coord::Phi, Coord::Theta], 72, [[-PI, PI], [-PI, PI]]).unwrap();
+    let island = Pose::from_coords([0.0, 0.0, 2.0, map.center(0, 66), map.center(1, 61), 7.0 * PI / 36.0]);
+    s.poses.push(("island".to_string(), island));
+    s.queries.push(Query { name: "island-q1".to_string(), start: "island".to_string(), goal: "q1".to_string(), fixed: vec![Coord::X, Coord::Y, Coord::Z, Coord::Sigma], region: vec![] });
+}
+
+/// Runs `p` to its outcome.
+fn finish(p: &mut AtlasPlanner) -> cablenav::plan::atlas::PlanOutcome {
+    while p.step(500).done.is_none() {}
+    p.outcome().unwrap()
+}
+
+/// One atlas kept across the queries of Robocrane's slice p = [0, 0, 2], σ = 35°: each later query
+/// gets the verdict a fresh atlas gives (found, verified clean, between its own poses; no_path from
+/// the island), says how many charts it found made, and the query repeated at once makes no new
+/// chart, runs the exact verifier only on the path's two end edges (which meet the exact poses)
+/// and does a fifth of the first run's manifold evaluations at most. A query on another slice is
+/// declined (`false`), leaving the planner as it was.
+#[test]
+fn robocrane_atlas_is_kept_for_later_queries_on_its_slice() {
+    let mut s = robocrane();
+    with_island(&mut s);
+    s.queries.push(Query { name: "q2-q1".to_string(), start: "q2".to_string(), goal: "q1".to_string(), fixed: vec![Coord::X, Coord::Y, Coord::Z, Coord::Sigma], region: vec![] });
+    let params = PlanParams::default();
+    let mut p = AtlasPlanner::new(&s, "q1-q2", params).unwrap();
+    let first = finish(&mut p);
+    assert_eq!((first.status, first.atlas.reused_charts), (PlanStatus::Found, 0));
+    let first_evaluations = p.work().evaluations;
+    for query in ["q1-q2", "q2-q1", "q3-q4", "island-q1"] {
+        let before = (p.outcome().unwrap().charts, p.work().evaluations, p.work().trajectory_checks);
+        assert!(p.requery(&s, query).unwrap(), "{query} is on the same slice");
+        let out = finish(&mut p);
+        let fresh = plan(&s, query, params).unwrap();
+        assert_eq!(out.status, fresh.status, "{query}: kept atlas against a fresh one");
+        assert_eq!(out.atlas.reused_charts, before.0, "{query}");
+        let q = s.queries.iter().find(|q| q.name == query).unwrap();
+        if out.status == PlanStatus::Found {
+            assert_eq!(out.path.first(), Some(s.pose(&q.start).unwrap()), "{query}");
+            assert_eq!(out.path.last(), Some(s.pose(&q.goal).unwrap()), "{query}");
+            let v = &out.verification;
+            assert_eq!((v.infeasible_sections, v.uncertain_sections, v.wrench_infeasible_poses), (0, 0, 0), "{query}: {:?}", v.failed_edges);
+        }
+        let work = p.work();
+        if query == "q1-q2" {
+            assert_eq!(out.charts, before.0, "the repeated query made new charts");
+            // the path's inner edges are steps the motion validator checked for the first query
+            assert_eq!(work.trajectory_checks - before.2, 2, "the repeated query verified more than its two end edges");
+            assert_eq!(out.verification.edges_validated, out.verification.edges - 2);
+            let evaluations = work.evaluations - before.1;
+            assert!(5 * evaluations <= first_evaluations, "repeated: {evaluations} manifold evaluations, first run {first_evaluations}");
+        }
+    }
+    let charts = p.outcome().unwrap().charts;
+    assert!(!p.requery(&s, "q5-q6").unwrap(), "q5-q6 lies on another slice");
+    assert_eq!(p.outcome().unwrap().charts, charts);
+    assert!(p.requery(&s, "nope").is_err());
+}
+
+/// With the angles as plain coordinates, a scenario query is posed with its poses' angles as the
+/// file writes them: q3-q4 from the preset is paper 1's query, the same as the raw coordinates.
+#[test]
+fn paper_mode_takes_the_written_angles() {
+    let s = robocrane();
+    let params = PlanParams { identify_angles: false, ..PlanParams::default() };
+    assert_eq!(s.written_coords("q3").unwrap(), paper_coords("q3-q4").0);
+    let by_name = plan(&s, "q3-q4", params).unwrap();
+    let (a, b) = paper_coords("q3-q4");
+    let mut raw = AtlasPlanner::between_coords(&s, a, b, &[Coord::X, Coord::Y, Coord::Z, Coord::Sigma], params).unwrap();
+    let raw = finish(&mut raw);
+    assert_eq!((by_name.status, by_name.charts), (raw.status, raw.charts));
+    assert!(by_name.charts > 100, "the paper's hard query: {} charts", by_name.charts);
+}
+
 /// `s` with a ball of radius 0.05 put 0.03 beyond cable 1's platform anchor (along the cable) at
 /// the pose `fraction` of the way along `path`.
 fn with_ball(s: &Scenario, path: &[Pose], fraction: f64) -> Scenario {

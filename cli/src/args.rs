@@ -164,9 +164,10 @@ pub enum Command {
     Plan {
         #[arg(value_name = "SCENARIO", help = SCENARIO_HELP)]
         scenario: String,
-        /// The query (start and goal poses) to plan
-        #[arg(long, value_name = "NAME")]
-        query: String,
+        /// The query (start and goal poses) to plan; repeat it to plan several in order, one report
+        /// each (later queries on the same slice reuse the atlas of the earlier ones)
+        #[arg(long, value_name = "NAME", required = true)]
+        query: Vec<String>,
         /// The planner: atlas or lattice
         #[arg(long, value_name = "NAME", default_value = "atlas")]
         planner: String,
@@ -192,6 +193,10 @@ pub enum Command {
         /// Atlas planner: chart validity threshold ε
         #[arg(long, value_name = "E", value_parser = finite, allow_negative_numbers = true, help = format!("Atlas planner: chart validity threshold ε (distance to the parent's tangent space) [default: {}]", PlanParams::default().epsilon))]
         epsilon: Option<f64>,
+        /// Atlas planner: false takes the angles as plain coordinates, as paper 1 does (the poses'
+        /// angles as the scenario writes them, no wrapping) [default: true]
+        #[arg(long, value_name = "BOOL", action = clap::ArgAction::Set)]
+        identify_angles: Option<bool>,
         /// Print the report as JSON
         #[arg(long)]
         json: bool,
@@ -273,12 +278,15 @@ impl Command {
                     .collect::<cablenav::Result<Vec<usize>>>()?;
                 plain(scenario, Request::Lattice { pose, axes, ranges, steps }, json)
             }
-            Command::Plan { scenario, query, planner, steps, out, max_charts, radius, min_radius, heuristic_weight, epsilon, json } => {
+            Command::Plan { scenario, query, planner, steps, out, max_charts, radius, min_radius, heuristic_weight, epsilon, identify_angles, json } => {
                 let planner = PlannerKind::parse(&planner)?;
                 let lattice = lattice_params(planner, steps, "--planner lattice")?;
-                let atlas = AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon };
+                let atlas = AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon, identify_angles };
                 let params = atlas_params(planner, &atlas, "--planner atlas")?;
-                Ok(Invocation { scenario, request: Request::Plan { query, params, planner, lattice }, json, png: None, out })
+                if out.is_some() && query.len() > 1 {
+                    return Err(cablenav::Error::new("--out", format!("writes one planned trajectory: give one --query, not {}", query.len())));
+                }
+                Ok(Invocation { scenario, request: Request::Plan { queries: query, params, planner, lattice }, json, png: None, out })
             }
             Command::Completions { .. } => Err(cablenav::Error::new("completions", "reads no scenario")),
             Command::Import { .. } => Err(cablenav::Error::new("import", "reads a CASPR model, not a scenario")),

@@ -197,7 +197,7 @@ fn every_command_has_its_own_help() {
         ("check", &["--pose", "--json"][..]),
         ("envelope", &["--trajectory", "--samples"][..]),
         ("slice", &["--axes", "--res", "--range", "--png"][..]),
-        ("plan", &["--query", "--max-charts", "--radius", "--min-radius", "--heuristic-weight", "--epsilon", "[default: 100000]"][..]),
+        ("plan", &["--query", "--max-charts", "--radius", "--min-radius", "--heuristic-weight", "--epsilon", "--identify-angles", "[default: 100000]"][..]),
     ] {
         for help in [cli(&format!("{command} --help")).unwrap(), cli(&format!("help {command}")).unwrap()] {
             assert!(help.contains("Usage: cablenav"), "{help}");
@@ -330,4 +330,42 @@ fn import_reads_a_model_directory() {
     assert!(printed.contains("timed trajectories general_2, general_3, long_stable)") && printed.contains("note: ") && printed.contains("linear_spline_trajectory"), "{printed}");
     let e = run("import empty".split(' '), &read, &write, &list, &mut |_| {}).unwrap_err();
     assert_eq!(e.field(), "empty");
+}
+
+/// `plan --query A --query B … --json` prints one report per query, in order, each with its
+/// `status` and `elapsed_ms`; the second query on q1-q2's slice reuses its atlas (`reused_charts`),
+/// the one on another slice does not; each verdict is the one the query gets alone.
+#[test]
+fn plan_answers_several_queries_in_order_reusing_the_atlas() {
+    let all = json("plan robocrane.json --query q1-q2 --query q3-q4 --query q5-q6 --json");
+    let reports = all.as_array().expect("an array of reports");
+    assert_eq!(reports.iter().map(|r| r["query"].as_str().unwrap()).collect::<Vec<_>>(), ["q1-q2", "q3-q4", "q5-q6"]);
+    for r in reports {
+        assert!(r["elapsed_ms"].as_f64().is_some_and(|ms| ms >= 0.0), "{r}");
+        let alone = json(&format!("plan robocrane.json --query {} --json", r["query"].as_str().unwrap()));
+        assert_eq!((&r["status"], alone["reused_charts"].as_u64()), (&alone["status"], Some(0)));
+    }
+    assert_eq!(reports[0]["reused_charts"], 0);
+    assert_eq!(reports[1]["reused_charts"], reports[0]["charts"], "q3-q4 starts from q1-q2's atlas");
+    assert_eq!(reports[2]["reused_charts"], 0, "q5-q6 is on another slice");
+    let text = cli("plan robocrane.json --query q1-q2 --query q3-q4").unwrap();
+    assert!(text.starts_with("plan q1-q2: found") && text.contains("plan q3-q4: found"), "{text}");
+    let e = cli("plan robocrane.json --query q1-q2 --query q3-q4 --out x.json").unwrap_err();
+    assert_eq!(e.field(), "--out");
+    let e = cli("plan robocrane.json --query q1-q2 --query nope").unwrap_err();
+    assert_eq!(e.field(), "query");
+}
+
+/// `--identify-angles false` plans with the angles as plain coordinates from the poses' written
+/// angles: q3-q4 becomes paper 1's hard query (hundreds of charts, not one).
+#[test]
+fn plan_in_paper_coordinates() {
+    let paper = json("plan robocrane.json --query q3-q4 --identify-angles false --json");
+    let usual = json("plan robocrane.json --query q3-q4 --json");
+    assert_eq!((&paper["status"], &usual["status"]), (&serde_json::json!("found"), &serde_json::json!("found")));
+    assert_eq!(paper["params"]["identify_angles"], false);
+    assert!(paper["charts"].as_u64().unwrap() > 100 && usual["charts"].as_u64().unwrap() < 5, "{} and {} charts", paper["charts"], usual["charts"]);
+    assert_eq!(cli("plan robocrane.json --query q3-q4 --identify-angles maybe").unwrap_err().field(), "--identify-angles");
+    let e = cli("plan robocrane.json --query q3-q4 --planner lattice --identify-angles false").unwrap_err();
+    assert_eq!(e.field(), "--identify-angles");
 }

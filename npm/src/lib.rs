@@ -109,13 +109,16 @@ export interface CasprImport {
   notes: string[];
 }
 
-/** What `plan` returns (`cablenav plan --json`); `seconds` is null in WebAssembly. */
+/** What `plan` returns (`cablenav plan --json`); `seconds` and `elapsed_ms` are null in WebAssembly. */
 export interface PlanReport {
   query: string;
   status: "found" | "no_path" | "budget";
   path: { position: [number, number, number]; quaternion: [number, number, number, number]; tilt_torsion: [number, number, number] }[];
   charts: number;
   seconds: number | null;
+  elapsed_ms: number | null;
+  /** Charts the atlas already had when this query began (kept from earlier queries on its slice). */
+  reused_charts: number;
   dimension: number;
   expansion_failures: number;
   broken_edges: number;
@@ -126,6 +129,8 @@ export interface PlanReport {
   params: Record<string, number | boolean>;
   verification: {
     edges: number;
+    /** Edges that are steps the motion validator verified exactly during the search (not run again). */
+    edges_validated: number;
     infeasible_sections: number;
     uncertain_sections: number;
     wrench_poses: number;
@@ -159,7 +164,7 @@ export interface LatticeReport {
 /** A pose as its six coordinates x, y, z, phi, theta, sigma. */
 export type Coords = [number, number, number, number, number, number];
 
-/** What `plan(…, "lattice")` returns (`cablenav plan --planner lattice --json`); `seconds` is null in WebAssembly. */
+/** What `plan(…, "lattice")` returns (`cablenav plan --planner lattice --json`); `seconds` and `elapsed_ms` are null in WebAssembly. */
 export interface LatticePlanReport {
   query: string;
   status: "found" | "no_path" | "unrepaired";
@@ -180,6 +185,7 @@ export interface LatticePlanReport {
   verification: VerifyReport | null;
   params: { steps: number; rotation_length: number; max_halvings: number };
   seconds: number | null;
+  elapsed_ms: number | null;
 }
 
 /** Thrown by every function: `field` is the JSON path (`robot.cables[3].base`) or the argument. */
@@ -336,19 +342,22 @@ fn lattice_request(pose: String, axes: &[String], ranges: &[f64], steps: &JsValu
     Ok(Request::Lattice { pose, axes: axes.to_vec(), ranges, steps })
 }
 
-/// A feasible path for one of the scenario's queries, re-verified exactly. `planner` is
-/// "atlas" (default; Henderson atlas + A* with `maxCharts`, `radius`, `epsilon`, `minRadius` —
-/// the least chart radius the curvature adaptation gives, `minRadius >= radius` turns it off —
-/// and `heuristicWeight` — w in f = g + w·h, ≥ 1, 1 is A* —, as the CLI's `--max-charts`, …,
-/// `--heuristic-weight`; 6 cables with a wrench set) or "lattice" (ray lattice with `steps` grid
+/// A feasible path for one of the scenario's queries, re-verified exactly; `query` may also be an
+/// array of query names, planned in order with one planner (the atlas kept for later queries on
+/// the same slice), which returns an array of reports, one per query, each with its `elapsed_ms`.
+/// `planner` is "atlas" (default; Henderson atlas + A* with `maxCharts`, `radius`, `epsilon`,
+/// `minRadius` — the least chart radius the curvature adaptation gives, `minRadius >= radius`
+/// turns it off —, `heuristicWeight` — w in f = g + w·h, ≥ 1, 1 is A* — and `identifyAngles` —
+/// false: the angles as plain coordinates, paper 1's way —, as the CLI's `--max-charts`, …,
+/// `--identify-angles`; 6 cables with a wrench set) or "lattice" (ray lattice with `steps` grid
 /// values per free coordinate, default 7, + A* + Bézier smoothing; any robot). Unset
 /// parameters take the CLI's defaults; a bad one throws a `ScenarioError` naming it
 /// (`minRadius`). Runs to the end: call it in a Web Worker on a page.
-#[wasm_bindgen(unchecked_return_type = "PlanReport | LatticePlanReport")]
+#[wasm_bindgen(unchecked_return_type = "PlanReport | LatticePlanReport | (PlanReport | LatticePlanReport)[]")]
 #[allow(clippy::too_many_arguments)]
 pub fn plan(
     #[wasm_bindgen(unchecked_param_type = "ScenarioInput")] scenario: JsValue,
-    query: String,
+    #[wasm_bindgen(unchecked_param_type = "string | string[]")] query: JsValue,
     #[wasm_bindgen(js_name = maxCharts)] max_charts: Option<usize>,
     radius: Option<f64>,
     epsilon: Option<f64>,
@@ -356,14 +365,28 @@ pub fn plan(
     steps: Option<usize>,
     #[wasm_bindgen(js_name = minRadius)] min_radius: Option<f64>,
     #[wasm_bindgen(js_name = heuristicWeight)] heuristic_weight: Option<f64>,
+    #[wasm_bindgen(js_name = identifyAngles)] identify_angles: Option<bool>,
 ) -> Result<JsValue, JsValue> {
-    let atlas = AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon };
+    let (queries, several) = match query.as_string() {
+        Some(one) => (vec![one], false),
+        None if js_sys::Array::is_array(&query) => (js_sys::Array::from(&query).iter().map(|q| q.as_string()).collect::<Option<Vec<String>>>().unwrap_or_default(), true),
+        None => (vec![], true),
+    };
+    if several && queries.is_empty() {
+        return Err(scenario_error(Error::new("query", "must be a query name or a non-empty array of query names")));
+    }
+    let atlas = AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon, identify_angles };
     let request = PlannerKind::parse(planner.as_deref().unwrap_or("atlas")).and_then(|planner| {
         let lattice = lattice_params(planner, steps, "the \"lattice\" planner")?;
         let params = atlas_params(planner, &atlas, "the \"atlas\" planner")?;
-        Ok(Request::Plan { query, params, planner, lattice })
+        Ok(Request::Plan { queries, params, planner, lattice })
     });
-    call(scenario, request)
+    let reports = call(scenario, request)?;
+    // an array of one query returns an array of one report
+    if several && !js_sys::Array::is_array(&reports) {
+        return Ok(js_sys::Array::of1(&reports).into());
+    }
+    Ok(reports)
 }
 
 /// The package's version.

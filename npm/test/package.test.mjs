@@ -89,6 +89,9 @@ test('check, ray, envelope, slice and plan equal the CLI (to the last bits of li
   assert.equal(ours.seconds, null); // no clock in the core on wasm32
   delete ours.seconds;
   delete theirs.seconds;
+  assert.equal(ours.elapsed_ms, null);
+  delete ours.elapsed_ms;
+  delete theirs.elapsed_ms;
   close(ours, theirs);
   assert.equal(ours.status, 'found');
 });
@@ -105,6 +108,8 @@ test("plan takes the CLI's atlas options minRadius and heuristicWeight", () => {
     const theirs = cli('plan', robocrane, '--query', 'q1-q2', option, 1);
     delete ours.seconds;
     delete theirs.seconds;
+    delete ours.elapsed_ms;
+    delete theirs.elapsed_ms;
     close(ours, theirs);
     assert.equal(ours.status, 'found');
     assert.equal(ours.params[name], 1);
@@ -142,6 +147,8 @@ test('lattice and the lattice planner equal the CLI (to the last bits of libm)',
   assert.equal(plan.seconds, null); // no clock in the core on wasm32
   delete plan.seconds;
   delete theirs.seconds;
+  delete plan.elapsed_ms;
+  delete theirs.elapsed_ms;
   close(plan, theirs);
   assert.deepEqual(plan.steps, [5, 5, 5]);
 });
@@ -223,4 +230,27 @@ test('importCaspr converts a CASPR model as `cablenav import` does, timed spline
   const untimed = cablenav.importCaspr('CoGiRo', read('bodies'), read('cables'));
   assert.deepEqual(untimed.scenario.trajectories.map((t) => t.name), ['hold initial']);
   assert.throws(() => cablenav.importCaspr('x', read('cables'), read('cables')), (e) => e.name === 'ScenarioError' && e.field === 'bodies');
+});
+
+test('plan takes several queries (one report each, the atlas kept) and paper coordinates', () => {
+  const robocrane = join(root, 'static', 'scenarios', 'robocrane.json');
+  const text = preset('robocrane.json');
+  const u = undefined;
+  const ours = cablenav.plan(text, ['q1-q2', 'q3-q4']);
+  const theirs = cli('plan', robocrane, '--query', 'q1-q2', '--query', 'q3-q4');
+  assert.deepEqual(ours.map((r) => r.query), ['q1-q2', 'q3-q4']);
+  for (const [a, b] of ours.map((r, k) => [r, theirs[k]])) {
+    for (const key of ['seconds', 'elapsed_ms']) {
+      delete a[key];
+      delete b[key];
+    }
+  }
+  close(ours, theirs);
+  assert.equal(ours[1].reused_charts, ours[0].charts);
+  assert.deepEqual(cablenav.plan(text, ['q3-q4']).map((r) => r.query), ['q3-q4']);
+  const paper = cablenav.plan(text, 'q3-q4', u, u, u, u, u, u, u, false);
+  assert.equal(paper.params.identify_angles, false);
+  assert.ok(paper.charts > 100, `${paper.charts} charts`);
+  assert.throws(() => cablenav.plan(text, 'q3-q4', u, u, u, 'lattice', u, u, u, false), (e) => e.field === 'identifyAngles' || /identifyAngles/.test(e.message));
+  assert.throws(() => cablenav.plan(text, [], u), /query/);
 });

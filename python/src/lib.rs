@@ -266,12 +266,16 @@ fn lattice(py: Python<'_>, scenario: &Bound<'_, PyAny>, pose: String, axes: Vec<
     call_renaming(py, scenario, Ok(request), Some(("--range", "ranges")))
 }
 
-/// A feasible path for one of the scenario's queries, re-verified exactly.
+/// A feasible path for one of the scenario's queries, re-verified exactly; `query` may also be a
+/// list of query names, planned in order with one planner (the atlas kept for later queries on
+/// the same slice), which returns a list of reports, one per query, each with its `elapsed_ms`.
 ///
 /// `planner="atlas"` (default; 6 cables with a wrench set): Henderson atlas + A*, with
 /// `max_charts`, `radius`, `min_radius` (the least chart radius the curvature adaptation gives;
-/// `min_radius >= radius` turns it off), `heuristic_weight` (w in f = g + w·h, ≥ 1; 1 is A*) and
-/// `epsilon`, as `--max-charts`, `--radius`, `--min-radius`, `--heuristic-weight`, `--epsilon`.
+/// `min_radius >= radius` turns it off), `heuristic_weight` (w in f = g + w·h, ≥ 1; 1 is A*),
+/// `epsilon` and `identify_angles` (False: the angles as plain coordinates, paper 1's way), as
+/// `--max-charts`, `--radius`, `--min-radius`, `--heuristic-weight`, `--epsilon`,
+/// `--identify-angles`.
 /// `planner="lattice"` (any robot): ray lattice with `steps` grid values per free coordinate
 /// (default 7) + A* + Bézier smoothing, verified and repaired.
 /// Returns the dict `cablenav plan SCENARIO --query QUERY [--planner lattice --steps N] --json`
@@ -280,12 +284,12 @@ fn lattice(py: Python<'_>, scenario: &Bound<'_, PyAny>, pose: String, axes: Vec<
 /// `message`, `polyline`, `waypoints`, `verification`, `seconds`, …. Unset parameters take the
 /// CLI's defaults; a bad one raises `ScenarioError` naming it (`min_radius`).
 #[pyfunction]
-#[pyo3(signature = (scenario, query, *, planner="atlas", steps=None, max_charts=None, radius=None, min_radius=None, heuristic_weight=None, epsilon=None))]
+#[pyo3(signature = (scenario, query, *, planner="atlas", steps=None, max_charts=None, radius=None, min_radius=None, heuristic_weight=None, epsilon=None, identify_angles=None))]
 #[allow(clippy::too_many_arguments)]
 fn plan(
     py: Python<'_>,
     scenario: &Bound<'_, PyAny>,
-    query: String,
+    query: &Bound<'_, PyAny>,
     planner: &str,
     steps: Option<usize>,
     max_charts: Option<usize>,
@@ -293,14 +297,24 @@ fn plan(
     min_radius: Option<f64>,
     heuristic_weight: Option<f64>,
     epsilon: Option<f64>,
+    identify_angles: Option<bool>,
 ) -> PyResult<Py<PyAny>> {
-    let atlas = AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon };
+    let (queries, several) = match query.extract::<String>() {
+        Ok(one) => (vec![one], false),
+        Err(_) => (query.extract::<Vec<String>>().map_err(|_| scenario_error(py, Error::new("query", "must be a query name or a list of query names"), None))?, true),
+    };
+    let atlas = AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon, identify_angles };
     let request = PlannerKind::parse(planner).and_then(|planner| {
         let lattice = lattice_params(planner, steps, "planner=\"lattice\"")?;
         let params = atlas_params(planner, &atlas, "planner=\"atlas\"")?;
-        Ok(Request::Plan { query, params, planner, lattice })
+        Ok(Request::Plan { queries, params, planner, lattice })
     });
-    call(py, scenario, request)
+    let reports = call(py, scenario, request)?;
+    // a list of one query returns a list of one report
+    if several && !reports.bind(py).is_instance_of::<pyo3::types::PyList>() {
+        return Ok(pyo3::types::PyList::new(py, [reports])?.into_any().unbind());
+    }
+    Ok(reports)
 }
 
 /// A CASPR model directory as a scenario: its `<name>_bodies.xml` and `_cables.xml` and its

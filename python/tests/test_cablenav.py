@@ -53,6 +53,7 @@ def test_envelope_slice_and_plan_equal_the_cli(cli):
     ours = cablenav.plan(robocrane, "q1-q2", radius=0.3, epsilon=0.3)
     theirs = cli("plan", robocrane, "--query", "q1-q2", "--radius", 0.3, "--epsilon", 0.3)
     assert ours.pop("seconds") >= 0 and theirs.pop("seconds") >= 0  # wall-clock time differs
+    assert ours.pop("elapsed_ms") >= 0 and theirs.pop("elapsed_ms") >= 0
     assert ours == theirs and ours["status"] == "found"
 
 
@@ -77,6 +78,8 @@ def test_plan_takes_the_clis_atlas_options(cli):
         ours = cablenav.plan(robocrane, "q1-q2", **{keyword: value})
         theirs = cli("plan", robocrane, "--query", "q1-q2", option, value)
         assert ours.pop("seconds") >= 0 and theirs.pop("seconds") >= 0  # wall-clock time differs
+        assert ours.pop("elapsed_ms") >= 0 and theirs.pop("elapsed_ms") >= 0
+    assert ours.pop("elapsed_ms") >= 0 and theirs.pop("elapsed_ms") >= 0
         assert ours == theirs and ours["status"] == "found" and ours["params"][keyword] == value
         # it changes the search: the default (min_radius 0.1, heuristic_weight 1.5) takes 13 charts
         assert ours["charts"] != default["charts"], (keyword, ours["charts"])
@@ -111,6 +114,7 @@ def test_lattice_and_the_lattice_planner_equal_the_cli(cli):
     ours = cablenav.plan(box, "over-box", planner="lattice", steps=5)
     theirs = cli("plan", box, "--query", "over-box", "--planner", "lattice", "--steps", 5)
     assert ours.pop("seconds") >= 0 and theirs.pop("seconds") >= 0  # wall-clock time differs
+    assert ours.pop("elapsed_ms") >= 0 and theirs.pop("elapsed_ms") >= 0
     assert ours == theirs and ours["steps"] == [5, 5, 5]
 
 
@@ -229,3 +233,23 @@ def test_import_caspr_equals_the_cli(cli, tmp_path):
     with pytest.raises(cablenav.ScenarioError) as e:
         cablenav.import_caspr(tmp_path)
     assert e.value.field == str(tmp_path) and "bodies" in e.value.reason
+
+
+def test_plan_takes_several_queries_and_paper_coordinates(cli):
+    robocrane = ROOT / "static" / "scenarios" / "robocrane.json"
+    ours = cablenav.plan(robocrane, ["q1-q2", "q3-q4"])
+    theirs = cli("plan", robocrane, "--query", "q1-q2", "--query", "q3-q4")
+    assert [r["query"] for r in ours] == ["q1-q2", "q3-q4"]
+    for a, b in zip(ours, theirs):
+        for key in ("seconds", "elapsed_ms"):
+            assert a.pop(key) >= 0 and b.pop(key) >= 0  # wall-clock time differs
+    assert ours == theirs and ours[1]["reused_charts"] == ours[0]["charts"]
+    assert [r["query"] for r in cablenav.plan(robocrane, ["q3-q4"])] == ["q3-q4"]  # a list gives a list
+    paper = cablenav.plan(robocrane, "q3-q4", identify_angles=False)
+    assert paper["params"]["identify_angles"] is False and paper["charts"] > 100
+    with pytest.raises(cablenav.ScenarioError) as e:
+        cablenav.plan(robocrane, "q3-q4", planner="lattice", identify_angles=False)
+    assert e.value.field == "identify_angles"
+    with pytest.raises(cablenav.ScenarioError) as e:
+        cablenav.plan(robocrane, 3)
+    assert e.value.field == "query"

@@ -80,6 +80,8 @@ pub struct AtlasOptions {
     pub heuristic_weight: Option<f64>,
     /// Validity threshold ε.
     pub epsilon: Option<f64>,
+    /// Angles as angles (true, the default) or as plain coordinates (false, paper 1's way).
+    pub identify_angles: Option<bool>,
 }
 
 impl AtlasOptions {
@@ -92,6 +94,7 @@ impl AtlasOptions {
             min_radius: self.min_radius.unwrap_or(d.min_radius),
             heuristic_weight: self.heuristic_weight.unwrap_or(d.heuristic_weight),
             epsilon: self.epsilon.unwrap_or(d.epsilon),
+            identify_angles: self.identify_angles.unwrap_or(d.identify_angles),
             ..d
         }
     }
@@ -112,7 +115,8 @@ pub fn lattice_params(kind: PlannerKind, steps: Option<usize>, lattice: &str) ->
 
 /// The atlas planner's parameters for a plan request with planner `kind`: the given `options`
 /// over the defaults. With another planner, any given atlas option is an error at its option
-/// (`--max-charts`, `--radius`, `--min-radius`, `--heuristic-weight`, `--epsilon`; the packages
+/// (`--max-charts`, `--radius`, `--min-radius`, `--heuristic-weight`, `--epsilon`,
+/// `--identify-angles`; the packages
 /// rename them to their parameters) saying that it "is an option of `atlas`", where `atlas` is how
 /// the caller's users choose the atlas planner: an option that would be ignored is refused, as
 /// [`lattice_params`] refuses `steps`. The one check of the CLI and both packages.
@@ -124,6 +128,7 @@ pub fn atlas_params(kind: PlannerKind, options: &AtlasOptions, atlas: &str) -> R
             ("--min-radius", options.min_radius.is_some()),
             ("--heuristic-weight", options.heuristic_weight.is_some()),
             ("--epsilon", options.epsilon.is_some()),
+            ("--identify-angles", options.identify_angles.is_some()),
         ];
         if let Some((flag, _)) = given.iter().find(|(_, g)| *g) {
             return Err(Error::new(*flag, format!("is an option of {atlas}")));
@@ -195,13 +200,21 @@ pub struct PlanResult {
     pub details: Details,
 }
 
-/// A resumable planner for one query.
+/// A resumable planner for one query at a time.
 pub trait PathPlanner {
     /// Advances by at most `budget` units of work (each bounded; see the planner's docs).
     fn step(&mut self, budget: usize) -> PlanProgress;
     /// The result once `step` reported `done`; `seconds` is the wall-clock time the caller
     /// measured, for the report.
     fn result(&self, seconds: f64) -> Option<PlanResult>;
+    /// Turns to query `query` of `scenario` (the same robot and surroundings, its poses and
+    /// queries perhaps edited), keeping what the planner has built that the query can use (the
+    /// atlas planner's atlas, on the same slice): `Ok(true)`, ready to step; `Ok(false)`,
+    /// unchanged, when nothing carries over (make a fresh planner); an error when the query is
+    /// unusable, as the planner's constructor would report it.
+    fn requery(&mut self, _scenario: &Scenario, _query: &str) -> Result<bool> {
+        Ok(false)
+    }
 }
 
 /// The atlas planner behind the common interface.
@@ -243,6 +256,15 @@ impl PathPlanner for AtlasPathPlanner {
             .collect();
         let trajectory = (o.status == PlanStatus::Found).then(|| Trajectory::piecewise(format!("{}-atlas", self.query), pieces)).flatten();
         Some(PlanResult { status: o.status, trajectory, details: Details::Atlas(o.report(&self.query, seconds)) })
+    }
+
+    fn requery(&mut self, scenario: &Scenario, query: &str) -> Result<bool> {
+        if !self.planner.requery(scenario, query)? {
+            return Ok(false);
+        }
+        self.query = query.to_string();
+        self.first_h = self.planner.step(0).best_heuristic;
+        Ok(true)
     }
 }
 
@@ -287,10 +309,37 @@ pub fn planner(scenario: &Scenario, query: &str, options: &PlannerOptions) -> Re
 
 /// Runs a planner to the end (CLI, tests); `clock` gives seconds (for the report).
 pub fn run(scenario: &Scenario, query: &str, options: &PlannerOptions, clock: &dyn Fn() -> f64) -> Result<PlanResult> {
-    let started = clock();
-    let mut p = planner(scenario, query, options)?;
-    while p.step(1000).done.is_none() {}
-    p.result(clock() - started).ok_or_else(|| Error::new("plan", "the planner stopped without a result"))
+    let mut results = run_queries(scenario, &[query.to_string()], options, clock, &mut |_| {})?;
+    results.pop().ok_or_else(|| Error::new("plan", "the planner stopped without a result"))
+}
+
+/// Plans `queries` in order with one planner, each later query keeping what the planner built
+/// for the earlier ones where it can ([`PathPlanner::requery`]: the atlas of the same slice);
+/// `clock` gives seconds, each result's report has its own query's time. `progress` hears each
+/// step's progress.
+pub fn run_queries(scenario: &Scenario, queries: &[String], options: &PlannerOptions, clock: &dyn Fn() -> f64, progress: &mut dyn FnMut(&PlanProgress)) -> Result<Vec<PlanResult>> {
+    let mut current: Option<Box<dyn PathPlanner>> = None;
+    let mut results = Vec::with_capacity(queries.len());
+    for query in queries {
+        let started = clock();
+        let kept = match current.as_mut() {
+            Some(p) => p.requery(scenario, query)?,
+            None => false,
+        };
+        if !kept {
+            current = Some(planner(scenario, query, options)?);
+        }
+        let p = current.as_mut().ok_or_else(|| Error::new("plan", "no planner"))?;
+        loop {
+            let step = p.step(1000);
+            if step.done.is_some() {
+                break;
+            }
+            progress(&step);
+        }
+        results.push(p.result(clock() - started).ok_or_else(|| Error::new("plan", "the planner stopped without a result"))?);
+    }
+    Ok(results)
 }
 
 /// The trajectory between two consecutive path poses: linear translation and the short slerp.

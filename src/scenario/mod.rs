@@ -43,6 +43,9 @@ pub struct Scenario {
     pub obstacles: Vec<Obstacle>,
     /// Named poses, in file order.
     pub poses: Vec<(String, Pose)>,
+    /// The tilt-and-torsion angles (φ, θ, σ) of each pose the file gives them, as written (a
+    /// pose keeps only its rotation; [`Scenario::written_coords`]).
+    pub written_angles: Vec<(String, [f64; 3])>,
     /// Trajectories, in file order.
     pub trajectories: Vec<Trajectory>,
     /// Planning queries.
@@ -87,6 +90,24 @@ impl Scenario {
             };
             Error::new("pose", format!("no pose named \"{name}\"; {known}"))
         })
+    }
+
+    /// Whether `other` describes the same configuration space: the same robot, wrench set,
+    /// obstacles and clearances (its poses, trajectories and queries may differ).
+    pub fn same_space(&self, other: &Scenario) -> bool {
+        self.robot == other.robot && self.wrench == other.wrench && self.obstacles == other.obstacles && self.clearance == other.clearance
+    }
+
+    /// Pose `name`'s coordinates (x, y, z, φ, θ, σ) with the angles as the file writes them,
+    /// when it gives tilt-and-torsion angles (the canonical angles of its rotation otherwise): the
+    /// angles as plain coordinates, paper 1's way of posing a query (q3 = (0.8, −2.4) is
+    /// (0.8 − π, 2.4) as a rotation).
+    pub fn written_coords(&self, name: &str) -> Result<[f64; 6]> {
+        let mut c = self.pose(name)?.coords();
+        if let Some((_, a)) = self.written_angles.iter().find(|(n, _)| n == name) {
+            c[3..].copy_from_slice(a);
+        }
+        Ok(c)
     }
 
     /// The configuration called `name`: a multi-link robot's joint coordinates, or a platform

@@ -57,7 +57,7 @@ const WALK_SLACK: usize = 16;
 pub struct Atlas<M: Manifold> {
     /// The manifold.
     pub manifold: M,
-    /// The charts; chart 0 is centred at the start point.
+    /// The charts; chart 0 is centred at the first search's start point.
     pub charts: Vec<Chart>,
     /// The parameters.
     pub params: AtlasParams,
@@ -77,10 +77,20 @@ impl<M: Manifold> Atlas<M> {
             return Err(format!("the start point has {} coordinates, the manifold's space {}", start.len(), manifold.ambient()));
         }
         let mut atlas = Atlas { manifold, charts: Vec::new(), params, failures: 0, evaluations: AtomicUsize::new(0) };
-        let basis = atlas.chart_basis(start, 1e-8)?;
-        let state = if atlas.manifold.admissible(start) { ChartState::Open } else { ChartState::Blocked };
-        atlas.add_chart(start.to_vec(), basis, None, params.radius, state);
+        atlas.insert(start)?;
         Ok(atlas)
+    }
+
+    /// Adds a chart centred at `x` (a point of the manifold, residual below 1e-8, where the
+    /// Jacobian has full rank) with the largest radius, linked with every chart it neighbours on
+    /// its sheet: a second start in an atlas grown from another. Returns its index.
+    pub fn insert(&mut self, x: &[f64]) -> Result<usize, String> {
+        if x.len() != self.manifold.ambient() {
+            return Err(format!("the point has {} coordinates, the manifold's space {}", x.len(), self.manifold.ambient()));
+        }
+        let basis = self.chart_basis(x, 1e-8)?;
+        let state = if self.manifold.admissible(x) { ChartState::Open } else { ChartState::Blocked };
+        Ok(self.add_chart(x.to_vec(), basis, None, self.params.radius, state))
     }
 
     /// Manifold evaluations made so far (each Newton iteration and each tangent basis is one).

@@ -135,7 +135,8 @@ pub struct PlanWork {
     /// Manifold evaluations (F and its Jacobian: Newton iterations and tangent bases).
     pub evaluations: usize,
     /// Exact-verifier calls on trajectories: the motion validator on dense-path steps during the
-    /// search, then the re-verification of the path's edges.
+    /// search, then the re-verification of the path's edges (steps and edges found clean by an
+    /// earlier query on a kept atlas are not checked again).
     pub trajectory_checks: usize,
     /// Per-pose wrench tests of the path's poses.
     pub pose_checks: usize,
@@ -147,6 +148,10 @@ pub struct PlanWork {
 pub struct PathVerification {
     /// Edges verified (path poses − 1).
     pub edges: usize,
+    /// Of those, the edges that are steps of the dense path the motion validator verified
+    /// exactly during the search — the same verification of every condition along the same
+    /// slerp + line, so not run again (0 from [`verify_path`]).
+    pub edges_validated: usize,
     /// Infeasible sections found along the edges (interference, cable lengths) — 0 for a good
     /// path.
     pub infeasible_sections: usize,
@@ -182,6 +187,9 @@ pub struct AtlasSummary {
     /// The least and the greatest radius of the charts that are not blocked (the curvature
     /// adaptation's range on this atlas).
     pub chart_radii: [f64; 2],
+    /// Charts the atlas already had when this query began (an atlas kept from earlier queries on
+    /// the same slice, [`AtlasPlanner::requery`]; 0 for a fresh one).
+    pub reused_charts: usize,
     /// The parameters used.
     pub params: PlanParams,
 }
@@ -226,6 +234,8 @@ pub struct PlanReport {
     pub charts: usize,
     /// Wall-clock seconds, as measured by the caller.
     pub seconds: f64,
+    /// The same time in milliseconds.
+    pub elapsed_ms: f64,
     /// The atlas summary (its fields appear at the top level of the JSON).
     #[serde(flatten)]
     pub atlas: AtlasSummary,
@@ -246,6 +256,7 @@ impl PlanOutcome {
                 .collect(),
             charts: self.charts,
             seconds,
+            elapsed_ms: seconds * 1000.0,
             atlas: self.atlas.clone(),
             verification: self.verification.clone(),
         }
@@ -258,6 +269,14 @@ pub struct AtlasPlanner {
     start: Pose,
     goal: Pose,
     params: PlanParams,
+    /// The slice: the fixed coordinates' values (`None` for a free one).
+    fixed: [Option<f64>; 6],
+    /// Charts the atlas had when the current query began.
+    reused: usize,
+    /// Path edges the exact verifier was run on, over all queries.
+    verified_edges: usize,
+    /// Path poses checked by the queries before the current one.
+    checked_poses: usize,
     search: Continuation<CableManifold>,
     /// Once the search has ended: its path, re-verified edge by edge by later `step` calls.
     check: Option<PathCheck>,
@@ -268,6 +287,8 @@ pub struct AtlasPlanner {
 struct PathCheck {
     status: PlanStatus,
     path: Vec<Pose>,
+    /// The path's points of the manifold (the poses but the first and last are theirs).
+    points: Vec<Vec<f64>>,
     verification: PathVerification,
     /// Edges verified so far (with their end poses; pose 0 with edge 0).
     next: usize,
@@ -291,17 +312,90 @@ fn same_value(c: Coord, a: f64, b: f64) -> bool {
 }
 
 /// The two ends of a planning problem, as [`AtlasPlanner`]'s constructors resolve them.
-struct Ends<'a> {
+struct Ends {
     /// Prefix of error fields (`queries[q1-q2]`).
     field: String,
     /// Names of the start and goal poses, for messages.
-    names: [&'a str; 2],
+    names: [String; 2],
     /// The exact start and goal poses the path begins and ends with.
     poses: [Pose; 2],
     /// Their coordinates (x, y, z, φ, θ, σ).
     coords: [[f64; 6]; 2],
     /// The fixed coordinates, held at the start's values.
-    fixed: &'a [Coord],
+    fixed: Vec<Coord>,
+}
+
+/// The ends of scenario query `query`: its poses, and their coordinates — the canonical angles
+/// of their rotations, or with the angles as plain coordinates (`identify_angles` off) the
+/// angles as the scenario file writes them, as paper 1 poses its queries.
+fn query_ends(scenario: &Scenario, query: &str, params: PlanParams) -> Result<Ends> {
+    let q = scenario.queries.iter().find(|q| q.name == query).ok_or_else(|| {
+        let names: Vec<&str> = scenario.queries.iter().map(|q| q.name.as_str()).collect();
+        let known = if names.is_empty() { "the scenario has no queries".to_string() } else { format!("known queries: {}", names.join(", ")) };
+        Error::new("query", format!("no query named \"{query}\"; {known}"))
+    })?;
+    let (start, goal) = (*scenario.pose(&q.start)?, *scenario.pose(&q.goal)?);
+    let coords = |name: &str, pose: &Pose| if params.identify_angles { Ok(pose.coords()) } else { scenario.written_coords(name) };
+    let coords = [coords(&q.start, &start)?, coords(&q.goal, &goal)?];
+    Ok(Ends { field: format!("queries[{query}]"), names: [q.start.clone(), q.goal.clone()], poses: [start, goal], coords, fixed: q.fixed.clone() })
+}
+
+/// The ends of a planning problem between two poses given by their coordinates.
+fn coords_ends(start: [f64; 6], goal: [f64; 6], fixed: &[Coord]) -> Result<Ends> {
+    for (role, c) in [("start", &start), ("goal", &goal)] {
+        if let Some(bad) = c.iter().position(|v| !v.is_finite()) {
+            return Err(Error::new(format!("{role}[{bad}]"), format!("must be a finite number, got {}", c[bad])));
+        }
+    }
+    Ok(Ends { field: "coords".to_string(), names: ["start".to_string(), "goal".to_string()], poses: [Pose::from_coords(start), Pose::from_coords(goal)], coords: [start, goal], fixed: fixed.to_vec() })
+}
+
+/// The slice the ends lie on — each fixed coordinate at the start's value — and the goal's
+/// coordinates on it (either tilt-and-torsion triple of its rotation when angles are identified).
+fn slice(ends: &Ends, params: PlanParams) -> Result<([Option<f64>; 6], Vec<[f64; 6]>)> {
+    let Ends { field, names, coords: [start_coords, goal_coords], fixed: fixed_coords, .. } = ends;
+    if fixed_coords.len() >= 6 {
+        return Err(Error::new(format!("{field}.fixed"), "every coordinate is fixed: nothing is left to plan over"));
+    }
+    let mut fixed = [None; 6];
+    for c in fixed_coords.iter() {
+        fixed[c.index()] = Some(start_coords[c.index()]);
+    }
+    let candidates = if params.identify_angles { equivalent_coords(*goal_coords).to_vec() } else { vec![*goal_coords] };
+    let goal_copies: Vec<[f64; 6]> = candidates.into_iter().filter(|g| fixed_coords.iter().all(|&c| same_value(c, g[c.index()], start_coords[c.index()]))).collect();
+    if goal_copies.is_empty() {
+        let g = goal_coords;
+        let differ: Vec<String> = fixed_coords
+            .iter()
+            .filter(|&&c| !same_value(c, g[c.index()], start_coords[c.index()]))
+            .map(|c| format!("{} = {} (start: {})", c.name(), g[c.index()], start_coords[c.index()]))
+            .collect();
+        return Err(Error::new(format!("{field}.goal"), format!("goal pose \"{}\" is not on the start's slice: {}", names[1], differ.join(", "))));
+    }
+    Ok((fixed, goal_copies))
+}
+
+/// The start's point of the manifold and the goal copies' points, each checked: wrench-feasible,
+/// within the auxiliary bound, no clearance violated.
+fn lift_ends(manifold: &CableManifold, ends: &Ends, goal_copies: &[[f64; 6]], params: PlanParams) -> Result<(Vec<f64>, Vec<Vec<f64>>)> {
+    let field = &ends.field;
+    let lift = |name: &str, role: &str, coords: &[f64; 6]| {
+        let x = manifold.lift(coords).map_err(|why| Error::new(format!("{field}.{role}"), format!("{role} pose \"{name}\" is not wrench-feasible: {why}")))?;
+        if !manifold.within_bounds(&x) {
+            let (mu, label) = manifold.tightest(&x);
+            return Err(Error::new(
+                format!("{field}.{role}"),
+                format!("{role} pose \"{name}\" is closer to the feasibility boundary than min_margin = {} allows ({label}: normalised margin {mu:.3e})", params.min_margin),
+            ));
+        }
+        if !manifold.admissible(&x) {
+            return Err(Error::new(format!("{field}.{role}"), format!("{role} pose \"{name}\" violates a clearance (see `cablenav check`)")));
+        }
+        Ok(x)
+    };
+    let start = lift(&ends.names[0], "start", &ends.coords[0])?;
+    let goals = goal_copies.iter().map(|g| lift(&ends.names[1], "goal", g)).collect::<Result<Vec<_>>>()?;
+    Ok((start, goals))
 }
 
 impl AtlasPlanner {
@@ -310,14 +404,56 @@ impl AtlasPlanner {
     /// on the same slice, and builds the first chart.
     pub fn new(scenario: &Scenario, query: &str, params: PlanParams) -> Result<AtlasPlanner> {
         params.validate()?;
-        let q = scenario.queries.iter().find(|q| q.name == query).ok_or_else(|| {
-            let names: Vec<&str> = scenario.queries.iter().map(|q| q.name.as_str()).collect();
-            let known = if names.is_empty() { "the scenario has no queries".to_string() } else { format!("known queries: {}", names.join(", ")) };
-            Error::new("query", format!("no query named \"{query}\"; {known}"))
-        })?;
-        let (start, goal) = (*scenario.pose(&q.start)?, *scenario.pose(&q.goal)?);
-        let ends = Ends { field: format!("queries[{query}]"), names: [&q.start, &q.goal], poses: [start, goal], coords: [start.coords(), goal.coords()], fixed: &q.fixed };
-        AtlasPlanner::build(scenario, ends, params)
+        AtlasPlanner::build(scenario, query_ends(scenario, query, params)?, params)
+    }
+
+    /// Plans query `query` of `scenario` next, on the atlas built so far, when the scenario has
+    /// the same robot, wrench set, obstacles and clearances (its poses and queries may differ: a
+    /// user picking new start and goal poses) and the query lies on the same slice (the same
+    /// coordinates fixed, at the same values): the search starts again from the new start,
+    /// through the charts already made, and the atlas grows only where it must. `Ok(false)`, with
+    /// nothing changed, when the atlas does not carry over (build a fresh planner); an error, as
+    /// [`AtlasPlanner::new`]'s, when the query's start or goal is unusable.
+    pub fn requery(&mut self, scenario: &Scenario, query: &str) -> Result<bool> {
+        if !self.scenario.same_space(scenario) {
+            return Ok(false);
+        }
+        let kept = self.retarget(query_ends(scenario, query, self.params)?)?;
+        if kept {
+            self.scenario = scenario.clone();
+        }
+        Ok(kept)
+    }
+
+    /// [`AtlasPlanner::requery`] between two poses given by their coordinates, as
+    /// [`AtlasPlanner::between_coords`] takes them.
+    pub fn requery_coords(&mut self, start: [f64; 6], goal: [f64; 6], fixed: &[Coord]) -> Result<bool> {
+        self.retarget(coords_ends(start, goal, fixed)?)
+    }
+
+    /// The common part of the re-queries.
+    fn retarget(&mut self, ends: Ends) -> Result<bool> {
+        let (fixed, goal_copies) = slice(&ends, self.params)?;
+        let same = fixed.iter().zip(&self.fixed).enumerate().all(|(c, (a, b))| match (a, b) {
+            (Some(a), Some(b)) => same_value(Coord::ALL[c], *a, *b),
+            (None, None) => true,
+            _ => false,
+        });
+        if !same {
+            return Ok(false);
+        }
+        let manifold = &self.search.atlas.manifold;
+        let (start_x, goals) = lift_ends(manifold, &ends, &goal_copies, self.params)?;
+        // the start's other tilt-and-torsion triple may be the one the atlas holds
+        let copies = if self.params.identify_angles { equivalent_coords(ends.coords[0]).to_vec() } else { vec![] };
+        let on_slice = |c: &[f64; 6]| fixed.iter().enumerate().all(|(k, v)| v.is_none_or(|v| same_value(Coord::ALL[k], c[k], v)));
+        let mut starts = vec![start_x];
+        starts.extend(copies.iter().skip(1).filter(|c| on_slice(c)).filter_map(|c| manifold.lift(c).ok()));
+        self.reused = self.search.atlas.charts.len();
+        self.search.retarget(&starts, goals).map_err(|why| Error::new(format!("{}.start", ends.field), format!("no chart can be made at the start pose \"{}\": {why}", ends.names[0])))?;
+        (self.start, self.goal) = (ends.poses[0], ends.poses[1]);
+        self.checked_poses += self.check.take().map_or(0, |c| c.verification.wrench_poses);
+        Ok(true)
     }
 
     /// Prepares planning between two poses given by their coordinates (x, y, z, φ, θ, σ) as they
@@ -326,58 +462,19 @@ impl AtlasPlanner {
     /// angles as plain coordinates); the benchmark uses it to plan q3 → q4 as the paper did.
     pub fn between_coords(scenario: &Scenario, start: [f64; 6], goal: [f64; 6], fixed: &[Coord], params: PlanParams) -> Result<AtlasPlanner> {
         params.validate()?;
-        for (role, c) in [("start", &start), ("goal", &goal)] {
-            if let Some(bad) = c.iter().position(|v| !v.is_finite()) {
-                return Err(Error::new(format!("{role}[{bad}]"), format!("must be a finite number, got {}", c[bad])));
-            }
-        }
-        let ends = Ends { field: "coords".to_string(), names: ["start", "goal"], poses: [Pose::from_coords(start), Pose::from_coords(goal)], coords: [start, goal], fixed };
-        AtlasPlanner::build(scenario, ends, params)
+        AtlasPlanner::build(scenario, coords_ends(start, goal, fixed)?, params)
     }
 
     /// The common part of the constructors.
     fn build(scenario: &Scenario, ends: Ends, params: PlanParams) -> Result<AtlasPlanner> {
-        let Ends { field, names, poses: [start, goal], coords: [start_coords, goal_coords], fixed: fixed_coords } = ends;
-        if fixed_coords.len() >= 6 {
-            return Err(Error::new(format!("{field}.fixed"), "every coordinate is fixed: nothing is left to plan over"));
-        }
-        let mut fixed = [None; 6];
-        for c in fixed_coords {
-            fixed[c.index()] = Some(start_coords[c.index()]);
-        }
-        let candidates = if params.identify_angles { equivalent_coords(goal_coords).to_vec() } else { vec![goal_coords] };
-        let goal_copies: Vec<[f64; 6]> =
-            candidates.into_iter().filter(|g| fixed_coords.iter().all(|&c| same_value(c, g[c.index()], start_coords[c.index()]))).collect();
-        if goal_copies.is_empty() {
-            let g = goal_coords;
-            let differ: Vec<String> = fixed_coords
-                .iter()
-                .filter(|&&c| !same_value(c, g[c.index()], start_coords[c.index()]))
-                .map(|c| format!("{} = {} (start: {})", c.name(), g[c.index()], start_coords[c.index()]))
-                .collect();
-            return Err(Error::new(format!("{field}.goal"), format!("goal pose \"{}\" is not on the start's slice: {}", names[1], differ.join(", "))));
-        }
+        let (fixed, goal_copies) = slice(&ends, params)?;
         let manifold = CableManifold::new(scenario, fixed, params.identify_angles, params.barrier, params.min_margin, params.rotation_length)?;
-        let lift = |name: &str, role: &str, coords: &[f64; 6]| {
-            let x = manifold.lift(coords).map_err(|why| Error::new(format!("{field}.{role}"), format!("{role} pose \"{name}\" is not wrench-feasible: {why}")))?;
-            if !manifold.within_bounds(&x) {
-                let (mu, label) = manifold.tightest(&x);
-                return Err(Error::new(
-                    format!("{field}.{role}"),
-                    format!("{role} pose \"{name}\" is closer to the feasibility boundary than min_margin = {} allows ({label}: normalised margin {mu:.3e})", params.min_margin),
-                ));
-            }
-            if !manifold.admissible(&x) {
-                return Err(Error::new(format!("{field}.{role}"), format!("{role} pose \"{name}\" violates a clearance (see `cablenav check`)")));
-            }
-            Ok(x)
-        };
-        let start_x = lift(names[0], "start", &start_coords)?;
-        let goals = goal_copies.iter().map(|g| lift(names[1], "goal", g)).collect::<Result<Vec<_>>>()?;
+        let (start_x, goals) = lift_ends(&manifold, &ends, &goal_copies, params)?;
         let atlas_params = AtlasParams { radius: params.radius, min_radius: params.min_radius, epsilon: params.epsilon, delta: params.delta };
         let search = Continuation::new(manifold, &start_x, goals, atlas_params, params.max_charts, params.heuristic_weight)
-            .map_err(|why| Error::new(format!("{field}.start"), format!("no chart can be made at the start pose \"{}\": {why}", names[0])))?;
-        Ok(AtlasPlanner { scenario: scenario.clone(), start, goal, params, search, check: None })
+            .map_err(|why| Error::new(format!("{}.start", ends.field), format!("no chart can be made at the start pose \"{}\": {why}", ends.names[0])))?;
+        let [start, goal] = ends.poses;
+        Ok(AtlasPlanner { scenario: scenario.clone(), start, goal, params, fixed, reused: 0, verified_edges: 0, checked_poses: 0, search, check: None })
     }
 
     /// Advances by at most `budget` units of work (one unit: one chart-creation attempt, one A*
@@ -402,7 +499,16 @@ impl AtlasPlanner {
                         }
                     }
                     if c.next < edges {
-                        c.verification.add_edge(&self.scenario, c.next, &c.path[c.next], &c.path[c.next + 1]);
+                        // an inner edge is a step of the dense path the motion validator accepted
+                        // (the same exact verification); the end edges meet the exact start and
+                        // goal poses, which the manifold's points round
+                        let inner = c.next > 0 && c.next + 1 < edges;
+                        if inner && self.search.step_validated(&c.points[c.next], &c.points[c.next + 1]) {
+                            c.verification.edges_validated += 1;
+                        } else {
+                            c.verification.add_edge(&self.scenario, c.next, &c.path[c.next], &c.path[c.next + 1]);
+                            self.verified_edges += 1;
+                        }
                         c.verification.add_pose(&self.scenario, &c.path[c.next + 1]);
                         c.next += 1;
                     }
@@ -421,7 +527,8 @@ impl AtlasPlanner {
                     *last = self.goal;
                 }
                 let verification = PathVerification::start(path.len());
-                self.check.insert(PathCheck { status: status(ended), path, verification, next: 0, finished: false })
+                let points = self.search.path().to_vec();
+                self.check.insert(PathCheck { status: status(ended), path, points, verification, next: 0, finished: false })
             }
         };
         let edges = check.path.len().saturating_sub(1);
@@ -432,8 +539,8 @@ impl AtlasPlanner {
 
     /// The work done so far (cumulative; differences between calls measure a `step`).
     pub fn work(&self) -> PlanWork {
-        let (edges, poses) = self.check.as_ref().map_or((0, 0), |c| (c.next, c.verification.wrench_poses));
-        PlanWork { evaluations: self.search.atlas.evaluations(), trajectory_checks: self.search.motion_checks() + edges, pose_checks: poses }
+        let poses = self.checked_poses + self.check.as_ref().map_or(0, |c| c.verification.wrench_poses);
+        PlanWork { evaluations: self.search.atlas.evaluations(), trajectory_checks: self.search.motion_checks() + self.verified_edges, pose_checks: poses }
     }
 
     /// The result once [`AtlasPlanner::step`] reported `done`, `None` before.
@@ -451,6 +558,7 @@ impl AtlasPlanner {
                 rejected_edges: self.search.rejected_edges(),
                 blocked_charts: self.search.atlas.charts.iter().filter(|c| c.state == chart::ChartState::Blocked).count(),
                 chart_radii: self.search.atlas.charts.iter().filter(|c| c.state != chart::ChartState::Blocked).fold([f64::INFINITY, 0.0], |[lo, hi], c| [lo.min(c.radius), hi.max(c.radius)]),
+                reused_charts: self.reused,
                 params: self.params,
             },
             verification: check.verification.clone(),
@@ -471,6 +579,7 @@ impl PathVerification {
     fn start(poses: usize) -> PathVerification {
         PathVerification {
             edges: poses.saturating_sub(1),
+            edges_validated: 0,
             infeasible_sections: 0,
             uncertain_sections: 0,
             wrench_poses: 0,

@@ -65,7 +65,7 @@ impl Ord for Entry {
 
 /// A chart path to a goal whose dense path is being built, one edge per unit of work.
 struct Pending {
-    /// Chart indices from chart 0 to the chart holding the goal.
+    /// Chart indices from the start chart to the chart holding the goal.
     chain: Vec<usize>,
     /// The goal point reached.
     goal: Vec<f64>,
@@ -77,11 +77,24 @@ struct Pending {
     points: Vec<Vec<f64>>,
 }
 
-/// An atlas and an A* search over it, from the start point to any of the goal points.
+/// An atlas and an A* search over it, from the start point to any of the goal points. The atlas
+/// outlives a search: [`Continuation::retarget`] starts another one (another start and goal on
+/// the same manifold) on the atlas built so far, which then grows only where the new search needs
+/// it.
 pub struct Continuation<M: Manifold> {
     /// The atlas built so far.
     pub atlas: Atlas<M>,
     goals: Vec<Vec<f64>>,
+    /// The chart the search starts from: the one holding the start point.
+    start: usize,
+    /// The dense path from the start point to that chart's centre (the start point alone when it
+    /// is the centre).
+    prefix: Vec<Vec<f64>>,
+    /// Whether popped open charts are expanded. A retargeted search first runs on the atlas as
+    /// it is (open charts only relaxed) and grows it only if that finds no path.
+    grow: bool,
+    /// Whether the current pass reached an open chart it did not expand.
+    skipped_open: bool,
     max_charts: usize,
     /// The heuristic's weight w in f = g + w·h (1: A*).
     weight: f64,
@@ -102,6 +115,9 @@ pub struct Continuation<M: Manifold> {
     goal_walk_failures: usize,
     /// Motion-validator calls made so far.
     motion_checks: usize,
+    /// Steps the motion validator accepted, by their two points' bits (either order): walks and
+    /// edges that later searches repeat or reverse are not validated again.
+    valid_steps: HashSet<Vec<u64>>,
     /// Dense edges built so far, by (from, to) chart; `None` for a broken one.
     edges: HashMap<(usize, usize), Option<Vec<Vec<f64>>>>,
     ended: Option<Ended>,
@@ -120,6 +136,10 @@ impl<M: Manifold> Continuation<M> {
         let mut s = Continuation {
             atlas,
             goals,
+            start: 0,
+            prefix: vec![start.to_vec()],
+            grow: true,
+            skipped_open: false,
             max_charts: max_charts.max(1),
             weight,
             g: vec![],
@@ -132,6 +152,7 @@ impl<M: Manifold> Continuation<M> {
             rejected: 0,
             goal_walk_failures: 0,
             motion_checks: 0,
+            valid_steps: HashSet::new(),
             edges: HashMap::new(),
             ended: None,
             path: vec![],
@@ -140,7 +161,40 @@ impl<M: Manifold> Continuation<M> {
         Ok(s)
     }
 
-    /// Forgets the search state (not the atlas) and starts again from chart 0.
+    /// Starts a new search from `starts` (points of the manifold that stand for one start, as the
+    /// goal points stand for one goal; at least one) to any of `goals` on the atlas built so far,
+    /// keeping its charts and the dense edges already built and checked between them. The start
+    /// is reached from the first chart whose ball holds one of its points (by a walk the motion
+    /// validator accepts); where none does, a chart is added at the first point. The search first runs
+    /// over the charts there are, expanding none; only if that finds no path while some chart it
+    /// reached is still open does it start again, growing the atlas as a first search does. The
+    /// chart budget counts the whole atlas. Fails only if no chart can be made at the start.
+    pub fn retarget(&mut self, starts: &[Vec<f64>], goals: Vec<Vec<f64>>) -> Result<(), String> {
+        let start = starts.first().ok_or("no start point")?;
+        let charts = (0..self.atlas.charts.len()).filter(|&c| self.atlas.charts[c].state != ChartState::Blocked);
+        let held = starts.iter().flat_map(|x| charts.clone().map(move |c| (c, x))).find_map(|(c, x)| {
+            let t = self.atlas.locate(c, x)?;
+            let mut walk = self.atlas.walk(c, &t)?;
+            walk.reverse();
+            // a start at the centre itself walks one step of length zero
+            walk.dedup_by(|a, b| self.atlas.manifold.distance(a, b) <= 1e-12);
+            Some((c, walk))
+        });
+        let (chart, prefix) = match held.filter(|(_, walk)| self.motions_valid(walk)) {
+            Some(found) => found,
+            None => (self.atlas.insert(start)?, vec![start.to_vec()]),
+        };
+        self.start = chart;
+        self.prefix = prefix;
+        self.goals = goals;
+        self.ended = None;
+        self.path.clear();
+        self.grow = false;
+        self.restart();
+        Ok(())
+    }
+
+    /// Forgets the search state (not the atlas) and starts again from the start chart.
     fn restart(&mut self) {
         let n = self.atlas.charts.len();
         self.g = vec![f64::INFINITY; n];
@@ -149,9 +203,10 @@ impl<M: Manifold> Continuation<M> {
         self.open.clear();
         self.expanding = None;
         self.pending = None;
-        self.g[0] = 0.0;
-        let h = self.heuristic(0);
-        self.open.push(Entry { f: self.weight * h, h, chart: 0 });
+        self.skipped_open = false;
+        self.g[self.start] = 0.0;
+        let h = self.heuristic(self.start);
+        self.open.push(Entry { f: self.weight * h, h, chart: self.start });
     }
 
     /// Distance from chart `c`'s centre to the nearest goal point (0 with no goals).
@@ -222,7 +277,13 @@ impl<M: Manifold> Continuation<M> {
                 continue;
             }
             let Some(Entry { chart: c, .. }) = self.open.pop() else {
-                self.ended = Some(Ended::Exhausted);
+                if self.skipped_open {
+                    // the charts there were hold no path: search again, growing the atlas
+                    self.grow = true;
+                    self.restart();
+                } else {
+                    self.ended = Some(Ended::Exhausted);
+                }
                 continue;
             };
             if self.popped[c] {
@@ -266,11 +327,11 @@ impl<M: Manifold> Continuation<M> {
             return false;
         };
         let mut chain = vec![c];
-        while let Some(p) = self.parent[*chain.last().unwrap_or(&0)] {
+        while let Some(p) = self.parent[*chain.last().unwrap_or(&self.start)] {
             chain.push(p);
         }
         chain.reverse();
-        let points = vec![self.atlas.charts[chain[0]].centre.clone()];
+        let points = self.prefix.clone();
         self.pending = Some(Pending { chain, goal, t, next: 0, points });
         true
     }
@@ -283,6 +344,13 @@ impl<M: Manifold> Continuation<M> {
         if p.next + 1 < p.chain.len() {
             let (a, b) = (p.chain[p.next], p.chain[p.next + 1]);
             let pair = (a.min(b), a.max(b));
+            if !self.edges.contains_key(&(a, b)) {
+                // an edge built the other way (by an earlier search), reversed, or a new one
+                let reversed = self.edges.get(&(b, a)).map(|e| e.as_ref().map(|e| e.iter().rev().cloned().collect::<Vec<_>>()));
+                if let Some(known) = reversed {
+                    self.edges.insert((a, b), known);
+                }
+            }
             if !self.edges.contains_key(&(a, b)) {
                 let dense = self.atlas.edge(a, b);
                 let rejected = dense.as_ref().is_some_and(|e| !self.motions_valid(e));
@@ -324,23 +392,51 @@ impl<M: Manifold> Continuation<M> {
         }
     }
 
-    /// Goes on from popped chart `c` without a goal: expands it if it is open, else relaxes its
-    /// neighbours.
+    /// Goes on from popped chart `c` without a goal: expands it if it is open (and the search
+    /// grows the atlas), else relaxes its neighbours.
     fn leave(&mut self, c: usize) {
-        if self.atlas.charts[c].state == ChartState::Open {
+        if self.atlas.charts[c].state != ChartState::Open {
+            self.relax(c);
+        } else if self.grow {
             self.expanding = Some(c);
         } else {
+            self.skipped_open = true;
             self.relax(c);
         }
     }
 
-    /// Whether the motion validator accepts every step of a dense path.
+    /// Whether the motion validator has accepted the step from `a` to `b` (either way).
+    pub fn step_validated(&self, a: &[f64], b: &[f64]) -> bool {
+        self.valid_steps.contains(&step_key(a, b))
+    }
+
+    /// Whether the motion validator accepts every step of a dense path (steps it accepted before
+    /// are not asked again).
     fn motions_valid(&mut self, dense: &[Vec<f64>]) -> bool {
         let manifold = &self.atlas.manifold;
-        let checks = &mut self.motion_checks;
+        let (checks, valid) = (&mut self.motion_checks, &mut self.valid_steps);
         dense.windows(2).all(|w| {
+            let key = step_key(&w[0], &w[1]);
+            if valid.contains(&key) {
+                return true;
+            }
             *checks += 1;
-            manifold.motion_valid(&w[0], &w[1])
+            let ok = manifold.motion_valid(&w[0], &w[1]);
+            if ok {
+                valid.insert(key);
+            }
+            ok
         })
+    }
+}
+
+/// The key of a step between two points: both points' bits, the lesser first (a step is valid
+/// both ways).
+fn step_key(a: &[f64], b: &[f64]) -> Vec<u64> {
+    let (a, b): (Vec<u64>, Vec<u64>) = (a.iter().map(|v| v.to_bits()).collect(), b.iter().map(|v| v.to_bits()).collect());
+    if a <= b {
+        [a, b].concat()
+    } else {
+        [b, a].concat()
     }
 }

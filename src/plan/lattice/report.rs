@@ -63,6 +63,8 @@ pub struct LatticePlanReport {
     pub params: LatticeParams,
     /// Wall-clock seconds, as measured by the caller.
     pub seconds: f64,
+    /// The same time in milliseconds.
+    pub elapsed_ms: f64,
 }
 
 impl LatticePlanner {
@@ -104,6 +106,7 @@ impl LatticePlanner {
             verification: self.verification.clone(),
             params: self.params,
             seconds,
+            elapsed_ms: seconds * 1000.0,
         })
     }
 

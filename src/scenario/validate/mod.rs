@@ -63,10 +63,11 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
     if robot.chain.is_some() {
         let joint_paths = chains::joint_paths(&raw.trajectories, &configs)?;
         let obstacles = obstacles::obstacles(&raw.obstacles)?;
-        return Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses: Vec::new(), trajectories: Vec::new(), queries: Vec::new(), wrench: None, configs, joint_paths, warnings });
+        return Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses: Vec::new(), written_angles: Vec::new(), trajectories: Vec::new(), queries: Vec::new(), wrench: None, configs, joint_paths, warnings });
     }
     let obstacles = obstacles::obstacles(&raw.obstacles)?;
     let poses = motion::poses(&raw.poses.0, &mut warnings)?;
+    let written_angles = motion::written_angles(&raw.poses.0);
     motion::check_cable_lengths(&robot, &poses)?;
     let mut trajectories = motion::trajectories(&raw.trajectories, version >= 2, &poses, &mut warnings)?;
     motion::durations(&raw, version, &mut trajectories)?;
@@ -88,7 +89,7 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
             return Err(Error::new("wrench.closure", format!("wrench closure is supported for up to {MAX_WRENCH_CABLES} cables {why}; this robot has {m}")));
         }
     }
-    Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses, trajectories, queries, wrench, configs, joint_paths: Vec::new(), warnings })
+    Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses, written_angles, trajectories, queries, wrench, configs, joint_paths: Vec::new(), warnings })
 }
 
 /// Most cables for which the wrench conditions test all C(m, 5) facets of the structure matrix

@@ -26,6 +26,12 @@ pub(super) fn poses(raw: &[(String, RawPose)], warnings: &mut Vec<String>) -> Re
     Ok(out)
 }
 
+/// The tilt-and-torsion angles of the poses `raw` gives them (already checked by [`poses`]), as
+/// written: the planner's paper mode takes them as plain coordinates.
+pub(super) fn written_angles(raw: &[(String, RawPose)]) -> Vec<(String, [f64; 3])> {
+    raw.iter().filter_map(|(name, p)| p.tilt_torsion.as_ref().and_then(|a| angles("", a).ok()).map(|a| (name.clone(), a))).collect()
+}
+
 /// One pose at `path`: its position and exactly one orientation form.
 fn pose(path: &str, p: &RawPose, warnings: &mut Vec<String>) -> Result<Pose> {
     let position = vec3(&format!("{path}.position"), &p.position)?;
