@@ -99,6 +99,9 @@ pub enum Request {
         planner: PlannerKind,
         /// Lattice planner parameters (defaults: [`LatticeParams::default`]).
         lattice: LatticeParams,
+        /// An atlas file's text to start the atlas planner from (empty: none yet), whose atlas at
+        /// the end then comes back in the output ([`Output::atlas_file`]); `None` keeps none.
+        atlas: Option<String>,
     },
 }
 
@@ -119,8 +122,9 @@ pub enum Output {
     Envelope(TensionEnvelope),
     /// Of [`Request::Slice`].
     Slice(SliceMap),
-    /// Of [`Request::Plan`] with the atlas planner, and the path as a trajectory.
-    Plan(PlanReport, Option<Trajectory>),
+    /// Of [`Request::Plan`] with the atlas planner, the path as a trajectory, and the atlas file
+    /// when the request keeps one (on the last query's output).
+    Plan(PlanReport, Option<Trajectory>, Option<String>),
     /// Of [`Request::Lattice`].
     Lattice(LatticeReport),
     /// Of [`Request::Plan`] with the lattice planner, and its smoothed trajectory.
@@ -180,7 +184,9 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
                     [pick(axes[0])?, pick(axes[1])?]
                 }
             };
-            Output::Slice(counted("slice rows", *res, progress, |done| slice_counted(scenario, pose, axes, *res, range, done))?)
+            let mut map = counted("slice rows", *res, progress, |done| slice_counted(scenario, pose, axes, *res, range, done))?;
+            map.singular_curves = crate::verify::singular::singularity_curves(scenario, pose, axes, *res, range)?;
+            Output::Slice(map)
         }
         Request::Lattice { pose, axes, ranges, steps } => {
             let axes = axes.iter().map(|a| scenario.coord("--axes", a.trim())).collect::<Result<Vec<Coord>>>()?;
@@ -198,7 +204,7 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
         Request::Plan { .. } if scenario.robot.chain.is_some() => {
             return Err(Error::new("plan", "planning for multi-link robots is not available yet (docs/multilink.md); `lattice --axes …` shows the connected regions"));
         }
-        Request::Plan { queries, params, planner, lattice } => {
+        Request::Plan { queries, params, planner, lattice, atlas } => {
             let option = |e: Error| match e.field.as_str() {
                 "radius" | "min_radius" | "heuristic_weight" | "epsilon" | "max_charts" => Error::new(format!("--{}", e.field.replace('_', "-")), e.reason),
                 _ => e,
@@ -209,11 +215,13 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
             let options = PlannerOptions { kind: *planner, atlas: *params, lattice: *lattice };
             // the planner is picked by name and stepped through the common interface
             let mut hear = |step: &plan::PlanProgress| progress(Progress { stage: "planning (‰)", done: (step.fraction * 1000.0) as usize, total: 1000 });
-            let results = plan::run_queries(scenario, queries, &options, &clock(), &mut hear).map_err(option)?;
+            let (results, mut saved) = plan::run_queries(scenario, queries, &options, atlas.as_deref(), &clock(), &mut hear).map_err(option)?;
+            let last = results.len().saturating_sub(1);
             let mut outputs: Vec<Output> = results
                 .into_iter()
-                .map(|result| match result.details {
-                    Details::Atlas(r) => Output::Plan(r, result.trajectory),
+                .enumerate()
+                .map(|(i, result)| match result.details {
+                    Details::Atlas(r) => Output::Plan(r, result.trajectory, if i == last { saved.take() } else { None }),
                     Details::Lattice(r) => Output::LatticePlan(r, result.trajectory),
                 })
                 .collect();
@@ -258,7 +266,7 @@ impl Output {
             Output::Check(r) => to_json(r),
             Output::Envelope(r) => to_json(r),
             Output::Slice(r) => to_json(r),
-            Output::Plan(r, _) => to_json(r),
+            Output::Plan(r, ..) => to_json(r),
             Output::Lattice(r) => to_json(r),
             Output::LatticePlan(r, _) => to_json(r),
             Output::Plans(outputs) => {
@@ -279,7 +287,7 @@ impl Output {
             Output::Check(r) => check_text(r),
             Output::Envelope(r) => envelope_text(r),
             Output::Slice(r) => slice_text(r),
-            Output::Plan(r, _) => plan_text(r),
+            Output::Plan(r, ..) => plan_text(r),
             Output::Lattice(r) => lattice_text(r),
             Output::LatticePlan(r, _) => lattice_plan_text(r),
             Output::Plans(outputs) => outputs.iter().map(Output::text).collect::<Vec<_>>().join("\n"),
@@ -290,7 +298,17 @@ impl Output {
     /// planner's smoothed trajectory), for `--out`; `None` for other commands or without a path.
     pub fn trajectory(&self) -> Option<&Trajectory> {
         match self {
-            Output::Plan(_, t) | Output::LatticePlan(_, t) => t.as_ref(),
+            Output::Plan(_, t, _) | Output::LatticePlan(_, t) => t.as_ref(),
+            _ => None,
+        }
+    }
+
+    /// The atlas file a plan request that keeps one returns (the atlas at the end of its last
+    /// query); `None` otherwise.
+    pub fn atlas_file(&self) -> Option<&str> {
+        match self {
+            Output::Plan(_, _, file) => file.as_deref(),
+            Output::Plans(outputs) => outputs.last()?.atlas_file(),
             _ => None,
         }
     }
@@ -402,6 +420,10 @@ fn slice_text(m: &SliceMap) -> String {
     for (name, c) in &m.pose_components {
         out += &format!("  pose {name}: {}\n", c.map_or("infeasible".to_string(), |c| format!("component {c}")));
     }
+    if !m.singular_curves.is_empty() {
+        let points: usize = m.singular_curves.iter().map(Vec::len).sum();
+        out += &format!("  singularity curves (det J = 0): {} polyline(s), {points} points (singular_curves in --json)\n", m.singular_curves.len());
+    }
     if m.res <= 100 {
         out += &format!("  map ({} to the right, {} upwards; . feasible, T tension, L length, S singular, X interference):\n", m.axes[0], m.axes[1]);
         for j in (0..m.res).rev() {
@@ -453,6 +475,10 @@ fn lattice_text(r: &LatticeReport) -> String {
         out += &format!(" ({} where the rays through them disagree)", r.disagreements);
     }
     out += "\n";
+    out += &format!(
+        "  components: {} holding grid points, {} slivers between grid points; the point-wise grid of the same points finds {} ({} separation(s) it misses)\n",
+        r.grid_components, r.sliver_components, r.pointwise_components, r.missed_separations
+    );
     if r.uncertain_rays > 0 {
         out += &format!("  warning: {} ray(s) have uncertain sections (counted as infeasible)\n", r.uncertain_rays);
     }

@@ -301,3 +301,31 @@ fn piecewise_trajectories_are_format_2_and_must_join() {
     v["trajectories"][0]["translation"] = json!({"line": [[0, 0, 0], [1, 1, 1]]});
     assert_eq!(Scenario::from_json(&v.to_string()).unwrap_err().field, "trajectories[0].pieces");
 }
+
+/// The lattice's components split as the thesis' Table 3.2 discussion needs them
+/// (docs/lattice.md): the tree's components at 20 values per axis are the few that hold grid points
+/// plus slivers between grid points, and the point-wise grid of the same points finds as many
+/// components as the grid points' own (`point_grid`, which checks each point directly); the arm's
+/// cables 2–3 gap at 10 values per axis is a separation of grid points the point-wise grid misses
+/// (it joins the two sides), at 20 values no longer.
+#[test]
+fn components_split_into_grid_ones_slivers_and_missed_separations() {
+    let s = Scenario::from_json(CDPR7_TREE).unwrap();
+    let n = if cfg!(target_arch = "wasm32") { 12 } else { 20 };
+    let spec = LatticeSpec::new(vec![Coord::X, Coord::Y, Coord::Z], vec![[0.2, 3.8], [1.1, 2.9], [0.3, 3.7]], vec![n], [2.0016, 2.0, 0.8666666666666667, 0.0, 0.0, 0.0]).unwrap();
+    let r = Lattice::build(&s, spec.clone()).report().unwrap();
+    assert_eq!(r.grid_components + r.sliver_components, r.components);
+    assert!(r.sliver_components > 0 && r.grid_components >= 1, "{} + {}", r.grid_components, r.sliver_components);
+    let holding: std::collections::BTreeSet<usize> = r.point_components.iter().flatten().copied().collect();
+    assert_eq!(holding.len(), r.grid_components);
+    assert_eq!(r.pointwise_components, point_grid(&s, &spec).components);
+    assert_eq!(r.missed_separations, r.grid_components - r.pointwise_components);
+    let arm = Scenario::from_json(include_str!("../static/multilink/bmarm-x4-2.json")).unwrap();
+    let q = arm.config("fig312").unwrap();
+    let axes = vec![arm.coord("axes", "alpha").unwrap(), arm.coord("axes", "beta").unwrap()];
+    let at = |steps: usize| Lattice::build(&arm, LatticeSpec::new(axes.clone(), vec![[-0.7854, 0.7854]; 2], vec![steps], q.clone()).unwrap()).report().unwrap();
+    let coarse = at(10);
+    assert_eq!((coarse.grid_components, coarse.pointwise_components, coarse.missed_separations, coarse.sliver_components), (2, 1, 1, 0));
+    let fine = at(20);
+    assert_eq!((fine.grid_components, fine.pointwise_components, fine.missed_separations), (2, 2, 0));
+}

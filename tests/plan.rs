@@ -768,3 +768,75 @@ fn every_step_unit_does_bounded_work() {
     assert_eq!((v.edges, v.wrench_poses), (out.path.len() - 1, out.path.len()));
     assert_eq!(out, plan(&s, "q1-q3", PlanParams::default()).unwrap(), "stepping by one unit gives the one-run result");
 }
+
+/// The atlas in the slice's coordinates (`PlanOutcome::view`, the report's `atlas_charts`): one
+/// view per chart; each polygon (2-D slice) is convex, in cyclic order, holds its centre, and an
+/// expanded chart's lies within its ball; the path's charts are marked, from the start's to the
+/// goal's; a 3-D slice gives each chart's faces, each a planar convex polygon.
+#[test]
+fn atlas_view_draws_the_charts_in_slice_coordinates() {
+    let s = robocrane();
+    let out = plan(&s, "q1-q2", PlanParams::default()).unwrap();
+    let v = &out.view;
+    assert_eq!(v.coords, ["phi", "theta"]);
+    assert_eq!(v.charts.len(), out.charts);
+    assert!(v.charts.iter().any(|c| c.state == "expanded") && v.charts.iter().filter(|c| c.on_path).count() >= 2);
+    let q1 = s.pose("q1").unwrap().coords();
+    assert!((v.charts[0].centre[0] - q1[3]).abs() < 1e-9 && (v.charts[0].centre[1] - q1[4]).abs() < 1e-9 && v.charts[0].on_path);
+    for (i, c) in v.charts.iter().enumerate() {
+        let p = &c.polygon;
+        assert!(p.len() >= 3, "chart {i}: {p:?}");
+        let cross = |a: &[f64], b: &[f64], o: &[f64]| (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+        let turns: Vec<f64> = (0..p.len()).map(|j| cross(&p[(j + 1) % p.len()], &p[(j + 2) % p.len()], &p[j])).collect();
+        assert!(turns.iter().all(|&t| t > -1e-12) || turns.iter().all(|&t| t < 1e-12), "chart {i} is not convex in order: {turns:?}");
+        let sides: Vec<f64> = (0..p.len()).map(|j| cross(&p[(j + 1) % p.len()], &c.centre, &p[j])).collect();
+        assert!(sides.iter().all(|&t| t >= -1e-12) || sides.iter().all(|&t| t <= 1e-12), "chart {i}'s centre is outside its polygon");
+        if c.state == "expanded" {
+            let far = p.iter().map(|x| (x[0] - c.centre[0]).hypot(x[1] - c.centre[1])).fold(0.0, f64::max);
+            assert!(far <= c.radius * (1.0 + 1e-9), "chart {i}: a vertex {far} from the centre, radius {}", c.radius);
+        }
+    }
+    let cube = plan(&s, "q5-q6", PlanParams::default()).unwrap();
+    assert_eq!(cube.view.coords, ["z", "phi", "theta"]);
+    for c in &cube.view.charts {
+        assert!(c.polygon.is_empty() && c.faces.len() >= 4);
+        for face in &c.faces {
+            assert!(face.len() >= 3);
+            // planar: every vertex on the plane of the first three
+            let d = |a: &[f64], b: &[f64]| nalgebra::Vector3::new(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+            let n = d(&face[1], &face[0]).cross(&d(&face[2], &face[0]));
+            assert!(face.iter().all(|x| d(x, &face[0]).dot(&n).abs() <= 1e-9 * n.norm().max(1e-12)));
+        }
+    }
+}
+
+/// An atlas saved to a file reads back bit for bit (saving it again gives the same text) and
+/// answers a later query from it; a file for another robot or other parameters, malformed JSON
+/// and a chart naming a neighbour that does not exist are refused at `atlas`; a query on another
+/// slice starts afresh.
+#[test]
+fn atlas_files_read_back_and_are_checked() {
+    let s = robocrane();
+    let params = PlanParams::default();
+    let mut p = AtlasPlanner::new(&s, "q1-q2", params).unwrap();
+    let first = finish(&mut p);
+    let text = p.save_atlas();
+    let mut again = AtlasPlanner::with_atlas(&s, "q1-q2", params, &text).unwrap();
+    assert_eq!(again.save_atlas(), text, "the atlas reads back bit for bit");
+    let out = finish(&mut again);
+    assert_eq!((out.status, out.charts, out.atlas.reused_charts), (first.status, first.charts, first.charts));
+    let other = finish(&mut AtlasPlanner::with_atlas(&s, "q5-q6", params, &text).unwrap());
+    assert_eq!((other.status, other.atlas.reused_charts), (PlanStatus::Found, 0), "another slice starts afresh");
+    let field = |r: cablenav::Result<AtlasPlanner>| r.err().map(|e| e.field);
+    assert_eq!(field(AtlasPlanner::with_atlas(&s, "q1-q2", PlanParams { epsilon: 0.3, ..params }, &text)).as_deref(), Some("atlas"));
+    let mut moved = s.clone();
+    moved.robot.cables[0].base.x += 0.01;
+    assert_eq!(field(AtlasPlanner::with_atlas(&moved, "q1-q2", params, &text)).as_deref(), Some("atlas"));
+    assert_eq!(field(AtlasPlanner::with_atlas(&s, "q1-q2", params, "{")).as_deref(), Some("atlas"));
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    v["charts"][1]["neighbours"] = serde_json::json!([999]);
+    assert_eq!(field(AtlasPlanner::with_atlas(&s, "q1-q2", params, &v.to_string())).as_deref(), Some("atlas.charts[1]"));
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    v["charts"][0]["basis"][0][0] = serde_json::json!(3.0);
+    assert_eq!(field(AtlasPlanner::with_atlas(&s, "q1-q2", params, &v.to_string())).as_deref(), Some("atlas.charts[0]"));
+}

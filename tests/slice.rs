@@ -4,6 +4,7 @@
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
 use cablenav::model::{Coord, Pose};
+use cablenav::verify::singular::singularity_curves;
 use cablenav::verify::slice::Class;
 use cablenav::verify::{slice, wrench_at};
 use cablenav::Scenario;
@@ -93,4 +94,68 @@ fn a_map_classified_in_row_blocks_is_the_whole_map() {
     assert_eq!(slice_from_classes(&s, "q1", axes, res, range, classes).unwrap(), whole);
     assert_eq!(slice_rows(&s, "q1", axes, res, range, 20..25).unwrap_err().field, "rows");
     assert_eq!(slice_from_classes(&s, "q1", axes, res, range, vec![Class::Feasible; 3]).unwrap_err().field, "classes");
+}
+
+/// The singularity curves (det J = 0) against the definition, written here: J's columns
+/// [e_i; x_i × e_i] from the pose, det by nalgebra. Every curve point is a zero of det J (to 1e-9
+/// of the determinant's scale on the slice), and a fine grid's sign changes of det J between
+/// neighbouring samples (those with no other within one coarse cell) all lie within two coarse
+/// cells of a curve; the curves are long arcs, not cells (paper 1, Fig. 5). A
+/// seven-cable robot has none.
+#[test]
+fn singularity_curves_are_where_det_j_changes_sign() {
+    use nalgebra::{Matrix6, Vector6};
+    let s = Scenario::from_json(ROBOCRANE).unwrap();
+    let (res, fine) = if cfg!(target_arch = "wasm32") { (36, 90) } else { (72, 300) };
+    let range = [[-PI, PI], [-PI, PI]];
+    let curves = singularity_curves(&s, "q1", [Coord::Phi, Coord::Theta], res, range).unwrap();
+    let fixed = s.config("q1").unwrap();
+    let det = |phi: f64, theta: f64| {
+        let mut c = fixed.clone();
+        c[3] = phi;
+        c[4] = theta;
+        let pose = Pose::from_slice(&c);
+        let mut j = Matrix6::zeros();
+        for (k, cable) in s.robot.cables.iter().enumerate() {
+            let x = pose.position + pose.rotation * cable.platform;
+            let e = (x - cable.base).normalize();
+            let moment = (x - pose.position).cross(&e);
+            j.set_column(k, &Vector6::new(e.x, e.y, e.z, moment.x, moment.y, moment.z));
+        }
+        j.determinant()
+    };
+    let step = |a: usize, k: usize| range[a][0] + (range[a][1] - range[a][0]) * k as f64 / fine as f64;
+    let samples: Vec<Vec<f64>> = (0..=fine).map(|j| (0..=fine).map(|i| det(step(0, i), step(1, j))).collect()).collect();
+    let scale = samples.iter().flatten().fold(0.0f64, |a, d| a.max(d.abs()));
+    assert!(!curves.is_empty());
+    for p in curves.iter().flatten() {
+        assert!(det(p[0], p[1]).abs() <= 1e-9 * scale, "det J = {} at {p:?}", det(p[0], p[1]));
+    }
+    let cell = 2.0 * PI / res as f64;
+    let near = |u: f64, v: f64| curves.iter().flatten().any(|p| (p[0] - u).hypot(p[1] - v) <= 2.0 * cell);
+    // two crossings within one coarse cell are beyond the coarse grid (module docs): only the
+    // isolated ones are required
+    let (mut changes, mut missed) = (0, vec![]);
+    for j in 0..=fine {
+        let row: Vec<f64> = (0..fine).filter(|&i| samples[j][i] * samples[j][i + 1] < 0.0).map(|i| 0.5 * (step(0, i) + step(0, i + 1))).collect();
+        for (k, &u) in row.iter().enumerate() {
+            let paired = row.iter().enumerate().any(|(l, &w)| l != k && (w - u).abs() <= cell);
+            if paired {
+                continue;
+            }
+            changes += 1;
+            if !near(u, step(1, j)) {
+                missed.push((u, step(1, j)));
+            }
+        }
+    }
+    assert!(changes > 50, "{changes} isolated sign changes");
+    assert!(missed.is_empty(), "{} of {changes} sign changes of det J far from every curve: {:?}", missed.len(), &missed[..missed.len().min(5)]);
+    // curves, not dots: the drops of Fig. 5 run across many cells
+    assert!(curves.iter().filter(|c| c.len() > 20).count() >= 4);
+    let tree = Scenario::from_json(include_str!("../static/scenarios/cdpr7-tree.json")).unwrap();
+    let pose = tree.poses[0].0.clone();
+    assert!(singularity_curves(&tree, &pose, [Coord::X, Coord::Y], 8, [[0.5, 3.5], [0.5, 3.5]]).unwrap().is_empty());
+    // the arguments are checked as a slice map's
+    assert_eq!(singularity_curves(&s, "q1", [Coord::Phi, Coord::Phi], 8, range).unwrap_err().field, "--axes");
 }

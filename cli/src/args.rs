@@ -197,6 +197,11 @@ pub enum Command {
         /// angles as the scenario writes them, no wrapping) [default: true]
         #[arg(long, value_name = "BOOL", action = clap::ArgAction::Set)]
         identify_angles: Option<bool>,
+        /// Atlas planner: start from the atlas saved in FILE (if it can be read; it must have been
+        /// made for this robot and these parameters) and save the atlas there afterwards, so
+        /// that later runs answer queries on its slice from it
+        #[arg(long, value_name = "FILE")]
+        atlas: Option<String>,
         /// Print the report as JSON
         #[arg(long)]
         json: bool,
@@ -241,12 +246,14 @@ pub struct Invocation {
     pub png: Option<String>,
     /// Where to write the scenario with the planned trajectory added.
     pub out: Option<String>,
+    /// The atlas file to start planning from and save the atlas to.
+    pub atlas: Option<String>,
 }
 
 impl Command {
     /// The core request of a command that reads a scenario (not of `completions`).
     pub fn invocation(self) -> cablenav::Result<Invocation> {
-        let plain = |scenario, request, json| Ok(Invocation { scenario, request, json, png: None, out: None });
+        let plain = |scenario, request, json| Ok(Invocation { scenario, request, json, png: None, out: None, atlas: None });
         match self {
             Command::Verify { scenario, all: true, pointwise, json, .. } => plain(scenario, Request::VerifyAll { pointwise }, json),
             Command::Verify { scenario, trajectory, pointwise, json, .. } => plain(scenario, Request::Verify { trajectory, pointwise }, json),
@@ -264,7 +271,7 @@ impl Command {
             Command::Envelope { scenario, trajectory, samples, json } => plain(scenario, Request::Envelope { trajectory, samples }, json),
             Command::Slice { scenario, pose, axes, res, range, png, json } => {
                 let range = range.map(|r| [[r[0], r[1]], [r[2], r[3]]]);
-                Ok(Invocation { scenario, request: Request::Slice { pose, axes, res, range }, json, png, out: None })
+                Ok(Invocation { scenario, request: Request::Slice { pose, axes, res, range }, json, png, out: None, atlas: None })
             }
             Command::Lattice { scenario, pose, axes, range, steps, json } => {
                 let axes = axes.split(',').map(|a| a.trim().to_string()).collect();
@@ -278,7 +285,7 @@ impl Command {
                     .collect::<cablenav::Result<Vec<usize>>>()?;
                 plain(scenario, Request::Lattice { pose, axes, ranges, steps }, json)
             }
-            Command::Plan { scenario, query, planner, steps, out, max_charts, radius, min_radius, heuristic_weight, epsilon, identify_angles, json } => {
+            Command::Plan { scenario, query, planner, steps, out, max_charts, radius, min_radius, heuristic_weight, epsilon, identify_angles, atlas: atlas_file, json } => {
                 let planner = PlannerKind::parse(&planner)?;
                 let lattice = lattice_params(planner, steps, "--planner lattice")?;
                 let atlas = AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon, identify_angles };
@@ -286,7 +293,12 @@ impl Command {
                 if out.is_some() && query.len() > 1 {
                     return Err(cablenav::Error::new("--out", format!("writes one planned trajectory: give one --query, not {}", query.len())));
                 }
-                Ok(Invocation { scenario, request: Request::Plan { queries: query, params, planner, lattice }, json, png: None, out })
+                if atlas_file.is_some() && planner != PlannerKind::Atlas {
+                    return Err(cablenav::Error::new("--atlas", "is an option of --planner atlas"));
+                }
+                // the file's text is read by `run`, which also writes the atlas back
+                let atlas = atlas_file.as_ref().map(|_| String::new());
+                Ok(Invocation { scenario, request: Request::Plan { queries: query, params, planner, lattice, atlas }, json, png: None, out, atlas: atlas_file })
             }
             Command::Completions { .. } => Err(cablenav::Error::new("completions", "reads no scenario")),
             Command::Import { .. } => Err(cablenav::Error::new("import", "reads a CASPR model, not a scenario")),

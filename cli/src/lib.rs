@@ -98,11 +98,26 @@ where
     };
     let path = &invocation.scenario;
     let scenario = Scenario::from_json(&read(path)?).map_err(|e| cablenav::Error::new(format!("{path}: {}", e.field), e.reason))?;
-    let output = command::run(&scenario, &invocation.request, progress)?;
+    let mut request = invocation.request.clone();
+    if let (Some(file), command::Request::Plan { atlas, .. }) = (&invocation.atlas, &mut request) {
+        // a file that cannot be read is one not made yet: the atlas starts afresh
+        *atlas = Some(read(file).unwrap_or_default());
+    }
+    let output = command::run(&scenario, &request, progress).map_err(|e| match (&invocation.atlas, e.field.strip_prefix("atlas")) {
+        // an atlas file's fault names the option and the file (and the chart, if one is at fault)
+        (Some(file), Some(within)) => cablenav::Error::new("--atlas", format!("{file}{}: {}", within.trim_start_matches('.').split_once('[').map_or(String::new(), |(_, c)| format!(", chart [{c}")), e.reason)),
+        _ => e,
+    })?;
     if let (Output::Slice(map), Some(png)) = (&output, &invocation.png) {
         write(png, &map.png())?;
     }
     let mut printed = if invocation.json { output.json() } else { output.text() };
+    if let (Some(file), Some(text)) = (&invocation.atlas, output.atlas_file()) {
+        write(file, text.as_bytes())?;
+        if !invocation.json {
+            printed += &format!("\n  saved the atlas to {file} (a later `plan --atlas {file}` starts from it)\n");
+        }
+    }
     if let Some(file) = &invocation.out {
         let traj = output.trajectory().ok_or_else(|| cablenav::Error::new("--out", "no trajectory was planned: nothing to write"))?;
         let (text, name) = cablenav::scenario::with_trajectory(&read(path)?, traj)?;

@@ -106,6 +106,10 @@ fn slice_json_png_and_errors() {
     assert_eq!(v["classes"].as_array().unwrap().len(), 1600);
     assert!(v["pose_components"]["q1"].is_u64());
     assert_eq!(v["pose_components"]["q1"], v["pose_components"]["q2"]);
+    // the singularity curves det J = 0, as polylines of (phi, theta) points
+    let curves = v["singular_curves"].as_array().unwrap();
+    assert!(!curves.is_empty() && curves.iter().all(|c| c.as_array().unwrap().iter().all(|p| p.as_array().unwrap().len() == 2)));
+    assert!(cli("slice robocrane.json --pose q1 --axes phi,theta --res 40").unwrap().contains("singularity curves (det J = 0)"));
     let written = std::cell::RefCell::new(Vec::new());
     let args = "slice robocrane.json --pose q1 --axes phi,theta --res 20 --png out.png".split(' ');
     let write = |path: &str, bytes: &[u8]| {

@@ -231,3 +231,29 @@ fn a_wall_gives_no_path_with_the_resolution() {
     let e = files.cli(&["plan", "robocrane.json", "--query", "q1-q2", "--planner", "lattice", "--max-charts", "9"]).unwrap_err();
     assert!(e.to_string().ends_with("--max-charts: is an option of --planner atlas"), "{e}");
 }
+
+/// `plan --atlas FILE` saves the atlas and a later run starts from it: the second run of a query
+/// on the same slice reuses every chart (`reused_charts`) and finds the same verdict; a file made
+/// with other parameters, or not an atlas, is refused naming `--atlas` and the file.
+#[test]
+fn plan_saves_and_loads_the_atlas() {
+    let files = Files::new();
+    let first = files.json(&["plan", "robocrane.json", "--query", "q1-q2", "--atlas", "crane.atlas", "--json"]);
+    assert_eq!(first["reused_charts"], 0);
+    let saved = files.0.borrow().get("crane.atlas").cloned().expect("the atlas file is written");
+    assert!(saved.contains("cablenav-atlas/1"));
+    let again = files.json(&["plan", "robocrane.json", "--query", "q1-q2", "--atlas", "crane.atlas", "--json"]);
+    assert_eq!((&again["status"], &again["reused_charts"], &again["charts"]), (&first["status"], &first["charts"], &first["charts"]));
+    let next = files.json(&["plan", "robocrane.json", "--query", "q3-q4", "--atlas", "crane.atlas", "--json"]);
+    assert_eq!((next["status"].as_str(), next["reused_charts"].as_u64()), (Some("found"), first["charts"].as_u64()));
+    let e = files.cli(&["plan", "robocrane.json", "--query", "q1-q2", "--atlas", "crane.atlas", "--epsilon", "0.3"]).unwrap_err();
+    assert_eq!(e.field(), "--atlas");
+    assert!(e.to_string().contains("crane.atlas") && e.to_string().contains("parameters"), "{e}");
+    files.0.borrow_mut().insert("junk.atlas".into(), "{\"format\": 1}".into());
+    let e = files.cli(&["plan", "robocrane.json", "--query", "q1-q2", "--atlas", "junk.atlas"]).unwrap_err();
+    assert_eq!(e.field(), "--atlas");
+    let e = files.cli(&["plan", "robocrane.json", "--query", "q1-q2", "--planner", "lattice", "--atlas", "x.atlas"]).unwrap_err();
+    assert_eq!(e.field(), "--atlas");
+    let text = files.cli(&["plan", "robocrane.json", "--query", "q1-q2", "--atlas", "crane.atlas"]).unwrap();
+    assert!(text.contains("saved the atlas to crane.atlas"), "{text}");
+}

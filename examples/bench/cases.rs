@@ -154,6 +154,12 @@ fn measure_after<T>(now: &dyn Fn() -> f64, filter: &str, case: &str, setup: &mut
     Some(Measured { case: case.to_string(), median_us: median_ms * 1000.0, best_us: per_call[0] * 1000.0, calls: n, samples: n, summary })
 }
 
+/// The first feasible range a report gives, as the thesis' Table 4.1 lists it (`[a,b]` to four
+/// decimals, `none` if none).
+fn first_feasible(r: &cablenav::report::VerifyReport) -> String {
+    r.feasible.first().map_or("first_feasible=none".to_string(), |&[a, b]| format!("first_feasible=[{a:.4},{b:.4}]"))
+}
+
 fn summary_of(r: &cablenav::report::VerifyReport) -> String {
     format!("feasible={};infeasible={};boundaries={};uncertain={}", r.feasible.len(), r.infeasible.len(), r.boundaries.len(), r.uncertain.len())
 }
@@ -179,6 +185,16 @@ pub fn run_all(platform: &str, filter: &str, now: &dyn Fn() -> f64, out: &mut dy
     record(measure(now, filter, "tree/quadratic/pointwise-0.01", &mut || pointwise(&tree, &tree_q, 0.01)), out);
     record(measure(now, filter, "tree/quadratic/pointwise-0.001", &mut || pointwise(&tree, &tree_q, 0.001)), out);
     record(measure(now, filter, "cdpr7/quadratic/exact", &mut || exact(&plain, &plain_q)), out);
+    // The thesis' Table 4.1: its quadratic trajectory (4.42) point-wise at Δt = 0.1, 0.05 and 0.01
+    // against exact, with the first feasible range each finds; and the same for cdpr7-tree's,
+    // which does leave the feasible set
+    for (id, s, t) in [("cdpr7", &plain, &plain_q), ("tree", &tree, &tree_q)] {
+        record(measure(now, filter, &format!("t41/{id}/exact"), &mut || first_feasible(&verify_trajectory(s, t).expect("exact verification"))), out);
+        for dt in ["0.1", "0.05", "0.01"] {
+            let step: f64 = dt.parse().expect("a step");
+            record(measure(now, filter, &format!("t41/{id}/pointwise-{dt}"), &mut || first_feasible(&verify_pointwise(s, t, step).expect("point-wise verification"))), out);
+        }
+    }
     record(measure(now, filter, "cdpr7/quadratic/pointwise-0.001", &mut || pointwise(&plain, &plain_q, 0.001)), out);
     record(measure(now, filter, "box/linear/exact", &mut || exact(&boxed, &box_l)), out);
     record(measure(now, filter, "box/linear/pointwise-0.001", &mut || pointwise(&boxed, &box_l, 0.001)), out);

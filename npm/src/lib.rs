@@ -139,6 +139,20 @@ export interface PlanReport {
     failed_edges: [number, VerifyReport][];
     notes: string[];
   };
+  /** The charts in the slice's coordinates (paper 1's Fig. 6 top on a 2-D slice). */
+  atlas_charts: {
+    coords: Coord[];
+    charts: {
+      centre: number[];
+      radius: number;
+      state: "expanded" | "open" | "out_of_bounds" | "blocked";
+      on_path: boolean;
+      /** A 2-D slice: the polytope as a convex polygon, vertices in cyclic order. */
+      polygon: number[][];
+      /** A 3-D slice: the polytope's faces, each a convex polygon. */
+      faces: number[][][];
+    }[];
+  };
 }
 
 /** What `lattice` returns (`cablenav lattice --json`); grid points first axis fastest. */
@@ -156,6 +170,14 @@ export interface LatticeReport {
   grid_points: number;
   feasible_points: number;
   point_components: (number | null)[];
+  /** Components holding a grid point feasible on every ray through it. */
+  grid_components: number;
+  /** Components holding no grid point: slivers between grid points. */
+  sliver_components: number;
+  /** The point-wise grid's components of the same grid points. */
+  pointwise_components: number;
+  /** Separations of grid points the point-wise grid misses (grid_components − pointwise_components). */
+  missed_separations: number;
   disagreements: number;
   uncertain_rays: number;
   warnings: string[];
@@ -226,6 +248,11 @@ fn call(scenario: JsValue, request: Result<Request, Error>) -> Result<JsValue, J
 /// [`call`], where an error about the core's option `rename.0` names the argument `rename.1`
 /// (for arguments named differently from the option, e.g. `ranges` for `--range`).
 fn call_renaming(scenario: JsValue, request: Result<Request, Error>, rename: Option<(&str, &str)>) -> Result<JsValue, JsValue> {
+    js_sys::JSON::parse(&run_request(scenario, request, rename)?.json())
+}
+
+/// Runs `request` on the scenario: the core's output ([`call_renaming`] names the arguments).
+fn run_request(scenario: JsValue, request: Result<Request, Error>, rename: Option<(&str, &str)>) -> Result<command::Output, JsValue> {
     let text = match scenario.as_string() {
         Some(text) => text,
         None => js_sys::JSON::stringify(&scenario)?.as_string().unwrap_or_default(),
@@ -235,8 +262,7 @@ fn call_renaming(scenario: JsValue, request: Result<Request, Error>, rename: Opt
         Some((option, name)) if e.field == option => Error::new(name, e.reason),
         _ => e,
     };
-    let output = command::run(&scenario, &request.map_err(scenario_error)?, &mut |_| {}).map_err(|e| scenario_error(renamed(e)))?;
-    js_sys::JSON::parse(&output.json())
+    command::run(&scenario, &request.map_err(scenario_error)?, &mut |_| {}).map_err(|e| scenario_error(renamed(e)))
 }
 
 /// Feasible and infeasible t-sections of a trajectory (default: the scenario's first), exactly;
@@ -352,8 +378,11 @@ fn lattice_request(pose: String, axes: &[String], ranges: &[f64], steps: &JsValu
 /// `--identify-angles`; 6 cables with a wrench set) or "lattice" (ray lattice with `steps` grid
 /// values per free coordinate, default 7, + A* + Bézier smoothing; any robot). Unset
 /// parameters take the CLI's defaults; a bad one throws a `ScenarioError` naming it
-/// (`minRadius`). Runs to the end: call it in a Web Worker on a page.
-#[wasm_bindgen(unchecked_return_type = "PlanReport | LatticePlanReport | (PlanReport | LatticePlanReport)[]")]
+/// (`minRadius`). `atlas`, an atlas file's text (as `cablenav plan --atlas FILE` saves it; "" for
+/// none yet), starts the atlas planner from that atlas, and the result is then
+/// `{ reports, atlas }`: the reports (an array) and the atlas at the end, to keep for the next
+/// call. Runs to the end: call it in a Web Worker on a page.
+#[wasm_bindgen(unchecked_return_type = "PlanReport | LatticePlanReport | (PlanReport | LatticePlanReport)[] | { reports: PlanReport[]; atlas: string }")]
 #[allow(clippy::too_many_arguments)]
 pub fn plan(
     #[wasm_bindgen(unchecked_param_type = "ScenarioInput")] scenario: JsValue,
@@ -366,6 +395,7 @@ pub fn plan(
     #[wasm_bindgen(js_name = minRadius)] min_radius: Option<f64>,
     #[wasm_bindgen(js_name = heuristicWeight)] heuristic_weight: Option<f64>,
     #[wasm_bindgen(js_name = identifyAngles)] identify_angles: Option<bool>,
+    atlas: Option<String>,
 ) -> Result<JsValue, JsValue> {
     let (queries, several) = match query.as_string() {
         Some(one) => (vec![one], false),
@@ -375,18 +405,27 @@ pub fn plan(
     if several && queries.is_empty() {
         return Err(scenario_error(Error::new("query", "must be a query name or a non-empty array of query names")));
     }
-    let atlas = AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon, identify_angles };
+    let options = AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon, identify_angles };
+    let kept = atlas.clone();
     let request = PlannerKind::parse(planner.as_deref().unwrap_or("atlas")).and_then(|planner| {
         let lattice = lattice_params(planner, steps, "the \"lattice\" planner")?;
-        let params = atlas_params(planner, &atlas, "the \"atlas\" planner")?;
-        Ok(Request::Plan { queries, params, planner, lattice })
+        let params = atlas_params(planner, &options, "the \"atlas\" planner")?;
+        if kept.is_some() && planner != PlannerKind::Atlas {
+            return Err(Error::new("atlas", "is an option of the \"atlas\" planner"));
+        }
+        Ok(Request::Plan { queries, params, planner, lattice, atlas: kept })
     });
-    let reports = call(scenario, request)?;
+    let output = run_request(scenario, request, None)?;
+    let mut reports = js_sys::JSON::parse(&output.json())?;
     // an array of one query returns an array of one report
-    if several && !js_sys::Array::is_array(&reports) {
-        return Ok(js_sys::Array::of1(&reports).into());
+    if (several || atlas.is_some()) && !js_sys::Array::is_array(&reports) {
+        reports = js_sys::Array::of1(&reports).into();
     }
-    Ok(reports)
+    let Some(file) = output.atlas_file() else { return Ok(reports) };
+    let both = js_sys::Object::new();
+    js_sys::Reflect::set(&both, &"reports".into(), &reports)?;
+    js_sys::Reflect::set(&both, &"atlas".into(), &file.into())?;
+    Ok(both.into())
 }
 
 /// The package's version.

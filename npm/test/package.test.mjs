@@ -254,3 +254,15 @@ test('plan takes several queries (one report each, the atlas kept) and paper coo
   assert.throws(() => cablenav.plan(text, 'q3-q4', u, u, u, 'lattice', u, u, u, false), (e) => e.field === 'identifyAngles' || /identifyAngles/.test(e.message));
   assert.throws(() => cablenav.plan(text, [], u), /query/);
 });
+
+test('plan keeps an atlas across calls (its file text in, the atlas out)', () => {
+  const text = preset('robocrane.json');
+  const u = undefined;
+  const first = cablenav.plan(text, 'q1-q2', u, u, u, u, u, u, u, u, '');
+  assert.ok(first.atlas.startsWith('{"format":"cablenav-atlas/1"'));
+  assert.equal(first.reports.length, 1);
+  const again = cablenav.plan(text, 'q1-q2', u, u, u, u, u, u, u, u, first.atlas);
+  assert.equal(again.reports[0].reused_charts, first.reports[0].charts);
+  assert.equal(again.reports[0].charts, first.reports[0].charts);
+  assert.throws(() => cablenav.plan(text, 'q1-q2', u, u, 0.3, u, u, u, u, u, first.atlas), (e) => e.field === 'atlas');
+});

@@ -166,18 +166,28 @@ fn call(py: Python<'_>, scenario: &Bound<'_, PyAny>, request: Result<Request, Er
 /// [`call`], where an error about the core's option `rename.0` names the parameter `rename.1`
 /// (for parameters named differently from the option, e.g. `ranges` for `--range`).
 fn call_renaming(py: Python<'_>, scenario: &Bound<'_, PyAny>, request: Result<Request, Error>, rename: Option<(&str, &str)>) -> PyResult<Py<PyAny>> {
+    let output = run_request(py, scenario, request, rename)?;
+    from_json(py, &output.json())
+}
+
+/// Runs `request` on the scenario with the GIL released: the core's output ([`call_renaming`]
+/// names the parameters).
+fn run_request(py: Python<'_>, scenario: &Bound<'_, PyAny>, request: Result<Request, Error>, rename: Option<(&str, &str)>) -> PyResult<command::Output> {
     let source = Source::of(scenario)?;
     let request = request.map_err(|e| scenario_error(py, e, None))?;
-    let json = py
-        .detach(|| -> cablenav::Result<String> {
-            let scenario = source.load()?;
-            Ok(command::run(&scenario, &request, &mut |_| {})?.json())
-        })
-        .map_err(|e| match rename {
-            Some((option, name)) if e.field == option => Error::new(name, e.reason),
-            _ => e,
-        })
-        .map_err(|e| scenario_error(py, e, source.path()))?;
+    py.detach(|| -> cablenav::Result<command::Output> {
+        let scenario = source.load()?;
+        command::run(&scenario, &request, &mut |_| {})
+    })
+    .map_err(|e| match rename {
+        Some((option, name)) if e.field == option => Error::new(name, e.reason),
+        _ => e,
+    })
+    .map_err(|e| scenario_error(py, e, source.path()))
+}
+
+/// JSON text as Python data.
+fn from_json(py: Python<'_>, json: &str) -> PyResult<Py<PyAny>> {
     Ok(py.import("json")?.call_method1("loads", (json,))?.unbind())
 }
 
@@ -275,7 +285,8 @@ fn lattice(py: Python<'_>, scenario: &Bound<'_, PyAny>, pose: String, axes: Vec<
 /// `min_radius >= radius` turns it off), `heuristic_weight` (w in f = g + w·h, ≥ 1; 1 is A*),
 /// `epsilon` and `identify_angles` (False: the angles as plain coordinates, paper 1's way), as
 /// `--max-charts`, `--radius`, `--min-radius`, `--heuristic-weight`, `--epsilon`,
-/// `--identify-angles`.
+/// `--identify-angles`; `atlas` (a path) starts from the atlas saved in that file, if it exists,
+/// and saves the atlas there afterwards, as `--atlas FILE`.
 /// `planner="lattice"` (any robot): ray lattice with `steps` grid values per free coordinate
 /// (default 7) + A* + Bézier smoothing, verified and repaired.
 /// Returns the dict `cablenav plan SCENARIO --query QUERY [--planner lattice --steps N] --json`
@@ -284,7 +295,7 @@ fn lattice(py: Python<'_>, scenario: &Bound<'_, PyAny>, pose: String, axes: Vec<
 /// `message`, `polyline`, `waypoints`, `verification`, `seconds`, …. Unset parameters take the
 /// CLI's defaults; a bad one raises `ScenarioError` naming it (`min_radius`).
 #[pyfunction]
-#[pyo3(signature = (scenario, query, *, planner="atlas", steps=None, max_charts=None, radius=None, min_radius=None, heuristic_weight=None, epsilon=None, identify_angles=None))]
+#[pyo3(signature = (scenario, query, *, planner="atlas", steps=None, max_charts=None, radius=None, min_radius=None, heuristic_weight=None, epsilon=None, identify_angles=None, atlas=None))]
 #[allow(clippy::too_many_arguments)]
 fn plan(
     py: Python<'_>,
@@ -298,18 +309,28 @@ fn plan(
     heuristic_weight: Option<f64>,
     epsilon: Option<f64>,
     identify_angles: Option<bool>,
+    atlas: Option<std::path::PathBuf>,
 ) -> PyResult<Py<PyAny>> {
     let (queries, several) = match query.extract::<String>() {
         Ok(one) => (vec![one], false),
         Err(_) => (query.extract::<Vec<String>>().map_err(|_| scenario_error(py, Error::new("query", "must be a query name or a list of query names"), None))?, true),
     };
-    let atlas = AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon, identify_angles };
+    let options = AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon, identify_angles };
+    // a file that cannot be read is one not made yet: the atlas starts afresh
+    let kept = atlas.as_ref().map(|file| std::fs::read_to_string(file).unwrap_or_default());
     let request = PlannerKind::parse(planner).and_then(|planner| {
         let lattice = lattice_params(planner, steps, "planner=\"lattice\"")?;
-        let params = atlas_params(planner, &atlas, "planner=\"atlas\"")?;
-        Ok(Request::Plan { queries, params, planner, lattice })
+        let params = atlas_params(planner, &options, "planner=\"atlas\"")?;
+        if kept.is_some() && planner != PlannerKind::Atlas {
+            return Err(Error::new("atlas", "is an option of planner=\"atlas\""));
+        }
+        Ok(Request::Plan { queries, params, planner, lattice, atlas: kept })
     });
-    let reports = call(py, scenario, request)?;
+    let output = run_request(py, scenario, request, None)?;
+    if let (Some(file), Some(text)) = (&atlas, output.atlas_file()) {
+        std::fs::write(file, text).map_err(|e| scenario_error(py, Error::new("atlas", format!("cannot write {}: {e}", file.display())), None))?;
+    }
+    let reports = from_json(py, &output.json())?;
     // a list of one query returns a list of one report
     if several && !reports.bind(py).is_instance_of::<pyo3::types::PyList>() {
         return Ok(pyo3::types::PyList::new(py, [reports])?.into_any().unbind());

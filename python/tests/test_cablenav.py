@@ -253,3 +253,15 @@ def test_plan_takes_several_queries_and_paper_coordinates(cli):
     with pytest.raises(cablenav.ScenarioError) as e:
         cablenav.plan(robocrane, 3)
     assert e.value.field == "query"
+
+
+def test_plan_saves_and_loads_the_atlas(tmp_path):
+    robocrane = ROOT / "static" / "scenarios" / "robocrane.json"
+    kept = tmp_path / "crane.atlas"
+    first = cablenav.plan(robocrane, "q1-q2", atlas=kept)
+    assert kept.read_text().startswith('{"format":"cablenav-atlas/1"')
+    again = cablenav.plan(robocrane, "q1-q2", atlas=str(kept))
+    assert again["reused_charts"] == first["charts"] == again["charts"] and again["status"] == "found"
+    with pytest.raises(cablenav.ScenarioError) as e:
+        cablenav.plan(robocrane, "q1-q2", atlas=kept, epsilon=0.3)
+    assert e.value.field == "atlas"

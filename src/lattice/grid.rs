@@ -33,6 +33,15 @@ pub fn point_grid(s: &Scenario, spec: &LatticeSpec) -> PointGrid {
             conditions.iter().all(|c| !c.check(&cables).violated)
         })
         .collect();
+    let (component, components) = neighbour_components(spec, &feasible);
+    PointGrid { feasible, component, components }
+}
+
+/// The components of the grid points of `spec` marked `feasible`, each joined to its feasible
+/// neighbours one grid step away along an axis and to its seam twin on an axis that wraps: the
+/// component of each point (`None` where infeasible), numbered in grid order, and their count.
+pub(crate) fn neighbour_components(spec: &LatticeSpec, feasible: &[bool]) -> (Vec<Option<usize>>, usize) {
+    let points = feasible.len();
     let mut uf = UnionFind::new(points);
     let mut stride = 1;
     for (a, &n) in spec.steps.iter().enumerate() {
@@ -63,5 +72,5 @@ pub fn point_grid(s: &Scenario, spec: &LatticeSpec) -> PointGrid {
             })
         })
         .collect();
-    PointGrid { feasible, component, components: next }
+    (component, next)
 }

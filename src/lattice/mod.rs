@@ -464,6 +464,9 @@ impl Lattice {
         let g = self.graph.as_ref()?;
         let pieces = g.piece_component.len();
         let points = g.point_feasible.len();
+        let point_components: Vec<Option<usize>> = (0..points).map(|flat| self.component_at(&self.spec.point_indices(flat))).collect();
+        let grid_components = point_components.iter().flatten().collect::<std::collections::BTreeSet<_>>().len();
+        let (_, pointwise_components) = grid::neighbour_components(&self.spec, &g.point_feasible);
         Some(LatticeReport {
             axes: self.spec.axes.iter().map(|&a| self.scenario.coord_name(a)).collect(),
             ranges: self.spec.ranges.clone(),
@@ -476,7 +479,11 @@ impl Lattice {
             piece_components: self.rays.iter().enumerate().map(|(r, ray)| (0..ray.feasible.len()).map(|p| g.piece_component[g.piece_offset[r] + p]).collect()).collect(),
             grid_points: points,
             feasible_points: g.point_feasible.iter().filter(|&&f| f).count(),
-            point_components: (0..points).map(|flat| self.component_at(&self.spec.point_indices(flat))).collect(),
+            point_components,
+            grid_components,
+            sliver_components: g.components - grid_components,
+            pointwise_components,
+            missed_separations: grid_components.saturating_sub(pointwise_components),
             disagreements: g.disagreements,
             uncertain_rays: self.rays.iter().filter(|r| !r.uncertain.is_empty()).count(),
             warnings: self.scenario.warnings.iter().cloned().chain(self.spec.axes.iter().zip(&self.spec.ranges).filter_map(|(&a, &r)| self.scenario.range_warning(a, r))).collect(),
@@ -513,6 +520,18 @@ pub struct LatticeReport {
     pub feasible_points: usize,
     /// Per grid point (first axis fastest), its component or `null` where infeasible.
     pub point_components: Vec<Option<usize>>,
+    /// Components that hold a grid point feasible on every ray through it.
+    pub grid_components: usize,
+    /// Components that hold no such grid point: slivers of feasible ray pieces between grid
+    /// points (`components − grid_components`), which a point-wise grid cannot see at all.
+    pub sliver_components: usize,
+    /// The components the same grid points form joined to their feasible grid neighbours (as a
+    /// point-wise grid joins them, assuming the segment between two feasible samples feasible).
+    pub pointwise_components: usize,
+    /// Separations of grid points the point-wise grid misses: `grid_components −
+    /// pointwise_components`, each a pair of neighbouring feasible grid points whose ray segment
+    /// leaves the feasible set in between (certified by the rays).
+    pub missed_separations: usize,
     /// Grid points where the rays through them disagree (0 normally).
     pub disagreements: usize,
     /// Rays with an uncertain section.

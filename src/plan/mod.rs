@@ -215,6 +215,11 @@ pub trait PathPlanner {
     fn requery(&mut self, _scenario: &Scenario, _query: &str) -> Result<bool> {
         Ok(false)
     }
+    /// The atlas planner behind this one, if it is one (to save its atlas, `atlas::file`; a
+    /// reference, so that code using planners without files, the page's, links no file code).
+    fn as_atlas(&self) -> Option<&AtlasPlanner> {
+        None
+    }
 }
 
 /// The atlas planner behind the common interface.
@@ -258,6 +263,10 @@ impl PathPlanner for AtlasPathPlanner {
         Some(PlanResult { status: o.status, trajectory, details: Details::Atlas(o.report(&self.query, seconds)) })
     }
 
+    fn as_atlas(&self) -> Option<&AtlasPlanner> {
+        Some(&self.planner)
+    }
+
     fn requery(&mut self, scenario: &Scenario, query: &str) -> Result<bool> {
         if !self.planner.requery(scenario, query)? {
             return Ok(false);
@@ -298,26 +307,46 @@ impl PathPlanner for LatticePlanner {
 /// The planner `options.kind` for query `query` of `scenario`, ready to step.
 pub fn planner(scenario: &Scenario, query: &str, options: &PlannerOptions) -> Result<Box<dyn PathPlanner>> {
     Ok(match options.kind {
-        PlannerKind::Atlas => {
-            let mut planner = AtlasPlanner::new(scenario, query, options.atlas)?;
-            let first_h = planner.step(0).best_heuristic;
-            Box::new(AtlasPathPlanner { planner, query: query.to_string(), first_h })
-        }
+        PlannerKind::Atlas => atlas_path_planner(AtlasPlanner::new(scenario, query, options.atlas)?, query),
         PlannerKind::Lattice => Box::new(LatticePlanner::new(scenario, query, options.lattice)?),
     })
 }
 
+/// [`planner`], the atlas planner starting from the atlas file `atlas`
+/// ([`AtlasPlanner::with_atlas`]; the lattice planner keeps no atlas and ignores it).
+pub fn planner_from(scenario: &Scenario, query: &str, options: &PlannerOptions, atlas: &str) -> Result<Box<dyn PathPlanner>> {
+    match options.kind {
+        PlannerKind::Atlas => Ok(atlas_path_planner(AtlasPlanner::with_atlas(scenario, query, options.atlas, atlas)?, query)),
+        PlannerKind::Lattice => planner(scenario, query, options),
+    }
+}
+
+/// The atlas planner for `query` behind the common interface.
+fn atlas_path_planner(mut planner: AtlasPlanner, query: &str) -> Box<dyn PathPlanner> {
+    let first_h = planner.step(0).best_heuristic;
+    Box::new(AtlasPathPlanner { planner, query: query.to_string(), first_h })
+}
+
 /// Runs a planner to the end (CLI, tests); `clock` gives seconds (for the report).
 pub fn run(scenario: &Scenario, query: &str, options: &PlannerOptions, clock: &dyn Fn() -> f64) -> Result<PlanResult> {
-    let mut results = run_queries(scenario, &[query.to_string()], options, clock, &mut |_| {})?;
+    let (mut results, _) = run_queries(scenario, &[query.to_string()], options, None, clock, &mut |_| {})?;
     results.pop().ok_or_else(|| Error::new("plan", "the planner stopped without a result"))
 }
 
 /// Plans `queries` in order with one planner, each later query keeping what the planner built
 /// for the earlier ones where it can ([`PathPlanner::requery`]: the atlas of the same slice);
 /// `clock` gives seconds, each result's report has its own query's time. `progress` hears each
-/// step's progress.
-pub fn run_queries(scenario: &Scenario, queries: &[String], options: &PlannerOptions, clock: &dyn Fn() -> f64, progress: &mut dyn FnMut(&PlanProgress)) -> Result<Vec<PlanResult>> {
+/// step's progress. With `atlas` (an atlas file's text, empty when there is none yet) the first
+/// query starts from that atlas where it can ([`planner_from`]), and the atlas at the end is
+/// returned as a file (`None` without `atlas`, or from a planner that keeps none).
+pub fn run_queries(
+    scenario: &Scenario,
+    queries: &[String],
+    options: &PlannerOptions,
+    atlas: Option<&str>,
+    clock: &dyn Fn() -> f64,
+    progress: &mut dyn FnMut(&PlanProgress),
+) -> Result<(Vec<PlanResult>, Option<String>)> {
     let mut current: Option<Box<dyn PathPlanner>> = None;
     let mut results = Vec::with_capacity(queries.len());
     for query in queries {
@@ -327,7 +356,11 @@ pub fn run_queries(scenario: &Scenario, queries: &[String], options: &PlannerOpt
             None => false,
         };
         if !kept {
-            current = Some(planner(scenario, query, options)?);
+            let file = if current.is_none() { atlas.filter(|t| !t.trim().is_empty()) } else { None };
+            current = Some(match file {
+                Some(text) => planner_from(scenario, query, options, text)?,
+                None => planner(scenario, query, options)?,
+            });
         }
         let p = current.as_mut().ok_or_else(|| Error::new("plan", "no planner"))?;
         loop {
@@ -339,7 +372,8 @@ pub fn run_queries(scenario: &Scenario, queries: &[String], options: &PlannerOpt
         }
         results.push(p.result(clock() - started).ok_or_else(|| Error::new("plan", "the planner stopped without a result"))?);
     }
-    Ok(results)
+    let saved = atlas.and_then(|_| Some(current.as_ref()?.as_atlas()?.save_atlas()));
+    Ok((results, saved))
 }
 
 /// The trajectory between two consecutive path poses: linear translation and the short slerp.

@@ -4,6 +4,7 @@
 mod pointwise;
 pub mod profile;
 mod sections;
+pub mod singular;
 pub mod slice;
 pub mod timing;
 

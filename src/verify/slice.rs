@@ -57,6 +57,10 @@ pub struct SliceMap {
     /// serialised as an object `{"q1": id, …}` in file order.
     #[serde(serialize_with = "as_object")]
     pub pose_components: Vec<(String, Option<usize>)>,
+    /// The singularity curves (det J = 0) of a six-cable robot's slice, as polylines of
+    /// [first axis, second axis] points ([`super::singular`]); empty otherwise, and until
+    /// computed (`cablenav slice` computes them after the classes; the page asks a worker).
+    pub singular_curves: Vec<Vec<[f64; 2]>>,
 }
 
 fn as_object<S: serde::Serializer>(v: &[(String, Option<usize>)], ser: S) -> std::result::Result<S::Ok, S::Error> {
@@ -168,6 +172,7 @@ fn empty_map(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range:
         classes: Vec::new(),
         component: vec![None; res * res],
         pose_components: vec![],
+        singular_curves: vec![],
     })
 }
 
@@ -314,6 +319,7 @@ mod tests {
             classes,
             component: vec![None; res * res],
             pose_components: vec![],
+            singular_curves: vec![],
         }
     }
 

@@ -359,7 +359,8 @@ async function typeAndOrbit(page, text) {
 }
 
 await test('a long planning run in a worker: typing and orbiting meanwhile, frames as when idle, typed text kept', async () => {
-  // Robocrane's q1 → q2 with no coordinate fixed: the 6-D search runs for minutes
+  // Robocrane's q1 → q2 with no coordinate fixed, in paper 1's coordinates (angles not
+  // identified): the 6-D search runs for minutes
   await pickPreset(page, 'robocrane');
   const scenario = JSON.parse(await source(page));
   scenario.queries.push({ name: 'q1-q2 6-D', start: 'q1', goal: 'q2', fixed: [] });
@@ -371,6 +372,7 @@ await test('a long planning run in a worker: typing and orbiting meanwhile, fram
   await page.waitForSelector('section[data-testid="result"][data-origin="edited"]', { timeout: TIMEOUT });
   await openTab(page, 'planning');
   await page.selectOption('select[data-testid="plan-query"]', 'q1-q2 6-D');
+  await page.check('[data-testid="plan-paper"]');
   await page.waitForFunction(() => !document.querySelector('[data-testid="plan-run"]').disabled, null, { timeout: TIMEOUT });
   // The baseline: the same typing and orbiting with nothing running, before and after the run, in
   // this run of the test (the machine's load and the software WebGL's cost fall on both alike).

@@ -1,14 +1,14 @@
 //! Planning from the page: pick a planner and a query, run it with a progress bar and a Cancel
 //! button. The run happens in a Web Worker ([`crate::worker`]): the main thread only receives
-//! progress and the path, so typing, scrolling and orbiting stay smooth; Cancel terminates the
-//! worker.
+//! progress and the path, so typing, scrolling and orbiting stay smooth. The worker stays for the
+//! next run and keeps the atlas planner's atlas, which answers later queries on the same slice
+//! (new start and goal poses included); Cancel terminates the worker, and its atlas with it.
 
 use crate::state::{PlannedMotion, Parsed, Planned, Settings, Shared, PLANNERS};
 use crate::palette::Rgba;
-use crate::worker::host::{self, Running};
+use crate::worker::host::Resident;
 use crate::worker::protocol::{pose_from_wire, Job, Reply};
 use leptos::prelude::*;
-use std::cell::RefCell;
 use std::rc::Rc;
 
 /// The lattice planner's id in [`PLANNERS`].
@@ -67,14 +67,13 @@ struct Ui {
 }
 
 /// Applies a worker's reply for query `query` to the page.
-fn apply(reply: Reply, query: &str, ui: Ui) -> bool {
+fn apply(reply: Reply, query: &str, ui: Ui) {
     match reply {
         Reply::Progress { fraction, detail } => {
             ui.progress.set(fraction);
             ui.detail.set(detail);
-            false
         }
-        Reply::Planned { status, summary, path, polyline, trajectory } => {
+        Reply::Planned { status, summary, path, polyline, trajectory, atlas } => {
             ui.progress.set(1.0);
             ui.detail.set(summary);
             if !path.is_empty() {
@@ -82,18 +81,15 @@ fn apply(reply: Reply, query: &str, ui: Ui) -> bool {
                 let (start, goal) = (poses[0], poses[poses.len() - 1]);
                 let polyline = polyline.iter().map(pose_from_wire).collect();
                 let motion = trajectory.and_then(|t| motion(*t));
-                ui.planned.set(Some(Shared::new(Planned { query: query.to_string(), start, goal, poses, polyline, motion })));
+                ui.planned.set(Some(Shared::new(Planned { query: query.to_string(), start, goal, poses, polyline, motion, atlas })));
             }
             ui.state.set(RunState::Done(status));
-            true
         }
         Reply::Failed { error } => {
             ui.state.set(RunState::Failed(error));
-            true
         }
-        Reply::Sliced { .. } | Reply::LatticeRays { .. } | Reply::Profiles { .. } | Reply::Verified { .. } => {
+        Reply::Sliced { .. } | Reply::Singular { .. } | Reply::LatticeRays { .. } | Reply::Profiles { .. } | Reply::Verified { .. } => {
             ui.state.set(RunState::Failed("the worker answered a planning job with another job's reply".into()));
-            true
         }
     }
 }
@@ -113,24 +109,26 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
     // the planner is one of the page's settings (kept in the address)
     let planner_id = Memo::new(move |_| settings.with(|s| s.planner));
     let budget = RwSignal::new(20_000usize);
+    // the atlas planner's angles as plain coordinates, paper 1's way (`--identify-angles false`)
+    let paper = RwSignal::new(false);
     let ui = Ui { state: RwSignal::new(RunState::Idle), progress: RwSignal::new(0.0), detail: RwSignal::new(String::new()), planned };
-    let run: Rc<RefCell<Option<Running>>> = Rc::new(RefCell::new(None));
+    let worker = Rc::new(Resident::new());
     // each run has a generation: replies of older runs are ignored
     let generation = Rc::new(std::cell::Cell::new(0u32));
 
     let queries = move || parsed.get().0.as_ref().as_ref().map(|s| s.queries.iter().map(|q| q.name.clone()).collect::<Vec<_>>()).unwrap_or_default();
     // a new scenario stops any run and selects its first query
-    let (run1, gen1) = (run.clone(), generation.clone());
+    let (worker1, gen1) = (worker.clone(), generation.clone());
     Effect::new(move |_| {
         query.set(queries().into_iter().next().unwrap_or_default());
         gen1.set(gen1.get() + 1);
-        *run1.borrow_mut() = None;
+        worker1.forget();
         ui.state.set(RunState::Idle);
         ui.progress.set(0.0);
         ui.detail.set(String::new());
     });
 
-    let (run2, gen2) = (run.clone(), generation.clone());
+    let (worker2, gen2) = (worker.clone(), generation.clone());
     let start = move |_| {
         let Some(json) = source.try_get_untracked() else { return };
         if parsed.get_untracked().0.is_err() {
@@ -145,39 +143,32 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
             Err(e) => return ui.state.set(RunState::Failed(e)),
         };
         let q = query.get_untracked();
-        let job = Job::Plan { scenario: json, query: q.clone(), planner: planner_id.get_untracked().to_string(), max_charts: budget.get_untracked(), steps };
+        let identify_angles = !paper.get_untracked();
+        let job = Job::Plan { scenario: json, query: q.clone(), planner: planner_id.get_untracked().to_string(), max_charts: budget.get_untracked(), steps, identify_angles };
         if planned.with_untracked(Option::is_some) {
             planned.set(None);
         }
         gen2.set(gen2.get() + 1);
         let this = gen2.get();
-        let (slot, gen) = (run2.clone(), gen2.clone());
+        let gen = gen2.clone();
         let on_reply = move |reply: Reply| {
-            if gen.get() != this {
-                return;
-            }
-            if apply(reply, &q, ui) {
-                if let Some(r) = slot.borrow_mut().take() {
-                    host::retire(r);
-                }
+            if gen.get() == this {
+                apply(reply, &q, ui);
             }
         };
-        match host::start(&job, on_reply) {
+        match worker2.send(&job, on_reply) {
             Err(e) => ui.state.set(RunState::Failed(e)),
-            Ok(worker) => {
-                *run2.borrow_mut() = Some(worker);
+            Ok(()) => {
                 ui.progress.set(0.0);
                 ui.detail.set("starting the planner in a worker…".into());
                 ui.state.set(RunState::Running);
             }
         }
     };
-    let (run3, gen3) = (run.clone(), generation.clone());
+    let (worker3, gen3) = (worker.clone(), generation.clone());
     let cancel = move |_| {
         gen3.set(gen3.get() + 1);
-        if let Some(r) = run3.borrow_mut().take() {
-            r.cancel();
-        }
+        worker3.stop();
         ui.state.set(RunState::Cancelled);
         ui.detail.set("Cancelled: the planner's worker was stopped.".into());
     };
@@ -224,6 +215,11 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
                         let text = event_target_value(&ev);
                         settings.update(|s| s.steps = text.trim().to_string())
                     } />
+            </label>
+            <label title="the angles as plain coordinates, as paper 1 plans (cablenav plan --identify-angles false): the poses' angles as the scenario writes them, no wrapping">
+                <input type="checkbox" data-testid="plan-paper" disabled=lattice prop:checked=move || paper.get()
+                    on:change=move |ev| paper.set(event_target_checked(&ev)) />
+                " Paper coordinates"
             </label>
             <button data-testid="plan-run" on:click=start disabled=move || running() || queries().is_empty()>"Plan"</button>
             <button data-testid="plan-cancel" on:click=cancel disabled=move || !running()>"Cancel"</button>

@@ -24,6 +24,10 @@ pub fn label(id: &str) -> &str {
         "robocrane" => "Robocrane (NIST)",
         "robocrane-timed" => "Robocrane, timed, with mass",
         "blank" => "Blank (8-cable frame, to start from)",
+        "thesis-fig4-4" => "Thesis Fig. 4.4: paths",
+        "thesis-fig4-6-vertical" => "Thesis Fig. 4.6a: vertical",
+        "thesis-fig4-6-horizontal" => "Thesis Fig. 4.6b: horizontal",
+        "thesis-fig4-7-circle" => "Thesis Fig. 4.7: 1 m circle",
         "bmarm-x4-2" => "4-DoF arm, multi-link",
         other => other,
     }

@@ -66,6 +66,8 @@ pub struct Planned {
     /// The planned motion as a trajectory of the scenario format, verified exactly (both planners
     /// give one when they find a path).
     pub motion: Option<PlannedMotion>,
+    /// The atlas planner's charts on a 2-D slice (Fig. 6 of paper 1), drawn over the slice map.
+    pub atlas: Option<crate::worker::protocol::WireAtlas>,
 }
 
 /// A planned motion as a trajectory: shown in the strip and the 3-D view like any trajectory.

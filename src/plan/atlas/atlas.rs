@@ -81,6 +81,12 @@ impl<M: Manifold> Atlas<M> {
         Ok(atlas)
     }
 
+    /// An atlas of the charts `charts` (read back from a file, [`super::file`]), with the
+    /// expansion failures it had.
+    pub fn from_charts(manifold: M, charts: Vec<Chart>, params: AtlasParams, failures: usize) -> Atlas<M> {
+        Atlas { manifold, charts, params, failures, evaluations: AtomicUsize::new(0) }
+    }
+
     /// Adds a chart centred at `x` (a point of the manifold, residual below 1e-8, where the
     /// Jacobian has full rank) with the largest radius, linked with every chart it neighbours on
     /// its sheet: a second start in an atlas grown from another. Returns its index.

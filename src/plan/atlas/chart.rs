@@ -2,9 +2,11 @@
 //! polytope in tangent coordinates that says which part of the chart's ball no neighbour covers yet.
 
 use nalgebra::DMatrix;
+use serde::{Deserialize, Serialize};
 
 /// What the continuation may still do with a chart.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum ChartState {
     /// Its polytope may still have vertices outside its ball: it can be expanded.
     Open,
@@ -35,7 +37,7 @@ pub struct Chart {
 }
 
 /// One vertex of a polytope: its position and the faces it lies on (sorted ids).
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 struct Vertex {
     position: Vec<f64>,
     faces: Vec<u32>,
@@ -45,7 +47,7 @@ struct Vertex {
 /// on. It starts as a cube and is only ever cut by half-spaces; two vertices are joined by an edge
 /// when they share k − 1 faces (exact for simple polytopes; in degenerate cases the extra vertices
 /// this may create lie inside the polytope, so they never enlarge it).
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Polytope {
     dim: usize,
     vertices: Vec<Vertex>,
@@ -119,6 +121,36 @@ impl Polytope {
 }
 
 impl Polytope {
+    /// Its dimension k.
+    pub fn dim(&self) -> usize {
+        self.dim
+    }
+
+    /// Whether it is well formed (as read from a file): every vertex has k coordinates, all
+    /// finite, and sorted face ids below the next face's.
+    pub fn is_consistent(&self) -> bool {
+        self.vertices.iter().all(|v| {
+            v.position.len() == self.dim && v.position.iter().all(|x| x.is_finite()) && v.faces.windows(2).all(|w| w[0] < w[1]) && v.faces.iter().all(|&f| f < self.next_face)
+        })
+    }
+
+    /// The vertices' positions (tangent coordinates), in no particular order.
+    pub fn vertices(&self) -> impl Iterator<Item = &[f64]> {
+        self.vertices.iter().map(|v| v.position.as_slice())
+    }
+
+    /// Each face's vertices (indices into [`Polytope::vertices`], in no particular order): the
+    /// vertices that lie on one cutting plane or cube side, for the faces that have at least k.
+    pub fn faces(&self) -> Vec<Vec<usize>> {
+        let mut by_face: std::collections::BTreeMap<u32, Vec<usize>> = std::collections::BTreeMap::new();
+        for (i, v) in self.vertices.iter().enumerate() {
+            for &f in &v.faces {
+                by_face.entry(f).or_default().push(i);
+            }
+        }
+        by_face.into_values().filter(|vs| vs.len() >= self.dim).collect()
+    }
+
     /// The edges (outside vertex, inside vertex) that a plane with signed distances `side` crosses:
     /// pairs sharing at least k − 1 faces. Each simple vertex (k faces) gets k keys, one per
     /// (k − 1)-subset of its faces (a sum of mixed face ids); sorting the keys brings the vertices

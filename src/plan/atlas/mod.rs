@@ -17,8 +17,10 @@
 #[allow(clippy::module_inception)]
 pub mod atlas;
 pub mod chart;
+pub mod file;
 pub mod manifold;
 pub mod search;
+pub mod view;
 
 use super::{edge_trajectory, PlanStatus};
 use crate::error::{Error, Result};
@@ -34,7 +36,7 @@ use serde::Serialize;
 use std::f64::consts::PI;
 
 /// The planner's parameters.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, serde::Deserialize)]
 pub struct PlanParams {
     /// Largest chart radius r, in tangent coordinates of the manifold (pose coordinates and
     /// auxiliaries): the start chart's radius and the most any chart gets.
@@ -208,6 +210,8 @@ pub struct PlanOutcome {
     pub atlas: AtlasSummary,
     /// The re-verification of the path (empty for no path).
     pub verification: PathVerification,
+    /// The atlas drawn in the slice's coordinates, with the path's charts.
+    pub view: view::AtlasView,
 }
 
 /// One path pose as the CLI and the page print it.
@@ -241,6 +245,9 @@ pub struct PlanReport {
     pub atlas: AtlasSummary,
     /// The exact re-verification of the path.
     pub verification: PathVerification,
+    /// The charts in the slice's coordinates: centres, radii, states, polygons (2-D slice) or
+    /// polytope faces (3-D), the path's charts.
+    pub atlas_charts: view::AtlasView,
 }
 
 impl PlanOutcome {
@@ -259,6 +266,7 @@ impl PlanOutcome {
             elapsed_ms: seconds * 1000.0,
             atlas: self.atlas.clone(),
             verification: self.verification.clone(),
+            atlas_charts: self.view.clone(),
         }
     }
 }
@@ -309,6 +317,15 @@ fn equivalent_coords(q: [f64; 6]) -> [[f64; 6]; 2] {
 fn same_value(c: Coord, a: f64, b: f64) -> bool {
     let d = if c.is_angle() { wrap_angle(a - b) } else { a - b };
     d.abs() <= 1e-9
+}
+
+/// Whether two slices (each fixed coordinate's value, `None` for a free one) are the same.
+fn same_slice(a: &[Option<f64>; 6], b: &[Option<f64>; 6]) -> bool {
+    a.iter().zip(b).enumerate().all(|(c, (a, b))| match (a, b) {
+        (Some(a), Some(b)) => same_value(Coord::ALL[c], *a, *b),
+        (None, None) => true,
+        _ => false,
+    })
 }
 
 /// The two ends of a planning problem, as [`AtlasPlanner`]'s constructors resolve them.
@@ -425,6 +442,34 @@ impl AtlasPlanner {
         Ok(kept)
     }
 
+    /// Prepares planning for scenario query `query` from an atlas file (`file::save`'s text, from
+    /// [`AtlasPlanner::save_atlas`]): when the query lies on the file's slice, the search runs
+    /// on the atlas read back (as [`AtlasPlanner::requery`] does on a kept one); on another slice
+    /// a fresh atlas is started. A file made for another robot or other parameters, or a
+    /// malformed one, is an error at `atlas`.
+    pub fn with_atlas(scenario: &Scenario, query: &str, params: PlanParams, text: &str) -> Result<AtlasPlanner> {
+        params.validate()?;
+        let saved = file::read(text, scenario, params)?;
+        let ends = query_ends(scenario, query, params)?;
+        let (fixed, _) = slice(&ends, params)?;
+        if !same_slice(&fixed, &saved.fixed) {
+            return AtlasPlanner::build(scenario, ends, params);
+        }
+        let fixed = saved.fixed;
+        let manifold = CableManifold::new(scenario, fixed, params.identify_angles, params.barrier, params.min_margin, params.rotation_length)?;
+        let atlas_params = AtlasParams { radius: params.radius, min_radius: params.min_radius, epsilon: params.epsilon, delta: params.delta };
+        let search = Continuation::resume(saved.into_atlas(manifold, atlas_params)?, params.max_charts, params.heuristic_weight);
+        let [start, goal] = ends.poses;
+        let mut planner = AtlasPlanner { scenario: scenario.clone(), start, goal, params, fixed, reused: 0, verified_edges: 0, checked_poses: 0, search, check: None };
+        planner.retarget(ends)?;
+        Ok(planner)
+    }
+
+    /// The atlas built so far as a file ([`file`]), for [`AtlasPlanner::with_atlas`].
+    pub fn save_atlas(&self) -> String {
+        file::save(&self.search.atlas, &self.scenario, self.params, self.fixed)
+    }
+
     /// [`AtlasPlanner::requery`] between two poses given by their coordinates, as
     /// [`AtlasPlanner::between_coords`] takes them.
     pub fn requery_coords(&mut self, start: [f64; 6], goal: [f64; 6], fixed: &[Coord]) -> Result<bool> {
@@ -434,12 +479,7 @@ impl AtlasPlanner {
     /// The common part of the re-queries.
     fn retarget(&mut self, ends: Ends) -> Result<bool> {
         let (fixed, goal_copies) = slice(&ends, self.params)?;
-        let same = fixed.iter().zip(&self.fixed).enumerate().all(|(c, (a, b))| match (a, b) {
-            (Some(a), Some(b)) => same_value(Coord::ALL[c], *a, *b),
-            (None, None) => true,
-            _ => false,
-        });
-        if !same {
+        if !same_slice(&fixed, &self.fixed) {
             return Ok(false);
         }
         let manifold = &self.search.atlas.manifold;
@@ -562,6 +602,7 @@ impl AtlasPlanner {
                 params: self.params,
             },
             verification: check.verification.clone(),
+            view: view::view(&self.search.atlas, self.search.path_charts()),
         })
     }
 }

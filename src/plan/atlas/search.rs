@@ -122,6 +122,8 @@ pub struct Continuation<M: Manifold> {
     edges: HashMap<(usize, usize), Option<Vec<Vec<f64>>>>,
     ended: Option<Ended>,
     path: Vec<Vec<f64>>,
+    /// The charts the path runs through, start chart first.
+    path_charts: Vec<usize>,
 }
 
 impl<M: Manifold> Continuation<M> {
@@ -132,13 +134,23 @@ impl<M: Manifold> Continuation<M> {
     /// may be up to `weight` times longer; the weight orders the expansion only: `Exhausted`
     /// still means every chart reachable from the start was expanded).
     pub fn new(manifold: M, start: &[f64], goals: Vec<Vec<f64>>, params: AtlasParams, max_charts: usize, weight: f64) -> Result<Continuation<M>, String> {
-        let atlas = Atlas::new(manifold, start, params)?;
+        let mut s = Continuation::resume(Atlas::new(manifold, start, params)?, max_charts, weight);
+        s.goals = goals;
+        s.grow = true;
+        s.restart();
+        Ok(s)
+    }
+
+    /// A continuation on an atlas made before (read from a file), with no search yet:
+    /// [`Continuation::retarget`] starts one.
+    pub fn resume(atlas: Atlas<M>, max_charts: usize, weight: f64) -> Continuation<M> {
+        let start = atlas.charts[0].centre.clone();
         let mut s = Continuation {
             atlas,
-            goals,
+            goals: vec![],
             start: 0,
-            prefix: vec![start.to_vec()],
-            grow: true,
+            prefix: vec![start],
+            grow: false,
             skipped_open: false,
             max_charts: max_charts.max(1),
             weight,
@@ -156,9 +168,10 @@ impl<M: Manifold> Continuation<M> {
             edges: HashMap::new(),
             ended: None,
             path: vec![],
+            path_charts: vec![],
         };
         s.restart();
-        Ok(s)
+        s
     }
 
     /// Starts a new search from `starts` (points of the manifold that stand for one start, as the
@@ -189,6 +202,7 @@ impl<M: Manifold> Continuation<M> {
         self.goals = goals;
         self.ended = None;
         self.path.clear();
+        self.path_charts.clear();
         self.grow = false;
         self.restart();
         Ok(())
@@ -226,6 +240,12 @@ impl<M: Manifold> Continuation<M> {
     /// The dense path (points of the manifold) once [`Ended::Found`]; empty otherwise.
     pub fn path(&self) -> &[Vec<f64>] {
         &self.path
+    }
+
+    /// The charts the path runs through, from the start's chart to the goal's, once
+    /// [`Ended::Found`]; empty otherwise.
+    pub fn path_charts(&self) -> &[usize] {
+        &self.path_charts
     }
 
     /// Chart pairs removed from the graph because their dense edge could not be followed (the
@@ -384,6 +404,7 @@ impl<M: Manifold> Continuation<M> {
                     *end = p.goal;
                 }
                 self.path = p.points;
+                self.path_charts = p.chain;
                 self.ended = Some(Ended::Found);
             }
             // The goal is in the ball but its segment cannot be followed: keep searching, another

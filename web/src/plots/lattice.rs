@@ -145,8 +145,9 @@ pub fn LatticePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>
 fn LatticeView(report: LatticeResult, axes: [Coord; 2], overlay: Signal<Overlay>) -> impl IntoView {
     let range = [report.ranges[0], report.ranges[1]];
     let (x, y) = scales(range);
+    let [grid, slivers, pointwise, missed] = report.split;
     let title = format!(
-        "Ray lattice over {} × {} ({} rays, {} of {} grid points feasible, {} component(s))",
+        "Ray lattice over {} × {} ({} rays, {} of {} grid points feasible, {} component(s): {grid} holding grid points, {slivers} slivers between them; point-wise {pointwise}, {missed} separation(s) it misses)",
         report.axes[0], report.axes[1], report.rays.len(), report.feasible_points, report.grid_points, report.components
     );
     let lines = stretches(&report);

@@ -8,6 +8,7 @@ use super::geom::{polyline, ticks, Scale};
 use super::Chart;
 use crate::logic::fmt_num;
 use crate::palette::{css, Rgba};
+use crate::worker::protocol::WireAtlas;
 use crate::view3d::scene::{self, Polyline};
 use cablenav::model::{Coord, Pose};
 use cablenav::Scenario;
@@ -38,6 +39,19 @@ pub struct Overlay {
     pub joint_pieces: Vec<(Rgba, Vec<Vec<f64>>)>,
     /// A multi-link robot's path's start and goal configurations.
     pub joint_ends: [Option<Vec<f64>>; 2],
+    /// The atlas planner's charts on the planned path's 2-D slice, drawn when the section's axes
+    /// are the slice's two coordinates.
+    pub atlas: Option<WireAtlas>,
+}
+
+/// The charts of `atlas` as polygons over a section with `axes` (in map coordinates), when the
+/// atlas's slice is over those two coordinates (in either order): each chart's polygon, its
+/// centre, its state and whether the path runs through it.
+pub fn chart_polygons(atlas: &WireAtlas, axes: [Coord; 2]) -> Vec<(Vec<(f64, f64)>, (f64, f64), &str, bool)> {
+    let names = [axes[0].name(), axes[1].name()];
+    let swap = if atlas.coords == names { false } else if atlas.coords == [names[1], names[0]] { true } else { return vec![] };
+    let at = |p: &[f64; 2]| if swap { (p[1], p[0]) } else { (p[0], p[1]) };
+    atlas.charts.iter().map(|c| (c.polygon.iter().map(at).collect(), at(&c.centre), c.state.as_str(), c.on_path)).collect()
 }
 
 /// The default slice axes: the first two coordinates a query leaves free, else x and y (a
@@ -239,8 +253,10 @@ pub enum PathLook {
 
 /// The one SVG frame of a cross-section plot (`id`, `title`): `children` (the panel's content,
 /// placed in [`AREA`]) over a `background`, the area's border, the ticks of `range` on both
-/// axes with the axes' `names`, and the `overlay` (its paths, and its start and goal at every
-/// place they fall, [`slice_copies`]). Test ids: `{id}-path`, `{id}-start`, `{id}-goal`.
+/// axes with the axes' `names`, and the `overlay` (the atlas's charts when its slice is this
+/// section's, clipped to the area; its paths; its start and goal at every place they fall,
+/// [`slice_copies`]). Test ids: `{id}-chart` (with `data-state`, `data-on-path` and
+/// `data-centre`), `{id}-path`, `{id}-start`, `{id}-goal`.
 #[component]
 pub fn SectionFrame(
     id: &'static str,
@@ -275,7 +291,19 @@ pub fn SectionFrame(
             <text x=14 y=(TOP + H - BOTTOM) / 2.0 font-size="12" text-anchor="middle" fill="#1d2329" transform=format!("rotate(-90 14 {})", (TOP + H - BOTTOM) / 2.0)>{up}</text>
             {move || {
                 let o = overlay.get();
+                let clip = format!("{id}-area");
+                let charts = o.atlas.as_ref().map_or(vec![], |a| chart_polygons(a, axes).into_iter().map(|(polygon, centre, state, on_path)| {
+                    let points = polygon.iter().map(|&(a, b)| format!("{:.2},{:.2}", x.at(a), y.at(b))).collect::<Vec<_>>().join(" ");
+                    let fill = if state == "expanded" { "rgba(29,35,41,0.16)" } else { "rgba(29,35,41,0.05)" };
+                    view! {
+                        <polygon data-testid=format!("{id}-chart") data-state=state.to_string() data-on-path=on_path.to_string()
+                            data-centre=format!("{} {}", centre.0, centre.1) points=points fill=fill stroke="#1d2329"
+                            stroke-width=if on_path { "1.6" } else { "0.7" } />
+                    }
+                }).collect::<Vec<_>>());
                 view! {
+                    <clipPath id=clip.clone()><rect x=ax y=ay width=aw height=ah /></clipPath>
+                    <g clip-path=format!("url(#{clip})")>{charts}</g>
                     {o.pieces.iter().map(|piece| (piece.colour, path_points(&piece.poses, axes, range)))
                         .chain(o.joint_pieces.iter().map(|(colour, qs)| (*colour, config_points(qs, axes, range))))
                         .map(|(colour, points)| {

@@ -1,11 +1,12 @@
 //! The slice map: the core's classified grid over two chosen coordinates (the others fixed from
-//! a chosen pose) as an image, with the start, the goal and the path drawn over it. The grid is
-//! classified by several Web Workers at once, each a block of rows ([`row_blocks`]).
+//! a chosen pose) as an image, with the singularity curves (det J = 0), the start, the goal and
+//! the path drawn over it. The grid is classified by several Web Workers at once, each a block of
+//! rows ([`row_blocks`]), while one more traces the singularity curves.
 
 use super::section::{CrossSection, Overlay, PathLook, SectionControls, SectionFrame, AREA};
 use crate::state::Shared;
 use crate::worker::host::{self, row_blocks, FanOut};
-use crate::worker::protocol::{Job, Reply};
+use crate::worker::protocol::{Job, Reply, SliceSpec};
 use cablenav::model::Coord;
 use cablenav::verify::slice::{Class, SliceMap};
 use leptos::prelude::*;
@@ -44,25 +45,36 @@ pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, 
         }
         let Some(json) = source.try_get_untracked() else { return };
         let blocks = row_blocks(n, host::parallelism());
-        let jobs: Vec<Job> = blocks
-            .iter()
-            .map(|rows| Job::Slice { scenario: json.clone(), pose: pose_name.clone(), axes: [a[0].name().to_string(), a[1].name().to_string()], res: n, range: r, rows: *rows })
-            .collect();
+        let spec = SliceSpec { scenario: json, pose: pose_name.clone(), axes: [a[0].name().to_string(), a[1].name().to_string()], res: n, range: r };
+        let mut jobs: Vec<Job> = blocks.iter().map(|rows| Job::Slice { map: spec.clone(), rows: *rows }).collect();
+        jobs.push(Job::Singular { map: spec });
         let part = |reply: Reply| match reply {
             Reply::Progress { .. } => None,
-            Reply::Sliced { classes, .. } => Some(Ok(classes)),
+            Reply::Sliced { classes, .. } => Some(Ok(Part::Rows(classes))),
+            Reply::Singular { curves } => Some(Ok(Part::Curves(curves))),
             Reply::Failed { error } => Some(Err(error)),
             _ => Some(Err("the worker answered a slice job with another job's reply".to_string())),
         };
-        let workers = blocks.len();
+        let workers = jobs.len();
         let on_progress = move |_: f64, parts: usize| {
             if run.is_current(this) {
                 progress.set(Some((parts, workers)));
             }
         };
-        let on_done = move |parts: Result<Vec<Vec<Class>>, String>| {
+        let on_done = move |parts: Result<Vec<Part>, String>| {
             run.finish(this, || {
-                let result = parts.and_then(|p| cablenav::verify::slice::slice_from_classes(&s, &pose_name, a, n, r, p.concat()).map_err(|e| e.to_string()));
+                let result = parts.and_then(|parts| {
+                    let (mut classes, mut curves) = (Vec::new(), Vec::new());
+                    for p in parts {
+                        match p {
+                            Part::Rows(rows) => classes.extend(rows),
+                            Part::Curves(c) => curves = c,
+                        }
+                    }
+                    let mut map = cablenav::verify::slice::slice_from_classes(&s, &pose_name, a, n, r, classes).map_err(|e| e.to_string())?;
+                    map.singular_curves = curves;
+                    Ok(map)
+                });
                 map.set(Some(Shared::new(result)));
                 progress.set(None);
             })
@@ -100,7 +112,13 @@ pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, 
     }
 }
 
-/// The map image in the cross-section's frame, with the overlay.
+/// What one worker of a slice map gives: a block of rows' classes, or the singularity curves.
+enum Part {
+    Rows(Vec<Class>),
+    Curves(Vec<Vec<[f64; 2]>>),
+}
+
+/// The map image in the cross-section's frame, with the singularity curves and the overlay.
 #[component]
 fn SliceMapView(map: SliceMap, axes: [Coord; 2], overlay: Signal<Overlay>) -> impl IntoView {
     use base64::Engine as _;
@@ -115,9 +133,13 @@ fn SliceMapView(map: SliceMap, axes: [Coord; 2], overlay: Signal<Overlay>) -> im
         map.components
     );
     let [x, y, width, height] = AREA;
+    let (sx, sy) = super::section::scales(map.range);
+    let curves: Vec<String> = map.singular_curves.iter().map(|c| super::geom::polyline(&c.iter().map(|p| Some((sx.at(p[0]), sy.at(p[1])))).collect::<Vec<_>>())).collect();
+    let singular = !curves.is_empty();
     view! {
         <SectionFrame id="slice" title range=map.range axes names=map.axes.clone() background="none" look=PathLook::Cased overlay>
             <image href=href x=x y=y width=width height=height preserveAspectRatio="none" style="image-rendering: pixelated" />
+            {curves.into_iter().map(|d| view! { <path data-testid="slice-singular" d=d fill="none" stroke="#000000" stroke-width="1.4" /> }).collect_view()}
         </SectionFrame>
         <p class="legend">
             "Cells: " <span class="swatch" style="background: rgb(46,160,67)"></span> "feasible"
@@ -125,7 +147,11 @@ fn SliceMapView(map: SliceMap, axes: [Coord; 2], overlay: Signal<Overlay>) -> im
             <span class="swatch" style="background: rgb(208,59,59)"></span> "length out of bounds"
             <span class="swatch" style="background: rgb(0,0,0)"></span> "singular"
             <span class="swatch" style="background: rgb(230,145,30)"></span> "interference"
+            {singular.then_some(" · black curves: singular structure matrix, det J = 0")}
             " · ○ start · ■ goal (on a (φ, θ) map each orientation shows twice, as (φ, θ) and (φ + π, −θ): both are marked)"
+            {move || overlay.with(|o| o.atlas.as_ref().is_some_and(|a| !super::section::chart_polygons(a, axes).is_empty())).then_some(
+                " · grey polygons: the atlas planner's charts (paper 1, Fig. 6), darker where expanded, outlined bold along the path"
+            )}
         </p>
     }
 }

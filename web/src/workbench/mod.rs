@@ -247,7 +247,7 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
                 if !p.0.polyline.is_empty() {
                     pieces.push(Polyline { colour: crate::planning::POLYLINE, poses: p.0.polyline.clone() });
                 }
-                Overlay { start: Some(p.0.start), goal: Some(p.0.goal), pieces, ..Overlay::default() }
+                Overlay { start: Some(p.0.start), goal: Some(p.0.goal), pieces, atlas: p.0.atlas.clone(), ..Overlay::default() }
             }
             _ => {
                 let t = s.trajectories.get(traj_index(s));

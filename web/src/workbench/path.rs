@@ -159,7 +159,7 @@ mod tests {
     fn a_planned_path_is_followed_pose_by_pose() {
         let s = robocrane();
         let poses: Vec<Pose> = (0..5).map(|k| s.trajectories[0].pose_at(k as f64 / 4.0)).collect();
-        let p = Planned { query: "q1-q2".into(), start: poses[0], goal: poses[4], poses: poses.clone(), polyline: vec![], motion: None };
+        let p = Planned { query: "q1-q2".into(), start: poses[0], goal: poses[4], poses: poses.clone(), polyline: vec![], motion: None, atlas: None };
         let path = PathRef::Planned(&p);
         assert_eq!(path.pose_at(0.0), Some(poses[0]));
         assert_eq!(path.pose_at(0.5), Some(poses[2]));
@@ -180,7 +180,7 @@ mod tests {
         let name = |follow, planned: Option<&Shared<Planned>>| on_path(&parsed, planned, follow, 9, |_, p| Some(p.name()));
         assert_eq!(name(Follow::Planned, None).as_deref(), Some("trajectory “slerp q1-q2”"), "no plan: the (clamped) trajectory");
         let pose = s.trajectories[0].pose_at(0.0);
-        let plan = Shared::new(Planned { query: "q1-q2".into(), start: pose, goal: pose, poses: vec![pose], polyline: vec![], motion: None });
+        let plan = Shared::new(Planned { query: "q1-q2".into(), start: pose, goal: pose, poses: vec![pose], polyline: vec![], motion: None, atlas: None });
         assert_eq!(name(Follow::Planned, Some(&plan)).as_deref(), Some("planned path q1-q2"));
         assert_eq!(name(Follow::Trajectory, Some(&plan)).as_deref(), Some("trajectory “slerp q1-q2”"));
         let broken: Parsed = Shared::new(Err("bad".into()));

@@ -185,6 +185,19 @@ impl Resident {
         Ok(())
     }
 
+    /// Stops the worker now (the current job with it); the next job starts a new one.
+    pub fn stop(&self) {
+        let mut r = self.inner.borrow_mut();
+        r.current = r.current.wrapping_add(1);
+        r.on_reply = None;
+        r.waiting = None;
+        r.ready = false;
+        if let Some(w) = r.worker.take() {
+            w.terminate();
+        }
+        r.handlers = None;
+    }
+
     /// Drops the current job's replies from now on.
     pub fn forget(&self) {
         let mut r = self.inner.borrow_mut();

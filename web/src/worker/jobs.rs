@@ -1,7 +1,7 @@
 //! Running a [`Job`] to its end, reporting [`Reply`]s as it goes: plain Rust over the core,
 //! tested natively (the worker calls [`run`]; so do the tests).
 
-use super::protocol::{pose_to_wire, Job, LatticeResult, PlannedTrajectory, RaySections, Reply, WireReport};
+use super::protocol::{pose_to_wire, Job, LatticeResult, PlannedTrajectory, RaySections, Reply, SliceSpec, WireAtlas, WireReport};
 use cablenav::lattice::{Lattice, LatticeSpec};
 use crate::logic::fmt_num;
 use cablenav::model::Pose;
@@ -40,12 +40,14 @@ pub fn kind_of(id: &str) -> Option<PlannerKind> {
 }
 
 /// The planner `id` set up for query `query`, behind the core's common interface: the atlas with
-/// at most `max_charts` charts, the lattice with `steps` grid values per free coordinate (checked
-/// by the core, which refuses a count out of range as `cablenav plan --steps` does).
-pub fn planner(id: &str, s: &Scenario, query: &str, max_charts: usize, steps: usize) -> Result<Box<dyn PathPlanner>, String> {
+/// at most `max_charts` charts and its angles identified or not (`identify_angles`), the lattice
+/// with `steps` grid values per free coordinate (checked by the core, which refuses a count out of
+/// range as `cablenav plan --steps` does).
+pub fn planner(id: &str, s: &Scenario, query: &str, max_charts: usize, steps: usize, identify_angles: bool) -> Result<Box<dyn PathPlanner>, String> {
     let kind = kind_of(id).ok_or_else(|| format!("the planner “{id}” is not available"))?;
     let mut options = PlannerOptions::new(kind);
     options.atlas.max_charts = max_charts;
+    options.atlas.identify_angles = identify_angles;
     options.lattice.steps = steps;
     cablenav::plan::planner(s, query, &options).map_err(|e| e.to_string())
 }
@@ -57,9 +59,10 @@ pub fn summary(r: &PlanResult) -> String {
             let v = &o.verification;
             match o.status {
                 PlanStatus::Found => format!(
-                    "Path found: {} poses, {} charts. Re-verified: {} edge(s), {} infeasible and {} uncertain section(s); {} of {} poses wrench-infeasible{}.",
+                    "Path found: {} poses, {} charts{}. Re-verified: {} edge(s), {} infeasible and {} uncertain section(s); {} of {} poses wrench-infeasible{}.",
                     o.path.len(),
                     o.charts,
+                    kept(o.atlas.reused_charts),
                     v.edges,
                     v.infeasible_sections,
                     v.uncertain_sections,
@@ -67,7 +70,7 @@ pub fn summary(r: &PlanResult) -> String {
                     v.wrench_poses,
                     v.least_wrench_margin.map_or(String::new(), |m| format!(", least wrench margin {}", fmt_num(m)))
                 ),
-                PlanStatus::NoPath => format!("No path at this resolution: the start's component was exhausted after {} charts.", o.charts),
+                PlanStatus::NoPath => format!("No path at this resolution: the start's component was exhausted after {} charts{}.", o.charts, kept(o.atlas.reused_charts)),
                 PlanStatus::Budget => format!("Chart budget exhausted after {} charts: nothing is claimed.", o.charts),
                 PlanStatus::Unrepaired => "The path could not be verified feasible everywhere.".to_string(),
             }
@@ -85,6 +88,11 @@ pub fn summary(r: &PlanResult) -> String {
             _ => format!("{}.", capitalised(&l.message)),
         },
     }
+}
+
+/// How many of an atlas's charts were kept from earlier runs, for a summary ("" for none).
+fn kept(reused: usize) -> String {
+    if reused == 0 { String::new() } else { format!(" ({reused} kept from earlier runs)") }
 }
 
 fn capitalised(s: &str) -> String {
@@ -125,8 +133,9 @@ pub fn fraction(p: &PlanProgress, shown: f64) -> f64 {
 /// ms), then the final reply.
 pub fn run(job: Job, report: &mut dyn FnMut(Reply), now: fn() -> f64) {
     let last = match job {
-        Job::Plan { scenario, query, planner: id, max_charts, steps } => plan(&scenario, &query, &id, max_charts, steps, report, now),
-        Job::Slice { scenario, pose, axes, res, range, rows } => slice_rows(&scenario, &pose, &axes, res, range, rows),
+        Job::Plan { scenario, query, planner: id, max_charts, steps, identify_angles } => plan(&scenario, &query, &id, [max_charts, steps], identify_angles, report, now),
+        Job::Slice { map, rows } => slice_rows(&map, rows),
+        Job::Singular { map } => singular(&map),
         Job::LatticeRays { scenario, pose, axes, ranges, steps, rays } => {
             lattice_rays(&scenario, &pose, &axes, ranges, steps, rays, report, now)
         }
@@ -151,10 +160,31 @@ fn scenario(json: &str) -> Result<Scenario, String> {
     Scenario::from_json(json).map_err(|e| e.to_string())
 }
 
-fn plan(json: &str, query: &str, id: &str, max_charts: usize, steps: usize, report: &mut dyn FnMut(Reply), now: fn() -> f64) -> Result<Reply, String> {
+thread_local! {
+    /// The planner of the worker's last plan job and its options (planner id, chart budget,
+    /// steps, angles identified): a later job with the same options turns it to its query
+    /// ([`PathPlanner::requery`]), so the atlas planner answers from the atlas it kept.
+    static KEPT: std::cell::RefCell<Option<(String, Box<dyn PathPlanner>)>> = const { std::cell::RefCell::new(None) };
+}
+
+fn plan(json: &str, query: &str, id: &str, [max_charts, steps]: [usize; 2], identify_angles: bool, report: &mut dyn FnMut(Reply), now: fn() -> f64) -> Result<Reply, String> {
     let s = scenario(json)?;
-    let mut p = planner(id, &s, query, max_charts, steps)?;
     let started = now();
+    let options = format!("{id} {max_charts} {steps} {identify_angles}");
+    // the kept planner turned to this query, else a fresh one
+    let mut kept = KEPT.with_borrow_mut(Option::take).filter(|(key, _)| *key == options);
+    let reused = match kept.as_mut().map(|(_, p)| p.requery(&s, query)) {
+        Some(Err(e)) => {
+            KEPT.set(kept);
+            return Err(e.to_string());
+        }
+        Some(Ok(true)) => kept.map(|(_, p)| p),
+        _ => None,
+    };
+    let mut p = match reused {
+        Some(p) => p,
+        None => planner(id, &s, query, max_charts, steps, identify_angles)?,
+    };
     let mut shown = 0.0;
     let mut since = started;
     loop {
@@ -170,10 +200,15 @@ fn plan(json: &str, query: &str, id: &str, max_charts: usize, steps: usize, repo
         }
     }
     let r = p.result((now() - started) / 1000.0).ok_or("the planner ended without a result")?;
+    KEPT.set(Some((options, p)));
     let f = finished(&r);
     let trajectory = match &r.trajectory {
         Some(t) => Some(Box::new(planned_trajectory(json, t)?)),
         None => None,
+    };
+    let atlas = match &r.details {
+        Details::Atlas(report) => WireAtlas::of(&report.atlas_charts),
+        Details::Lattice(_) => None,
     };
     Ok(Reply::Planned {
         status: f.status.to_string(),
@@ -181,6 +216,7 @@ fn plan(json: &str, query: &str, id: &str, max_charts: usize, steps: usize, repo
         path: f.path.iter().map(pose_to_wire).collect(),
         polyline: f.polyline.iter().map(pose_to_wire).collect(),
         trajectory,
+        atlas,
     })
 }
 
@@ -272,12 +308,24 @@ pub fn join_lattice(s: &Scenario, spec: LatticeSpec, sections: &[RaySections]) -
     l.report().map(|r| LatticeResult::of(s, &r)).ok_or_else(|| "the lattice's graph was not built".to_string())
 }
 
-fn slice_rows(json: &str, pose: &str, axes: &[String; 2], res: usize, range: [[f64; 2]; 2], rows: [usize; 2]) -> Result<Reply, String> {
-    let s = scenario(json)?;
-    let coord = |n: &str| s.coord("axes", n).map_err(|_| format!("unknown coordinate “{n}”"));
-    let axes = [coord(&axes[0])?, coord(&axes[1])?];
-    let classes = cablenav::verify::slice::slice_rows(&s, pose, axes, res, range, rows[0]..rows[1]).map_err(|e| e.to_string())?;
+fn slice_rows(map: &SliceSpec, rows: [usize; 2]) -> Result<Reply, String> {
+    let (s, axes) = slice_axes(map)?;
+    let classes = cablenav::verify::slice::slice_rows(&s, &map.pose, axes, map.res, map.range, rows[0]..rows[1]).map_err(|e| e.to_string())?;
     Ok(Reply::Sliced { rows, classes })
+}
+
+fn singular(map: &SliceSpec) -> Result<Reply, String> {
+    let (s, axes) = slice_axes(map)?;
+    let curves = cablenav::verify::singular::singularity_curves(&s, &map.pose, axes, map.res, map.range).map_err(|e| e.to_string())?;
+    Ok(Reply::Singular { curves })
+}
+
+/// The scenario of a slice map and its two axes, by name.
+fn slice_axes(map: &SliceSpec) -> Result<(Scenario, [cablenav::model::Coord; 2]), String> {
+    let s = scenario(&map.scenario)?;
+    let coord = |n: &str| s.coord("axes", n).map_err(|_| format!("unknown coordinate “{n}”"));
+    let axes = [coord(&map.axes[0])?, coord(&map.axes[1])?];
+    Ok((s, axes))
 }
 
 #[cfg(test)]
@@ -303,8 +351,8 @@ mod tests {
     fn a_plan_job_finds_robocrane_q1_q2_and_ends_at_the_query() {
         let json = PRESETS[find("robocrane").unwrap()].json;
         let mut replies = vec![];
-        run(Job::Plan { scenario: json.into(), query: "q1-q2".into(), planner: "continuation".into(), max_charts: 20_000, steps: 7 }, &mut |r| replies.push(r), clock);
-        let Some(Reply::Planned { status, summary, path, polyline, trajectory }) = replies.last() else { panic!("{replies:?}") };
+        run(Job::Plan { scenario: json.into(), query: "q1-q2".into(), planner: "continuation".into(), max_charts: 20_000, steps: 7, identify_angles: true }, &mut |r| replies.push(r), clock);
+        let Some(Reply::Planned { status, summary, path, polyline, trajectory, .. }) = replies.last() else { panic!("{replies:?}") };
         assert!(polyline.is_empty(), "the atlas has no A* polyline");
         assert!(trajectory.as_ref().is_some_and(|t| t.report.is_ok()), "the atlas' path as a trajectory, verified");
         assert_eq!(status, "found");
@@ -320,8 +368,8 @@ mod tests {
     fn a_lattice_plan_job_sends_the_smoothed_path_and_the_polyline() {
         let json = PRESETS[find("cdpr7-box").unwrap()].json;
         let mut replies = vec![];
-        run(Job::Plan { scenario: json.into(), query: "over-box".into(), planner: "ray-lattice".into(), max_charts: 1, steps: 7 }, &mut |r| replies.push(r), clock);
-        let Some(Reply::Planned { status, summary, path, polyline, trajectory }) = replies.last() else { panic!("{replies:?}") };
+        run(Job::Plan { scenario: json.into(), query: "over-box".into(), planner: "ray-lattice".into(), max_charts: 1, steps: 7, identify_angles: true }, &mut |r| replies.push(r), clock);
+        let Some(Reply::Planned { status, summary, path, polyline, trajectory, .. }) = replies.last() else { panic!("{replies:?}") };
         assert_eq!(status, "found", "{summary}");
         // the planned trajectory, written into the scenario, verifies feasible on all of [0, 1]
         // exactly as the core verifies it there
@@ -343,7 +391,7 @@ mod tests {
         let json = PRESETS[find("cdpr7-box").unwrap()].json;
         let plan = |steps| {
             let mut replies = vec![];
-            run(Job::Plan { scenario: json.into(), query: "over-box".into(), planner: "ray-lattice".into(), max_charts: 1, steps }, &mut |r| replies.push(r), clock);
+            run(Job::Plan { scenario: json.into(), query: "over-box".into(), planner: "ray-lattice".into(), max_charts: 1, steps, identify_angles: true }, &mut |r| replies.push(r), clock);
             replies.pop().unwrap()
         };
         // the core's refusal, word for word what `cablenav plan --planner lattice --steps 1` prints
@@ -468,9 +516,9 @@ mod tests {
     fn bad_jobs_fail_with_a_reason() {
         let mut replies = vec![];
         let json = PRESETS[find("robocrane").unwrap()].json.to_string();
-        run(Job::Plan { scenario: json.clone(), query: "q1-q2".into(), planner: "nope".into(), max_charts: 1, steps: 7 }, &mut |r| replies.push(r), clock);
-        run(Job::Plan { scenario: "{".into(), query: "q".into(), planner: "continuation".into(), max_charts: 1, steps: 7 }, &mut |r| replies.push(r), clock);
-        run(Job::Slice { scenario: json.clone(), pose: "q1".into(), axes: ["x".into(), "w".into()], res: 4, range: [[0.0, 1.0]; 2], rows: [0, 4] }, &mut |r| replies.push(r), clock);
+        run(Job::Plan { scenario: json.clone(), query: "q1-q2".into(), planner: "nope".into(), max_charts: 1, steps: 7, identify_angles: true }, &mut |r| replies.push(r), clock);
+        run(Job::Plan { scenario: "{".into(), query: "q".into(), planner: "continuation".into(), max_charts: 1, steps: 7, identify_angles: true }, &mut |r| replies.push(r), clock);
+        run(Job::Slice { map: SliceSpec { scenario: json.clone(), pose: "q1".into(), axes: ["x".into(), "w".into()], res: 4, range: [[0.0, 1.0]; 2] }, rows: [0, 4] }, &mut |r| replies.push(r), clock);
         let lattice = |pose: &str, steps, rays| Job::LatticeRays { scenario: json.clone(), pose: pose.into(), axes: vec!["x".into(), "y".into()], ranges: vec![[0.0, 1.0]; 2], steps, rays };
         run(lattice("q1", 0, [0, 1]), &mut |r| replies.push(r), clock);
         run(lattice("nowhere", 3, [0, 1]), &mut |r| replies.push(r), clock);

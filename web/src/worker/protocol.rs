@@ -11,6 +11,27 @@ use cablenav::Scenario;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 use serde::{Deserialize, Serialize};
 
+/// A slice map as the page asks for it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SliceSpec {
+    /// The scenario JSON.
+    pub scenario: String,
+    /// The pose (or configuration) the other coordinates come from.
+    pub pose: String,
+    /// The two coordinates, by name.
+    pub axes: [String; 2],
+    /// Cells per side.
+    pub res: usize,
+    /// The axes' ranges, crossing bit for bit.
+    #[serde(with = "bits")]
+    pub range: [[f64; 2]; 2],
+}
+
+/// The default of [`Job::Plan`]'s `identify_angles`: angles as angles.
+fn angles_identified() -> bool {
+    true
+}
+
 /// The message a worker sends once it listens.
 pub const READY: &str = r#"{"ready":true}"#;
 
@@ -20,19 +41,22 @@ pub const READY: &str = r#"{"ready":true}"#;
 pub enum Job {
     /// Plan query `query` of the scenario JSON `scenario` with planner `planner` (an id of
     /// [`crate::state::PLANNERS`]), at most `max_charts` charts (or the planner's own budget);
-    /// the lattice planner with `steps` grid values per free coordinate (`--steps`).
-    Plan { scenario: String, query: String, planner: String, max_charts: usize, steps: usize },
-    /// The slice map over `axes` (coordinate names) of `range`, `res` cells a side, the other
-    /// coordinates from pose `pose`; rows `rows[0]..rows[1]` of it (all: `[0, res]`).
-    Slice {
+    /// the lattice planner with `steps` grid values per free coordinate (`--steps`); the atlas
+    /// planner with the angles as angles, or as plain coordinates (`identify_angles` false,
+    /// `--identify-angles false`: paper 1's way).
+    Plan {
         scenario: String,
-        pose: String,
-        axes: [String; 2],
-        res: usize,
-        #[serde(with = "bits")]
-        range: [[f64; 2]; 2],
-        rows: [usize; 2],
+        query: String,
+        planner: String,
+        max_charts: usize,
+        steps: usize,
+        #[serde(default = "angles_identified")]
+        identify_angles: bool,
     },
+    /// Rows `rows[0]..rows[1]` of the slice map `map` (all: `[0, res]`).
+    Slice { map: SliceSpec, rows: [usize; 2] },
+    /// The singularity curves (det J = 0) of the slice map `map`, sampled at its cells' corners.
+    Singular { map: SliceSpec },
     /// Rays `rays[0]..rays[1]` (in the core's `LatticeSpec::ray_at` order) of the ray lattice
     /// over `axes` (coordinate names) with `ranges` and `steps` values per axis, the other
     /// coordinates from pose `pose` (all rays: `[0, total]`; the page splits them over workers
@@ -57,8 +81,9 @@ pub enum Reply {
     Progress { fraction: f64, detail: String },
     /// A planning run ended: its status (`found`, `no_path`, `budget`, `unrepaired`), a summary,
     /// the path (when there is one) as poses (see [`pose_to_wire`]), the lattice planner's A*
-    /// polyline (empty for the atlas) and the planned trajectory with its exact verification.
-    Planned { status: String, summary: String, path: Vec<[u64; 7]>, polyline: Vec<[u64; 7]>, trajectory: Option<Box<PlannedTrajectory>> },
+    /// polyline (empty for the atlas), the planned trajectory with its exact verification, and
+    /// the atlas planner's charts on a 2-D slice.
+    Planned { status: String, summary: String, path: Vec<[u64; 7]>, polyline: Vec<[u64; 7]>, trajectory: Option<Box<PlannedTrajectory>>, atlas: Option<WireAtlas> },
     /// Rays `rays[0]..rays[1]` of a lattice: each ray's feasible and uncertain intervals, as bits
     /// (so the join builds the very graph the core builds).
     LatticeRays { rays: [usize; 2], sections: Vec<RaySections> },
@@ -68,8 +93,43 @@ pub enum Reply {
     Verified { report: Result<WireReport, String>, ms: f64 },
     /// A slice map's rows `rows[0]..rows[1]`: their cells' classes, row-major.
     Sliced { rows: [usize; 2], classes: Vec<Class> },
+    /// A slice's singularity curves, polylines of [first axis, second axis] points.
+    Singular { curves: Vec<Vec<[f64; 2]>> },
     /// The job could not run; why.
     Failed { error: String },
+}
+
+/// The atlas planner's charts on a 2-D slice, as the page draws them over the slice map (the
+/// core's `plan::atlas::view::AtlasView` with its polygons).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct WireAtlas {
+    /// The slice's two coordinates, by name.
+    pub coords: [String; 2],
+    /// The charts.
+    pub charts: Vec<WireChart>,
+}
+
+/// One chart of a [`WireAtlas`].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct WireChart {
+    /// Its centre.
+    pub centre: [f64; 2],
+    /// Its polytope, a convex polygon in cyclic order.
+    pub polygon: Vec<[f64; 2]>,
+    /// `expanded`, `open`, `out_of_bounds` or `blocked`.
+    pub state: String,
+    /// Whether the path runs through it.
+    pub on_path: bool,
+}
+
+impl WireAtlas {
+    /// The charts of a 2-D slice's atlas; `None` for another dimension.
+    pub fn of(view: &cablenav::plan::atlas::view::AtlasView) -> Option<WireAtlas> {
+        let coords: [String; 2] = view.coords.clone().try_into().ok()?;
+        let pair = |v: &[f64]| [v[0], v[1]];
+        let charts = view.charts.iter().map(|c| WireChart { centre: pair(&c.centre), polygon: c.polygon.iter().map(|p| pair(p)).collect(), state: c.state.to_string(), on_path: c.on_path }).collect();
+        Some(WireAtlas { coords, charts })
+    }
 }
 
 /// A planned trajectory as the page keeps it: the scenario with the trajectory added under a new
@@ -272,6 +332,10 @@ pub struct LatticeResult {
     pub feasible_points: usize,
     /// Rays with an uncertain section.
     pub uncertain_rays: usize,
+    /// Components holding grid points, slivers between grid points, the point-wise grid's
+    /// components of the same points and the separations it misses (the core's
+    /// `LatticeReport` fields of those names).
+    pub split: [usize; 4],
 }
 
 /// One ray of a [`LatticeResult`].
@@ -324,6 +388,7 @@ impl LatticeResult {
             grid_points: r.grid_points,
             feasible_points: r.feasible_points,
             uncertain_rays: r.uncertain_rays,
+            split: [r.grid_components, r.sliver_components, r.pointwise_components, r.missed_separations],
         }
     }
 }
@@ -392,15 +457,18 @@ mod tests {
 
     #[test]
     fn jobs_and_replies_round_trip_as_json() {
-        let job = Job::Plan { scenario: "{}".into(), query: "q1-q2".into(), planner: "continuation".into(), max_charts: 7, steps: 7 };
+        let job = Job::Plan { scenario: "{}".into(), query: "q1-q2".into(), planner: "continuation".into(), max_charts: 7, steps: 7, identify_angles: false };
         let text = encode_job(3, &job);
         assert!(text.contains(r#""kind":"plan""#), "{text}");
         assert_eq!(decode_job(&text), Ok(Envelope { id: 3, body: job }));
         let reply = Reply::Sliced { rows: [0, 2], classes: vec![Class::Feasible, Class::Singular] };
         assert_eq!(decode_reply(&encode_reply(9, &reply)), Some(Ok(Envelope { id: 9, body: reply })));
         assert_eq!(decode_reply(READY), None);
-        let slice = Job::Slice { scenario: "{}".into(), pose: "q1".into(), axes: ["x".into(), "y".into()], res: 4, range: [[0.1, 2.0 / 3.0], [-1e-300, 7.0]], rows: [0, 4] };
+        let map = SliceSpec { scenario: "{}".into(), pose: "q1".into(), axes: ["x".into(), "y".into()], res: 4, range: [[0.1, 2.0 / 3.0], [-1e-300, 7.0]] };
+        let slice = Job::Slice { map: map.clone(), rows: [0, 4] };
         assert_eq!(decode_job(&encode_job(1, &slice)).unwrap().body, slice, "the range crosses bit for bit");
+        let singular = Job::Singular { map };
+        assert_eq!(decode_job(&encode_job(2, &singular)).unwrap().body, singular);
         assert!(decode_job(r#"{"id":1,"body":{"kind":"dance"}}"#).is_err());
     }
 
