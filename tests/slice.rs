@@ -137,7 +137,13 @@ fn singularity_curves_are_where_det_j_changes_sign() {
     // isolated ones are required
     let (mut changes, mut missed) = (0, vec![]);
     for j in 0..=fine {
-        let row: Vec<f64> = (0..fine).filter(|&i| samples[j][i] * samples[j][i + 1] < 0.0).map(|i| 0.5 * (step(0, i) + step(0, i + 1))).collect();
+        // a sign change between samples above the rounding noise (det J vanishes identically
+        // along θ = ±π, where only noise changes sign)
+        let signed = |d: f64| d.abs() > 1e-12 * scale;
+        let row: Vec<f64> = (0..fine)
+            .filter(|&i| samples[j][i] * samples[j][i + 1] < 0.0 && signed(samples[j][i]) && signed(samples[j][i + 1]))
+            .map(|i| 0.5 * (step(0, i) + step(0, i + 1)))
+            .collect();
         for (k, &u) in row.iter().enumerate() {
             let paired = row.iter().enumerate().any(|(l, &w)| l != k && (w - u).abs() <= cell);
             if paired {
@@ -151,8 +157,11 @@ fn singularity_curves_are_where_det_j_changes_sign() {
     }
     assert!(changes > 50, "{changes} isolated sign changes");
     assert!(missed.is_empty(), "{} of {changes} sign changes of det J far from every curve: {:?}", missed.len(), &missed[..missed.len().min(5)]);
-    // curves, not dots: the drops of Fig. 5 run across many cells
+    // curves, not dots: the drops of Fig. 5 run across many cells; none along θ = ±π, where
+    // det J vanishes identically (the platform upside down)
     assert!(curves.iter().filter(|c| c.len() > 20).count() >= 4);
+    assert!(curves.iter().all(|c| c.iter().any(|p| (p[1].abs() - PI).abs() > 1e-9)), "a curve along θ = ±π");
+    assert!(det(0.3, PI).abs() <= 1e-12 * scale && det(-2.0, -PI).abs() <= 1e-12 * scale);
     let tree = Scenario::from_json(include_str!("../static/scenarios/cdpr7-tree.json")).unwrap();
     let pose = tree.poses[0].0.clone();
     assert!(singularity_curves(&tree, &pose, [Coord::X, Coord::Y], 8, [[0.5, 3.5], [0.5, 3.5]]).unwrap().is_empty());

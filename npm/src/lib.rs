@@ -155,6 +155,13 @@ export interface PlanReport {
   };
 }
 
+/** What `plan` returns when given an atlas file's text: the reports and the atlas at the end. */
+export interface PlanWithAtlas {
+  reports: PlanReport[];
+  /** The atlas file (format cablenav-atlas/1), to pass to the next call. */
+  atlas: string;
+}
+
 /** What `lattice` returns (`cablenav lattice --json`); grid points first axis fastest. */
 export interface LatticeReport {
   axes: Coord[];
@@ -382,7 +389,7 @@ fn lattice_request(pose: String, axes: &[String], ranges: &[f64], steps: &JsValu
 /// none yet), starts the atlas planner from that atlas, and the result is then
 /// `{ reports, atlas }`: the reports (an array) and the atlas at the end, to keep for the next
 /// call. Runs to the end: call it in a Web Worker on a page.
-#[wasm_bindgen(unchecked_return_type = "PlanReport | LatticePlanReport | (PlanReport | LatticePlanReport)[] | { reports: PlanReport[]; atlas: string }")]
+#[wasm_bindgen(unchecked_return_type = "PlanReport | LatticePlanReport | PlanReport[] | LatticePlanReport[] | PlanWithAtlas")]
 #[allow(clippy::too_many_arguments)]
 pub fn plan(
     #[wasm_bindgen(unchecked_param_type = "ScenarioInput")] scenario: JsValue,

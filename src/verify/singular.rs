@@ -9,7 +9,10 @@
 //! and the segments are chained into polylines. The moment point does not matter: moving it
 //! multiplies J by a matrix of determinant 1. Only sign changes are seen: a curve where det J
 //! touches zero without crossing it, or two crossings within one cell edge, is missed at this
-//! resolution. Robots with other than six cables have no such curves (their J is not square).
+//! resolution; so is a line along which det J vanishes identically (Robocrane's θ = ±π, the
+//! platform upside down: determinants below [`ZERO`] of the grid's largest have no sign, so its
+//! rounding noise draws nothing). Robots with other than six cables have no such curves (their J
+//! is not square).
 
 use crate::error::Result;
 use crate::model::{Coord, Pose};
@@ -19,6 +22,9 @@ use std::collections::HashMap;
 
 /// Bisection stops when the bracket is this fraction of a cell edge.
 const ROOT_TOL: f64 = 1e-12;
+
+/// Determinants below this fraction of the largest on the grid have no sign.
+const ZERO: f64 = 1e-12;
 
 /// The singularity curves (det J = 0) of the slice of `s` through pose `pose_name` over `axes`
 /// and `range`, sampled at the corners of `res` × `res` cells: polylines of points
@@ -41,7 +47,11 @@ pub fn singularity_curves(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: 
     let n = res + 1;
     let corners: Vec<f64> = crate::parallel::map_with(n, || (), |_, j| (0..n).map(|i| at(coord(0, i as f64), coord(1, j as f64))).collect::<Vec<_>>()).concat();
     let det = |i: usize, j: usize| corners[j * n + i];
-    let sign = |d: f64| if d > 0.0 { 1 } else if d < 0.0 { -1 } else { 0 };
+    // below 1e-12 of the largest |det J| on the grid a determinant counts as zero, without a
+    // sign: where det J vanishes along a whole line (Robocrane at θ = ±π, upside down) its
+    // rounding noise would otherwise trace curves along it
+    let zero = ZERO * corners.iter().filter(|d| d.is_finite()).fold(0.0f64, |a, d| a.max(d.abs()));
+    let sign = |d: f64| if d > zero { 1 } else if d < -zero { -1 } else { 0 };
     // the zero on an edge between corners (i0, j0) and (i1, j1), cached by edge
     let mut roots: HashMap<(usize, usize, bool), [f64; 2]> = HashMap::new();
     let mut root = |i: usize, j: usize, horizontal: bool| -> [f64; 2] {

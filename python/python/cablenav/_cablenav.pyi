@@ -1,7 +1,7 @@
 """Type stubs of the native module (python/src/lib.rs); see the docstrings there."""
 
 import os
-from typing import Any, Dict, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 Scenario = Union[Dict[str, Any], str, "os.PathLike[str]"]
 """A scenario: a dict, a JSON string (starting with ``{``) or a path to a JSON file."""
@@ -61,7 +61,7 @@ def lattice(
 
 def plan(
     scenario: Scenario,
-    query: str,
+    query: Union[str, List[str]],
     *,
     planner: str = "atlas",
     steps: Optional[int] = None,
@@ -70,7 +70,12 @@ def plan(
     min_radius: Optional[float] = None,
     heuristic_weight: Optional[float] = None,
     epsilon: Optional[float] = None,
-) -> Report:
-    """A feasible path for a query: ``planner`` "atlas" (Henderson atlas + A*, with ``max_charts``,
-    ``radius``, ``min_radius``, ``heuristic_weight``, ``epsilon``) or "lattice" (ray lattice with
-    ``steps`` grid values per free coordinate + A* + Bézier), re-verified exactly."""
+    identify_angles: Optional[bool] = None,
+    atlas: Optional[Union[str, "os.PathLike[str]"]] = None,
+) -> Union[Report, List[Report]]:
+    """A feasible path for a query (a list of queries: one report each, in order, later ones on
+    the atlas of earlier ones on the same slice): ``planner`` "atlas" (Henderson atlas + A*, with
+    ``max_charts``, ``radius``, ``min_radius``, ``heuristic_weight``, ``epsilon``,
+    ``identify_angles`` — False: paper 1's plain coordinates — and ``atlas``, a file to start
+    from and save the atlas to) or "lattice" (ray lattice with ``steps`` grid values per free
+    coordinate + A* + Bézier), re-verified exactly."""

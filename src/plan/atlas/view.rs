@@ -59,7 +59,7 @@ pub fn view(atlas: &Atlas<CableManifold>, path_charts: &[usize]) -> AtlasView {
             };
             let vertices: Vec<&[f64]> = chart.polytope.vertices().collect();
             let (polygon, faces) = match k {
-                2 => (cyclic(&vertices.iter().map(|v| [v[0], v[1], 0.0]).collect::<Vec<_>>(), Vector3::z()).into_iter().map(|j| to_slice(vertices[j])).collect(), vec![]),
+                2 => (from_lowest(cyclic(&vertices.iter().map(|v| [v[0], v[1], 0.0]).collect::<Vec<_>>(), Vector3::z()).into_iter().map(|j| to_slice(vertices[j])).collect()), vec![]),
                 3 => {
                     let faces = chart
                         .polytope
@@ -68,7 +68,7 @@ pub fn view(atlas: &Atlas<CableManifold>, path_charts: &[usize]) -> AtlasView {
                         .filter_map(|face| {
                             let points: Vec<[f64; 3]> = face.iter().map(|&j| [vertices[j][0], vertices[j][1], vertices[j][2]]).collect();
                             let normal = plane_normal(&points)?;
-                            Some(cyclic(&points, normal).into_iter().map(|j| to_slice(vertices[face[j]])).collect())
+                            Some(from_lowest(cyclic(&points, normal).into_iter().map(|j| to_slice(vertices[face[j]])).collect()))
                         })
                         .collect();
                     (vec![], faces)
@@ -85,6 +85,17 @@ pub fn view(atlas: &Atlas<CableManifold>, path_charts: &[usize]) -> AtlasView {
         })
         .collect();
     AtlasView { coords, charts }
+}
+
+/// A polygon's vertices in the same cyclic order, starting from its lowest vertex (least first
+/// coordinate, ties within 1e-9 broken by the next): the same start on every platform, although
+/// the angles that ordered them may differ in their last bits.
+fn from_lowest(mut polygon: Vec<Vec<f64>>) -> Vec<Vec<f64>> {
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * (1.0 + a.abs().max(b.abs()));
+    let lower = |p: &[f64], q: &[f64]| p.iter().zip(q).find(|(a, b)| !close(**a, **b)).is_some_and(|(a, b)| a < b);
+    let start = (0..polygon.len()).fold(0, |best, k| if lower(&polygon[k], &polygon[best]) { k } else { best });
+    polygon.rotate_left(start);
+    polygon
 }
 
 /// The order of coplanar `points` (normal `normal`) around their centroid.
