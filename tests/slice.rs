@@ -106,7 +106,7 @@ fn a_map_classified_in_row_blocks_is_the_whole_map() {
 fn singularity_curves_are_where_det_j_changes_sign() {
     use nalgebra::{Matrix6, Vector6};
     let s = Scenario::from_json(ROBOCRANE).unwrap();
-    let (res, fine) = if cfg!(target_arch = "wasm32") { (36, 90) } else { (72, 300) };
+    let (res, fine) = (72, 300);
     let range = [[-PI, PI], [-PI, PI]];
     let curves = singularity_curves(&s, "q1", [Coord::Phi, Coord::Theta], res, range).unwrap();
     let fixed = s.config("q1").unwrap();
