@@ -270,7 +270,22 @@ impl Output {
             Output::Lattice(r) => to_json(r),
             Output::LatticePlan(r, _) => to_json(r),
             Output::Plans(outputs) => {
-                let each: Vec<serde_json::Value> = outputs.iter().map(|o| serde_json::from_str(&o.json()).unwrap_or(serde_json::Value::Null)).collect();
+                // each report as its own type serialises it (a round trip through
+                // `serde_json::Value` would sort the fields where `preserve_order` is off)
+                #[derive(Serialize)]
+                #[serde(untagged)]
+                enum Each<'a> {
+                    Atlas(&'a PlanReport),
+                    Lattice(&'a LatticePlanReport),
+                }
+                let each: Vec<Each> = outputs
+                    .iter()
+                    .filter_map(|o| match o {
+                        Output::Plan(r, ..) => Some(Each::Atlas(r)),
+                        Output::LatticePlan(r, _) => Some(Each::Lattice(r)),
+                        _ => None,
+                    })
+                    .collect();
                 to_json(&each)
             }
         };
