@@ -178,8 +178,8 @@ LOAD_AFTER=$(cut -d' ' -f1-3 /proc/loadavg)
 grep -h '^BENCH ' "$TMP/before.txt" "$TMP/native.txt" "$TMP/wasm.txt" > "$TMP/all.txt"
 n_native=$(grep '^BENCH native ' "$TMP/all.txt" | grep -vc ' lattice/' || true)
 n_wasm=$(grep '^BENCH wasm ' "$TMP/all.txt" | grep -vc ' lattice/' || true)
-if [ "$n_native" -ne 32 ] || [ "$n_wasm" -ne 32 ]; then
-  say "expected 32 native and 32 wasm results, got $n_native and $n_wasm:"
+if [ "$n_native" -ne 43 ] || [ "$n_wasm" -ne 43 ]; then
+  say "expected 43 native and 43 wasm results, got $n_native and $n_wasm:"
   cat "$TMP/native.txt" "$TMP/wasm.txt" >&2
   exit 1
 fi
