@@ -378,8 +378,7 @@ fn slice(ends: &Ends, params: PlanParams) -> Result<([Option<f64>; 6], Vec<[f64;
     for c in fixed_coords.iter() {
         fixed[c.index()] = Some(start_coords[c.index()]);
     }
-    let candidates = if params.identify_angles { equivalent_coords(*goal_coords).to_vec() } else { vec![*goal_coords] };
-    let goal_copies: Vec<[f64; 6]> = candidates.into_iter().filter(|g| fixed_coords.iter().all(|&c| same_value(c, g[c.index()], start_coords[c.index()]))).collect();
+    let goal_copies = on_slice(*goal_coords, fixed_coords, start_coords, params.identify_angles);
     if goal_copies.is_empty() {
         let g = goal_coords;
         let differ: Vec<String> = fixed_coords
@@ -390,6 +389,14 @@ fn slice(ends: &Ends, params: PlanParams) -> Result<([Option<f64>; 6], Vec<[f64;
         return Err(Error::new(format!("{field}.goal"), format!("goal pose \"{}\" is not on the start's slice: {}", names[1], differ.join(", "))));
     }
     Ok((fixed, goal_copies))
+}
+
+/// The coordinates `q` stands for — itself, and with `identify_angles` also the other
+/// tilt-and-torsion triple of its rotation — that lie on the slice through `start` with
+/// `fixed_coords` fixed.
+fn on_slice(q: [f64; 6], fixed_coords: &[Coord], start: &[f64; 6], identify_angles: bool) -> Vec<[f64; 6]> {
+    let candidates = if identify_angles { equivalent_coords(q).to_vec() } else { vec![q] };
+    candidates.into_iter().filter(|g| fixed_coords.iter().all(|&c| same_value(c, g[c.index()], start[c.index()]))).collect()
 }
 
 /// The start's point of the manifold and the goal copies' points, each checked: wrench-feasible,
@@ -458,7 +465,7 @@ impl AtlasPlanner {
         let fixed = saved.fixed;
         let manifold = CableManifold::new(scenario, fixed, params.identify_angles, params.barrier, params.min_margin, params.rotation_length)?;
         let atlas_params = AtlasParams { radius: params.radius, min_radius: params.min_radius, epsilon: params.epsilon, delta: params.delta };
-        let search = Continuation::resume(saved.into_atlas(manifold, atlas_params)?, params.max_charts, params.heuristic_weight);
+        let search = Continuation::resume(saved.into_atlas(manifold, atlas_params)?, vec![], params.max_charts, params.heuristic_weight);
         let [start, goal] = ends.poses;
         let mut planner = AtlasPlanner { scenario: scenario.clone(), start, goal, params, fixed, reused: 0, verified_edges: 0, checked_poses: 0, search, check: None };
         planner.retarget(ends)?;
@@ -485,10 +492,9 @@ impl AtlasPlanner {
         let manifold = &self.search.atlas.manifold;
         let (start_x, goals) = lift_ends(manifold, &ends, &goal_copies, self.params)?;
         // the start's other tilt-and-torsion triple may be the one the atlas holds
-        let copies = if self.params.identify_angles { equivalent_coords(ends.coords[0]).to_vec() } else { vec![] };
-        let on_slice = |c: &[f64; 6]| fixed.iter().enumerate().all(|(k, v)| v.is_none_or(|v| same_value(Coord::ALL[k], c[k], v)));
+        let copies = on_slice(ends.coords[0], &ends.fixed, &ends.coords[0], self.params.identify_angles);
         let mut starts = vec![start_x];
-        starts.extend(copies.iter().skip(1).filter(|c| on_slice(c)).filter_map(|c| manifold.lift(c).ok()));
+        starts.extend(copies.iter().skip(1).filter_map(|c| manifold.lift(c).ok()));
         self.reused = self.search.atlas.charts.len();
         self.search.retarget(&starts, goals).map_err(|why| Error::new(format!("{}.start", ends.field), format!("no chart can be made at the start pose \"{}\": {why}", ends.names[0])))?;
         (self.start, self.goal) = (ends.poses[0], ends.poses[1]);

@@ -134,20 +134,18 @@ impl<M: Manifold> Continuation<M> {
     /// may be up to `weight` times longer; the weight orders the expansion only: `Exhausted`
     /// still means every chart reachable from the start was expanded).
     pub fn new(manifold: M, start: &[f64], goals: Vec<Vec<f64>>, params: AtlasParams, max_charts: usize, weight: f64) -> Result<Continuation<M>, String> {
-        let mut s = Continuation::resume(Atlas::new(manifold, start, params)?, max_charts, weight);
-        s.goals = goals;
+        let mut s = Continuation::resume(Atlas::new(manifold, start, params)?, goals, max_charts, weight);
         s.grow = true;
-        s.restart();
         Ok(s)
     }
 
-    /// A continuation on an atlas made before (read from a file), with no search yet:
-    /// [`Continuation::retarget`] starts one.
-    pub fn resume(atlas: Atlas<M>, max_charts: usize, weight: f64) -> Continuation<M> {
+    /// A continuation on an atlas made before (read from a file), searching from its chart 0 to
+    /// `goals` over the charts there are; [`Continuation::retarget`] gives it its own start.
+    pub fn resume(atlas: Atlas<M>, goals: Vec<Vec<f64>>, max_charts: usize, weight: f64) -> Continuation<M> {
         let start = atlas.charts[0].centre.clone();
         let mut s = Continuation {
             atlas,
-            goals: vec![],
+            goals,
             start: 0,
             prefix: vec![start],
             grow: false,
