@@ -1,6 +1,6 @@
 # Turns the `BENCH <platform> lattice/...` lines (examples/bench/lattice.rs) into the "Ray lattice"
 # section of docs/benchmarks.md, next to the thesis' Table 3.2. Variables: date, load_before,
-# load_after, commit, native_cmd, wasm_cmd.
+# load_after, commit, native_cmd, wasm_cmd, threads.
 function s(us) { return (us >= 1e6) ? sprintf("%.2f s", us / 1e6) : sprintf("%.1f ms", us / 1000) }
 function r(a, b) { return (a > 0 && b > 0) ? sprintf("%.1f×", a / b) : "–" }
 function cell(p, c) { return ((p, c) in med) ? s(med[p, c]) : "not run" }
@@ -21,15 +21,17 @@ END {
   print "The thesis' constant-orientation workspace: x ∈ [0.2, 3.8], y ∈ [1.1, 2.9], z ∈ [0.3, 3.7],"
   print "identity orientation, n values per axis; case 1 cable–cable only (`cdpr7.json`), case 2 + the box"
   print "(`cdpr7-box.json`), case 3 + the tree (`cdpr7-tree.json`). \"rays\": `Lattice::build` (3n² exact rays,"
-  print "the graph and its components); \"points\": `point_grid` (n³ poses checked, components by neighbours)."
+  print "the graph and its components) on one thread, and `Lattice::build_parallel` (the rays spread over"
+  print "the machine's " threads " cores, as `cablenav lattice` runs them); \"points\": `point_grid` (n³ poses checked,"
+  print "components by neighbours). \"× thesis\": the thesis' RBM time over ours, one thread / all cores."
   print "Median of 3 runs after one untimed run. Measured " date ", commit " commit "; load average before " load_before ", after " load_after
   print "(a shared 2-core VM: a load average above 1 means other work ran at the same time and inflated the times)."
   print ""
   print "    " native_cmd
   print "    " wasm_cmd
   print ""
-  print "| n | case | rays, native | points, native | points / rays | rays, wasm | points, wasm | thesis RBM (MATLAB) | thesis point-wise | result (rays) |"
-  print "|---:|---|---:|---:|---:|---:|---:|---:|---:|---|"
+  print "| n | case | rays, 1 thread | rays, " threads " threads | points, native | points / rays | rays, wasm | points, wasm | thesis RBM (MATLAB) | × thesis | thesis point-wise | result (rays) |"
+  print "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
   split("87.0698 187.0063 330.3755", t1, " "); split("255.5473 575.4497 1011.9294", t2, " "); split("111.3884 248.1464 465.7290", t3, " ")
   split("89.1323 288.4506 677.2744", pw, " ")
   k = 0
@@ -37,11 +39,13 @@ END {
     k++
     split("case1-cables case2-box case3-tree", cs, " ")
     for (i = 1; i <= 3; i++) {
-      c = cs[i]; rc = "lattice/" c "/rays-" n; pc = "lattice/" c "/points-" n
+      c = cs[i]; rc = "lattice/" c "/rays-" n; pc = "lattice/" c "/points-" n; qc = "lattice/" c "/rays-parallel-" n
       thesis = (i == 1) ? t1[k] : (i == 2) ? t2[k] : t3[k]
       tp = (i == 1) ? pw[k] " s" : "–"
       res = summ[rc]; gsub(";", ", ", res); gsub("=", " ", res)
-      printf "| %d | %s | %s | %s | %s | %s | %s | %s s | %s | %s |\n", n, c, cell("native", rc), cell("native", pc), r(med["native", pc], med["native", rc]), cell("wasm", rc), cell("wasm", pc), thesis, tp, res
+      speedup = "–"
+      if ((("native", rc) in med) && (("native", qc) in med)) speedup = sprintf("%.0f× / %.0f×", thesis * 1e6 / med["native", rc], thesis * 1e6 / med["native", qc])
+      printf "| %d | %s | %s | %s | %s | %s | %s | %s | %s s | %s | %s | %s |\n", n, c, cell("native", rc), cell("native", qc), cell("native", pc), r(med["native", pc], med["native", rc]), cell("wasm", rc), cell("wasm", pc), thesis, speedup, tp, res
     }
   }
   print ""

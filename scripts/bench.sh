@@ -44,7 +44,7 @@ LATTICE_WASM_CMD="CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-r
 lattice_section() {
   awk -v date="$(date -u '+%Y-%m-%d %H:%M UTC')" -v load_before="$2" -v load_after="$3" \
       -v commit="$(git rev-parse --short HEAD 2>/dev/null || echo unknown)" \
-      -v native_cmd="$LATTICE_NATIVE_CMD" -v wasm_cmd="$LATTICE_WASM_CMD" \
+      -v native_cmd="$LATTICE_NATIVE_CMD" -v wasm_cmd="$LATTICE_WASM_CMD" -v threads="$(nproc)" \
       -f scripts/bench-lattice-section.awk "$1"
 }
 # The ray lattice cases, native then wasm, into "$1".

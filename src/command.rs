@@ -191,15 +191,13 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
         Request::Lattice { pose, axes, ranges, steps } => {
             let axes = axes.iter().map(|a| scenario.coord("--axes", a.trim())).collect::<Result<Vec<Coord>>>()?;
             let spec = LatticeSpec::new(axes, ranges.clone(), steps.clone(), scenario.config(pose)?)?;
-            let mut lattice = Lattice::new(scenario, spec);
-            loop {
-                let p = lattice.step(16);
-                if p.done {
-                    break;
-                }
-                progress(Progress { stage: "rays", done: p.rays_done, total: p.rays_total });
-            }
-            Output::Lattice(lattice.report().ok_or_else(|| Error::new("lattice", "the lattice stopped before its end"))?)
+            let total = spec.ray_count() as usize;
+            let report = counted("rays", total, progress, |done| {
+                let mut lattice = Lattice::new(scenario, spec);
+                lattice.finish(done);
+                lattice.report()
+            });
+            Output::Lattice(report.ok_or_else(|| Error::new("lattice", "the lattice stopped before its end"))?)
         }
         Request::Plan { .. } if scenario.robot.chain.is_some() => {
             return Err(Error::new("plan", "planning for multi-link robots is not available yet (docs/multilink.md); `lattice --axes …` shows the connected regions"));

@@ -411,8 +411,7 @@ fn the_path_across_the_gap_has_an_infeasible_section() {
 fn cross_section(s: &Scenario, kind: Option<Kind>) -> (usize, usize) {
     let axes = vec![s.coord("--axes", "alpha").unwrap(), s.coord("--axes", "beta").unwrap()];
     let spec = LatticeSpec::new(axes, vec![[-PI / 4.0, PI / 4.0]; 2], vec![10], s.config("fig312").unwrap()).unwrap();
-    let conditions = for_scenario(s).into_iter().filter(|c| kind.is_none_or(|k| c.kind() == k)).collect();
-    let mut lattice = Lattice::with_conditions(s, spec, conditions);
+    let mut lattice = Lattice::of_kind(s, spec, kind);
     while !lattice.step(64).done {}
     let r = lattice.report().unwrap();
     assert_eq!(r.disagreements, 0);

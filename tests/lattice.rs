@@ -64,6 +64,22 @@ fn fig_3_10_ray_at_z_0_8667_starts_at_2_002() {
 }
 
 #[test]
+fn rays_spread_over_threads_equal_the_rays_in_order() {
+    let s = Scenario::from_json(CDPR7_TREE).unwrap();
+    let spec = LatticeSpec::new(vec![Coord::X, Coord::Y, Coord::Z], vec![[0.2, 3.8], [1.1, 2.9], [0.3, 3.7]], vec![6], [0.0; 6]).unwrap();
+    let one = Lattice::build(&s, spec.clone());
+    // half the rays on this thread, the rest spread over threads
+    let mut split = Lattice::new(&s, spec.clone());
+    split.step(54);
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    assert!(split.finish(&done).done);
+    assert_eq!(done.load(std::sync::atomic::Ordering::Relaxed), 54);
+    assert_eq!(split.rays, one.rays);
+    assert_eq!(split.graph(), one.graph());
+    assert_eq!(Lattice::build_parallel(&s, spec).rays, one.rays);
+}
+
+#[test]
 fn grid_statuses_equal_check_and_the_point_wise_grid() {
     for text in [CDPR7_BOX, CDPR7_TREE] {
         let s = Scenario::from_json(text).unwrap();

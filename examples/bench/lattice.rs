@@ -56,6 +56,13 @@ pub fn run_lattice(platform: &str, filter: &str, now: &dyn Fn() -> f64, out: &mu
                 let r = l.report().expect("built");
                 format!("rays={};components={};feasible_points={}", r.rays.len(), r.components, r.feasible_points)
             }, out);
+            // the rays spread over every core (natively only: wasm has no threads here)
+            if platform == "native" {
+                time(platform, now, filter, &format!("lattice/{name}/rays-parallel-{steps}"), &mut || {
+                    let r = Lattice::build_parallel(s, spec.clone()).report().expect("built");
+                    format!("rays={};components={};feasible_points={}", r.rays.len(), r.components, r.feasible_points)
+                }, out);
+            }
             time(platform, now, filter, &format!("lattice/{name}/points-{steps}"), &mut || {
                 let g = point_grid(s, &spec);
                 format!("points={};components={};feasible_points={}", g.feasible.len(), g.components, g.feasible.iter().filter(|&&f| f).count())

@@ -116,26 +116,52 @@ impl VPoly {
     }
 }
 
-/// One strict sign condition: `p > 0` (`positive`) or `p < 0`.
+/// One strict sign condition: `p > 0` (`positive`) or `p < 0`, held as the tensor Bernstein
+/// coefficients of p on the current (v, λ) box: one row per Bernstein coefficient in v, every row at
+/// one common degree in λ, stored flat (row after row) so that a split copies two plain arrays.
 #[derive(Debug, Clone)]
 pub struct Atom {
-    rows: Vec<Bern>,
+    /// The rows' coefficients, `width` per row.
+    c: Vec<f64>,
+    /// Each row's error bound (as [`Bern::err`]).
+    err: Vec<f64>,
+    /// Coefficients per row: the degree in λ plus one.
+    width: usize,
     positive: bool,
+}
+
+/// Largest magnitude among `c`.
+fn max_abs(c: &[f64]) -> f64 {
+    c.iter().fold(0.0, |m, x| m.max(x.abs()))
 }
 
 impl Atom {
     /// `p > 0` when `positive`, else `p < 0`.
     pub fn new(p: &VPoly, positive: bool) -> Atom {
-        Atom { rows: p.rows(), positive }
+        let rows = p.rows();
+        let degree = rows.iter().map(Bern::degree).max().unwrap_or(0);
+        let mut c = Vec::with_capacity(rows.len() * (degree + 1));
+        let mut err = Vec::with_capacity(rows.len());
+        for r in rows {
+            let r = r.elevate(degree);
+            c.extend_from_slice(&r.c);
+            err.push(r.err);
+        }
+        Atom { c, err, width: degree + 1, positive }
+    }
+
+    /// The rows with their error bounds.
+    fn rows(&self) -> impl Iterator<Item = (&[f64], f64)> {
+        self.c.chunks_exact(self.width).zip(self.err.iter().copied())
     }
 
     /// Certified truth on the whole box the rows describe.
     fn truth(&self) -> Truth {
         let (mut pos, mut neg) = (true, true);
-        for r in &self.rows {
-            for &c in r.c.iter() {
-                pos &= c > r.err;
-                neg &= c < -r.err;
+        for (r, e) in self.rows() {
+            for &c in r {
+                pos &= c > e;
+                neg &= c < -e;
             }
             if !pos && !neg {
                 return Truth::Unknown;
@@ -149,31 +175,59 @@ impl Atom {
 
     /// Whether every coefficient is within twice its error bound of zero.
     fn blurred(&self) -> bool {
-        self.rows.iter().all(|r| r.max_abs() <= 2.0 * r.err)
+        self.rows().all(|(r, e)| max_abs(r) <= 2.0 * e)
     }
 
-    /// The two halves in v (de Casteljau on the rows).
+    /// The two halves in v (de Casteljau on the rows, in place: after level l, rows 0 … n − l hold
+    /// the level-l points, row 0 is the left half's row l and row n − l is final for the right
+    /// half). Each midpoint (a + b)/2 carries the mean of its inputs' error bounds and the rounding
+    /// of the sum.
     fn split_v(&self) -> (Atom, Atom) {
-        let n = self.rows.len() - 1;
-        let mut b = self.rows.clone();
-        let mut left = Vec::with_capacity(n + 1);
-        let mut right = vec![Bern::constant(0.0); n + 1];
-        left.push(b[0].clone());
-        right[n] = b[n].clone();
+        let (w, n) = (self.width, self.err.len() - 1);
+        let (mut right, mut right_err) = (self.c.clone(), self.err.clone());
+        let (mut left, mut left_err) = (Vec::with_capacity(self.c.len()), Vec::with_capacity(n + 1));
+        left.extend_from_slice(&right[..w]);
+        left_err.push(right_err[0]);
         for level in 1..=n {
             for k in 0..=(n - level) {
-                b[k] = b[k].add(&b[k + 1]).scale(0.5);
+                let (a, b) = right[k * w..(k + 2) * w].split_at_mut(w);
+                for (x, y) in a.iter_mut().zip(b.iter()) {
+                    *x = (*x + y) * 0.5;
+                }
+                right_err[k] = 0.5 * (right_err[k] + right_err[k + 1]) + 2.0 * U * max_abs(a);
             }
-            left.push(b[0].clone());
-            right[n - level] = b[n - level].clone();
+            left.extend_from_slice(&right[..w]);
+            left_err.push(right_err[0]);
         }
-        (Atom { rows: left, positive: self.positive }, Atom { rows: right, positive: self.positive })
+        let positive = self.positive;
+        (Atom { c: left, err: left_err, width: w, positive }, Atom { c: right, err: right_err, width: w, positive })
     }
 
-    /// The two halves in λ.
+    /// The atom at the first (`last` false) or last λ of its box: each row's first or last
+    /// coefficient in λ, which is the row's value there, with the row's error bound.
+    fn at_end(&self, last: bool) -> Atom {
+        let pick = if last { self.width - 1 } else { 0 };
+        let c = self.c.chunks_exact(self.width).map(|r| r[pick]).collect();
+        Atom { c, err: self.err.clone(), width: 1, positive: self.positive }
+    }
+
+    /// The two halves in λ (de Casteljau at ½ on every row, as [`Bern::split`]).
     fn split_lambda(&self) -> (Atom, Atom) {
-        let (l, r): (Vec<Bern>, Vec<Bern>) = self.rows.iter().map(|p| p.split(0.5)).unzip();
-        (Atom { rows: l, positive: self.positive }, Atom { rows: r, positive: self.positive })
+        let (w, d) = (self.width, self.width - 1);
+        let (mut left, mut right) = (vec![0.0; self.c.len()], self.c.clone());
+        let mut err = self.err.clone();
+        for ((l, r), e) in left.chunks_exact_mut(w).zip(right.chunks_exact_mut(w)).zip(err.iter_mut()) {
+            *e += (2 * d + 2) as f64 * U * max_abs(r);
+            l[0] = r[0];
+            for level in 1..=d {
+                for k in 0..=(d - level) {
+                    r[k] = (r[k] + r[k + 1]) * 0.5;
+                }
+                l[level] = r[0];
+            }
+        }
+        let positive = self.positive;
+        (Atom { c: left, err: err.clone(), width: w, positive }, Atom { c: right, err, width: w, positive })
     }
 }
 
@@ -197,16 +251,31 @@ const REBUILD_EVERY: usize = 4;
 /// `build(lo, hi)` gives the clauses for λ ∈ [lo, hi], re-parametrised to [0, 1].
 pub fn exists(build: &dyn Fn(f64, f64) -> Vec<Clause>, tol: f64) -> Partition {
     let mut out = Vec::new();
-    strips(build, build(0.0, 1.0), 0.0, 1.0, 0, tol, &mut out);
+    let clauses = build(0.0, 1.0);
+    let ends = [at_end(&clauses, false, 0), at_end(&clauses, true, 0)];
+    strips(build, clauses, 0.0, 1.0, 0, tol, ends, &mut out);
     Partition::from_pieces(out)
 }
 
-fn strips(build: &dyn Fn(f64, f64) -> Vec<Clause>, clauses: Vec<Clause>, lo: f64, hi: f64, depth: usize, tol: f64, out: &mut Vec<(f64, Truth)>) {
+/// Certified truth of ∃v at the strip's first (`last` false) or last λ, from the atoms' first or
+/// last Bernstein coefficients in λ (which are their values there): a search in v alone.
+fn at_end(clauses: &[Clause], last: bool, depth: usize) -> Truth {
+    let point: Vec<Clause> = clauses.iter().map(|c| c.iter().map(|a| a.at_end(last)).collect()).collect();
+    search_v(&point, BASE_BUDGET + depth).0
+}
+
+/// One λ-strip [lo, hi] of [`exists`], with the certified truths at its two ends (`ends`, each
+/// possibly `Unknown`): a strip whose ends are decided differently holds a boundary, so it cannot
+/// be decided as a whole and is bisected without a search in v (near a boundary, where that
+/// search would spend its whole budget in vain on every level).
+#[allow(clippy::too_many_arguments)]
+fn strips(build: &dyn Fn(f64, f64) -> Vec<Clause>, clauses: Vec<Clause>, lo: f64, hi: f64, depth: usize, tol: f64, ends: [Truth; 2], out: &mut Vec<(f64, Truth)>) {
     let clauses: Vec<Clause> = clauses.into_iter().filter(|c| !c.is_empty()).collect();
     if clauses.is_empty() {
         return out.push((hi, Truth::False));
     }
-    let (t, blurred) = search_v(&clauses, BASE_BUDGET + 2 * depth);
+    let crossing = ends[0] != Truth::Unknown && ends[1] != Truth::Unknown && ends[0] != ends[1];
+    let (t, blurred) = if crossing { (Truth::Unknown, false) } else { search_v(&clauses, BASE_BUDGET + 2 * depth) };
     if t != Truth::Unknown {
         return out.push((hi, t));
     }
@@ -225,8 +294,9 @@ fn strips(build: &dyn Fn(f64, f64) -> Vec<Clause>, clauses: Vec<Clause>, lo: f64
         }
         (left, right)
     };
-    strips(build, left, lo, mid, depth + 1, tol, out);
-    strips(build, right, mid, hi, depth + 1, tol, out);
+    let middle = at_end(&left, true, depth + 1);
+    strips(build, left, lo, mid, depth + 1, tol, [ends[0], middle], out);
+    strips(build, right, mid, hi, depth + 1, tol, [middle, ends[1]], out);
 }
 
 /// Whether some v-box of the strip certainly satisfies a clause (True), none can (False), or

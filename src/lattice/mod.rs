@@ -17,13 +17,14 @@ mod grid;
 
 pub use grid::{point_grid, PointGrid};
 
-use crate::conditions::{for_scenario, Condition};
+use crate::conditions::{for_scenario, Condition, Kind};
 use crate::error::{Error, Result};
 use crate::model::Coord;
 use crate::scenario::Scenario;
 use crate::verify::slice::whole_turn;
 use crate::verify::{check_ray_range, ray_sections, Sections};
 use serde::Serialize;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Most grid values along one axis.
 pub const MAX_STEPS: usize = 10_000;
@@ -259,6 +260,18 @@ pub struct Ray {
     pub uncertain: Vec<[f64; 2]>,
 }
 
+/// The scenario's conditions of `kind` (`None`: all).
+fn conditions_of(s: &Scenario, kind: Option<Kind>) -> Vec<Box<dyn Condition>> {
+    for_scenario(s).into_iter().filter(|c| kind.is_none_or(|k| c.kind() == k)).collect()
+}
+
+/// The exact sections of ray `r` of `spec` under `conditions`.
+fn ray_of(s: &Scenario, conditions: &[Box<dyn Condition>], spec: &LatticeSpec, r: usize) -> Sections {
+    let (a, cell) = spec.ray_at(r);
+    let [lo, hi] = spec.ranges[a];
+    ray_sections(s, conditions, &spec.coords(&cell), spec.axes[a], lo, hi)
+}
+
 fn as_object<S: serde::Serializer>(v: &[(String, f64)], ser: S) -> std::result::Result<S::Ok, S::Error> {
     use serde::ser::SerializeMap;
     let mut m = ser.serialize_map(Some(v.len()))?;
@@ -290,6 +303,8 @@ pub struct LatticeProgress {
 /// The ray lattice of a scenario, built ray by ray.
 pub struct Lattice {
     scenario: Scenario,
+    /// Which conditions (`None`: all of the scenario's), so that threads can make their own.
+    kind: Option<Kind>,
     conditions: Vec<Box<dyn Condition>>,
     /// The request.
     pub spec: LatticeSpec,
@@ -320,14 +335,15 @@ pub struct Graph {
 impl Lattice {
     /// Prepares the lattice of `scenario` for `spec`; no ray is computed yet.
     pub fn new(scenario: &Scenario, spec: LatticeSpec) -> Lattice {
-        Lattice::with_conditions(scenario, spec, for_scenario(scenario))
+        Lattice::of_kind(scenario, spec, None)
     }
 
-    /// [`Lattice::new`] under `conditions` only (some of the scenario's, e.g. those of one
-    /// [`crate::conditions::Kind`]: the interference-free or the wrench-closure workspace alone).
-    pub fn with_conditions(scenario: &Scenario, spec: LatticeSpec, conditions: Vec<Box<dyn Condition>>) -> Lattice {
+    /// [`Lattice::new`] under the scenario's conditions of `kind` only (`None`: all), e.g. the
+    /// interference-free or the wrench-closure workspace alone.
+    pub fn of_kind(scenario: &Scenario, spec: LatticeSpec, kind: Option<Kind>) -> Lattice {
         let total = spec.ray_count() as usize;
-        Lattice { scenario: scenario.clone(), conditions, spec, rays: Vec::with_capacity(total), total, graph: None }
+        let conditions = conditions_of(scenario, kind);
+        Lattice { scenario: scenario.clone(), kind, conditions, spec, rays: Vec::with_capacity(total), total, graph: None }
     }
 
     /// Computes up to `budget` more rays (at least one); once all are computed, the same call
@@ -351,10 +367,35 @@ impl Lattice {
         LatticeProgress { rays_done: self.rays.len(), rays_total: self.total, done: self.graph.is_some() }
     }
 
-    /// Runs [`Lattice::step`] to the end.
+    /// Runs [`Lattice::step`] to the end, on this thread alone.
     pub fn build(scenario: &Scenario, spec: LatticeSpec) -> Lattice {
         let mut l = Lattice::new(scenario, spec);
         while !l.step(64).done {}
+        l
+    }
+
+    /// Computes every ray not computed yet, spread over threads natively (each worker with its
+    /// own conditions; in order on wasm), counting the finished rays in `done`; then the graph.
+    /// The rays come out in order, equal to [`Lattice::step`]'s.
+    pub fn finish(&mut self, done: &AtomicUsize) -> LatticeProgress {
+        let first = self.rays.len();
+        let (scenario, kind, spec) = (&self.scenario, self.kind, &self.spec);
+        let sections = crate::parallel::map_with(self.total - first, || conditions_of(scenario, kind), |conditions, i| {
+            let sec = ray_of(scenario, conditions, spec, first + i);
+            done.fetch_add(1, Ordering::Relaxed);
+            sec
+        });
+        for (i, sec) in sections.into_iter().enumerate() {
+            let ray = self.ray_with(first + i, sec.feasible, sec.uncertain);
+            self.rays.push(ray);
+        }
+        self.step(1)
+    }
+
+    /// [`Lattice::build`] with the rays spread over threads ([`Lattice::finish`]).
+    pub fn build_parallel(scenario: &Scenario, spec: LatticeSpec) -> Lattice {
+        let mut l = Lattice::new(scenario, spec);
+        l.finish(&AtomicUsize::new(0));
         l
     }
 
@@ -377,12 +418,7 @@ impl Lattice {
 
     /// Ray `r` computed exactly.
     fn compute(&self, r: usize) -> Ray {
-        let spec = &self.spec;
-        let (a, cell) = spec.ray_at(r);
-        let c = spec.coords(&cell);
-        let coord = spec.axes[a];
-        let [lo, hi] = spec.ranges[a];
-        let sec = ray_sections(&self.scenario, &self.conditions, &c, coord, lo, hi);
+        let sec = ray_of(&self.scenario, &self.conditions, &self.spec, r);
         self.ray_with(r, sec.feasible, sec.uncertain)
     }
 
