@@ -376,6 +376,81 @@ await test('the atlases of q1→q2 and then q3→q4 (on the atlas the worker kep
   return `q1-q2: ${charts}; q3-q4 on the kept atlas: ${q34}; ${drawn.length} singularity curves as the CLI's`;
 });
 
+await test('the atlas watched chart by chart while it grows (q3→q4 in the paper coordinates over the slice map)', async () => {
+  // the slice map over (φ, θ) is up from the test before; the panels stay mounted while hidden
+  await openTab(page, 'planning');
+  await pick(page, 'plan-query', 'q3-q4');
+  await page.check('[data-testid="plan-paper"]');
+  await page.waitForFunction(() => !document.querySelector('[data-testid="plan-run"]').disabled, null, { timeout: TIMEOUT });
+  // the number of charts drawn over the map, at every frame while the run lasts
+  await page.evaluate(() => {
+    window.__drawn = [];
+    const tick = () => {
+      const state = document.querySelector('[data-testid="plan-status"]').dataset.state;
+      window.__drawn.push([state, document.querySelectorAll('[data-testid="chart-slice"] [data-testid="slice-chart"]').length]);
+      if (state === 'running' || window.__drawn.length < 5) requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(tick);
+  });
+  await page.click('[data-testid="plan-run"]');
+  await page.waitForFunction(() => !['running', 'idle'].includes(document.querySelector('[data-testid="plan-status"]').dataset.state), null, { timeout: PLAN_TIMEOUT, polling: 100 });
+  const drawn = await page.evaluate(() => window.__drawn);
+  // while running: counts that grow through several distinct values, none ever falling
+  const running = drawn.filter(([state]) => state === 'running').map(([, n]) => n);
+  const steps = [...new Set(running)].filter((n) => n > 0);
+  if (steps.length < 3 || running.some((n, i) => i > 0 && n < running[i - 1])) throw new Error(`charts drawn while running: ${JSON.stringify(running)}`);
+  const summary = await page.textContent('[data-testid="plan-status"]');
+  const made = Number(summary.match(/(\d+) charts/)?.[1]);
+  if (!(steps[steps.length - 1] <= made)) throw new Error(`${steps[steps.length - 1]} charts drawn while running, the run made ${made}`);
+  assertNoProblems();
+  return `the map showed ${steps.length} growing chart counts while planning (${steps.slice(0, 6).join(', ')}, …, ${steps[steps.length - 1]}), then ${made} charts`;
+});
+
+await test('a 3-D slice\'s atlas in its own space (paper 1, Fig. 7): Robocrane q1→q2 over (z, φ, θ), drawn as the CLI reports it and turned by dragging', async () => {
+  await openTab(page, 'planning');
+  await page.uncheck('[data-testid="plan-paper"]');
+  await pick(page, 'plan-query', 'q1-q2-3d');
+  await page.waitForFunction(() => !document.querySelector('[data-testid="plan-run"]').disabled, null, { timeout: TIMEOUT });
+  await page.click('[data-testid="plan-run"]');
+  await page.waitForFunction(() => !['running', 'idle'].includes(document.querySelector('[data-testid="plan-status"]').dataset.state), null, { timeout: PLAN_TIMEOUT, polling: 100 });
+  const state = await page.getAttribute('[data-testid="plan-status"]', 'data-state');
+  if (state !== 'found') throw new Error(`planning q1-q2-3d ended "${state}"`);
+  await openTab(page, 'slice');
+  await page.waitForSelector('[data-testid="chart-atlas-space"] [data-testid="atlas-face"]', { timeout: TIMEOUT });
+  const report = cliJson(root, ['plan', 'static/scenarios/robocrane.json', '--query', 'q1-q2-3d']).atlas_charts;
+  if (report.coords.join(',') !== 'z,phi,theta') throw new Error(`the CLI's slice is over ${report.coords}`);
+  const faces = () => page.$$eval('[data-testid="chart-atlas-space"] [data-testid="atlas-face"]', (els) => els.map((e) => ({ chart: Number(e.dataset.chart), onPath: e.dataset.onPath === 'true', state: e.dataset.state, points: e.getAttribute('points') })));
+  const drawn = await faces();
+  // per chart: the same state and path mark, and as many faces as the CLI's — but a sliver face
+  // (its vertices within rounding of a line) may be kept on one platform and dropped on the
+  // other, whose sin and cos differ in the last bit: at most one face apart, on few charts
+  let apart = 0;
+  report.charts.forEach((c, i) => {
+    const mine = drawn.filter((f) => f.chart === i);
+    if (mine.length !== c.faces.length) apart++;
+    if (Math.abs(mine.length - c.faces.length) > 1 || mine.some((f) => f.state !== c.state || f.onPath !== c.on_path)) {
+      throw new Error(`chart ${i}: ${mine.length} faces drawn (${JSON.stringify(mine[0] ?? {})}), the CLI's ${c.faces.length} (${c.state}, on path ${c.on_path})`);
+    }
+  });
+  if (apart > 0.05 * report.charts.length) throw new Error(`${apart} of ${report.charts.length} charts drawn with another face count than the CLI's`);
+  const faceCount = report.charts.reduce((n, c) => n + c.faces.length, 0);
+  const path = await page.getAttribute('[data-testid="chart-atlas-space"] [data-testid="atlas-path"]', 'd');
+  if ((path.match(/L/g) ?? []).length < 2) throw new Error(`the path in the 3-D view: ${path}`);
+  await (await page.$('[data-testid="chart-atlas-space"]')).screenshot({ path: join(artifacts, 'atlas-space-q1-q2-3d.png') });
+  // a drag turns the view: the same faces, drawn elsewhere
+  const box = await (await page.$('[data-testid="chart-atlas-space"] svg')).boundingBox();
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width / 2 + 60, box.y + box.height / 2 + 20, { steps: 4 });
+  await page.mouse.up();
+  await page.waitForTimeout(200);
+  const turned = await faces();
+  const moved = turned.filter((f, i) => f.points !== drawn.find((d) => d.chart === f.chart && d.points === f.points)?.points).length;
+  if (turned.length !== drawn.length || moved < drawn.length / 2) throw new Error(`after a drag ${moved} of ${turned.length} faces moved`);
+  assertNoProblems();
+  return `${report.charts.length} charts, ${drawn.length} faces drawn (the CLI's ${faceCount}; ${apart} chart(s) a sliver face apart); a drag moved ${moved}`;
+});
+
 // q3 → q4 in the paper's coordinates: hundreds of charts, while the planning worker (kept warm
 // between runs) answers a short query within the two frames
 await test('Cancel stops a run (Robocrane q3→q4 in the paper coordinates)', async () => {
@@ -403,6 +478,27 @@ await test('Cancel stops a run (Robocrane q3→q4 in the paper coordinates)', as
   if (Number(await page.getAttribute('canvas[data-testid="view3d"]', 'data-path-poses')) !== 0) throw new Error('a path is drawn after Cancel');
   assertNoProblems();
   return `stopped at progress ${v.toFixed(2)}`;
+});
+
+await test('a family of paths shown together (thesis Fig. 4.7, the 1 m circle): every trajectory drawn in the 3-D view in its exact sections, as `cablenav verify --all` reports them', async () => {
+  await pick(page, 'preset', 'thesis-fig4-7-circle');
+  await waitResult(page, 'thesis-fig4-7-circle', 0);
+  await openTab(page, 'view-key');
+  await page.check('[data-testid="every-trajectory"]');
+  await page.waitForFunction(() => /trajectories drawn/.test(document.querySelector('[data-testid="every-status"]').textContent), null, { timeout: TIMEOUT });
+  const status = (await page.textContent('[data-testid="every-status"]')).trim();
+  const cli = cliJson(root, ['verify', 'static/scenarios/thesis-fig4-7-circle.json', '--all']);
+  const reports = Array.isArray(cli) ? cli : cli.reports ?? cli.trajectories;
+  if (!status.startsWith(`${reports.length} trajectories drawn`)) throw new Error(`status "${status}", the CLI verified ${reports.length}`);
+  // the others (all but the selected first one): one piece per feasible or infeasible section
+  const want = reports.slice(1).reduce((n, r) => n + r.feasible.length + r.infeasible.length + r.uncertain.length, 0);
+  await page.waitForFunction((n) => Number(document.querySelector('canvas[data-testid="view3d"]').dataset.otherPieces) === n, want, { timeout: TIMEOUT });
+  await page.locator('canvas[data-testid="view3d"]').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: join(artifacts, 'thesis-fig4-7-together.png'), fullPage: false });
+  await page.uncheck('[data-testid="every-trajectory"]');
+  await page.waitForFunction(() => Number(document.querySelector('canvas[data-testid="view3d"]').dataset.otherPieces) === 0, null, { timeout: TIMEOUT });
+  assertNoProblems();
+  return `${status}: ${want} section pieces of the other ${reports.length - 1}`;
 });
 
 await close();

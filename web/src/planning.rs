@@ -7,7 +7,7 @@
 use crate::state::{PlannedMotion, Parsed, Planned, Settings, Shared, PLANNERS};
 use crate::palette::Rgba;
 use crate::worker::host::Resident;
-use crate::worker::protocol::{pose_from_wire, Job, Reply};
+use crate::worker::protocol::{pose_from_wire, Job, Reply, WireAtlas, WireChart};
 use leptos::prelude::*;
 use std::rc::Rc;
 
@@ -64,6 +64,7 @@ struct Ui {
     progress: RwSignal<f64>,
     detail: RwSignal<String>,
     planned: RwSignal<Option<Shared<Planned>>>,
+    growing: RwSignal<Option<WireAtlas>>,
 }
 
 /// Applies a worker's reply for query `query` to the page.
@@ -73,7 +74,9 @@ fn apply(reply: Reply, query: &str, ui: Ui) {
             ui.progress.set(fraction);
             ui.detail.set(detail);
         }
+        Reply::Charts { coords, from, charts } => ui.growing.update(|g| grow(g, coords, from, charts)),
         Reply::Planned { status, summary, path, polyline, trajectory, atlas } => {
+            ui.growing.set(None);
             ui.progress.set(1.0);
             ui.detail.set(summary);
             if !path.is_empty() {
@@ -86,11 +89,21 @@ fn apply(reply: Reply, query: &str, ui: Ui) {
             ui.state.set(RunState::Done(status));
         }
         Reply::Failed { error } => {
+            ui.growing.set(None);
             ui.state.set(RunState::Failed(error));
         }
-        Reply::Sliced { .. } | Reply::Singular { .. } | Reply::LatticeRays { .. } | Reply::Profiles { .. } | Reply::Verified { .. } => {
+        Reply::Sliced { .. } | Reply::Singular { .. } | Reply::LatticeRays { .. } | Reply::Profiles { .. } | Reply::Verified { .. } | Reply::VerifiedEvery { .. } => {
             ui.state.set(RunState::Failed("the worker answered a planning job with another job's reply".into()));
         }
+    }
+}
+
+/// The growing atlas `atlas` with charts `from..` added (a first batch, or a batch that does not
+/// follow on, starts it anew).
+fn grow(atlas: &mut Option<WireAtlas>, coords: Vec<String>, from: usize, charts: Vec<WireChart>) {
+    match atlas {
+        Some(a) if a.coords == coords && a.charts.len() == from => a.charts.extend(charts),
+        _ => *atlas = Some(WireAtlas { coords, charts }),
     }
 }
 
@@ -104,14 +117,14 @@ fn motion(t: crate::worker::protocol::PlannedTrajectory) -> Option<PlannedMotion
 
 /// The planning controls.
 #[component]
-pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSignal<Option<Shared<Planned>>>, settings: RwSignal<Settings>) -> impl IntoView {
+pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSignal<Option<Shared<Planned>>>, settings: RwSignal<Settings>, growing: RwSignal<Option<WireAtlas>>) -> impl IntoView {
     let query = RwSignal::new(String::new());
     // the planner is one of the page's settings (kept in the address)
     let planner_id = Memo::new(move |_| settings.with(|s| s.planner));
     let budget = RwSignal::new(20_000usize);
     // the atlas planner's angles as plain coordinates, paper 1's way (`--identify-angles false`)
     let paper = RwSignal::new(false);
-    let ui = Ui { state: RwSignal::new(RunState::Idle), progress: RwSignal::new(0.0), detail: RwSignal::new(String::new()), planned };
+    let ui = Ui { state: RwSignal::new(RunState::Idle), progress: RwSignal::new(0.0), detail: RwSignal::new(String::new()), planned, growing };
     let worker = Rc::new(Resident::new());
     // each run has a generation: replies of older runs are ignored
     let generation = Rc::new(std::cell::Cell::new(0u32));
@@ -123,6 +136,7 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
         query.set(queries().into_iter().next().unwrap_or_default());
         gen1.set(gen1.get() + 1);
         worker1.forget();
+        growing.set(None);
         ui.state.set(RunState::Idle);
         ui.progress.set(0.0);
         ui.detail.set(String::new());
@@ -148,6 +162,7 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
         if planned.with_untracked(Option::is_some) {
             planned.set(None);
         }
+        growing.set(None);
         gen2.set(gen2.get() + 1);
         let this = gen2.get();
         let gen = gen2.clone();
@@ -169,6 +184,7 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
     let cancel = move |_| {
         gen3.set(gen3.get() + 1);
         worker3.stop();
+        growing.set(None);
         ui.state.set(RunState::Cancelled);
         ui.detail.set("Cancelled: the planner's worker was stopped.".into());
     };

@@ -583,6 +583,12 @@ impl AtlasPlanner {
         progress
     }
 
+    /// The atlas as it grows: the slice's coordinates and the charts made since chart `from`
+    /// (each as it is now), so a caller can draw it chart by chart while the search runs.
+    pub fn charts_since(&self, from: usize) -> (Vec<String>, Vec<view::ChartView>) {
+        (view::coords(&self.search.atlas), view::charts_from(&self.search.atlas, from))
+    }
+
     /// The work done so far (cumulative; differences between calls measure a `step`).
     pub fn work(&self) -> PlanWork {
         let poses = self.checked_poses + self.check.as_ref().map_or(0, |c| c.verification.wrench_poses);

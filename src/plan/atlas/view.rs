@@ -42,49 +42,55 @@ pub struct ChartView {
 
 /// The view of `atlas`, whose last path ran through `path_charts`.
 pub fn view(atlas: &Atlas<CableManifold>, path_charts: &[usize]) -> AtlasView {
-    let m = &atlas.manifold;
-    let free = m.free();
+    AtlasView { coords: coords(atlas), charts: (0..atlas.charts.len()).map(|i| chart_view(atlas, i, path_charts.contains(&i))).collect() }
+}
+
+/// The names of the slice's coordinates.
+pub fn coords(atlas: &Atlas<CableManifold>) -> Vec<String> {
+    atlas.manifold.free().iter().map(|&c| crate::model::Coord::ALL[c].name().to_string()).collect()
+}
+
+/// Charts `from..` of `atlas` as they are now, none on a path: an atlas watched as it grows.
+pub fn charts_from(atlas: &Atlas<CableManifold>, from: usize) -> Vec<ChartView> {
+    (from..atlas.charts.len()).map(|i| chart_view(atlas, i, false)).collect()
+}
+
+/// Chart `i` of `atlas` in the slice's coordinates.
+fn chart_view(atlas: &Atlas<CableManifold>, i: usize, on_path: bool) -> ChartView {
+    let free = atlas.manifold.free();
     let k = free.len();
-    let coords = free.iter().map(|&c| crate::model::Coord::ALL[c].name().to_string()).collect();
-    let charts = atlas
-        .charts
-        .iter()
-        .enumerate()
-        .map(|(i, chart)| {
-            // shift each angle coordinate so the centre lies in (−π, π]; the polytope moves with it
-            let shift: Vec<f64> = (0..k).map(|j| if crate::model::Coord::ALL[free[j]].is_angle() { wrap_angle(chart.centre[j]) - chart.centre[j] } else { 0.0 }).collect();
-            let to_slice = |u: &[f64]| -> Vec<f64> {
-                let x = &chart.basis * DVector::from_column_slice(u);
-                (0..k).map(|j| chart.centre[j] + x[j] + shift[j]).collect()
-            };
-            let vertices: Vec<&[f64]> = chart.polytope.vertices().collect();
-            let (polygon, faces) = match k {
-                2 => (from_lowest(cyclic(&vertices.iter().map(|v| [v[0], v[1], 0.0]).collect::<Vec<_>>(), Vector3::z()).into_iter().map(|j| to_slice(vertices[j])).collect()), vec![]),
-                3 => {
-                    let faces = chart
-                        .polytope
-                        .faces()
-                        .into_iter()
-                        .filter_map(|face| {
-                            let points: Vec<[f64; 3]> = face.iter().map(|&j| [vertices[j][0], vertices[j][1], vertices[j][2]]).collect();
-                            let normal = plane_normal(&points)?;
-                            Some(from_lowest(cyclic(&points, normal).into_iter().map(|j| to_slice(vertices[face[j]])).collect()))
-                        })
-                        .collect();
-                    (vec![], faces)
-                }
-                _ => (vec![], vec![]),
-            };
-            let state = match chart.state {
-                ChartState::Open => "open",
-                ChartState::Expanded => "expanded",
-                ChartState::OutOfBounds => "out_of_bounds",
-                ChartState::Blocked => "blocked",
-            };
-            ChartView { centre: to_slice(&vec![0.0; k]), radius: chart.radius, state, on_path: path_charts.contains(&i), polygon, faces }
-        })
-        .collect();
-    AtlasView { coords, charts }
+    let chart = &atlas.charts[i];
+    // shift each angle coordinate so the centre lies in (−π, π]; the polytope moves with it
+    let shift: Vec<f64> = (0..k).map(|j| if crate::model::Coord::ALL[free[j]].is_angle() { wrap_angle(chart.centre[j]) - chart.centre[j] } else { 0.0 }).collect();
+    let to_slice = |u: &[f64]| -> Vec<f64> {
+        let x = &chart.basis * DVector::from_column_slice(u);
+        (0..k).map(|j| chart.centre[j] + x[j] + shift[j]).collect()
+    };
+    let vertices: Vec<&[f64]> = chart.polytope.vertices().collect();
+    let (polygon, faces) = match k {
+        2 => (from_lowest(cyclic(&vertices.iter().map(|v| [v[0], v[1], 0.0]).collect::<Vec<_>>(), Vector3::z()).into_iter().map(|j| to_slice(vertices[j])).collect()), vec![]),
+        3 => {
+            let faces = chart
+                .polytope
+                .faces()
+                .into_iter()
+                .filter_map(|face| {
+                    let points: Vec<[f64; 3]> = face.iter().map(|&j| [vertices[j][0], vertices[j][1], vertices[j][2]]).collect();
+                    let normal = plane_normal(&points)?;
+                    Some(from_lowest(cyclic(&points, normal).into_iter().map(|j| to_slice(vertices[face[j]])).collect()))
+                })
+                .collect();
+            (vec![], faces)
+        }
+        _ => (vec![], vec![]),
+    };
+    let state = match chart.state {
+        ChartState::Open => "open",
+        ChartState::Expanded => "expanded",
+        ChartState::OutOfBounds => "out_of_bounds",
+        ChartState::Blocked => "blocked",
+    };
+    ChartView { centre: to_slice(&vec![0.0; k]), radius: chart.radius, state, on_path, polygon, faces }
 }
 
 /// A polygon's vertices in the same cyclic order, starting from its lowest vertex (least first

@@ -1,7 +1,8 @@
 //! The result plots, all SVG with presentation attributes (so an exported file looks as on the
-//! page): the t-strip, the tension envelope, the clearances along a path and the slice map; plus
-//! exports. Each plot's geometry is built by plain functions, tested natively.
+//! page): the t-strip, the tension envelope, the clearances along a path, the slice map and a 3-D
+//! slice's atlas; plus exports. Each plot's geometry is built by plain functions, tested natively.
 
+pub mod atlas_space;
 pub mod distance;
 pub mod export;
 pub mod geom;

@@ -51,7 +51,7 @@ pub fn chart_polygons(atlas: &WireAtlas, axes: [Coord; 2]) -> Vec<(Vec<(f64, f64
     let names = [axes[0].name(), axes[1].name()];
     let swap = if atlas.coords == names { false } else if atlas.coords == [names[1], names[0]] { true } else { return vec![] };
     let at = |p: &[f64; 2]| if swap { (p[1], p[0]) } else { (p[0], p[1]) };
-    atlas.charts.iter().map(|c| (c.polygon.iter().map(at).collect(), at(&c.centre), c.state.as_str(), c.on_path)).collect()
+    atlas.charts.iter().map(|c| (c.polygon.iter().map(at).collect(), at(&[c.centre[0], c.centre[1]]), c.state.as_str(), c.on_path)).collect()
 }
 
 /// The default slice axes: the first two coordinates a query leaves free, else x and y (a

@@ -109,6 +109,7 @@ pub fn SlicePanel(parsed: Memo<crate::state::Parsed>, source: RwSignal<String>, 
             Err(e) => view! { <p class="error">{format!("Slice: {e}")}</p> }.into_any(),
             Ok(m) => view! { <SliceMapView map=m.clone() axes=axes.get_untracked() overlay /> }.into_any(),
         })}
+        <super::atlas_space::AtlasSpace overlay />
     }
 }
 

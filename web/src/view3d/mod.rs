@@ -35,6 +35,8 @@ pub struct SceneView {
     pub polyline_poses: usize,
     /// Ray lattice pieces drawn (`data-lattice-pieces`).
     pub lattice_pieces: usize,
+    /// Section pieces of the scenario's other trajectories drawn beside the selected one.
+    pub other_pieces: usize,
     /// The clearance tubes drawn, `cable:radius` (1-based cables) joined by spaces (`data-tubes`).
     pub tubes: String,
 }
@@ -251,6 +253,7 @@ pub fn View3d(scene: Memo<Option<Shared<SceneView>>>, handles: Handles) -> impl 
                 data-path-poses=attr(|v| v.path_poses.to_string())
                 data-polyline-poses=attr(|v| v.polyline_poses.to_string())
                 data-lattice-pieces=attr(|v| v.lattice_pieces.to_string())
+                data-other-pieces=attr(|v| v.other_pieces.to_string())
                 data-tubes=attr(|v| v.tubes.clone())
                 on:pointerdown=move |ev: web_sys::PointerEvent| {
                     let Some(c) = canvas_ref.get_untracked() else { return };

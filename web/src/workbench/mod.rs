@@ -5,6 +5,7 @@
 //! its own files: the followed path (`path`), the stage's drag bar (`stage`), playback
 //! (`playback`), the plots' worker (`plot_jobs`) and the Exports tab (`exports`).
 
+mod every;
 mod exports;
 mod path;
 mod playback;
@@ -51,6 +52,8 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
     let scrub = RwSignal::new(0.0f64);
     let follow = RwSignal::new(Follow::Trajectory);
     let path = PathSignals { parsed, planned, follow, trajectory };
+    // the atlas planner's atlas while a run grows it, drawn in place of any other
+    let growing = RwSignal::new(None::<crate::worker::protocol::WireAtlas>);
     let playing = RwSignal::new(false);
     // the drag in progress: what it moves, and the scenario tree it edits
     let dragging: StoredValue<Option<(Grip, serde_json::Value)>> = StoredValue::new(None);
@@ -135,6 +138,11 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         }
         Shared::or_same(prev, pieces)
     });
+    // every other trajectory beside the selected one, on request
+    let every_on = RwSignal::new(false);
+    let every_status = RwSignal::new(String::new());
+    let selected_trajectory = Signal::derive(move || trajectory.get());
+    let every_pieces = every::every_trajectory(parsed, source, selected_trajectory, every_on, every_status);
     // the ray lattice built in its panel, drawn in the 3-D view too
     let lattice = RwSignal::new(None::<Shared<Result<crate::worker::protocol::LatticeResult, String>>>);
     let lattice_in_view = RwSignal::new(true);
@@ -196,6 +204,9 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         let tubes = focused().map(|t| scene::clearance_tubes(s, &t.constraint)).unwrap_or_default();
         let pieces = trajectory_pieces.get();
         let paths = path_pieces.get();
+        let others = every_pieces.get();
+        let other_pieces = others.0.len();
+        let paths: Vec<Polyline> = paths.0.iter().chain(others.0.iter()).cloned().collect();
         let lattice = lattice_pieces.get();
         let points: Vec<DVec3> = handle_list.with(|h| h.iter().map(|h| DVec3::from_array(h.at)).collect());
         let axis = match constraint.get() {
@@ -207,7 +218,7 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
             shown,
             cables: &cables,
             trajectory: &pieces.0,
-            paths: &paths.0,
+            paths: &paths,
             lattice: &lattice.0,
             handles: &points,
             selected: selected.get(),
@@ -227,6 +238,7 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
             path_poses: planned.get().map_or(0, |p| p.0.poses.len()),
             polyline_poses: planned.get().map_or(0, |p| p.0.polyline.len()),
             lattice_pieces: lattice.0.len(),
+            other_pieces,
             tubes: tubes.iter().map(|(i, r)| format!("{}:{}", i + 1, logic::fmt_exact(*r))).collect::<Vec<_>>().join(" "),
         }))
     });
@@ -241,7 +253,7 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
         if s.robot.chain.is_some() {
             return Overlay::default();
         }
-        match (follow.get(), planned.get()) {
+        let mut overlay = match (follow.get(), planned.get()) {
             (Follow::Planned, Some(p)) => {
                 let mut pieces = vec![Polyline { colour: PATH, poses: p.0.poses.clone() }];
                 if !p.0.polyline.is_empty() {
@@ -253,7 +265,11 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
                 let t = s.trajectories.get(traj_index(s));
                 Overlay { start: t.map(|t| t.pose_at(0.0)), goal: t.map(|t| t.pose_at(1.0)), pieces: (*trajectory_pieces.get().0).clone(), ..Overlay::default() }
             }
+        };
+        if let Some(atlas) = growing.get() {
+            overlay.atlas = Some(atlas);
         }
+        overlay
     });
 
     // a drag: one undo step; every move rewrites the scenario, which re-verifies exactly (the
@@ -349,7 +365,7 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
                 <ResultTables parsed verified=shown />
             </TabPanel>
             <TabPanel of=Tab::Planning open=tab>
-                <Planning parsed source planned settings />
+                <Planning parsed source planned settings growing />
             </TabPanel>
             <TabPanel of=Tab::Clearances open=tab wide=true>
                 <h2>"Clearances along the path"</h2>
@@ -403,6 +419,15 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
                     <span class="swatch" style="background: rgb(143,59,212)"></span> "tension out of bounds, "
                     <span class="swatch infeasible"></span> "interfering or length out of bounds, "
                     <span class="swatch" style="background: rgb(51,64,77)"></span> "no wrench set."
+                </p>
+                <p class="legend">
+                    <label>
+                        <input type="checkbox" data-testid="every-trajectory" prop:checked=move || every_on.get()
+                            on:change=move |ev| every_on.set(event_target_checked(&ev)) />
+                        " draw every trajectory of the scenario, each in its exact sections (a family of paths, as the thesis' Figs. 4.4, 4.6 and 4.7 show them)"
+                    </label>
+                    " "
+                    <span class="readout" data-testid="every-status" aria-live="polite">{move || every_status.get()}</span>
                 </p>
                 <p class="legend">"Drag to orbit, right-drag or shift-drag to pan, wheel or pinch to zoom; with the view focused, arrow keys orbit and + / − zoom."</p>
             </TabPanel>

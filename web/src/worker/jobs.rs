@@ -1,7 +1,7 @@
 //! Running a [`Job`] to its end, reporting [`Reply`]s as it goes: plain Rust over the core,
 //! tested natively (the worker calls [`run`]; so do the tests).
 
-use super::protocol::{pose_to_wire, Job, LatticeResult, PlannedTrajectory, RaySections, Reply, SliceSpec, WireAtlas, WireReport};
+use super::protocol::{pose_to_wire, Job, LatticeResult, PlannedTrajectory, RaySections, Reply, SliceSpec, WireAtlas, WireChart, WireReport};
 use cablenav::lattice::{Lattice, LatticeSpec};
 use crate::logic::fmt_num;
 use cablenav::model::Pose;
@@ -141,6 +141,7 @@ pub fn run(job: Job, report: &mut dyn FnMut(Reply), now: fn() -> f64) {
         }
         Job::Profiles { scenario, name, samples, trajectory } => profiles(&scenario, &name, &samples, trajectory.as_deref()),
         Job::Verify { scenario, index } => Ok(verify(&scenario, index, now)),
+        Job::VerifyEvery { scenario } => verify_every(&scenario, report, now),
     };
     report(last.unwrap_or_else(|error| Reply::Failed { error }));
 }
@@ -154,6 +155,22 @@ fn verify(json: &str, index: usize, now: fn() -> f64) -> Reply {
         crate::logic::verify_sections(&s, i)
     });
     Reply::Verified { report: report.as_ref().map(WireReport::from).map_err(Clone::clone), ms: now() - started }
+}
+
+fn verify_every(json: &str, report: &mut dyn FnMut(Reply), now: fn() -> f64) -> Result<Reply, String> {
+    let s = scenario(json)?;
+    let n = s.trajectories.len();
+    let mut since = now();
+    let reports = (0..n)
+        .map(|i| {
+            if now() - since >= PROGRESS_MS {
+                report(Reply::Progress { fraction: i as f64 / n as f64, detail: format!("{i} of {n} trajectories verified") });
+                since = now();
+            }
+            crate::logic::verify_sections(&s, i).as_ref().map(WireReport::from).map_err(Clone::clone)
+        })
+        .collect();
+    Ok(Reply::VerifiedEvery { reports })
 }
 
 fn scenario(json: &str) -> Result<Scenario, String> {
@@ -187,16 +204,25 @@ fn plan(json: &str, query: &str, id: &str, [max_charts, steps]: [usize; 2], iden
     };
     let mut shown = 0.0;
     let mut since = started;
+    // the charts sent so far: the atlas is watched as it grows
+    let mut sent = 0;
     loop {
         let step = p.step(1);
         shown = fraction(&step, shown);
-        if step.done.is_some() {
-            report(Reply::Progress { fraction: shown, detail: step.stage });
-            break;
-        }
-        if now() - since >= PROGRESS_MS {
+        let done = step.done.is_some();
+        if done || now() - since >= PROGRESS_MS {
             report(Reply::Progress { fraction: shown, detail: step.stage });
             since = now();
+            if let Some(atlas) = p.as_atlas().filter(|_| !done) {
+                let (coords, charts) = atlas.charts_since(sent);
+                if !charts.is_empty() && (2..=3).contains(&coords.len()) {
+                    report(Reply::Charts { coords, from: sent, charts: charts.iter().map(WireChart::of).collect() });
+                    sent += charts.len();
+                }
+            }
+        }
+        if done {
+            break;
         }
     }
     let r = p.result((now() - started) / 1000.0).ok_or("the planner ended without a result")?;

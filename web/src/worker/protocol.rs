@@ -71,6 +71,9 @@ pub enum Job {
     /// at its own timing, without the time-scale search (a drag's live verification,
     /// [`crate::live`]: the page adds the search when the drag ends).
     Verify { scenario: String, index: usize },
+    /// The exact verification of every trajectory of the scenario, as [`Job::Verify`] each (the
+    /// page draws them together: the thesis' families of paths, Figs. 4.4, 4.6 and 4.7).
+    VerifyEvery { scenario: String },
 }
 
 /// What a worker answers.
@@ -79,6 +82,9 @@ pub enum Job {
 pub enum Reply {
     /// How far the job is: a fraction in [0, 1] (never going back) and a line for people.
     Progress { fraction: f64, detail: String },
+    /// The atlas planner's atlas as it grows (sent with the progress): charts `from..` of its
+    /// slice over `coords`, each as it was when sent; the `Planned` reply has the final states.
+    Charts { coords: Vec<String>, from: usize, charts: Vec<WireChart> },
     /// A planning run ended: its status (`found`, `no_path`, `budget`, `unrepaired`), a summary,
     /// the path (when there is one) as poses (see [`pose_to_wire`]), the lattice planner's A*
     /// polyline (empty for the atlas), the planned trajectory with its exact verification, and
@@ -91,6 +97,8 @@ pub enum Reply {
     Profiles { clearances: Result<WireClearances, String>, tension: Result<WireEnvelope, String> },
     /// A trajectory's exact verification (or why not) and the worker's time for it (ms).
     Verified { report: Result<WireReport, String>, ms: f64 },
+    /// Every trajectory's exact verification (or why not), in the scenario's order.
+    VerifiedEvery { reports: Vec<Result<WireReport, String>> },
     /// A slice map's rows `rows[0]..rows[1]`: their cells' classes, row-major.
     Sliced { rows: [usize; 2], classes: Vec<Class> },
     /// A slice's singularity curves, polylines of [first axis, second axis] points.
@@ -99,12 +107,13 @@ pub enum Reply {
     Failed { error: String },
 }
 
-/// The atlas planner's charts on a 2-D slice, as the page draws them over the slice map (the
-/// core's `plan::atlas::view::AtlasView` with its polygons).
+/// The atlas planner's charts on a 2-D or 3-D slice, as the page draws them over the slice map
+/// (Fig. 6 of paper 1) or in the slice's space (Fig. 7): the core's
+/// `plan::atlas::view::AtlasView`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct WireAtlas {
-    /// The slice's two coordinates, by name.
-    pub coords: [String; 2],
+    /// The slice's coordinates, by name (two or three).
+    pub coords: Vec<String>,
     /// The charts.
     pub charts: Vec<WireChart>,
 }
@@ -112,23 +121,37 @@ pub struct WireAtlas {
 /// One chart of a [`WireAtlas`].
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct WireChart {
-    /// Its centre.
-    pub centre: [f64; 2],
-    /// Its polytope, a convex polygon in cyclic order.
+    /// Its centre, one entry per coordinate.
+    pub centre: Vec<f64>,
+    /// A 2-D slice: its polytope, a convex polygon in cyclic order.
     pub polygon: Vec<[f64; 2]>,
+    /// A 3-D slice: its polytope's faces, each a convex polygon in cyclic order.
+    pub faces: Vec<Vec<[f64; 3]>>,
     /// `expanded`, `open`, `out_of_bounds` or `blocked`.
     pub state: String,
     /// Whether the path runs through it.
     pub on_path: bool,
 }
 
+impl WireChart {
+    /// A chart of the core's view.
+    pub fn of(c: &cablenav::plan::atlas::view::ChartView) -> WireChart {
+        let pair = |v: &Vec<f64>| [v[0], v[1]];
+        let triple = |v: &Vec<f64>| [v[0], v[1], v[2]];
+        WireChart {
+            centre: c.centre.clone(),
+            polygon: c.polygon.iter().map(pair).collect(),
+            faces: c.faces.iter().map(|f| f.iter().map(triple).collect()).collect(),
+            state: c.state.to_string(),
+            on_path: c.on_path,
+        }
+    }
+}
+
 impl WireAtlas {
-    /// The charts of a 2-D slice's atlas; `None` for another dimension.
+    /// The charts of a 2-D or 3-D slice's atlas; `None` for another dimension.
     pub fn of(view: &cablenav::plan::atlas::view::AtlasView) -> Option<WireAtlas> {
-        let coords: [String; 2] = view.coords.clone().try_into().ok()?;
-        let pair = |v: &[f64]| [v[0], v[1]];
-        let charts = view.charts.iter().map(|c| WireChart { centre: pair(&c.centre), polygon: c.polygon.iter().map(|p| pair(p)).collect(), state: c.state.to_string(), on_path: c.on_path }).collect();
-        Some(WireAtlas { coords, charts })
+        (2..=3).contains(&view.coords.len()).then(|| WireAtlas { coords: view.coords.clone(), charts: view.charts.iter().map(WireChart::of).collect() })
     }
 }
 
