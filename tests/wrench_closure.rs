@@ -193,3 +193,61 @@ fn seven_cable_sections_match_per_pose_sampling() {
     assert!(mixed >= ntraj / 6, "only {mixed} of {ntraj} trajectories cross a boundary");
     assert!(checked > ntraj * samples / 2);
 }
+
+/// Closure beyond the facets' reach: the thesis robot's seven cables and five more (12), decided
+/// by the linear programs' certificates (`conditions::wrench_lp`: tensions of at least 1
+/// balancing the zero wrench where it holds, a direction with every column strictly on one side
+/// where it fails) along random motions, against the LP reference above at every sample. The
+/// wrench section asks for closure alone: the zero wrench, tensions in (0, ∞), whose static
+/// feasibility follows from closure.
+#[test]
+fn twelve_cable_closure_sections_match_the_lp_reference() {
+    let mut rng = Rng(9);
+    let ntraj = if cfg!(target_arch = "wasm32") { 4 } else { 16 };
+    let samples = if cfg!(target_arch = "wasm32") { 1_000 } else { 4_000 };
+    let (mut mixed, mut checked) = (0, 0);
+    for k in 0..ntraj {
+        let mut v: serde_json::Value = serde_json::from_str(CDPR7).unwrap();
+        let extra = [([2.0, 0.0, 0.0], [0.0, -0.2, 0.3]), ([2.0, 4.0, 0.0], [0.0, 0.2, 0.3]), ([4.0, 2.0, 4.0], [0.15, 0.0, -0.3]), ([0.0, 2.0, 2.0], [-0.15, 0.0, 0.0]), ([2.0, 0.0, 4.0], [0.0, -0.2, -0.3])];
+        for (base, platform) in extra {
+            v["robot"]["cables"].as_array_mut().unwrap().push(json!({"base": base, "platform": platform}));
+        }
+        v["format"] = json!("cablenav-scenario/4");
+        v["wrench"] = json!({"nominal": [0, 0, 0, 0, 0, 0], "point": [0, 0, 0], "closure": true});
+        v["clearance"] = json!({"cable_cable": 0, "cable_obstacle": 0});
+        let (a, b) = (random_pose(&mut rng), random_pose(&mut rng));
+        let place = |p: &Pose| {
+            let (r, pi, y) = p.rotation.euler_angles();
+            json!({"position": [p.position.x, p.position.y, p.position.z], "euler_xyz_deg": [r.to_degrees(), pi.to_degrees(), y.to_degrees()]})
+        };
+        v["poses"] = json!({"a": place(&a), "b": place(&b)});
+        v["trajectories"] = json!([{"name": "t", "translation": {"line": [[a.position.x, a.position.y, a.position.z], [b.position.x, b.position.y, b.position.z]]}, "orientation": {"slerp": ["a", "b"]}}]);
+        v["queries"] = json!([]);
+        let s = Scenario::from_json(&v.to_string()).unwrap();
+        assert_eq!(s.robot.cables.len(), 12);
+        let traj = &s.trajectories[0];
+        let r = verify_trajectory(&s, traj).unwrap();
+        let uncertain: f64 = r.uncertain.iter().map(|u| u[1] - u[0]).sum();
+        assert!(uncertain < 1e-6, "trajectory {k}: {uncertain} of t uncertain: {:?}", r.uncertain);
+        mixed += usize::from(!r.feasible.is_empty() && !r.infeasible.is_empty());
+        for i in 0..samples {
+            let t = (i as f64 + 0.5) / samples as f64;
+            if r.boundaries.iter().any(|b| (b.t - t).abs() < 1e-7) {
+                continue;
+            }
+            let pose = traj.pose_at(t);
+            let at = cables_at(&s.robot, &pose);
+            let (closed, margin) = closure_by_lp(&structure_matrix_m(&at.cables, &pose.position));
+            if margin.abs() < 1e-9 {
+                continue; // on a boundary: either answer is within rounding
+            }
+            let claimed = r.feasible.iter().any(|iv| t >= iv[0] && t <= iv[1]);
+            assert_eq!(claimed, closed, "trajectory {k} at t = {t}: closure margin {margin}, report {r:?}");
+            // and the per-pose check says the same
+            assert_eq!(wrench_at(&s, &pose).unwrap().feasible, closed, "trajectory {k} at t = {t}: check");
+            checked += 1;
+        }
+    }
+    assert!(mixed >= 2, "only {mixed} of {ntraj} trajectories cross a closure boundary");
+    assert!(checked > ntraj * samples / 2);
+}

@@ -38,7 +38,7 @@ pub use wrench_lp::WrenchFeasibilityLp;
 
 use std::rc::Rc;
 
-use crate::model::{Load, Motion, Robot};
+use crate::model::{Bounds, Load, Motion, Robot};
 use crate::poly::{Bern, Partition, Truth};
 use crate::query::cables::{attached_inside, PoseCables};
 use crate::scenario::Scenario;
@@ -349,7 +349,12 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
     if let Some(load) = s.load() {
         let load = Rc::new(load);
         if load.wrench.closure {
-            out.push(Box::new(WrenchClosure { load: Rc::clone(&load) }));
+            if m <= crate::scenario::validate::MAX_WRENCH_CABLES {
+                out.push(Box::new(WrenchClosure { load: Rc::clone(&load) }));
+            } else {
+                // beyond the facets' reach: the linear programs' certificates
+                out.push(Box::new(WrenchFeasibilityLp::closure(&load, m)));
+            }
         }
         if m == 6 {
             for (i, cable) in robot.cables.iter().enumerate() {
@@ -359,10 +364,14 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
                 }
             }
         } else {
-            let bounds = robot.cables.iter().map(|c| c.tension).collect();
-            if load.wrench.is_single() {
+            let bounds: Vec<Bounds> = robot.cables.iter().map(|c| c.tension).collect();
+            if load.wrench.closure && load.is_zero() && bounds.iter().all(|b| b.min <= 0.0 && b.max > 0.0) {
+                // the zero wrench within (f_min, f_max) follows from closure (a positive null
+                // vector, scaled below every f_max) where no lower bound is positive: closure
+                // alone decides it (its failure has a strict certificate; this one's would not)
+            } else if load.wrench.is_single() {
                 // one wrench: linear programs, for any number of cables
-                out.push(Box::new(WrenchFeasibilityLp { load, bounds }));
+                out.push(Box::new(WrenchFeasibilityLp { load, bounds, closure: false }));
             } else {
                 // an ellipsoid: its reach against each facet (validation caps the cables)
                 out.push(Box::new(WrenchFeasibility { load, bounds }));

@@ -25,6 +25,13 @@
 //!   a_k keeps its sign), so the excess is one polynomial less Σ_k W ε_k |…|.
 //! * Otherwise the piece is halved, down to the boundary tolerance; what stays is undecided.
 //!
+//! **Wrench closure** beyond the facets' reach ([`WrenchFeasibilityLp::closure`]) is the same
+//! program with the zero load and tensions in [1, ∞) (up to scale, a strictly positive null vector
+//! of J; the feasible certificate's σ_min bound gives rank 6). Where it fails the zero load lies on
+//! the zonotope's boundary, so no direction separates it strictly; instead a direction y with
+//! every column strictly on its negative side ([`crate::query::wrench::enclosing_direction`])
+//! shows that J f = 0 has no solution f ≥ 1, and the infeasible certificate above holds with it.
+//!
 //! Both certificates are sufficient and both margins are exact polynomials up to second-order
 //! terms, so each certificate holds on small enough pieces wherever the condition holds (or
 //! fails) strictly: only the boundaries' neighbourhoods stay undecided, and stretches that graze
@@ -42,7 +49,7 @@ use super::{Condition, Kind, Local, PoseCheck, Sweep};
 use crate::model::{Bounds, Load};
 use crate::poly::{Bern, Partition, Truth};
 use crate::query::cables::PoseCables;
-use crate::query::wrench::{separating_direction, static_margin, static_margin_of};
+use crate::query::wrench::{closure_by_lp, enclosing_direction, separating_direction, static_margin, static_margin_of};
 
 /// Most pieces one motion is bisected into before the rest is reported undecided.
 const MAX_NODES: usize = 4_000;
@@ -50,13 +57,25 @@ const MAX_NODES: usize = 4_000;
 /// Relative slack for the rounding of scalar steps outside the polynomials' tracked error.
 const SLACK: f64 = 1e-13;
 
-/// Wrench feasibility of the nominal load by linear programs (module docs).
+/// Wrench feasibility of the nominal load by linear programs (module docs); or, with `closure`,
+/// wrench closure: the zero load balanced by tensions in [1, ∞) (a strictly positive null vector
+/// of J, J of rank 6), shown infeasible by a direction with every column strictly on one side.
 #[derive(Debug, Clone)]
 pub struct WrenchFeasibilityLp {
     /// The load (its wrench set without an ellipsoid).
     pub load: Rc<Load>,
     /// Each cable's tension bounds.
     pub bounds: Vec<Bounds>,
+    /// Whether this is wrench closure (load zero, bounds [1, ∞)).
+    pub closure: bool,
+}
+
+impl WrenchFeasibilityLp {
+    /// Wrench closure of `m` cables about the point of `load`'s wrench set.
+    pub fn closure(load: &Load, m: usize) -> WrenchFeasibilityLp {
+        let wrench = crate::model::Wrench { point: load.wrench.point, frame: load.wrench.frame, ..crate::model::Wrench::zero() };
+        WrenchFeasibilityLp { load: Rc::new(Load { wrench, dynamics: None }), bounds: vec![Bounds { min: 1.0, max: f64::INFINITY }; m], closure: true }
+    }
 }
 
 /// The scaled system on a piece of the motion: N (6 × m), the load rows at the motion's timing,
@@ -175,6 +194,10 @@ impl WrenchFeasibilityLp {
         let b = Vector6::from_fn(|r, _| piece.load[r].eval(0.5).0);
         match static_margin_of(&j, &b, &self.bounds) {
             Some((t, f)) if t > 0.0 => self.feasible(piece, &inv, &nc, &f, w),
+            _ if self.closure => match enclosing_direction(&j) {
+                Some(y) => self.infeasible(piece, &inv, &y, w),
+                None => Truth::Unknown,
+            },
             _ => match separating_direction(&j, &b, &self.bounds) {
                 Some((y, _)) => self.infeasible(piece, &inv, &y, w),
                 None => Truth::Unknown,
@@ -304,7 +327,7 @@ impl Condition for WrenchFeasibilityLp {
     }
 
     fn label(&self) -> String {
-        "wrench feasibility".to_string()
+        if self.closure { "wrench closure" } else { "wrench feasibility" }.to_string()
     }
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
@@ -316,6 +339,10 @@ impl Condition for WrenchFeasibilityLp {
 
     fn check(&self, at: &PoseCables) -> PoseCheck {
         let wrench = &self.load.wrench;
+        if self.closure {
+            let j = crate::query::wrench::structure_matrix_m(&at.cables, &wrench.point_at(&at.pose));
+            return PoseCheck { violated: !closure_by_lp(&j), distance: None };
+        }
         match static_margin(&at.cables, &wrench.point_at(&at.pose), &at.nominal(&self.load), &self.bounds) {
             Some((margin, _)) => PoseCheck { violated: !(margin > 0.0), distance: Some(margin) },
             None => PoseCheck { violated: true, distance: None },

@@ -71,6 +71,12 @@ pub struct Load {
 }
 
 impl Load {
+    /// Whether the load is zero everywhere: no nominal wrench and no platform dynamics (whose
+    /// weight alone is a load).
+    pub fn is_zero(&self) -> bool {
+        self.dynamics.is_none() && self.wrench.nominal == Vector6::zeros() && self.wrench.is_single()
+    }
+
     /// The nominal wrench the cables balance at `pose` moving as `kin` (`None`: at rest): the
     /// wrench set's w0 plus weight and inertia, about the wrench set's point.
     pub fn nominal_at(&self, pose: &Pose, kin: Option<&Kinematics>) -> Vector6<f64> {

@@ -219,6 +219,55 @@ pub fn separating_direction(j: &DMatrix<f64>, w0: &Vector6<f64>, bounds: &[Bound
     }
 }
 
+/// A direction y (|y_i| ≤ 1) with every column of `j` (6×m) strictly on its negative side:
+/// y·j_k ≤ −s < 0 for all k, with the largest such s (a linear program). It shows that no
+/// strictly positive tensions balance zero: wrench closure fails, robustly. `None` when no
+/// direction has s above the program's rounding.
+pub fn enclosing_direction(j: &DMatrix<f64>) -> Option<Vector6<f64>> {
+    let m = j.ncols();
+    // variables: y⁺ (6), y⁻ (6), s, slacks (m), p (6), q (6), s's cap slack; rows: y·j_k + s +
+    // slack_k = 0, y⁺ + p = 1, y⁻ + q = 1, s + cap = 1
+    let (yp, yn, sv, sl, pp, qq, cap) = (0, 6, 12, 13, 13 + m, 19 + m, 25 + m);
+    let nvar = 26 + m;
+    let rows = m + 13;
+    let mut a = DMatrix::zeros(rows, nvar);
+    let mut b = DVector::zeros(rows);
+    for k in 0..m {
+        for r in 0..6 {
+            a[(k, yp + r)] = j[(r, k)];
+            a[(k, yn + r)] = -j[(r, k)];
+        }
+        a[(k, sv)] = 1.0;
+        a[(k, sl + k)] = 1.0;
+    }
+    for r in 0..6 {
+        a[(m + r, yp + r)] = 1.0;
+        a[(m + r, pp + r)] = 1.0;
+        b[m + r] = 1.0;
+        a[(m + 6 + r, yn + r)] = 1.0;
+        a[(m + 6 + r, qq + r)] = 1.0;
+        b[m + 6 + r] = 1.0;
+    }
+    a[(m + 12, sv)] = 1.0;
+    a[(m + 12, cap)] = 1.0;
+    b[m + 12] = 1.0;
+    let mut c = DVector::zeros(nvar);
+    c[sv] = 1.0;
+    match maximise(&a, &b, &c) {
+        LpResult::Optimal { x, value } if value > 1e-12 * (1.0 + j.amax()) => Some(Vector6::from_fn(|r, _| x[yp + r] - x[yn + r])),
+        _ => None,
+    }
+}
+
+/// Wrench closure at one pose by linear programs, for any number of cables: J of rank 6 (its
+/// least singular value above [`SINGULAR_RATIO`] of its largest) and tensions f ≥ 1 with J f = 0
+/// (then a strictly positive null vector exists, and J's columns positively span ℝ⁶).
+pub fn closure_by_lp(j: &DMatrix<f64>) -> bool {
+    let sv = j.clone().svd(false, false).singular_values;
+    let unit = vec![Bounds { min: 1.0, max: f64::INFINITY }; j.ncols()];
+    sv.min() > SINGULAR_RATIO * sv.max() && static_margin_of(j, &Vector6::zeros(), &unit).is_some_and(|(t, _)| t >= 0.0)
+}
+
 /// Tension range of one cable over the wrench set.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TensionRange {

@@ -406,7 +406,12 @@ fn facet_report(s: &Scenario, at: &PoseCables, load: &Load, bad_length: Option<u
     let wrench = &load.wrench;
     let point = wrench.point_at(&at.pose);
     let bounds: Vec<Bounds> = s.robot.cables.iter().map(|c| c.tension).collect();
-    let closed = !wrench.closure || closure_holds(&at.cables, &point);
+    let closed = !wrench.closure
+        || if bounds.len() <= crate::scenario::validate::MAX_WRENCH_CABLES {
+            closure_holds(&at.cables, &point)
+        } else {
+            crate::query::wrench::closure_by_lp(&crate::query::wrench::structure_matrix_m(&at.cables, &point))
+        };
     let nominal = at.nominal(load);
     let lp = static_margin(&at.cables, &point, &nominal, &bounds);
     // a single wrench's margin is the linear program's; an ellipsoid's, hyperplane shifting's

@@ -77,24 +77,23 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
         w.closure = wrench::closure(&raw, version)?;
     }
     let m = robot.cables.len();
-    if let Some(w) = wrench.as_ref().filter(|_| m > MAX_WRENCH_CABLES) {
-        let why = "(the ellipsoid and closure are tested against every facet of the available wrench set, one per 5 \
-                   structure-matrix columns; beyond that the nominal wrench and the platform's dynamics are tested by \
-                   linear programs)";
-        if !w.is_single() {
-            let field = if raw.wrench.as_ref().is_some_and(|r| r.radius.is_some()) { "wrench.radius" } else { "wrench.ellipsoid" };
-            return Err(Error::new(field, format!("a wrench ellipsoid is supported for up to {MAX_WRENCH_CABLES} cables {why}; this robot has {m}")));
-        }
-        if w.closure {
-            return Err(Error::new("wrench.closure", format!("wrench closure is supported for up to {MAX_WRENCH_CABLES} cables {why}; this robot has {m}")));
-        }
+    if wrench.as_ref().is_some_and(|w| !w.is_single()) && m > MAX_WRENCH_CABLES {
+        let field = if raw.wrench.as_ref().is_some_and(|r| r.radius.is_some()) { "wrench.radius" } else { "wrench.ellipsoid" };
+        return Err(Error::new(
+            field,
+            format!(
+                "a wrench ellipsoid is supported for up to {MAX_WRENCH_CABLES} cables (it is tested against every facet of the \
+                 available wrench set, one per 5 structure-matrix columns; beyond that a single wrench, the platform's \
+                 dynamics and closure are tested by linear programs); this robot has {m}"
+            ),
+        ));
     }
     Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses, written_angles, trajectories, queries, wrench, configs, joint_paths: Vec::new(), warnings })
 }
 
 /// Most cables for which the wrench conditions test all C(m, 5) facets of the structure matrix
-/// (252 for 10 cables): a wrench ellipsoid and wrench closure are supported up to this; beyond
-/// it the nominal load is tested by linear programs (`conditions::WrenchFeasibilityLp`).
+/// (252 for 10 cables): a wrench ellipsoid is supported up to this; beyond it a single wrench and
+/// closure are tested by linear programs (`conditions::WrenchFeasibilityLp`).
 pub const MAX_WRENCH_CABLES: usize = 10;
 
 /// A finite number at `field`.

@@ -394,16 +394,8 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
                 <h2>"Ray lattice"</h2>
                 <LatticePanel parsed source lattice overlay=Signal::derive(move || overlay.get()) />
                 <p class="lattice-3d">
-                    <label>
-                        <input type="checkbox" data-testid="lattice-in-view" prop:checked=move || lattice_in_view.get()
-                            on:change=move |ev| lattice_in_view.set(event_target_checked(&ev)) />
-                        " draw the lattice in the 3-D view (feasible pieces in their component's colour)"
-                    </label>
-                    <label>
-                        <input type="checkbox" data-testid="lattice-infeasible-in-view" prop:checked=move || lattice_infeasible.get()
-                            on:change=move |ev| lattice_infeasible.set(event_target_checked(&ev)) />
-                        " with the infeasible pieces in red"
-                    </label>
+                    <Toggle testid="lattice-in-view" value=lattice_in_view label=" draw the lattice in the 3-D view (feasible pieces in their component's colour)" />
+                    <Toggle testid="lattice-infeasible-in-view" value=lattice_infeasible label=" with the infeasible pieces in red" />
                 </p>
             </TabPanel>
             <TabPanel of=Tab::Exports open=tab>
@@ -421,11 +413,8 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
                     <span class="swatch" style="background: rgb(51,64,77)"></span> "no wrench set."
                 </p>
                 <p class="legend">
-                    <label>
-                        <input type="checkbox" data-testid="every-trajectory" prop:checked=move || every_on.get()
-                            on:change=move |ev| every_on.set(event_target_checked(&ev)) />
-                        " draw every trajectory of the scenario, each in its exact sections (a family of paths, as the thesis' Figs. 4.4, 4.6 and 4.7 show them)"
-                    </label>
+                    <Toggle testid="every-trajectory" value=every_on
+                        label=" draw every trajectory of the scenario, each in its exact sections (a family of paths, as the thesis' Figs. 4.4, 4.6 and 4.7 show them)" />
                     " "
                     <span class="readout" data-testid="every-status" aria-live="polite">{move || every_status.get()}</span>
                 </p>
@@ -436,3 +425,13 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
     .into_any()
 }
 
+/// A checkbox bound to `value`, with its `label` and `testid` (for tests).
+#[component]
+fn Toggle(testid: &'static str, value: RwSignal<bool>, label: &'static str) -> impl IntoView {
+    view! {
+        <label>
+            <input type="checkbox" data-testid=testid prop:checked=move || value.get() on:change=move |ev| value.set(event_target_checked(&ev)) />
+            {label}
+        </label>
+    }
+}
