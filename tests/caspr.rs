@@ -174,6 +174,40 @@ fn refusals_name_the_file_and_say_why() {
     assert_eq!(e.field, "robot.cables");
 }
 
+/// Every joint type of CASPR's multi-link library is read: the bodies of the four models that
+/// use them pass, and the import stops at their cables (routed, or between two links: not yet
+/// supported, each named); Spatial_Tree (a spatial end effector and a fixed tree) imports whole;
+/// R_AXIS keeps its axis, normalised.
+#[test]
+fn every_joint_type_of_the_library_is_read() {
+    for (name, bodies, cables, joint) in [
+        ("4U_modular_units_arm", model!("4U_modular_units_arm/4U_modular_units_arm_bodies.xml"), model!("4U_modular_units_arm/4U_modular_units_arm_cables.xml"), "U_YZ"),
+        ("SJTUSnake", model!("SJTUSnake/SJTUSnake_bodies.xml"), model!("SJTUSnake/SJTUSnake_cables.xml"), "U_XZ"),
+        ("BioBiped_one_leg", model!("BioBiped_one_leg/BioBiped_one_leg_bodies.xml"), model!("BioBiped_one_leg/BioBiped_one_leg_cables.xml"), "PLANAR_YZ"),
+        ("RoboyLeftArm", model!("RoboyLeftArm/RoboyLeftArm_bodies.xml"), model!("RoboyLeftArm/RoboyLeftArm_cables.xml"), "R_AXIS"),
+    ] {
+        assert!(bodies.contains(joint));
+        let e = to_json(name, bodies, cables).expect_err("routed or link-to-link cables");
+        assert_eq!(e.field, "cables", "{name}: {e}");
+        assert!(e.reason.contains("routed") || e.reason.contains("between two links"), "{name}: {e}");
+    }
+    let tree = to_json("Spatial_Tree", model!("Spatial_Tree/Spatial_Tree_bodies.xml"), model!("Spatial_Tree/Spatial_Tree_cables.xml")).expect("Spatial_Tree imports");
+    let s = Scenario::from_json(&tree.json).expect("and validates");
+    let chain = s.robot.chain.as_ref().unwrap();
+    assert_eq!(chain.links[0].joint, cablenav::model::Joint::Spatial);
+    assert_eq!(chain.links[0].coords.iter().map(|c| c.name.as_str()).collect::<Vec<_>>(), ["x", "y", "z", "alpha", "beta", "gamma"]);
+    assert_eq!(chain.links[1].joint, cablenav::model::Joint::Revolute(Vector3::x()));
+    // the end effector sits where its q_initial puts it: (1, 2, 1), unrotated
+    let (o, r) = chain.frames(&s.config("initial").unwrap())[0];
+    assert!((o - v(1.0, 2.0, 1.0)).norm() < 1e-12 && (r - nalgebra::Matrix3::identity()).norm() < 1e-12, "{o} {r}");
+    // R_AXIS about a written axis, normalised
+    let axis = ARM_BODIES.replacen("type=\"R_X\"", "type=\"R_AXIS\" axis=\"0 3 4\"", 1);
+    let arm = Scenario::from_json(&to_json("arm", &axis, ARM_CABLES).expect("imports").json).unwrap();
+    assert!(arm.robot.chain.as_ref().unwrap().links.iter().any(|l| l.joint == cablenav::model::Joint::Revolute(Vector3::new(0.0, 0.6, 0.8))));
+    let e = err(&ARM_BODIES.replacen("type=\"R_X\"", "type=\"R_AXIS\"", 1), ARM_CABLES);
+    assert!(e.reason.contains("R_AXIS") && e.reason.contains("no axis"), "{e}");
+}
+
 /// The platform's physical data comes along (format 4): CoGiRo's mass, centre of mass and
 /// inertia about it as written, CASPR's gravity; the model holds itself at its initial pose.
 #[test]

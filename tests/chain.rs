@@ -9,6 +9,8 @@ use cablenav::conditions::{for_scenario, Kind};
 use cablenav::lattice::{point_grid, Lattice, LatticeSpec};
 use cablenav::model::Coord;
 use cablenav::query::cables::cables_at_config;
+use cablenav::query::lp::{maximise, LpResult};
+use nalgebra::{DMatrix, DVector};
 use cablenav::scenario::caspr::to_json;
 use cablenav::verify::profile::cable_states_at;
 use cablenav::verify::{check_config, ray_sections};
@@ -84,7 +86,8 @@ fn v3(rng: &mut Rng, r: f64) -> [f64; 3] {
     [rng.range(-r, r), rng.range(-r, r), rng.range(-r, r)]
 }
 
-/// A random chain of 1–3 links (spherical, revolute, prismatic or free joints, each link's parent
+/// A random chain of 1–3 links (spherical, revolute, prismatic, free, universal, planar or spatial
+/// joints with random axes, each link's parent
 /// any earlier one), 3–7 cables from a ring of base anchors to random links, random clearances, an
 /// obstacle sometimes; and a random configuration `q`.
 fn random_chain(rng: &mut Rng) -> (Value, Vec<f64>) {
@@ -92,19 +95,33 @@ fn random_chain(rng: &mut Rng) -> (Value, Vec<f64>) {
     let mut links = Vec::new();
     let mut q = Vec::new();
     for k in 0..n {
-        let kind = ["spherical", "revolute", "prismatic", "free"][rng.int(0, 3)];
+        let kind = ["spherical", "revolute", "prismatic", "free", "universal", "planar", "spatial"][rng.int(0, 6)];
         let names: Vec<String> = match kind {
             "spherical" => ["a", "b", "c"].iter().map(|x| format!("{x}{k}")).collect(),
             "free" => ["x", "y", "z", "phi", "theta", "sigma"].iter().map(|x| format!("{x}{k}")).collect(),
+            "spatial" => ["x", "y", "z", "a", "b", "c"].iter().map(|x| format!("{x}{k}")).collect(),
+            "universal" => ["u", "v"].iter().map(|x| format!("{x}{k}")).collect(),
+            "planar" => ["u", "v", "w"].iter().map(|x| format!("{x}{k}")).collect(),
             _ => vec![format!("q{k}x")],
         };
         for i in 0..names.len() {
-            let angle = kind == "spherical" || kind == "revolute" || (kind == "free" && i >= 3);
+            let angle = match kind {
+                "spherical" | "revolute" | "universal" => true,
+                "free" | "spatial" => i >= 3,
+                "planar" => i == 2,
+                _ => false,
+            };
             q.push(if angle { rng.range(-1.2, 1.2) } else { rng.range(-0.3, 0.3) });
         }
         let mut joint = json!({"type": kind, "coordinates": names});
         if kind == "revolute" || kind == "prismatic" {
             joint["axis"] = json!(v3(rng, 1.0));
+        }
+        if kind == "universal" {
+            joint["axes"] = json!([v3(rng, 1.0), v3(rng, 1.0)]);
+        }
+        if kind == "planar" {
+            joint["axes"] = json!([v3(rng, 1.0), v3(rng, 1.0), v3(rng, 1.0)]);
         }
         let mut link = json!({
             "name": format!("L{k}"),
@@ -144,6 +161,73 @@ fn random_chain(rng: &mut Rng) -> (Value, Vec<f64>) {
 /// Whether `x` lies in one of `intervals`, at least `margin` inside.
 fn inside(intervals: &[[f64; 2]], x: f64, margin: f64) -> bool {
     intervals.iter().any(|iv| x > iv[0] + margin && x < iv[1] - margin)
+}
+
+/// The largest t with J f = 0, f ≥ t, Σ f = 1 for the columns of `j` scaled to unit length:
+/// closure (with rank n) iff t > 0.
+fn closure_margin(j: &DMatrix<f64>) -> f64 {
+    let (n, m) = j.shape();
+    let mut a = DMatrix::zeros(n + 1, m + 2);
+    for k in 0..m {
+        let col = j.column(k) / j.column(k).norm().max(1e-300);
+        for r in 0..n {
+            a[(r, k)] = col[r];
+            a[(r, m)] += col[r];
+            a[(r, m + 1)] -= col[r];
+        }
+        a[(n, k)] = 1.0;
+    }
+    a[(n, m)] = m as f64;
+    a[(n, m + 1)] = -(m as f64);
+    let mut b = DVector::zeros(n + 1);
+    b[n] = 1.0;
+    let mut c = DVector::zeros(m + 2);
+    c[m] = 1.0;
+    c[m + 1] = -1.0;
+    match maximise(&a, &b, &c) {
+        LpResult::Optimal { value, .. } => value,
+        _ => -1.0,
+    }
+}
+
+/// Joint-space closure per configuration against its definition, independently of how the
+/// condition writes its rows: the generalised forces of the cables are the gradients of their
+/// lengths in joint space (a cable of tension f exerts −f ∂L/∂q), so closure holds iff the
+/// columns of the length Jacobian (central differences) positively span the joint space.
+#[test]
+fn random_chain_closure_matches_the_length_jacobian() {
+    let mut rng = Rng::new(53);
+    let (mut judged, mut closed, mut open) = (0, 0, 0);
+    for _ in 0..400 {
+        let (value, q) = random_chain(&mut rng);
+        let s = Scenario::from_json(&value.to_string()).unwrap_or_else(|e| panic!("{e}\n{value}"));
+        let chain = s.robot.chain.as_ref().unwrap();
+        let (n, m) = (chain.dof(), s.robot.cables.len());
+        let lengths = |q: &[f64]| cables_at_config(&s.robot, q).cables.iter().map(|(a, x)| (x - a).norm()).collect::<Vec<f64>>();
+        let h = 1e-6;
+        let mut jac = DMatrix::zeros(n, m);
+        for i in 0..n {
+            let (mut up, mut down) = (q.clone(), q.clone());
+            up[i] += h;
+            down[i] -= h;
+            let (lu, ld) = (lengths(&up), lengths(&down));
+            for k in 0..m {
+                jac[(i, k)] = (lu[k] - ld[k]) / (2.0 * h);
+            }
+        }
+        let sv = jac.clone().svd(false, false).singular_values;
+        let t = closure_margin(&jac);
+        if t.abs() < 1e-5 || (n <= m && sv.min() < 1e-4 * sv.max()) {
+            continue; // within the differences' error of the boundary
+        }
+        let reference = t > 0.0 && n < m;
+        let condition = for_scenario(&s).into_iter().find(|c| c.label() == "wrench closure").expect("closure is checked");
+        let cables = cables_at_config(&s.robot, &q);
+        assert_eq!(!condition.check(&cables).violated, reference, "closure margin {t}\n{value}\nq = {q:?}");
+        judged += 1;
+        if reference { closed += 1 } else { open += 1 }
+    }
+    assert!(judged > 300 && closed > 20 && open > 20, "{judged} judged: {closed} with closure, {open} without");
 }
 
 #[test]
@@ -335,6 +419,30 @@ fn bad_chains_name_the_field() {
     let e = refused(&v);
     assert_eq!(e.field, "robot.links[1].joint.axis");
     assert!(e.reason.contains("zero length"), "{e}");
+
+    // universal and planar joints take `axes`: as many as they turn and slide about, not parallel
+    let joint = |v: &mut Value, j: Value| v["robot"]["links"][1]["joint"] = j;
+    let mut v = good.clone();
+    joint(&mut v, json!({"type": "universal", "coordinates": ["u", "w"]}));
+    let e = refused(&v);
+    assert_eq!((e.field.as_str(), e.reason.contains("needs 2 axes")), ("robot.links[1].joint.axes", true), "{e}");
+    joint(&mut v, json!({"type": "universal", "axes": [[1, 0, 0], [-2, 0, 0]], "coordinates": ["u", "w"]}));
+    let e = refused(&v);
+    assert_eq!((e.field.as_str(), e.reason.contains("parallel")), ("robot.links[1].joint.axes", true), "{e}");
+    joint(&mut v, json!({"type": "planar", "axes": [[0, 1, 0], [0, 0, 1]], "coordinates": ["u", "v", "w"]}));
+    let e = refused(&v);
+    assert_eq!((e.field.as_str(), e.reason.contains("needs 3 axes, got 2")), ("robot.links[1].joint.axes", true), "{e}");
+    joint(&mut v, json!({"type": "planar", "axes": [[0, 1, 0], [0, 0, 1], [0, 0, 0]], "coordinates": ["u", "v", "w"]}));
+    assert_eq!(refused(&v).field, "robot.links[1].joint.axes[2]");
+    joint(&mut v, json!({"type": "spatial", "axes": [[1, 0, 0]], "coordinates": ["x", "y", "z", "a", "b", "c"]}));
+    assert_eq!(refused(&v).field, "robot.links[1].joint.axes");
+    joint(&mut v, json!({"type": "revolute", "axis": [1, 0, 0], "axes": [[1, 0, 0]], "coordinates": ["q"]}));
+    assert_eq!(refused(&v).field, "robot.links[1].joint.axes");
+    joint(&mut v, json!({"type": "spatial", "coordinates": ["x", "y", "z", "a", "b"]}));
+    assert_eq!(refused(&v).field, "robot.links[1].joint.coordinates");
+    joint(&mut v, json!({"type": "hinge", "coordinates": ["q"]}));
+    let e = refused(&v);
+    assert!(e.field == "robot.links[1].joint.type" && e.reason.contains("universal") && e.reason.contains("planar"), "{e}");
 
     let mut v = good.clone();
     v["robot"]["links"][0]["parent"] = json!("Lower Arm");

@@ -10,6 +10,10 @@
 //!   these times an invertible matrix away from gimbal lock, which positive spanning ignores);
 //! * revolute joint about axis e: (R_j e)·((x − o_j) × s);
 //! * prismatic joint along e: (R_j e)·s;
+//! * spatial joint (translation and XYZ Euler angles): as the free joint;
+//! * universal joint about a₁ then a₂: (R_p a₁)·((x − o_j) × s) and (R_j a₂)·((x − o_j) × s),
+//!   R_p the parent's rotation (the base's for a root link);
+//! * planar joint (along u, v, then about w): (R_p u)·s, (R_p v)·s and (R_j w)·((x − o_j) × s);
 //!
 //! and zero to the other joints. The cable's length divides every entry of its column and is
 //! dropped (a positive factor per column). Along a motion every row is a polynomial over a power
@@ -37,9 +41,38 @@ pub struct JointClosure {
     pub cable_links: Vec<usize>,
 }
 
-/// The rows one joint contributes for a cable: from the cable vector s, the moment arm
-/// x − o and the joint's world axis (when it has one), in whatever arithmetic the caller uses.
-fn joint_rows<T: Clone>(joint: &Joint, s: [T; 3], arm: [T; 3], axis: Option<[T; 3]>, ops: &Ops<T>) -> Vec<T> {
+/// The frame a joint row's axis is fixed in.
+#[derive(Debug, Clone, Copy)]
+enum Frame {
+    /// The world's own axis number k (a free, spatial or spherical joint's rows: the force and
+    /// the moment themselves).
+    World(usize),
+    /// The parent link's frame (the base's for a root link): a universal joint's first axis, a
+    /// planar joint's translations.
+    Parent,
+    /// The link's own frame: a revolute or prismatic axis, the last rotation of a universal or
+    /// planar joint (which leaves its own axis in place).
+    Link,
+}
+
+/// Per joint coordinate: whether it turns (a moment row) or slides (a force row), the frame its
+/// axis is fixed in and the axis there (module docs).
+fn row_axes(joint: &Joint) -> Vec<(bool, Frame, Vector3<f64>)> {
+    let world = |turn: bool| (0..3).map(move |k| (turn, Frame::World(k), Vector3::ith(k, 1.0)));
+    match joint {
+        Joint::Free | Joint::Spatial => world(false).chain(world(true)).collect(),
+        Joint::Spherical => world(true).collect(),
+        Joint::Revolute(e) => vec![(true, Frame::Link, *e)],
+        Joint::Prismatic(e) => vec![(false, Frame::Link, *e)],
+        Joint::Universal([a, b]) => vec![(true, Frame::Parent, *a), (true, Frame::Link, *b)],
+        Joint::Planar([u, v, w]) => vec![(false, Frame::Parent, *u), (false, Frame::Parent, *v), (true, Frame::Link, *w)],
+    }
+}
+
+/// The rows one joint contributes for a cable: from the cable vector s and the moment arm x − o,
+/// per coordinate its force s or moment (x − o) × s along the coordinate's world axis (`axis`
+/// gives it for the row's frame and axis), in whatever arithmetic the caller uses.
+fn joint_rows<T: Clone>(joint: &Joint, s: [T; 3], arm: [T; 3], axis: &dyn Fn(Frame, &Vector3<f64>) -> [T; 3], ops: &Ops<T>) -> Vec<T> {
     let cross = |a: &[T; 3], b: &[T; 3]| {
         [0, 1, 2].map(|i| {
             let (j, k) = ((i + 1) % 3, (i + 2) % 3);
@@ -47,15 +80,17 @@ fn joint_rows<T: Clone>(joint: &Joint, s: [T; 3], arm: [T; 3], axis: Option<[T; 
         })
     };
     let dot = |a: &[T; 3], b: &[T; 3]| (ops.add)(&(ops.add)(&(ops.mul)(&a[0], &b[0]), &(ops.mul)(&a[1], &b[1])), &(ops.mul)(&a[2], &b[2]));
-    match joint {
-        Joint::Free => {
-            let m = cross(&arm, &s);
-            s.into_iter().chain(m).collect()
-        }
-        Joint::Spherical => cross(&arm, &s).into_iter().collect(),
-        Joint::Revolute(_) => vec![dot(&axis.expect("a revolute joint has an axis"), &cross(&arm, &s))],
-        Joint::Prismatic(_) => vec![dot(&axis.expect("a prismatic joint has an axis"), &s)],
-    }
+    let moment = cross(&arm, &s);
+    row_axes(joint)
+        .into_iter()
+        .map(|(turn, frame, e)| {
+            let v = if turn { &moment } else { &s };
+            match frame {
+                Frame::World(k) => v[k].clone(),
+                _ => dot(&axis(frame, &e), v),
+            }
+        })
+        .collect()
 }
 
 /// The arithmetic [`joint_rows`] needs.
@@ -63,13 +98,6 @@ struct Ops<T> {
     add: fn(&T, &T) -> T,
     sub: fn(&T, &T) -> T,
     mul: fn(&T, &T) -> T,
-}
-
-fn joint_axis(joint: &Joint) -> Option<Vector3<f64>> {
-    match joint {
-        Joint::Revolute(e) | Joint::Prismatic(e) => Some(*e),
-        Joint::Free | Joint::Spherical => None,
-    }
 }
 
 impl JointClosure {
@@ -86,8 +114,9 @@ impl JointClosure {
             for (l, link) in self.chain.links.iter().enumerate() {
                 if self.chain.descends(self.cable_links[c], l) {
                     let (o, r) = at.links[l];
-                    let axis = joint_axis(&link.joint).map(|e| (r * e).into());
-                    for (k, v) in joint_rows(&link.joint, s.into(), (x - o).into(), axis, &ops).into_iter().enumerate() {
+                    let parent = link.parent.map_or_else(nalgebra::Matrix3::identity, |p| at.links[p].1);
+                    let axis = |frame: Frame, e: &Vector3<f64>| -> [f64; 3] { (if matches!(frame, Frame::Parent) { parent * e } else { r * e }).into() };
+                    for (k, v) in joint_rows(&link.joint, s.into(), (x - o).into(), &axis, &ops).into_iter().enumerate() {
                         j[(row + k, c)] = v;
                     }
                 }
@@ -113,9 +142,15 @@ impl JointClosure {
                 if self.chain.descends(self.cable_links[c], l) {
                     let motion = &sweep.links[l];
                     let arm: [Bern; 3] = [0, 1, 2].map(|i| x[i].sub(&motion.position[i]));
-                    let axis = joint_axis(&link.joint)
-                        .map(|e| [0, 1, 2].map(|i| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&motion.rotation[i][k].scale(e[k])))));
-                    for (k, v) in joint_rows(&link.joint, s.clone(), arm, axis, &ops).into_iter().enumerate() {
+                    let parent = link.parent.map(|p| &sweep.links[p]);
+                    let axis = |frame: Frame, e: &Vector3<f64>| -> [Bern; 3] {
+                        match (frame, parent) {
+                            (Frame::Parent, None) => e.map(Bern::constant).into(),
+                            (Frame::Parent, Some(p)) => [0, 1, 2].map(|i| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&p.rotation[i][k].scale(e[k])))),
+                            _ => [0, 1, 2].map(|i| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&motion.rotation[i][k].scale(e[k])))),
+                        }
+                    };
+                    for (k, v) in joint_rows(&link.joint, s.clone(), arm, &axis, &ops).into_iter().enumerate() {
                         rows[row + k][c] = v;
                     }
                 }

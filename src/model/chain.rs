@@ -13,7 +13,7 @@
 //! see no difference between a platform and a link.
 
 use super::motion::{quat_const, quat_mul, ramp_about, Motion, Param, QuatPoly, ANGLE_PIECE};
-use super::pose::{rot_x, rot_y, rot_z, Coord, Pose};
+use super::pose::{Coord, Pose};
 use crate::poly::Bern;
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
@@ -25,46 +25,77 @@ pub enum Joint {
     Free,
     /// A ball joint with XYZ Euler angles (α, β, γ), R = Rx(α)·Ry(β)·Rz(γ) (CASPR `S_EULER_XYZ`).
     Spherical,
-    /// A rotation by one angle about a unit axis of the joint frame (CASPR `R_X`, `R_Y`, `R_Z`).
+    /// A rotation by one angle about a unit axis of the joint frame (CASPR `R_X`, `R_Y`, `R_Z`,
+    /// `R_AXIS`).
     Revolute(Vector3<f64>),
     /// A translation by one length along a unit axis of the joint frame.
     Prismatic(Vector3<f64>),
+    /// Two rotations, about the first unit axis and then about the second (turned with the
+    /// first): R = R(a₁, q₁)·R(a₂, q₂) (CASPR `U_XZ`, `U_YZ`, `U_XY`).
+    Universal([Vector3<f64>; 2]),
+    /// A translation in a plane and a rotation: by q₁ along the first unit axis, q₂ along the
+    /// second, then R = R(a₃, q₃) (CASPR `PLANAR_YZ`: y, z, then about x).
+    Planar([Vector3<f64>; 3]),
+    /// Six coordinates (x, y, z, α, β, γ): a translation and XYZ Euler angles,
+    /// R = Rx(α)·Ry(β)·Rz(γ) (CASPR `SPATIAL_EULER_XYZ` on a link of a tree).
+    Spatial,
+}
+
+/// One coordinate's elementary motion, in the frame the joint's earlier coordinates have turned
+/// to: a translation along a unit axis, or a rotation about one. Every joint but the free one is
+/// a sequence of them, its translations first.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Step {
+    /// A translation along the axis.
+    Slide(Vector3<f64>),
+    /// A rotation about the axis.
+    Turn(Vector3<f64>),
 }
 
 impl Joint {
+    /// The elementary motions of the joint's coordinates, in order; `None` for the free joint
+    /// (tilt-and-torsion angles are no sequence of fixed-axis rotations).
+    pub fn steps(&self) -> Option<Vec<Step>> {
+        let (x, y, z) = (Vector3::x(), Vector3::y(), Vector3::z());
+        Some(match self {
+            Joint::Free => return None,
+            Joint::Spherical => vec![Step::Turn(x), Step::Turn(y), Step::Turn(z)],
+            Joint::Revolute(a) => vec![Step::Turn(*a)],
+            Joint::Prismatic(a) => vec![Step::Slide(*a)],
+            Joint::Universal([a, b]) => vec![Step::Turn(*a), Step::Turn(*b)],
+            Joint::Planar([u, v, w]) => vec![Step::Slide(*u), Step::Slide(*v), Step::Turn(*w)],
+            Joint::Spatial => vec![Step::Slide(x), Step::Slide(y), Step::Slide(z), Step::Turn(x), Step::Turn(y), Step::Turn(z)],
+        })
+    }
+
     /// Number of coordinates.
     pub fn dof(&self) -> usize {
-        match self {
-            Joint::Free => 6,
-            Joint::Spherical => 3,
-            Joint::Revolute(_) | Joint::Prismatic(_) => 1,
-        }
+        self.steps().map_or(6, |s| s.len())
     }
 
     /// Whether coordinate `k` of this joint is an angle (radians).
     pub fn is_angle(&self, k: usize) -> bool {
-        match self {
-            Joint::Free => k >= 3,
-            Joint::Spherical | Joint::Revolute(_) => true,
-            Joint::Prismatic(_) => false,
+        match self.steps() {
+            None => k >= 3,
+            Some(steps) => matches!(steps.get(k), Some(Step::Turn(_))),
         }
     }
 
     /// The joint's translation and rotation at its coordinates `q` (relative to the joint frame
     /// placed at the link's `location` in its parent).
     pub fn transform(&self, q: &[f64]) -> (Vector3<f64>, Matrix3<f64>) {
-        match self {
-            Joint::Free => {
-                let pose = Pose::from_coords([q[0], q[1], q[2], q[3], q[4], q[5]]);
-                (pose.position, pose.matrix())
+        let Some(steps) = self.steps() else {
+            let pose = Pose::from_coords([q[0], q[1], q[2], q[3], q[4], q[5]]);
+            return (pose.position, pose.matrix());
+        };
+        let (mut position, mut rotation) = (Vector3::zeros(), Matrix3::identity());
+        for (step, &v) in steps.iter().zip(q) {
+            match step {
+                Step::Slide(a) => position += rotation * a * v,
+                Step::Turn(a) => rotation *= UnitQuaternion::from_axis_angle(&nalgebra::Unit::new_unchecked(*a), v).to_rotation_matrix().matrix(),
             }
-            Joint::Spherical => (Vector3::zeros(), rot_x(q[0]) * rot_y(q[1]) * rot_z(q[2])),
-            Joint::Revolute(axis) => {
-                let r = UnitQuaternion::from_axis_angle(&nalgebra::Unit::new_unchecked(*axis), q[0]);
-                (Vector3::zeros(), *r.to_rotation_matrix().matrix())
-            }
-            Joint::Prismatic(axis) => (axis * q[0], Matrix3::identity()),
         }
+        (position, rotation)
     }
 
     /// The joint's motion (translation and rotation relative to the joint frame) as coordinate `k`
@@ -92,7 +123,8 @@ impl Joint {
     /// The joint's motion from coordinates `from` to `to` (`None` if they are equal): every angle
     /// advances by the tan-half-angle ramp 2·atan(h·λ), h = tan(Δ/2), every length linearly —
     /// for a free joint the angles are φ, θ and σ − φ (R = Rz(φ)·Ry(θ)·Rz(σ − φ)). Steps of an
-    /// angle should stay small (the callers keep them within [`ANGLE_PIECE`]).
+    /// angle should stay small (the callers keep them within [`ANGLE_PIECE`]). A joint's
+    /// translations come before its rotations, so its translation is linear in λ.
     fn sweep(&self, from: &[f64], to: &[f64], param: Param) -> Option<Motion> {
         if from == to {
             return None;
@@ -105,24 +137,24 @@ impl Joint {
         };
         let one: QuatPoly = [vec![1.0], vec![0.0], vec![0.0], vec![0.0]];
         let line = |a: &Vector3<f64>, b: &Vector3<f64>| [0, 1, 2].map(|i| Bern::from_bernstein(vec![a[i], b[i]]));
-        let zero = Vector3::zeros();
-        let (x, y, z) = (Vector3::x(), Vector3::y(), Vector3::z());
-        let (position, n) = match self {
-            Joint::Free => {
-                let (pa, pb) = (Vector3::new(from[0], from[1], from[2]), Vector3::new(to[0], to[1], to[2]));
-                let n = turn(one, &z, from[3], to[3] - from[3]);
-                let n = turn(n, &y, from[4], to[4] - from[4]);
-                (line(&pa, &pb), turn(n, &z, from[5] - from[3], (to[5] - to[3]) - (from[5] - from[3])))
-            }
-            Joint::Spherical => {
-                let n = turn(one, &x, from[0], to[0] - from[0]);
-                let n = turn(n, &y, from[1], to[1] - from[1]);
-                (line(&zero, &zero), turn(n, &z, from[2], to[2] - from[2]))
-            }
-            Joint::Revolute(axis) => (line(&zero, &zero), turn(one, axis, from[0], to[0] - from[0])),
-            Joint::Prismatic(axis) => (line(&(axis * from[0]), &(axis * to[0])), one),
+        let Some(steps) = self.steps() else {
+            let (y, z) = (Vector3::y(), Vector3::z());
+            let (pa, pb) = (Vector3::new(from[0], from[1], from[2]), Vector3::new(to[0], to[1], to[2]));
+            let n = turn(one, &z, from[3], to[3] - from[3]);
+            let n = turn(n, &y, from[4], to[4] - from[4]);
+            return Some(Motion::from_parts(line(&pa, &pb), &turn(n, &z, from[5] - from[3], (to[5] - to[3]) - (from[5] - from[3])), param));
         };
-        Some(Motion::from_parts(position, &n, param))
+        let (mut pa, mut pb, mut n) = (Vector3::zeros(), Vector3::zeros(), one);
+        for (k, step) in steps.iter().enumerate() {
+            match step {
+                Step::Slide(a) => {
+                    pa += a * from[k];
+                    pb += a * to[k];
+                }
+                Step::Turn(a) => n = turn(n, a, from[k], to[k] - from[k]),
+            }
+        }
+        Some(Motion::from_parts(line(&pa, &pb), &n, param))
     }
 }
 
@@ -368,9 +400,9 @@ impl JointPath {
         // angles: the tan-half-angle timing of each joint's sweep
         let mut o = 0;
         for link in &chain.links {
-            let turns: Vec<(usize, f64)> = match link.joint {
+            let turns: Vec<(usize, f64)> = match link.joint.steps() {
                 // φ, θ and σ − φ ramp; σ = φ + (σ − φ)
-                Joint::Free => {
+                None => {
                     let ramp = |d: f64| 2.0 * ((d / 2.0).tan() * lam).atan();
                     let (dphi, dpsi) = (b[o + 3] - a[o + 3], (b[o + 5] - b[o + 3]) - (a[o + 5] - a[o + 3]));
                     q[o + 3] = a[o + 3] + ramp(dphi);
@@ -378,9 +410,7 @@ impl JointPath {
                     q[o + 5] = q[o + 3] + (a[o + 5] - a[o + 3]) + ramp(dpsi);
                     Vec::new()
                 }
-                Joint::Spherical => (0..3).map(|k| (o + k, b[o + k] - a[o + k])).collect(),
-                Joint::Revolute(_) => vec![(o, b[o] - a[o])],
-                Joint::Prismatic(_) => Vec::new(),
+                Some(steps) => steps.iter().enumerate().filter(|(_, s)| matches!(s, Step::Turn(_))).map(|(k, _)| (o + k, b[o + k] - a[o + k])).collect(),
             };
             for (i, d) in turns {
                 q[i] = a[i] + 2.0 * ((d / 2.0).tan() * lam).atan();
@@ -401,7 +431,7 @@ mod tests {
     }
 
     /// A tree with every joint type: free root, spherical and prismatic children, a revolute
-    /// grandchild.
+    /// grandchild, universal and planar links below them, a spatial root.
     fn tree() -> Chain {
         Chain {
             links: vec![
@@ -409,6 +439,9 @@ mod tests {
                 link("s", Some(0), [0.0, 0.0, 0.7], Joint::Spherical),
                 link("p", Some(0), [0.3, 0.0, 0.1], Joint::Prismatic(Vector3::new(0.6, 0.0, 0.8))),
                 link("r", Some(1), [0.0, 0.1, 0.5], Joint::Revolute(Vector3::new(0.0, 0.6, -0.8))),
+                link("u", Some(2), [0.1, 0.0, 0.2], Joint::Universal([Vector3::new(0.0, 0.8, 0.6), Vector3::z()])),
+                link("l", Some(3), [0.0, 0.2, 0.1], Joint::Planar([Vector3::y(), Vector3::z(), Vector3::x()])),
+                link("e", None, [0.4, -0.2, 0.0], Joint::Spatial),
             ],
         }
     }
@@ -418,10 +451,44 @@ mod tests {
         (mp - p).norm() < 1e-11 && (mr - r).norm() < 1e-11
     }
 
+    /// Rotation matrices written out, as CASPR's joint classes write them.
+    fn rx(a: f64) -> Matrix3<f64> {
+        Matrix3::new(1.0, 0.0, 0.0, 0.0, a.cos(), -a.sin(), 0.0, a.sin(), a.cos())
+    }
+    fn ry(a: f64) -> Matrix3<f64> {
+        Matrix3::new(a.cos(), 0.0, a.sin(), 0.0, 1.0, 0.0, -a.sin(), 0.0, a.cos())
+    }
+    fn rz(a: f64) -> Matrix3<f64> {
+        Matrix3::new(a.cos(), -a.sin(), 0.0, a.sin(), a.cos(), 0.0, 0.0, 0.0, 1.0)
+    }
+
+    #[test]
+    fn joints_move_as_caspr_defines_them() {
+        let (x, y, z) = (Vector3::x(), Vector3::y(), Vector3::z());
+        let same = |(p, r): (Vector3<f64>, Matrix3<f64>), (wp, wr): (Vector3<f64>, Matrix3<f64>)| (p - wp).norm() < 1e-14 && (r - wr).norm() < 1e-14;
+        // UniversalXZ: R = Rx(α)·Rz(γ); UniversalYZ: Ry(β)·Rz(γ); no translation
+        assert!(same(Joint::Universal([x, z]).transform(&[0.3, -0.7]), (Vector3::zeros(), rx(0.3) * rz(-0.7))));
+        assert!(same(Joint::Universal([y, z]).transform(&[1.1, 0.4]), (Vector3::zeros(), ry(1.1) * rz(0.4))));
+        // PlanarYZ: r = (0, y, z), R = Rx(θ); PlanarXZ: r = (x, 0, z), R = Ry(θ)
+        assert!(same(Joint::Planar([y, z, x]).transform(&[0.2, -0.5, 0.9]), (Vector3::new(0.0, 0.2, -0.5), rx(0.9))));
+        assert!(same(Joint::Planar([x, z, y]).transform(&[0.2, -0.5, 0.9]), (Vector3::new(0.2, 0.0, -0.5), ry(0.9))));
+        // SpatialEulerXYZ: r = (x, y, z), R = Rx(α)·Ry(β)·Rz(γ)
+        assert!(same(Joint::Spatial.transform(&[1.0, 2.0, 3.0, 0.1, -0.2, 0.3]), (Vector3::new(1.0, 2.0, 3.0), rx(0.1) * ry(-0.2) * rz(0.3))));
+        assert!(same(Joint::Spherical.transform(&[0.1, -0.2, 0.3]), (Vector3::zeros(), rx(0.1) * ry(-0.2) * rz(0.3))));
+        // RevoluteAxis: Rodrigues' formula about the unit axis
+        let a = Vector3::new(0.05101, -0.9984, 0.02231).normalize();
+        let k = a.cross_matrix();
+        let t = 1.3_f64;
+        assert!(same(Joint::Revolute(a).transform(&[t]), (Vector3::zeros(), Matrix3::identity() + t.sin() * k + (1.0 - t.cos()) * k * k)));
+        assert_eq!((Joint::Universal([x, z]).dof(), Joint::Planar([y, z, x]).dof(), Joint::Spatial.dof()), (2, 3, 6));
+        assert!(!Joint::Planar([y, z, x]).is_angle(1) && Joint::Planar([y, z, x]).is_angle(2) && !Joint::Spatial.is_angle(2) && Joint::Spatial.is_angle(3));
+    }
+
     #[test]
     fn rays_follow_the_links_frames() {
         let chain = tree();
-        let q = [0.2, -0.1, 0.4, 0.3, 0.5, -0.2, 0.3, -0.4, 0.2, 0.15, 0.7];
+        let q = [0.2, -0.1, 0.4, 0.3, 0.5, -0.2, 0.3, -0.4, 0.2, 0.15, 0.7, 0.4, -0.6, 0.1, -0.2, 0.8, 0.5, 0.6, 0.7, -0.3, 0.2, 0.4];
+        assert_eq!(chain.dof(), q.len());
         for i in 0..chain.dof() {
             let (lo, hi) = (q[i] - 0.9, q[i] + 0.6);
             for piece in chain.ray(&q, i, lo, hi) {
@@ -440,9 +507,9 @@ mod tests {
     #[test]
     fn paths_follow_their_configurations() {
         let chain = tree();
-        let a = vec![0.2, -0.1, 0.4, 0.3, 0.5, -0.2, 0.3, -0.4, 0.2, 0.15, 0.7];
-        let b = vec![-0.3, 0.2, 0.1, -0.9, 1.1, 0.6, -0.5, 0.4, 1.0, -0.25, -0.8];
-        let c = vec![0.0; 11];
+        let a = vec![0.2, -0.1, 0.4, 0.3, 0.5, -0.2, 0.3, -0.4, 0.2, 0.15, 0.7, 0.4, -0.6, 0.1, -0.2, 0.8, 0.5, 0.6, 0.7, -0.3, 0.2, 0.4];
+        let b = vec![-0.3, 0.2, 0.1, -0.9, 1.1, 0.6, -0.5, 0.4, 1.0, -0.25, -0.8, -0.2, 0.9, 0.3, 0.1, -0.7, -0.4, 0.2, 0.1, 0.6, -0.9, 1.0];
+        let c = vec![0.0; 22];
         let path = JointPath { name: "p".into(), through: vec![a.clone(), b.clone(), c.clone()] };
         let steps = path.steps(&chain);
         assert!(steps.len() > 2, "the legs are cut into steps of at most π/8");

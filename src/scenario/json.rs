@@ -145,6 +145,8 @@ pub struct RawJoint {
     pub kind: String,
     #[serde(default)]
     pub axis: Option<Fixed<f64, 3>>,
+    #[serde(default)]
+    pub axes: Option<Vec<Fixed<f64, 3>>>,
     pub coordinates: Vec<String>,
     #[serde(default)]
     pub range: Option<Vec<Fixed<f64, 2>>>,

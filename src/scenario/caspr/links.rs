@@ -5,16 +5,20 @@
 //!
 //! * bodies: every `<link_rigid num="k">` in order, with its `<parent>` (`num`, 0 = base, and the
 //!   joint's `location` in the parent's frame) and joint: `S_EULER_XYZ` (spherical, coordinates
-//!   alpha, beta, gamma), `R_X`/`R_Y`/`R_Z` (revolute about that axis of the joint frame,
-//!   coordinate theta), `P_X`/`P_Y`/`P_Z` (prismatic, coordinate d); a name already taken gets the
-//!   link number appended (`theta3`). `q_min`/`q_max` become the coordinates' ranges, `q_initial`
+//!   alpha, beta, gamma), `SPATIAL_EULER_XYZ` (spatial: x, y, z, alpha, beta, gamma),
+//!   `R_X`/`R_Y`/`R_Z`/`R_AXIS` (revolute about that axis of the joint frame, or the `axis`
+//!   attribute's, coordinate theta), `P_X`/`P_Y`/`P_Z` (prismatic, coordinate d),
+//!   `U_XY`/`U_XZ`/`U_YZ` (universal: about the first axis, then the second; alpha, beta or gamma
+//!   by axis), `PLANAR_XY`/`PLANAR_XZ`/`PLANAR_YZ` (planar: the two translations, then the
+//!   rotation about the third axis, theta); a name already taken gets the link number appended
+//!   (`theta3`). `q_min`/`q_max` become the coordinates' ranges, `q_initial`
 //!   the configuration `initial`. The link's body is the segment from its joint to its
 //!   `end_location`, radius 0 (CASPR has no collision geometry).
 //! * cables: as for a platform, each straight from the base (link 0) to one link k, the
 //!   attachment in link k's frame (`attachment_reference="com"` adds k's `com_location`).
 //!
-//! Not supported, with a message: other joint types (a spatial joint inside a chain), cables
-//! routed over several links (more than two attachments), cables between two links.
+//! Not supported, with a message: other joint types, cables routed over several links (more than
+//! two attachments), cables between two links.
 
 use roxmltree::Node;
 use serde::Serialize;
@@ -48,7 +52,7 @@ struct LinkIn {
     parent: usize,
     location: [f64; 3],
     kind: &'static str,
-    axis: Option<[f64; 3]>,
+    axes: Vec<[f64; 3]>,
     coordinates: Vec<String>,
     range: Vec<[f64; 2]>,
     initial: Vec<f64>,
@@ -75,18 +79,34 @@ fn links(xml: &str) -> Result<Vec<LinkIn>> {
         let name = link.attribute("name").map_or_else(|| format!("link {num}"), str::to_owned);
         let joint = child(link, "joint").ok_or_else(|| Error::new(BODIES, format!("{at}: the link has no <joint>")))?;
         let jt = joint.attribute("type").unwrap_or_default();
-        let (kind, axis, base_names): (&str, Option<[f64; 3]>, &[&str]) = match jt {
-            "S_EULER_XYZ" => ("spherical", None, &["alpha", "beta", "gamma"]),
-            "R_X" => ("revolute", Some([1.0, 0.0, 0.0]), &["theta"]),
-            "R_Y" => ("revolute", Some([0.0, 1.0, 0.0]), &["theta"]),
-            "R_Z" => ("revolute", Some([0.0, 0.0, 1.0]), &["theta"]),
-            "P_X" => ("prismatic", Some([1.0, 0.0, 0.0]), &["d"]),
-            "P_Y" => ("prismatic", Some([0.0, 1.0, 0.0]), &["d"]),
-            "P_Z" => ("prismatic", Some([0.0, 0.0, 1.0]), &["d"]),
+        let (x, y, z) = ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]);
+        // the joint type as written, its axis (revolute, prismatic) or axes (universal, planar),
+        // and its coordinates' base names
+        let (kind, axes, base_names): (&str, Vec<[f64; 3]>, &[&str]) = match jt {
+            "S_EULER_XYZ" => ("spherical", vec![], &["alpha", "beta", "gamma"]),
+            "SPATIAL_EULER_XYZ" => ("spatial", vec![], &["x", "y", "z", "alpha", "beta", "gamma"]),
+            "R_X" => ("revolute", vec![x], &["theta"]),
+            "R_Y" => ("revolute", vec![y], &["theta"]),
+            "R_Z" => ("revolute", vec![z], &["theta"]),
+            "R_AXIS" => ("revolute", vec![joint_axis(joint, num)?], &["theta"]),
+            "P_X" => ("prismatic", vec![x], &["d"]),
+            "P_Y" => ("prismatic", vec![y], &["d"]),
+            "P_Z" => ("prismatic", vec![z], &["d"]),
+            "U_XY" => ("universal", vec![x, y], &["alpha", "beta"]),
+            "U_XZ" => ("universal", vec![x, z], &["alpha", "gamma"]),
+            "U_YZ" => ("universal", vec![y, z], &["beta", "gamma"]),
+            // CASPR's planar joints: the two translations, then the rotation about the third axis
+            "PLANAR_XY" => ("planar", vec![x, y, z], &["x", "y", "theta"]),
+            "PLANAR_XZ" => ("planar", vec![x, z, y], &["x", "z", "theta"]),
+            "PLANAR_YZ" => ("planar", vec![y, z, x], &["y", "z", "theta"]),
             other => {
                 return Err(Error::new(
                     BODIES,
-                    format!("{}: joint type {other:?} of link {num} is not supported in a multi-link robot (S_EULER_XYZ, R_X/R_Y/R_Z, P_X/P_Y/P_Z are)", line(joint)),
+                    format!(
+                        "{}: joint type {other:?} of link {num} is not supported in a multi-link robot (S_EULER_XYZ, SPATIAL_EULER_XYZ, \
+                         R_X/R_Y/R_Z/R_AXIS, P_X/P_Y/P_Z, U_XY/U_XZ/U_YZ and PLANAR_XY/PLANAR_XZ/PLANAR_YZ are)",
+                        line(joint)
+                    ),
                 ))
             }
         };
@@ -120,9 +140,19 @@ fn links(xml: &str) -> Result<Vec<LinkIn>> {
             Some(ph) => (child_numbers::<3>(BODIES, ph, "end_location")?.unwrap_or([0.0; 3]), child_numbers::<3>(BODIES, ph, "com_location")?.unwrap_or([0.0; 3])),
             None => ([0.0; 3], [0.0; 3]),
         };
-        out.push(LinkIn { name, parent, location, kind, axis, coordinates, range: lo.into_iter().zip(hi).map(|(a, b)| [a, b]).collect(), initial, end, com });
+        out.push(LinkIn { name, parent, location, kind, axes, coordinates, range: lo.into_iter().zip(hi).map(|(a, b)| [a, b]).collect(), initial, end, com });
     }
     Ok(out)
+}
+
+/// The `axis` attribute of an `R_AXIS` joint (CASPR normalises it), a nonzero direction.
+fn joint_axis(joint: roxmltree::Node, num: usize) -> Result<[f64; 3]> {
+    let text = joint.attribute("axis").ok_or_else(|| Error::new(BODIES, format!("{}: the R_AXIS joint of link {num} has no axis", line(joint))))?;
+    let parts: Vec<f64> = text.split_whitespace().filter_map(|p| p.parse::<f64>().ok().filter(|x| x.is_finite())).collect();
+    match parts[..] {
+        [a, b, c] if (a * a + b * b + c * c).sqrt() > 1e-12 => Ok([a, b, c]),
+        _ => Err(Error::new(BODIES, format!("{}: axis of the R_AXIS joint of link {num}: {:?} is not a nonzero direction of three numbers", line(joint), text.trim()))),
+    }
 }
 
 /// One cable as read: base anchor, link number, anchor in that link's frame, properties.
@@ -199,7 +229,7 @@ pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<
                     name: l.name.clone(),
                     parent: link_name(l.parent),
                     location: l.location,
-                    joint: OutJoint { kind: l.kind, axis: l.axis, coordinates: l.coordinates.clone(), range: l.range.clone() },
+                    joint: OutJoint::new(l.kind, &l.axes, l.coordinates.clone(), l.range.clone()),
                     body: OutBody { from: [0.0; 3], to: l.end },
                 })
                 .collect()),

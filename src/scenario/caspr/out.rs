@@ -116,8 +116,22 @@ pub(super) struct OutJoint {
     pub(super) kind: &'static str,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) axis: Option<[f64; 3]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) axes: Option<Vec<[f64; 3]>>,
     pub(super) coordinates: Vec<String>,
     pub(super) range: Vec<[f64; 2]>,
+}
+
+impl OutJoint {
+    /// A joint of type `kind` with its axes: one is written as `axis`, more as `axes`.
+    pub(super) fn new(kind: &'static str, axes: &[[f64; 3]], coordinates: Vec<String>, range: Vec<[f64; 2]>) -> OutJoint {
+        let (axis, axes) = match axes {
+            [] => (None, None),
+            [one] => (Some(*one), None),
+            more => (None, Some(more.to_vec())),
+        };
+        OutJoint { kind, axis, axes, coordinates, range }
+    }
 }
 
 /// A link's body as written: the segment from its joint.

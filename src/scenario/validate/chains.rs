@@ -6,7 +6,7 @@
 use nalgebra::Vector3;
 use std::f64::consts::PI;
 
-use super::{vec3, MAX_DOF, MAX_LINKS};
+use super::{vec3, Fixed, MAX_DOF, MAX_LINKS};
 use crate::error::{finite, Error, Result};
 use crate::model::{Chain, Clearance, Joint, JointCoord, JointPath, Link, Robot};
 use crate::query::cables::{attached_inside, cables_at_config};
@@ -144,33 +144,71 @@ fn chain(raw: &[RawLink]) -> Result<Chain> {
 fn joint(path: &str, l: &RawLink) -> Result<Joint> {
     let j = &l.joint;
     let field = format!("{path}.joint");
+    let unit = |at: String, a: &Fixed<f64, 3>| -> Result<Vector3<f64>> {
+        let a = vec3(&at, a)?;
+        let n = a.norm();
+        if !(n > 1e-12) || !n.is_finite() {
+            return Err(Error::new(at, "has zero length: a joint axis needs a direction"));
+        }
+        Ok(a / n)
+    };
     let axis = |needed: bool| -> Result<Option<Vector3<f64>>> {
         match (&j.axis, needed) {
             (None, true) => Err(Error::new(format!("{field}.axis"), format!("a {} joint needs an axis", j.kind))),
             (Some(_), false) => Err(Error::new(format!("{field}.axis"), format!("a {} joint has no axis", j.kind))),
             (None, false) => Ok(None),
-            (Some(a), true) => {
-                let a = vec3(&format!("{field}.axis"), a)?;
-                let n = a.norm();
-                if !(n > 1e-12) || !n.is_finite() {
-                    return Err(Error::new(format!("{field}.axis"), "has zero length: a joint axis needs a direction"));
-                }
-                Ok(Some(a / n))
-            }
+            (Some(a), true) => unit(format!("{field}.axis"), a).map(Some),
         }
     };
-    Ok(match j.kind.as_str() {
-        "free" => {
-            axis(false)?;
-            Joint::Free
+    // the axes of a universal (2) or planar (3) joint, none for the others
+    let axes = |count: usize| -> Result<Vec<Vector3<f64>>> {
+        match (&j.axes, count) {
+            (Some(_), 0) => Err(Error::new(format!("{field}.axes"), format!("a {} joint has no axes", j.kind))),
+            (None, 0) => Ok(vec![]),
+            (None, _) => Err(Error::new(format!("{field}.axes"), format!("a {} joint needs {count} axes", j.kind))),
+            (Some(list), _) if list.len() != count => Err(Error::new(format!("{field}.axes"), format!("a {} joint needs {count} axes, got {}", j.kind, list.len()))),
+            (Some(list), _) => list.iter().enumerate().map(|(k, a)| unit(format!("{field}.axes[{k}]"), a)).collect(),
         }
-        "spherical" => {
+    };
+    let apart = |a: &Vector3<f64>, b: &Vector3<f64>, what: &str| -> Result<()> {
+        if a.cross(b).norm() < 1e-9 {
+            return Err(Error::new(format!("{field}.axes"), format!("{what} are parallel: they must span a plane")));
+        }
+        Ok(())
+    };
+    let kind = j.kind.as_str();
+    if !matches!(kind, "universal" | "planar") {
+        axes(0)?;
+    }
+    Ok(match kind {
+        "free" | "spherical" | "spatial" => {
             axis(false)?;
-            Joint::Spherical
+            match kind {
+                "free" => Joint::Free,
+                "spherical" => Joint::Spherical,
+                _ => Joint::Spatial,
+            }
         }
         "revolute" => Joint::Revolute(axis(true)?.unwrap_or_else(Vector3::x)),
         "prismatic" => Joint::Prismatic(axis(true)?.unwrap_or_else(Vector3::x)),
-        other => return Err(Error::new(format!("{field}.type"), format!("unknown joint type {other:?}; expected free, spherical, revolute or prismatic"))),
+        "universal" => {
+            axis(false)?;
+            let a = axes(2)?;
+            apart(&a[0], &a[1], "the two rotation axes")?;
+            Joint::Universal([a[0], a[1]])
+        }
+        "planar" => {
+            axis(false)?;
+            let a = axes(3)?;
+            apart(&a[0], &a[1], "the two translation axes")?;
+            Joint::Planar([a[0], a[1], a[2]])
+        }
+        other => {
+            return Err(Error::new(
+                format!("{field}.type"),
+                format!("unknown joint type {other:?}; expected free, spatial, spherical, universal, revolute, prismatic or planar"),
+            ))
+        }
     })
 }
 

@@ -11,7 +11,17 @@ use serde_json::{json, Map, Value};
 use super::{fresh_name, get, get_mut_existing, len, number, remove, round12, set, Path};
 
 /// The joint types, as the format names them.
-pub const JOINTS: [&str; 4] = ["free", "spherical", "revolute", "prismatic"];
+pub const JOINTS: [&str; 7] = ["free", "spatial", "spherical", "universal", "revolute", "prismatic", "planar"];
+
+/// How many axes a joint of type `kind` is given as `axes` (universal 2, planar 3; 0: none, or
+/// one `axis`), and the default ones (CASPR's `U_XZ`, `PLANAR_YZ`).
+fn joint_axes(kind: &str) -> Option<Value> {
+    match kind {
+        "universal" => Some(json!([[1, 0, 0], [0, 0, 1]])),
+        "planar" => Some(json!([[0, 1, 0], [0, 0, 1], [1, 0, 0]])),
+        _ => None,
+    }
+}
 
 /// Whether the scenario is a multi-link robot (it has `robot.links`).
 pub fn is_multi_link(doc: &Value) -> bool {
@@ -54,7 +64,7 @@ pub fn all_coordinates(doc: &Value) -> Vec<(String, &'static str)> {
 /// The unit of coordinate `k` of a joint of type `kind`.
 pub fn unit(kind: &str, k: usize) -> &'static str {
     match (kind, k) {
-        ("free", 0..=2) | ("prismatic", _) => "m",
+        ("free" | "spatial", 0..=2) | ("prismatic", _) | ("planar", 0..=1) => "m",
         _ => "rad",
     }
 }
@@ -68,7 +78,10 @@ pub fn joint_type(doc: &Value, i: usize) -> String {
 fn stems(kind: &str) -> &'static [&'static str] {
     match kind {
         "free" => &["x", "y", "z", "phi", "theta", "sigma"],
+        "spatial" => &["x", "y", "z", "alpha", "beta", "gamma"],
         "spherical" => &["alpha", "beta", "gamma"],
+        "universal" => &["alpha", "gamma"],
+        "planar" => &["u", "v", "theta"],
         "prismatic" => &["d"],
         _ => &["q"],
     }
@@ -93,7 +106,8 @@ fn names_outside(doc: &Value, skip: Option<usize>) -> Vec<String> {
 
 /// Gives link `i` a joint of type `kind`: coordinates with names not used elsewhere (kept where
 /// the count and the units stay), explicit ranges, an axis for revolute and prismatic joints (the old one
-/// kept, else x). Every configuration drops the old coordinates and gets the new ones (at 0, or
+/// kept, else x), axes for universal and planar ones (the old ones kept, else CASPR's `U_XZ`,
+/// `PLANAR_YZ`). Every configuration drops the old coordinates and gets the new ones (at 0, or
 /// the old value where the name is kept).
 pub fn set_joint_type(doc: &mut Value, i: usize, kind: &str) {
     if !JOINTS.contains(&kind) {
@@ -121,6 +135,11 @@ pub fn set_joint_type(doc: &mut Value, i: usize, kind: &str) {
     j.insert("type".into(), json!(kind));
     if matches!(kind, "revolute" | "prismatic") {
         j.insert("axis".into(), axis);
+    }
+    if let Some(axes) = joint_axes(kind) {
+        // the old axes kept where the count stays
+        let old = get(doc, &joint.k("axes")).filter(|a| a.as_array().map(Vec::len) == axes.as_array().map(Vec::len)).cloned();
+        j.insert("axes".into(), old.unwrap_or(axes));
     }
     j.insert("coordinates".into(), json!(names));
     j.insert("range".into(), Value::Array((0..names.len()).map(|k| default_range(kind, k)).collect()));
@@ -336,6 +355,23 @@ mod tests {
         set_joint_type(&mut d, 0, "free");
         assert!(get(&d, &Path::of(&["robot", "links"]).i(0).k("joint").k("axis")).is_none());
         valid(&d);
+        // universal and planar: CASPR's U_XZ and PLANAR_YZ axes, kept when the count stays
+        set_joint_type(&mut d, 1, "universal");
+        let axes = Path::of(&["robot", "links"]).i(1).k("joint").k("axes");
+        assert_eq!(get(&d, &axes), Some(&json!([[1, 0, 0], [0, 0, 1]])));
+        assert!(valid(&d).robot.chain.as_ref().unwrap().links[1].joint == cablenav::model::Joint::Universal([nalgebra::Vector3::x(), nalgebra::Vector3::z()]));
+        set(&mut d, &axes.i(1), json!([0, 1, 0]));
+        set_joint_type(&mut d, 1, "universal");
+        assert_eq!(get(&d, &axes), Some(&json!([[1, 0, 0], [0, 1, 0]])));
+        set_joint_type(&mut d, 1, "planar");
+        assert_eq!(get(&d, &axes), Some(&json!([[0, 1, 0], [0, 0, 1], [1, 0, 0]])));
+        assert_eq!((unit("planar", 1), unit("planar", 2)), ("m", "rad"));
+        let s = valid(&d);
+        assert_eq!(s.robot.chain.as_ref().unwrap().links[1].coords.iter().map(|c| c.range).collect::<Vec<_>>(), [[-1.0, 1.0], [-1.0, 1.0], [-round12(std::f64::consts::PI), round12(std::f64::consts::PI)]], "lengths in m, the angle a whole turn");
+        // spatial: six coordinates, no axes left over
+        set_joint_type(&mut d, 1, "spatial");
+        assert!(get(&d, &axes).is_none());
+        assert_eq!(valid(&d).robot.chain.as_ref().unwrap().dof(), 12, "the free root and the spatial link: six each");
     }
 
     #[test]

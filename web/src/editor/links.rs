@@ -5,7 +5,7 @@
 use leptos::prelude::*;
 use serde_json::{json, Value};
 
-use super::fields::{options, Choice, FieldMessage, NameField, NumField, Vec3Field};
+use super::fields::{options, Choice, FieldMessage, MatrixField, NameField, NumField, Vec3Field};
 use super::Ed;
 use crate::edit_logic::{self as el, Path, JOINTS};
 
@@ -66,7 +66,12 @@ fn LinkItem(ed: Ed, i: usize) -> impl IntoView {
     let joint = path.k("joint");
     let axis = {
         let joint = joint.clone();
-        move || matches!(kind.get().as_str(), "revolute" | "prismatic").then(|| view! { <Vec3Field ed path=joint.k("axis") label="Axis (joint frame)" /> })
+        move || match kind.get().as_str() {
+            "revolute" | "prismatic" => Some(view! { <Vec3Field ed path=joint.k("axis") label="Axis (joint frame)" /> }.into_any()),
+            "universal" => Some(view! { <MatrixField ed path=joint.k("axes") rows=2 cols=3 label="Axes: the first rotation's, then the second's" /> }.into_any()),
+            "planar" => Some(view! { <MatrixField ed path=joint.k("axes") rows=3 cols=3 label="Axes: two translations, then the rotation's" /> }.into_any()),
+            _ => None,
+        }
     };
     let coordinate_rows = {
         let joint = joint.clone();
