@@ -254,7 +254,7 @@ fn a_model_directory_names_its_files() {
 #[test]
 fn trajectories_import_as_timed_splines() {
     use cablenav::scenario::caspr::model_to_json;
-    let out = model_to_json("CoGiRo", COGIRO_BODIES, COGIRO_CABLES, Some(COGIRO_TRAJECTORIES)).unwrap();
+    let out = model_to_json("CoGiRo", COGIRO_BODIES, COGIRO_CABLES, Some(COGIRO_TRAJECTORIES), None).unwrap();
     assert!(out.notes.is_empty(), "{:?}", out.notes);
     let s = Scenario::from_json(&out.json).unwrap();
     let names: Vec<&str> = s.trajectories.iter().map(|t| t.name.as_str()).collect();
@@ -276,7 +276,7 @@ fn trajectories_import_as_timed_splines() {
         .replacen("<quintic_spline_trajectory id=\"general_2\"", "<linear_spline_trajectory id=\"general_2\"", 1)
         .replacen("</quintic_spline_trajectory>\n        <quintic_spline_trajectory id=\"general_3\"", "</linear_spline_trajectory>\n        <quintic_spline_trajectory id=\"general_3\"", 1)
         .replace("</trajectories>", "<operational_trajectories/></trajectories>");
-    let out = model_to_json("c", COGIRO_BODIES, COGIRO_CABLES, Some(&xml)).unwrap();
+    let out = model_to_json("c", COGIRO_BODIES, COGIRO_CABLES, Some(&xml), None).unwrap();
     assert!(out.notes.iter().any(|n| n.contains("linear_spline_trajectory id=\"general_2\"") && n.contains("skipped")), "{:?}", out.notes);
     assert!(out.notes.iter().any(|n| n.contains("operational_trajectories")), "{:?}", out.notes);
     let s = Scenario::from_json(&out.json).unwrap();
@@ -285,17 +285,17 @@ fn trajectories_import_as_timed_splines() {
     assert_eq!(g1.knots.as_ref().unwrap().points.iter().map(|k| k.time).collect::<Vec<_>>(), [0.0, 1.5, 2.0]);
     // refusals
     let spin = COGIRO_TRAJECTORIES.replacen("<q_dot>0.0 0.0 0.0 0.0 0.0 0.0</q_dot>", "<q_dot>0.0 0.0 0.0 0.1 0.0 0.0</q_dot>", 1);
-    let e = model_to_json("c", COGIRO_BODIES, COGIRO_CABLES, Some(&spin)).unwrap_err();
+    let e = model_to_json("c", COGIRO_BODIES, COGIRO_CABLES, Some(&spin), None).unwrap_err();
     assert!(e.field == "trajectories" && e.reason.contains("line 7") && e.reason.contains("angular rate"), "{e}");
     let odd = COGIRO_TRAJECTORIES.replacen("time_definition=\"relative\"", "time_definition=\"soon\"", 1);
-    let e = model_to_json("c", COGIRO_BODIES, COGIRO_CABLES, Some(&odd)).unwrap_err();
+    let e = model_to_json("c", COGIRO_BODIES, COGIRO_CABLES, Some(&odd), None).unwrap_err();
     assert!(e.field == "trajectories" && e.reason.contains("soon"), "{e}");
-    let e = model_to_json("c", COGIRO_BODIES, COGIRO_CABLES, Some("<bodies_system/>")).unwrap_err();
+    let e = model_to_json("c", COGIRO_BODIES, COGIRO_CABLES, Some("<bodies_system/>"), None).unwrap_err();
     assert!(e.field == "trajectories" && e.reason.contains("<trajectories>"), "{e}");
     let bad_time = COGIRO_TRAJECTORIES.replacen("<point time=\"2.0\">", "<point time=\"later\">", 1);
-    let e = model_to_json("c", COGIRO_BODIES, COGIRO_CABLES, Some(&bad_time)).unwrap_err();
+    let e = model_to_json("c", COGIRO_BODIES, COGIRO_CABLES, Some(&bad_time), None).unwrap_err();
     assert!(e.reason.contains("finite time"), "{e}");
     // a multi-link model's trajectories are not read, with a note
-    let out = model_to_json("arm", ARM_BODIES, ARM_CABLES, Some(COGIRO_TRAJECTORIES)).unwrap();
+    let out = model_to_json("arm", ARM_BODIES, ARM_CABLES, Some(COGIRO_TRAJECTORIES), None).unwrap();
     assert!(out.notes.iter().any(|n| n.contains("multi-link")), "{:?}", out.notes);
 }

@@ -592,7 +592,7 @@ const COGIRO_TRAJECTORIES: &str = include_str!("../../shared/models/caspr/CoGiRo
 /// feasible just above it, some sample violated just below.
 #[test]
 fn cogiro_spline_trajectories_match_the_reference() {
-    let imported = cablenav::scenario::caspr::model_to_json("CoGiRo", COGIRO_BODIES, COGIRO_CABLES, Some(COGIRO_TRAJECTORIES)).unwrap();
+    let imported = cablenav::scenario::caspr::model_to_json("CoGiRo", COGIRO_BODIES, COGIRO_CABLES, Some(COGIRO_TRAJECTORIES), None).unwrap();
     let s = Scenario::from_json(&imported.json).unwrap();
     let d = s.robot.dynamics.clone().expect("CoGiRo has mass");
     let to3 = |v: &Vector3<f64>| v3(v.x, v.y, v.z);

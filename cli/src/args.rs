@@ -224,6 +224,9 @@ pub enum Command {
         /// model [default: MODEL_DIR's <name>_trajectories.xml, if there]
         #[arg(long, value_name = "FILE")]
         trajectories: Option<String>,
+        /// Import the cable set with this id [default: the cables file's default_cable_set]
+        #[arg(long, value_name = "ID")]
+        cable_set: Option<String>,
     },
     /// Print a shell completion script (e.g. `cablenav completions bash > /etc/bash_completion.d/cablenav`)
     Completions {

@@ -91,8 +91,9 @@ where
             clap_complete::generate(shell, &mut Cli::command(), "cablenav", &mut out);
             return Ok(String::from_utf8_lossy(&out).into_owned());
         }
-        Command::Import { dir, out, name, trajectories } => {
-            return Ok(import(&dir, Model { out: out.as_deref(), name: name.as_deref(), trajectories: trajectories.as_deref() }, read, write, list)?);
+        Command::Import { dir, out, name, trajectories, cable_set } => {
+            let model = Model { out: out.as_deref(), name: name.as_deref(), trajectories: trajectories.as_deref(), cable_set: cable_set.as_deref() };
+            return Ok(import(&dir, model, read, write, list)?);
         }
         command => command.invocation()?,
     };
@@ -137,11 +138,13 @@ struct Model<'a> {
     name: Option<&'a str>,
     /// Another trajectories file than the model directory's.
     trajectories: Option<&'a str>,
+    /// The cable set to import (`None`: the file's default).
+    cable_set: Option<&'a str>,
 }
 
 /// `cablenav import`: the CASPR model in `dir` (with its trajectories, or those of
 /// `--trajectories`) as scenario JSON, written to `out` (then a summary is returned) or returned.
-fn import(dir: &str, Model { out, name, trajectories }: Model, read: Read, write: Write, list: List) -> cablenav::Result<String> {
+fn import(dir: &str, Model { out, name, trajectories, cable_set }: Model, read: Read, write: Write, list: List) -> cablenav::Result<String> {
     let files = cablenav::scenario::caspr::model_files(&list(dir)?).map_err(|e| cablenav::Error::new(dir, e.reason))?;
     let path = |f: &str| format!("{}/{f}", dir.trim_end_matches('/'));
     let (bodies, cables) = (read(&path(&files.bodies))?, read(&path(&files.cables))?);
@@ -150,7 +153,8 @@ fn import(dir: &str, Model { out, name, trajectories }: Model, read: Read, write
         (None, Some(own)) => Some(read(&path(own))?),
         (None, None) => None,
     };
-    let imported = cablenav::scenario::caspr::model_to_json(name.unwrap_or(&files.name), &bodies, &cables, trajectories.as_deref())?;
+    let imported = cablenav::scenario::caspr::model_to_json(name.unwrap_or(&files.name), &bodies, &cables, trajectories.as_deref(), cable_set)
+        .map_err(|e| if e.field == "cable_set" { cablenav::Error::new("--cable-set", e.reason) } else { e })?;
     let scenario = Scenario::from_json(&imported.json)?;
     let Some(out) = out else { return Ok(imported.json) };
     write(out, imported.json.as_bytes())?;

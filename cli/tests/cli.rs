@@ -336,6 +336,29 @@ fn import_reads_a_model_directory() {
     assert_eq!(e.field(), "empty");
 }
 
+/// `import --cable-set ID` imports another cable set of the cables file (the default one without
+/// it, and a note names the sets); an unknown set is an error at `--cable-set` listing the file's.
+#[test]
+fn import_picks_a_cable_set() {
+    let bodies = include_str!("../../../shared/models/caspr/Example_spatial/Example_spatial_bodies.xml");
+    let cables = include_str!("../../../shared/models/caspr/Example_spatial/Example_spatial_cables.xml");
+    let read = |p: &str| match p {
+        "m/Example_spatial_bodies.xml" => Ok(bodies.to_string()),
+        "m/Example_spatial_cables.xml" => Ok(cables.to_string()),
+        _ => Err(cablenav::Error::new(p, "no such file")),
+    };
+    let list = |_: &str| Ok(vec!["Example_spatial_cables.xml".to_string(), "Example_spatial_bodies.xml".into()]);
+    let write = |_: &str, _: &[u8]| Ok(());
+    let count = |text: &str| cablenav::Scenario::from_json(text).unwrap().robot.cables.len();
+    assert_eq!(count(&run("import m".split(' '), &read, &write, &list, &mut |_| {}).unwrap()), 7);
+    assert_eq!(count(&run("import m --cable-set basic_8_cables".split(' '), &read, &write, &list, &mut |_| {}).unwrap()), 8);
+    let printed = run("import m --cable-set cross_8_cables --out o.json".split(' '), &read, &write, &list, &mut |_| {}).unwrap();
+    assert!(printed.contains("(8 cables") && printed.contains("cable set \"cross_8_cables\" of 4"), "{printed}");
+    let e = run("import m --cable-set nine".split(' '), &read, &write, &list, &mut |_| {}).unwrap_err();
+    assert_eq!(e.field(), "--cable-set");
+    assert!(e.to_string().contains("\"nine\"") && e.to_string().contains("basic_7_cables"), "{e}");
+}
+
 /// `plan --query A --query B … --json` prints one report per query, in order, each with its
 /// `status` and `elapsed_ms`; the second query on q1-q2's slice reuses its atlas (`reused_charts`),
 /// the one on another slice does not; each verdict is the one the query gets alone.

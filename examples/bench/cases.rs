@@ -229,7 +229,7 @@ pub fn run_all(platform: &str, filter: &str, now: &dyn Fn() -> f64, out: &mut dy
     // CoGiRo (8 cables, 91 kg) imported from CASPR's files: its quintic spline general_1, whose
     // turns are enclosed by polynomials (docs/dynamics.md), exact at its own timing, exact with the
     // search of the least time scale, and point-wise.
-    let cogiro = cablenav::scenario::caspr::model_to_json("CoGiRo", COGIRO[0], COGIRO[1], Some(COGIRO[2])).expect("CoGiRo imports");
+    let cogiro = cablenav::scenario::caspr::model_to_json("CoGiRo", COGIRO[0], COGIRO[1], Some(COGIRO[2]), None).expect("CoGiRo imports");
     let cogiro = parse(&cogiro.json);
     let general = traj(&cogiro, "general_1");
     let sections = |s: &Scenario, t: &cablenav::model::Trajectory| summary_of(&verify_sections(s, t).expect("exact verification"));

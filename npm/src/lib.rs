@@ -286,10 +286,11 @@ pub fn check(#[wasm_bindgen(unchecked_param_type = "ScenarioInput")] scenario: J
 }
 
 /// A CASPR model as a scenario: the texts of its bodies and cables files and, optionally, of its
-/// trajectories file (timed quintic and cubic splines), as `cablenav import` converts them.
+/// trajectories file (timed quintic and cubic splines) and the id of the cable set to import (the
+/// file's default without it), as `cablenav import [--cable-set ID]` converts them.
 #[wasm_bindgen(js_name = importCaspr, unchecked_return_type = "CasprImport")]
-pub fn import_caspr(name: String, bodies: String, cables: String, trajectories: Option<String>) -> Result<JsValue, JsValue> {
-    let imported = cablenav::scenario::caspr::model_to_json(&name, &bodies, &cables, trajectories.as_deref()).map_err(scenario_error)?;
+pub fn import_caspr(name: String, bodies: String, cables: String, trajectories: Option<String>, cable_set: Option<String>) -> Result<JsValue, JsValue> {
+    let imported = cablenav::scenario::caspr::model_to_json(&name, &bodies, &cables, trajectories.as_deref(), cable_set.as_deref()).map_err(scenario_error)?;
     let out = js_sys::Object::new();
     js_sys::Reflect::set(&out, &"scenario".into(), &js_sys::JSON::parse(&imported.json)?)?;
     let notes: js_sys::Array = imported.notes.iter().map(|n| JsValue::from_str(n)).collect();

@@ -246,6 +246,13 @@ test('importCaspr converts a CASPR model as `cablenav import` does, timed spline
   const untimed = cablenav.importCaspr('CoGiRo', read('bodies'), read('cables'));
   assert.deepEqual(untimed.scenario.trajectories.map((t) => t.name), ['hold initial']);
   assert.throws(() => cablenav.importCaspr('x', read('cables'), read('cables')), (e) => e.name === 'ScenarioError' && e.field === 'bodies');
+  // another cable set of the file, as `cablenav import --cable-set` picks it
+  const spatial = join(root, '..', 'shared', 'models', 'caspr', 'Example_spatial');
+  const file = (f) => readFileSync(join(spatial, `Example_spatial_${f}.xml`), 'utf8');
+  const cross = join(scratch, 'cross.json');
+  execFileSync(cliPath, ['import', spatial, '--cable-set', 'cross_8_cables', '--out', cross]);
+  close(cablenav.importCaspr('Example_spatial', file('bodies'), file('cables'), undefined, 'cross_8_cables').scenario, JSON.parse(readFileSync(cross, 'utf8')));
+  assert.throws(() => cablenav.importCaspr('x', file('bodies'), file('cables'), undefined, 'nine'), (e) => e.name === 'ScenarioError' && e.field === 'cable_set');
 });
 
 test('plan takes several queries (one report each, the atlas kept) and paper coordinates', () => {

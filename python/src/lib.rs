@@ -340,10 +340,11 @@ fn plan(
 
 /// A CASPR model directory as a scenario: its `<name>_bodies.xml` and `_cables.xml` and its
 /// `_trajectories.xml` if there (or the trajectories file `trajectories`), as `cablenav import`
-/// converts them. Returns `{"scenario": dict, "notes": [str]}`; `name` defaults to the model's.
+/// converts them. Returns `{"scenario": dict, "notes": [str]}`; `name` defaults to the model's,
+/// `cable_set` (a set's id, as `--cable-set`) to the cables file's default set.
 #[pyfunction]
-#[pyo3(signature = (model_dir, *, trajectories=None, name=None))]
-fn import_caspr(py: Python<'_>, model_dir: &Bound<'_, PyAny>, trajectories: Option<&Bound<'_, PyAny>>, name: Option<String>) -> PyResult<Py<PyAny>> {
+#[pyo3(signature = (model_dir, *, trajectories=None, name=None, cable_set=None))]
+fn import_caspr(py: Python<'_>, model_dir: &Bound<'_, PyAny>, trajectories: Option<&Bound<'_, PyAny>>, name: Option<String>, cable_set: Option<String>) -> PyResult<Py<PyAny>> {
     let fspath = |p: &Bound<'_, PyAny>| -> PyResult<String> { py.import("os")?.call_method1("fspath", (p,))?.extract() };
     let dir = fspath(model_dir)?;
     let trajectories = trajectories.map(fspath).transpose()?;
@@ -361,7 +362,7 @@ fn import_caspr(py: Python<'_>, model_dir: &Bound<'_, PyAny>, trajectories: Opti
                 (None, Some(own)) => Some(read(&path(own))?),
                 (None, None) => None,
             };
-            cablenav::scenario::caspr::model_to_json(name.as_deref().unwrap_or(&files.name), &read(&path(&files.bodies))?, &read(&path(&files.cables))?, traj_text.as_deref())
+            cablenav::scenario::caspr::model_to_json(name.as_deref().unwrap_or(&files.name), &read(&path(&files.bodies))?, &read(&path(&files.cables))?, traj_text.as_deref(), cable_set.as_deref())
         })
         .map_err(|e| scenario_error(py, e, None))?;
     let json = py.import("json")?;

@@ -234,6 +234,20 @@ def test_import_caspr_equals_the_cli(cli, tmp_path):
     assert e.value.field == str(tmp_path) and "bodies" in e.value.reason
 
 
+def test_import_caspr_picks_a_cable_set(tmp_path):
+    model = ROOT.parent / "shared" / "models" / "caspr" / "Example_spatial"
+    default = cablenav.import_caspr(model)
+    assert len(default["scenario"]["robot"]["cables"]) == 7
+    assert any('cable set "basic_7_cables" of 4' in n for n in default["notes"])
+    written = tmp_path / "cross.json"
+    exe = os.environ.get("CABLENAV") or str(ROOT / "target" / "debug" / "cablenav")
+    subprocess.run([exe, "import", str(model), "--cable-set", "cross_8_cables", "--out", str(written)], check=True, capture_output=True)
+    assert cablenav.import_caspr(model, cable_set="cross_8_cables")["scenario"] == json.loads(written.read_text())
+    with pytest.raises(cablenav.ScenarioError) as e:
+        cablenav.import_caspr(model, cable_set="nine")
+    assert e.value.field == "cable_set" and "basic_8_cables" in e.value.reason
+
+
 def test_plan_takes_several_queries_and_paper_coordinates(cli):
     robocrane = ROOT / "static" / "scenarios" / "robocrane.json"
     ours = cablenav.plan(robocrane, ["q1-q2", "q3-q4"])

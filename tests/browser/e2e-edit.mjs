@@ -308,6 +308,18 @@ await test('a CASPR model (bodies + cables files) imports', async () => {
   await open(page, 'Robot');
   const rows = await page.locator('[data-testid="cable-row"]').count();
   if (rows !== 6) throw new Error(`${rows} cable rows`);
+  if (await page.locator('[data-testid="caspr-cable-set"]').count()) throw new Error('a cable-set choice for a file with one set');
+  // a cables file with several cable sets: the default imported, the others offered
+  const spatial = join(caspr, 'Example_spatial');
+  await page.setInputFiles('[data-testid="import-caspr"]', [join(spatial, 'Example_spatial_bodies.xml'), join(spatial, 'Example_spatial_cables.xml')]);
+  await page.waitForSelector('[data-testid="caspr-cable-set"]');
+  const sets = await page.$$eval('[data-testid="caspr-cable-set"] option', (os) => os.map((o) => [o.value, o.selected]));
+  if (sets.length !== 4 || !sets.some(([id, on]) => id === 'basic_7_cables' && on)) throw new Error(`cable sets offered: ${JSON.stringify(sets)}`);
+  if (JSON.parse(await source(page)).robot.cables.length !== 7) throw new Error('the default set has 7 cables');
+  await page.selectOption('[data-testid="caspr-cable-set"]', 'cross_8_cables');
+  await page.waitForFunction(() => JSON.parse(document.querySelector('textarea[data-testid="source"]').value).robot.cables.length === 8, null, { timeout: 5000 }).catch(() => {});
+  const crossed = JSON.parse(await source(page));
+  if (crossed.robot.cables.length !== 8) throw new Error(`cross_8_cables imported ${crossed.robot.cables.length} cables`);
   // one file alone is refused with a message
   await page.setInputFiles('[data-testid="import-caspr"]', [join(dir, 'NIST_RoboCrane_bodies.xml')]);
   const msg = await (await page.waitForSelector('[data-testid="share-message"].error')).textContent();

@@ -30,9 +30,10 @@ def check(scenario: Scenario, pose: str) -> Report:
 def check_at(scenario: Scenario, t: float, trajectory: Optional[str] = None) -> Report:
     """``check`` where a trajectory is at ``t`` ∈ [0, 1], moving as it moves there if it is timed."""
 
-def import_caspr(model_dir: Union[str, "os.PathLike[str]"], *, trajectories: Union[str, "os.PathLike[str]", None] = None, name: Optional[str] = None) -> Dict[str, Any]:
+def import_caspr(model_dir: Union[str, "os.PathLike[str]"], *, trajectories: Union[str, "os.PathLike[str]", None] = None, name: Optional[str] = None, cable_set: Optional[str] = None) -> Dict[str, Any]:
     """A CASPR model directory (bodies, cables and, if there, trajectories XML) as
-    ``{"scenario": dict, "notes": [str]}``, as ``cablenav import`` converts it."""
+    ``{"scenario": dict, "notes": [str]}``, as ``cablenav import`` converts it; ``cable_set``
+    picks a cable set by its id (as ``--cable-set``; the file's default without it)."""
 
 def ray(scenario: Scenario, pose: str, vary: str, range: Tuple[float, float]) -> Report:
     """Exact feasible intervals of one coordinate (x, y, z, phi, theta, sigma, or a multi-link

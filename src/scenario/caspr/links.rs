@@ -163,10 +163,11 @@ struct CableIn {
     props: [Option<f64>; 3],
 }
 
-/// The cables of the cable set, each from the base (link 0) to one link.
-fn cables(xml: &str, links: &[LinkIn]) -> Result<Vec<CableIn>> {
+/// The cables of the cable set (`set`, else the default one), each from the base (link 0) to one
+/// link.
+fn cables(xml: &str, links: &[LinkIn], set: Option<&str>) -> Result<Vec<CableIn>> {
     let doc = document(CABLES, xml, "cables")?;
-    let set = cable_set(doc.root_element())?;
+    let set = cable_set(doc.root_element(), set)?;
     let mut out = Vec::new();
     for cable in set.children().filter(|c| c.is_element() && c.tag_name().name().starts_with("cable_")) {
         let name = cable.attribute("name").map_or_else(|| format!("#{}", out.len() + 1), str::to_owned);
@@ -211,9 +212,9 @@ struct Out<'a> {
 }
 
 /// Converts a CASPR multi-link bodies file and cables file into scenario JSON called `name`.
-pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import> {
+pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str, set: Option<&str>) -> Result<Import> {
     let links = links(bodies_xml)?;
-    let cables = cables(cables_xml, &links)?;
+    let cables = cables(cables_xml, &links, set)?;
     let mut notes = vec!["multi-link robot: clearances are left at 0 (the thesis' case study uses ε = 0.02, clearance.cable_cable and clearance.cable_link); link bodies are segments of radius 0".to_string()];
     let Properties { diameter, tension, per_cable } = Properties::of(cables.iter().map(|c| c.props).collect(), &mut notes);
     let link_name = |num: usize| links.get(num.wrapping_sub(1)).map(|l| l.name.clone());

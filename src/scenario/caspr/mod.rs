@@ -50,23 +50,52 @@ pub struct Import {
     pub notes: Vec<String>,
 }
 
-/// Converts a CASPR bodies file and cables file into scenario JSON called `name`.
+/// Converts a CASPR bodies file and cables file (its default cable set) into scenario JSON
+/// called `name`.
 pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import> {
-    model_to_json(name, bodies_xml, cables_xml, None)
+    model_to_json(name, bodies_xml, cables_xml, None, None)
 }
 
-/// A whole CASPR model as scenario JSON called `name`: its bodies and cables ([`to_json`]) and,
-/// when given, the timed trajectories of its trajectories file (`trajectories.rs`; format 4 when
-/// there are any). The CLI's `import`, the Python and npm packages and the page call this.
-pub fn model_to_json(name: &str, bodies_xml: &str, cables_xml: &str, trajectories_xml: Option<&str>) -> Result<Import> {
-    if links::is_multi_link(bodies_xml) {
-        let mut out = links::to_json(name, bodies_xml, cables_xml)?;
+/// A whole CASPR model as scenario JSON called `name`: its bodies and the cable set `cable_set`
+/// of its cables file (by id; `None`: the file's default), and, when given, the timed
+/// trajectories of its trajectories file (`trajectories.rs`; format 4 when there are any). A
+/// cables file with several sets adds a note naming the one imported and the others. The CLI's
+/// `import`, the Python and npm packages and the page call this; an unknown set is an error at
+/// `cable_set` listing the file's.
+pub fn model_to_json(name: &str, bodies_xml: &str, cables_xml: &str, trajectories_xml: Option<&str>, cable_set: Option<&str>) -> Result<Import> {
+    let mut out = if links::is_multi_link(bodies_xml) {
+        let mut out = links::to_json(name, bodies_xml, cables_xml, cable_set)?;
         if trajectories_xml.is_some() {
             out.notes.push("the trajectories file was not read: trajectories of multi-link robots are not imported yet".to_string());
         }
-        return Ok(out);
+        out
+    } else {
+        platform::to_json(name, bodies_xml, cables_xml, trajectories_xml, cable_set)?
+    };
+    let sets = cable_sets(cables_xml)?;
+    if sets.ids.len() > 1 {
+        let used = cable_set.or(sets.default.as_deref()).unwrap_or_default();
+        let others: Vec<&String> = sets.ids.iter().filter(|id| id.as_str() != used).collect();
+        out.notes.push(format!("cable set {used:?} of {} (the others: {others:?}; choose one with --cable-set)", sets.ids.len()));
     }
-    platform::to_json(name, bodies_xml, cables_xml, trajectories_xml)
+    Ok(out)
+}
+
+/// The cable sets of a CASPR cables file: their ids in file order and the default one.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CableSets {
+    /// Every `<cable_set id=…>`, in file order.
+    pub ids: Vec<String>,
+    /// The `default_cable_set`, if the file names one.
+    pub default: Option<String>,
+}
+
+/// The cable sets of the cables file `cables_xml`.
+pub fn cable_sets(cables_xml: &str) -> Result<CableSets> {
+    let doc = xml::document("cables", cables_xml, "cables")?;
+    let root = doc.root_element();
+    let ids = xml::children(root, "cable_set").filter_map(|s| s.attribute("id").map(str::to_owned)).collect();
+    Ok(CableSets { ids, default: root.attribute("default_cable_set").map(str::to_owned) })
 }
 
 /// The files of a CASPR model directory: its bodies and cables files, and the model's name.

@@ -16,9 +16,9 @@ use crate::scenario::{FORMAT, FORMAT_4};
 
 /// Converts a platform robot's bodies and cables files, and its trajectories file when given, into
 /// scenario JSON called `name`.
-pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str, trajectories_xml: Option<&str>) -> Result<Import> {
+pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str, trajectories_xml: Option<&str>, set: Option<&str>) -> Result<Import> {
     let platform = platform(bodies_xml)?;
-    let cables = cables(cables_xml, &platform)?;
+    let cables = cables(cables_xml, &platform, set)?;
     let mut notes = Vec::new();
     let splines = match trajectories_xml {
         Some(xml) => splines(xml, platform.origin, &mut notes)?,
@@ -229,11 +229,12 @@ fn platform(xml: &str) -> Result<Platform> {
     })
 }
 
-/// The cables of the cable set, each from the base (link 0) to the platform (link 1).
-fn cables(xml: &str, platform: &Platform) -> Result<Vec<RawCable>> {
+/// The cables of the cable set (`set`, else the default one), each from the base (link 0) to the
+/// platform (link 1).
+fn cables(xml: &str, platform: &Platform, set: Option<&str>) -> Result<Vec<RawCable>> {
     const FILE: &str = "cables";
     let doc = document(FILE, xml, "cables")?;
-    let set = cable_set(doc.root_element())?;
+    let set = cable_set(doc.root_element(), set)?;
     let mut out = Vec::new();
     for cable in set.children().filter(|c| c.is_element() && c.tag_name().name().starts_with("cable_")) {
         let name = cable.attribute("name").map_or_else(|| format!("#{}", out.len() + 1), str::to_owned);

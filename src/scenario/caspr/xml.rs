@@ -65,10 +65,17 @@ pub(super) fn child_numbers<const N: usize>(file: &str, node: Node, tag: &str) -
     }
 }
 
-/// The cable set to import: the `default_cable_set`, or the only one.
-pub(super) fn cable_set<'a, 'i>(root: Node<'a, 'i>) -> Result<Node<'a, 'i>> {
+/// The cable set to import: the one `chosen` (by its id), else the `default_cable_set`, or the
+/// only one.
+pub(super) fn cable_set<'a, 'i>(root: Node<'a, 'i>, chosen: Option<&str>) -> Result<Node<'a, 'i>> {
     const FILE: &str = "cables";
     let sets: Vec<Node> = children(root, "cable_set").collect();
+    if let Some(id) = chosen {
+        let ids: Vec<&str> = sets.iter().filter_map(|s| s.attribute("id")).collect();
+        return sets.iter().find(|s| s.attribute("id") == Some(id)).copied().ok_or_else(|| {
+            Error::new("cable_set", format!("the cables file has no cable set {id:?}; its sets are {ids:?}"))
+        });
+    }
     Ok(match root.attribute("default_cable_set") {
         Some(id) => sets.iter().find(|s| s.attribute("id") == Some(id)).copied().ok_or_else(|| {
             Error::new(FILE, format!("default_cable_set {id:?} names no <cable_set id=...> in the file"))

@@ -1,18 +1,32 @@
 //! CASPR import: pairing the bodies and cables files a user picked (and its trajectories file,
 //! if picked too), converted by the core.
 
+/// A CASPR model converted from the files a user picked.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CasprImport {
+    /// The model's name (the bodies file's name without `_bodies.xml`).
+    pub name: String,
+    /// The scenario JSON.
+    pub json: String,
+    /// The conversion notes.
+    pub notes: Vec<String>,
+    /// The cables file's cable sets, by id (one or more).
+    pub sets: Vec<String>,
+    /// The one imported.
+    pub set: String,
+}
+
 /// From the files a user picked (name, text), the CASPR bodies and cables files (and the
-/// trajectories file, if among them) converted by the core: the model's name (the bodies file's
-/// name without `_bodies.xml`), the scenario JSON and the conversion notes; or a message saying
-/// what is missing or wrong.
-pub fn caspr_pair(files: Vec<(String, Result<String, String>)>) -> Result<(String, String, Vec<String>), String> {
+/// trajectories file, if among them) converted by the core with the cable set `cable_set` (the
+/// file's default for `None`); or a message saying what is missing or wrong.
+pub fn caspr_pair(files: &[(String, Result<String, String>)], cable_set: Option<&str>) -> Result<CasprImport, String> {
     use cablenav::scenario::caspr;
     let mut bodies = None;
     let mut cables = None;
     let mut trajectories = None;
     for (name, text) in files {
-        let text = text?;
-        match caspr::kind(&text) {
+        let text = text.as_ref().map_err(Clone::clone)?;
+        match caspr::kind(text) {
             Some("bodies") => bodies = Some((name, text)),
             Some("cables") => cables = Some(text),
             Some("trajectories") => trajectories = Some(text),
@@ -23,8 +37,11 @@ pub fn caspr_pair(files: Vec<(String, Result<String, String>)>) -> Result<(Strin
         return Err("choose both CASPR files of the model together: its bodies XML (<bodies_system>) and its cables XML (<cables>)".into());
     };
     let name = file.trim_end_matches(".xml").trim_end_matches("_bodies").to_string();
-    let out = caspr::model_to_json(&name, &bodies, &cables, trajectories.as_deref()).map_err(|e| format!("CASPR import: {e}"))?;
-    Ok((name, out.json, out.notes))
+    let fail = |e: cablenav::Error| format!("CASPR import: {e}");
+    let out = caspr::model_to_json(&name, bodies, cables, trajectories.map(String::as_str), cable_set).map_err(fail)?;
+    let sets = caspr::cable_sets(cables).map_err(fail)?;
+    let set = cable_set.map(str::to_owned).or(sets.default).or_else(|| sets.ids.first().cloned()).unwrap_or_default();
+    Ok(CasprImport { name, json: out.json, notes: out.notes, sets: sets.ids, set })
 }
 
 #[cfg(test)]
@@ -43,15 +60,16 @@ mod tests {
             ("NIST_RoboCrane_cables.xml".to_string(), Ok(cables.to_string())),
             ("NIST_RoboCrane_bodies.xml".to_string(), Ok(bodies.to_string())),
         ];
-        let (name, json, _) = caspr_pair(files).unwrap();
-        assert_eq!(name, "NIST_RoboCrane");
-        assert_eq!(Scenario::from_json(&json).unwrap().robot.cables.len(), 6);
-        let e = caspr_pair(vec![("a.xml".into(), Ok(bodies.to_string()))]).unwrap_err();
+        let got = caspr_pair(&files, None).unwrap();
+        assert_eq!(got.name, "NIST_RoboCrane");
+        assert_eq!(Scenario::from_json(&got.json).unwrap().robot.cables.len(), 6);
+        assert_eq!(got.sets.len(), 1);
+        let e = caspr_pair(&[("a.xml".into(), Ok(bodies.to_string()))], None).unwrap_err();
         assert!(e.contains("both"), "{e}");
-        let e = caspr_pair(vec![("a.xml".into(), Err("could not read a.xml".into()))]).unwrap_err();
+        let e = caspr_pair(&[("a.xml".into(), Err("could not read a.xml".into()))], None).unwrap_err();
         assert_eq!(e, "could not read a.xml");
         let broken = bodies.replace("SPATIAL_EULER_XYZ", "R_X");
-        let e = caspr_pair(vec![("b.xml".into(), Ok(broken)), ("c.xml".into(), Ok(cables.to_string()))]).unwrap_err();
+        let e = caspr_pair(&[("b.xml".into(), Ok(broken)), ("c.xml".into(), Ok(cables.to_string()))], None).unwrap_err();
         assert!(e.starts_with("CASPR import: bodies: line 6"), "{e}");
     }
 
@@ -63,9 +81,21 @@ mod tests {
             _ => include_str!("../../../../shared/models/caspr/CoGiRo/CoGiRo_trajectories.xml"),
         };
         let files = ["trajectories", "bodies", "cables"].map(|f| (format!("CoGiRo_{f}.xml"), Ok(model(f).to_string()))).to_vec();
-        let (name, json, _) = caspr_pair(files).unwrap();
-        let s = Scenario::from_json(&json).unwrap();
-        assert_eq!(name, "CoGiRo");
+        let got = caspr_pair(&files, None).unwrap();
+        let s = Scenario::from_json(&got.json).unwrap();
+        assert_eq!(got.name, "CoGiRo");
         assert_eq!(s.trajectories.iter().filter(|t| t.knots.is_some()).count(), 4);
+    }
+
+    #[test]
+    fn another_cable_set_is_picked_by_its_id() {
+        let bodies = include_str!("../../../../shared/models/caspr/Example_spatial/Example_spatial_bodies.xml");
+        let cables = include_str!("../../../../shared/models/caspr/Example_spatial/Example_spatial_cables.xml");
+        let files = [("Example_spatial_bodies.xml".to_string(), Ok(bodies.to_string())), ("Example_spatial_cables.xml".to_string(), Ok(cables.to_string()))];
+        let first = caspr_pair(&files, None).unwrap();
+        assert_eq!((first.sets.len(), first.set.as_str()), (4, "basic_7_cables"));
+        let cross = caspr_pair(&files, Some("cross_8_cables")).unwrap();
+        assert_eq!((Scenario::from_json(&cross.json).unwrap().robot.cables.len(), cross.set.as_str()), (8, "cross_8_cables"));
+        assert!(caspr_pair(&files, Some("nine")).unwrap_err().contains("cable_set"));
     }
 }

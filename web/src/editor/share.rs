@@ -1,5 +1,6 @@
 //! Sharing: the link to this scenario, the embed snippet, JSON export and import by file, and
-//! CASPR model import (bodies + cables XML files, and its trajectories file if chosen too).
+//! CASPR model import (bodies + cables XML files, and its trajectories file if chosen too; a
+//! cables file with several cable sets offers them, as `cablenav import --cable-set`).
 
 use leptos::prelude::*;
 use wasm_bindgen::JsCast;
@@ -42,17 +43,27 @@ pub fn SharePanel(source: RwSignal<String>, origin: RwSignal<&'static str>, sett
             }
         });
     };
+    // the CASPR files last picked, and their cable sets with the one imported: picking another
+    // set imports the same files again with it
+    let caspr_files = StoredValue::new(Vec::<(String, Result<String, String>)>::new());
+    let cable_sets = RwSignal::new((Vec::<String>::new(), String::new()));
+    let convert = move |set: Option<String>| {
+        let result = caspr_files.with_value(|files| crate::edit_logic::caspr_pair(files, set.as_deref()));
+        match result {
+            Ok(got) => {
+                let extra = if got.notes.is_empty() { String::new() } else { format!(" Notes: {}", got.notes.join("; ")) };
+                cable_sets.set((got.sets, got.set));
+                load(got.json, format!("Imported the CASPR model “{}”.{extra}", got.name));
+            }
+            Err(e) => message.set(Some((false, e))),
+        }
+    };
     let import_caspr = move |ev: leptos::ev::Event| {
         let files = input_files(&ev);
         leptos::task::spawn_local(async move {
-            let read = persist::read_files(files).await;
-            match crate::edit_logic::caspr_pair(read) {
-                Ok((name, json, notes)) => {
-                    let extra = if notes.is_empty() { String::new() } else { format!(" Notes: {}", notes.join("; ")) };
-                    load(json, format!("Imported the CASPR model “{name}”.{extra}"));
-                }
-                Err(e) => message.set(Some((false, e))),
-            }
+            caspr_files.set_value(persist::read_files(files).await);
+            cable_sets.set((vec![], String::new()));
+            convert(None);
         });
     };
     view! {
@@ -82,6 +93,20 @@ pub fn SharePanel(source: RwSignal<String>, origin: RwSignal<&'static str>, sett
                     "Import CASPR model (choose its bodies and cables XML files together, and its trajectories XML for its timed splines) "
                     <input type="file" accept=".xml,text/xml" multiple data-testid="import-caspr" on:change=import_caspr />
                 </label>
+                {move || {
+                    let (sets, used) = cable_sets.get();
+                    (sets.len() > 1).then(|| view! {
+                        <label>
+                            "Cable set "
+                            <select data-testid="caspr-cable-set" on:change=move |ev| convert(Some(event_target_value(&ev)))>
+                                {sets.into_iter().map(|id| {
+                                    let (selected, value) = (id == used, id.clone());
+                                    view! { <option value=value selected=selected>{id}</option> }
+                                }).collect_view()}
+                            </select>
+                        </label>
+                    })
+                }}
             </div>
             {move || message.get().map(|(ok, m)| {
                 view! {
