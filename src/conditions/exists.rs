@@ -17,7 +17,7 @@
 //! the tolerance is `Unknown`. The budget grows with the depth, because near a boundary λ* where Φ
 //! is tangent in v the witnessing v-box has a width of order √|λ − λ*|.
 
-use crate::poly::{binomial, Bern, Partition, Truth};
+use crate::poly::{binomial, halve, Bern, Partition, Truth};
 
 /// Unit roundoff of f64.
 const U: f64 = f64::EPSILON * 0.5;
@@ -211,20 +211,13 @@ impl Atom {
         Atom { c, err: self.err.clone(), width: 1, positive: self.positive }
     }
 
-    /// The two halves in λ (de Casteljau at ½ on every row, as [`Bern::split`]).
+    /// The two halves in λ (de Casteljau at ½ on every row, [`halve`]).
     fn split_lambda(&self) -> (Atom, Atom) {
-        let (w, d) = (self.width, self.width - 1);
-        let (mut left, mut right) = (vec![0.0; self.c.len()], self.c.clone());
+        let w = self.width;
+        let (mut left, mut right) = (vec![0.0; self.c.len()], vec![0.0; self.c.len()]);
         let mut err = self.err.clone();
-        for ((l, r), e) in left.chunks_exact_mut(w).zip(right.chunks_exact_mut(w)).zip(err.iter_mut()) {
-            *e += (2 * d + 2) as f64 * U * max_abs(r);
-            l[0] = r[0];
-            for level in 1..=d {
-                for k in 0..=(d - level) {
-                    r[k] = (r[k] + r[k + 1]) * 0.5;
-                }
-                l[level] = r[0];
-            }
+        for (((c, l), r), e) in self.c.chunks_exact(w).zip(left.chunks_exact_mut(w)).zip(right.chunks_exact_mut(w)).zip(err.iter_mut()) {
+            *e += halve(c, l, r);
         }
         let positive = self.positive;
         (Atom { c: left, err: err.clone(), width: w, positive }, Atom { c: right, err, width: w, positive })

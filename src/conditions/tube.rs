@@ -10,7 +10,7 @@
 
 use super::primitives::EndCases;
 use super::subtract;
-use crate::poly::Bern;
+use crate::poly::{halve, Bern};
 use crate::query::{point_segment_dist2, segment_segment_dist};
 use nalgebra::Vector3;
 use std::borrow::Cow;
@@ -139,24 +139,6 @@ fn push_interval(out: &mut Vec<(f64, f64)>, (a, b): (f64, f64)) {
         Some(last) if last.1 >= a => last.1 = b,
         _ => out.push((a, b)),
     }
-}
-
-/// Unit roundoff of f64.
-const U: f64 = f64::EPSILON * 0.5;
-
-/// The halves at 1/2 of the Bernstein coefficients `c` (de Casteljau), written to `left` and
-/// `right`; returns the added coefficient error bound (as [`Bern::split`] bounds it).
-fn halve(c: &[f64], left: &mut [f64], right: &mut [f64]) -> f64 {
-    let n = c.len() - 1;
-    right.copy_from_slice(c);
-    left[0] = right[0];
-    for (level, out) in left.iter_mut().enumerate().skip(1) {
-        for k in 0..=(n - level) {
-            right[k] = 0.5 * (right[k] + right[k + 1]);
-        }
-        *out = right[0];
-    }
-    (2 * n + 2) as f64 * U * c.iter().fold(0.0f64, |m, x| m.max(x.abs()))
 }
 
 impl Pieces {

@@ -315,6 +315,22 @@ impl Bern {
     }
 }
 
+/// The halves at 1/2 of the Bernstein coefficients `c` (de Casteljau), written to `left` and
+/// `right` (each as long as `c`); returns the added coefficient error bound (as [`Bern::split`]
+/// bounds it). For callers that keep coefficients in flat arrays of their own.
+pub fn halve(c: &[f64], left: &mut [f64], right: &mut [f64]) -> f64 {
+    let n = c.len() - 1;
+    right.copy_from_slice(c);
+    left[0] = right[0];
+    for (level, out) in left.iter_mut().enumerate().skip(1) {
+        for k in 0..=(n - level) {
+            right[k] = 0.5 * (right[k] + right[k + 1]);
+        }
+        *out = right[0];
+    }
+    (2 * n + 2) as f64 * U * max_abs(c)
+}
+
 /// 1 / C(n, k), row by row up to MAX_DEGREE.
 fn inverse_pascal() -> &'static Vec<Vec<f64>> {
     static TABLE: OnceLock<Vec<Vec<f64>>> = OnceLock::new();

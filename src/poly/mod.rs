@@ -11,6 +11,6 @@ mod bernstein;
 mod partition;
 mod signs;
 
-pub use bernstein::{binomial, Bern};
+pub use bernstein::{binomial, halve, Bern};
 pub use partition::{Partition, Truth};
 pub use signs::{sign_pieces, sign_pieces_outside, Sign};
