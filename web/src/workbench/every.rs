@@ -34,7 +34,12 @@ pub fn every_trajectory(parsed: Memo<Parsed>, source: RwSignal<String>, selected
         let this = run.stop();
         reports.set(None);
         let Some(s) = parsed.0.as_ref().as_ref().ok().filter(|s| on.get() && s.robot.chain.is_none() && s.trajectories.len() > 1) else {
-            status.set(String::new());
+            let why = match parsed.0.as_ref().as_ref().ok() {
+                Some(s) if on.get_untracked() && s.robot.chain.is_some() => "a multi-link robot's paths are drawn one at a time",
+                Some(s) if on.get_untracked() && s.trajectories.len() < 2 => "the scenario has no other trajectory",
+                _ => "",
+            };
+            status.set(why.to_string());
             return;
         };
         let Some(json) = source.try_get_untracked() else { return };
