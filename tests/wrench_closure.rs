@@ -203,8 +203,9 @@ fn seven_cable_sections_match_per_pose_sampling() {
 #[test]
 fn twelve_cable_closure_sections_match_the_lp_reference() {
     let mut rng = Rng(9);
-    let ntraj = if cfg!(target_arch = "wasm32") { 4 } else { 16 };
-    let samples = if cfg!(target_arch = "wasm32") { 1_000 } else { 4_000 };
+    // the same 16 motions in wasm (several cross a boundary), sampled less densely
+    let ntraj = 16;
+    let samples = if cfg!(target_arch = "wasm32") { 500 } else { 4_000 };
     let (mut mixed, mut checked) = (0, 0);
     for k in 0..ntraj {
         let mut v: serde_json::Value = serde_json::from_str(CDPR7).unwrap();
