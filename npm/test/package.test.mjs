@@ -251,7 +251,7 @@ test('importCaspr converts a CASPR model as `cablenav import` does, timed spline
   const file = (f) => readFileSync(join(spatial, `Example_spatial_${f}.xml`), 'utf8');
   const cross = join(scratch, 'cross.json');
   execFileSync(cliPath, ['import', spatial, '--cable-set', 'cross_8_cables', '--out', cross]);
-  close(cablenav.importCaspr('Example_spatial', file('bodies'), file('cables'), undefined, 'cross_8_cables').scenario, JSON.parse(readFileSync(cross, 'utf8')));
+  close(cablenav.importCaspr('Example_spatial', file('bodies'), file('cables'), file('trajectories'), 'cross_8_cables').scenario, JSON.parse(readFileSync(cross, 'utf8')));
   assert.throws(() => cablenav.importCaspr('x', file('bodies'), file('cables'), undefined, 'nine'), (e) => e.name === 'ScenarioError' && e.field === 'cable_set');
 });
 
