@@ -170,10 +170,7 @@ fn seven_cable_sections_match_per_pose_sampling() {
         let trajectories = json!([{"name": "t", "translation": {"line": [p0, p1]}, "orientation": {"slerp": ["a", "b"]}}]);
         let s = cdpr7_with_load(Some((poses, trajectories)));
         let traj = &s.trajectories[0];
-        let r = verify_trajectory(&s, traj).unwrap();
-        let uncertain: f64 = r.uncertain.iter().map(|u| u[1] - u[0]).sum();
-        assert!(uncertain < 1e-6, "trajectory {k}: {uncertain} of t uncertain: {:?}", r.uncertain);
-        mixed += usize::from(!r.feasible.is_empty() && !r.infeasible.is_empty());
+        let r = verified(&s, k, &mut mixed);
         for i in 0..samples {
             let t = (i as f64 + 0.5) / samples as f64;
             let near = r.boundaries.iter().any(|b| (b.t - t).abs() < 1e-7) || r.uncertain.iter().any(|u| t > u[0] - 1e-7 && t < u[1] + 1e-7);
@@ -192,6 +189,16 @@ fn seven_cable_sections_match_per_pose_sampling() {
     }
     assert!(mixed >= ntraj / 6, "only {mixed} of {ntraj} trajectories cross a boundary");
     assert!(checked > ntraj * samples / 2);
+}
+
+/// The scenario's first trajectory (motion `k` of a test) verified exactly: uncertain on less
+/// than 1e-6 of t in all; `mixed` counts it when it has feasible and infeasible sections.
+fn verified(s: &Scenario, k: usize, mixed: &mut usize) -> cablenav::report::VerifyReport {
+    let r = verify_trajectory(s, &s.trajectories[0]).unwrap();
+    let uncertain: f64 = r.uncertain.iter().map(|u| u[1] - u[0]).sum();
+    assert!(uncertain < 1e-6, "trajectory {k}: {uncertain} of t uncertain: {:?}", r.uncertain);
+    *mixed += usize::from(!r.feasible.is_empty() && !r.infeasible.is_empty());
+    r
 }
 
 /// Closure beyond the facets' reach: the thesis robot's seven cables and five more (12), decided
@@ -227,10 +234,7 @@ fn twelve_cable_closure_sections_match_the_lp_reference() {
         let s = Scenario::from_json(&v.to_string()).unwrap();
         assert_eq!(s.robot.cables.len(), 12);
         let traj = &s.trajectories[0];
-        let r = verify_trajectory(&s, traj).unwrap();
-        let uncertain: f64 = r.uncertain.iter().map(|u| u[1] - u[0]).sum();
-        assert!(uncertain < 1e-6, "trajectory {k}: {uncertain} of t uncertain: {:?}", r.uncertain);
-        mixed += usize::from(!r.feasible.is_empty() && !r.infeasible.is_empty());
+        let r = verified(&s, k, &mut mixed);
         for i in 0..samples {
             let t = (i as f64 + 0.5) / samples as f64;
             if r.boundaries.iter().any(|b| (b.t - t).abs() < 1e-7) {

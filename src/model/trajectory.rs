@@ -20,7 +20,7 @@ pub const MAX_DEGREE: usize = 10;
 /// The translation part of a trajectory, a polynomial in τ ∈ [0, 1].
 #[derive(Debug, Clone, PartialEq)]
 pub enum Translation {
-    /// Ascending coefficients per axis: x(τ) = Σ cx[k] τ^k, and likewise y, z.
+    /// Ascending coefficients per axis: x(τ) = Σ `cx[k]` τ^k, and likewise y, z.
     Polynomial([Vec<f64>; 3]),
     /// Bézier control points: x(τ) = Σ P_k B_{k,n}(τ).
     Bezier(Vec<Vector3<f64>>),

@@ -2,7 +2,7 @@
 //!
 //! * [`Bern`] — a polynomial in Bernstein form on [0, 1] with a rigorous bound on the error of its
 //!   coefficients, carried through every arithmetic operation.
-//! * [`signs`] — where a polynomial is certainly positive, certainly negative, or too close to
+//! * `signs` — where a polynomial is certainly positive, certainly negative, or too close to
 //!   zero to tell (root isolation by Bernstein subdivision with error control).
 //! * [`Partition`] — three-valued truth over [0, 1], combined with and/or, which is how the
 //!   conditions' semi-algebraic sets are computed.

@@ -203,19 +203,25 @@ pub fn separating_direction(j: &DMatrix<f64>, w0: &Vector6<f64>, bounds: &[Bound
             c[yn + r] += bounds[k].min * d;
         }
     }
-    for r in 0..6 {
-        a[(m + r, yp + r)] = 1.0;
-        a[(m + r, pp + r)] = 1.0;
-        b[m + r] = 1.0;
-        a[(m + 6 + r, yn + r)] = 1.0;
-        a[(m + 6 + r, qq + r)] = 1.0;
-        b[m + 6 + r] = 1.0;
-    }
+    box_rows(&mut a, &mut b, m, [yp, yn, pp, qq]);
     // an excess within the program's rounding is none
     let size = w0.amax() + j.amax() * bounds.iter().map(|b| b.min.abs().max(if b.max.is_finite() { b.max.abs() } else { 0.0 })).sum::<f64>();
     match maximise(&a, &b, &c) {
         LpResult::Optimal { x, value } if value > 1e-12 * (1.0 + size) => Some((Vector6::from_fn(|r, _| x[yp + r] - x[yn + r]), value)),
         _ => None,
+    }
+}
+
+/// Rows `row .. row + 12` of a direction program: y⁺ + p = 1 and y⁻ + q = 1 per component
+/// (|y_i| ≤ 1 for y = y⁺ − y⁻), the variables' first columns given as `[y⁺, y⁻, p, q]`.
+fn box_rows(a: &mut DMatrix<f64>, b: &mut DVector<f64>, row: usize, [yp, yn, pp, qq]: [usize; 4]) {
+    for r in 0..6 {
+        a[(row + r, yp + r)] = 1.0;
+        a[(row + r, pp + r)] = 1.0;
+        b[row + r] = 1.0;
+        a[(row + 6 + r, yn + r)] = 1.0;
+        a[(row + 6 + r, qq + r)] = 1.0;
+        b[row + 6 + r] = 1.0;
     }
 }
 
@@ -240,14 +246,7 @@ pub fn enclosing_direction(j: &DMatrix<f64>) -> Option<Vector6<f64>> {
         a[(k, sv)] = 1.0;
         a[(k, sl + k)] = 1.0;
     }
-    for r in 0..6 {
-        a[(m + r, yp + r)] = 1.0;
-        a[(m + r, pp + r)] = 1.0;
-        b[m + r] = 1.0;
-        a[(m + 6 + r, yn + r)] = 1.0;
-        a[(m + 6 + r, qq + r)] = 1.0;
-        b[m + 6 + r] = 1.0;
-    }
+    box_rows(&mut a, &mut b, m, [yp, yn, pp, qq]);
     a[(m + 12, sv)] = 1.0;
     a[(m + 12, cap)] = 1.0;
     b[m + 12] = 1.0;

@@ -3,14 +3,14 @@
 //!
 //! det J is evaluated at the corners of the slice map's cells ((res + 1)² points, the other
 //! coordinates from the slice's pose); on every cell edge whose two corners have determinants of
-//! opposite signs the zero is found by bisection to [`ROOT_TOL`] of the edge (det J is continuous
+//! opposite signs the zero is found by bisection to `ROOT_TOL` of the edge (det J is continuous
 //! along it where the cable lengths do not vanish); marching squares joins the crossings of each
 //! cell into segments (a saddle cell, with four crossings, is resolved by the sign at its centre)
 //! and the segments are chained into polylines. The moment point does not matter: moving it
 //! multiplies J by a matrix of determinant 1. Only sign changes are seen: a curve where det J
 //! touches zero without crossing it, or two crossings within one cell edge, is missed at this
 //! resolution; so is a line along which det J vanishes identically (Robocrane's θ = ±π, the
-//! platform upside down: determinants below [`ZERO`] of the grid's largest have no sign, so its
+//! platform upside down: determinants below `ZERO` of the grid's largest have no sign, so its
 //! rounding noise draws nothing). Robots with other than six cables have no such curves (their J
 //! is not square).
 

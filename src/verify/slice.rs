@@ -142,7 +142,7 @@ pub fn slice(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range:
     slice_counted(s, pose_name, axes, res, range, &AtomicUsize::new(0))
 }
 
-/// [`slice`], adding 1 to `rows_done` after each of the `res` rows is classified (from any
+/// [`slice()`], adding 1 to `rows_done` after each of the `res` rows is classified (from any
 /// worker thread), so that a caller on another thread can show progress.
 pub fn slice_counted(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range: [[f64; 2]; 2], rows_done: &AtomicUsize) -> Result<SliceMap> {
     let classes = classify_rows(s, pose_name, axes, res, range, 0..res, rows_done)?;
@@ -176,7 +176,7 @@ fn empty_map(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range:
     })
 }
 
-/// The classes of rows `rows` (j, along the second axis) of the slice [`slice`] computes, row
+/// The classes of rows `rows` (j, along the second axis) of the slice [`slice()`] computes, row
 /// by row: so that parts of one map can be classified apart (the page's workers) and joined by
 /// [`slice_from_classes`].
 pub fn slice_rows(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range: [[f64; 2]; 2], rows: std::ops::Range<usize>) -> Result<Vec<Class>> {

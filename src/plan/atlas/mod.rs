@@ -472,7 +472,7 @@ impl AtlasPlanner {
         Ok(planner)
     }
 
-    /// The atlas built so far as a file ([`file`]), for [`AtlasPlanner::with_atlas`].
+    /// The atlas built so far as a file ([`mod@file`]), for [`AtlasPlanner::with_atlas`].
     pub fn save_atlas(&self) -> String {
         file::save(&self.search.atlas, &self.scenario, self.params, self.fixed)
     }
