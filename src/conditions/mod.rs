@@ -365,10 +365,12 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
             }
         } else {
             let bounds: Vec<Bounds> = robot.cables.iter().map(|c| c.tension).collect();
-            if load.wrench.closure && load.is_zero() && bounds.iter().all(|b| b.min <= 0.0 && b.max > 0.0) {
-                // the zero wrench within (f_min, f_max) follows from closure (a positive null
-                // vector, scaled below every f_max) where no lower bound is positive: closure
-                // alone decides it (its failure has a strict certificate; this one's would not)
+            // the zero wrench within (f_min, f_max) follows from closure (a positive null vector,
+            // scaled below every f_max) where no lower bound is positive: closure alone decides
+            // it then (its failure has a strict certificate; this condition's would not)
+            let implied_by_closure = load.wrench.closure && load.is_zero() && bounds.iter().all(|b| b.min <= 0.0 && b.max > 0.0);
+            if implied_by_closure {
+                // nothing to add
             } else if load.wrench.is_single() {
                 // one wrench: linear programs, for any number of cables
                 out.push(Box::new(WrenchFeasibilityLp { load, bounds, closure: false }));

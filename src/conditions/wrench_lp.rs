@@ -287,8 +287,8 @@ impl WrenchFeasibilityLp {
                 (lo - beta * range.lo + SLACK * (lo.abs() + hi.abs()), beta)
             };
             rest += il.eps * (alpha.abs() + beta.abs() * range.mag());
-            for j in 0..2 {
-                constant[j] += alpha * il.s.c[j];
+            for (k, c) in constant.iter_mut().zip(&il.s.c) {
+                *k += alpha * c;
             }
             weights.push([beta * il.s.c[0], beta * il.s.c[1]]);
         }

@@ -104,7 +104,8 @@ impl AtlasFile {
                 if c.centre.len() != n || c.basis.len() != k || c.basis.iter().any(|col| col.len() != n) || c.polytope.dim() != k {
                     return Err(bad("its dimensions are not the slice's"));
                 }
-                if !c.centre.iter().chain(c.basis.iter().flatten()).all(|x| x.is_finite()) || !(c.radius > 0.0 && c.radius.is_finite()) || !c.polytope.is_consistent() {
+                let sound = c.centre.iter().chain(c.basis.iter().flatten()).all(|x| x.is_finite()) && c.radius > 0.0 && c.radius.is_finite() && c.polytope.is_consistent();
+                if !sound {
                     return Err(bad("holds a number that is not finite or a malformed polytope"));
                 }
                 if c.neighbours.iter().any(|&j| j >= count || j == i) {

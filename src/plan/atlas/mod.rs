@@ -367,9 +367,12 @@ fn coords_ends(start: [f64; 6], goal: [f64; 6], fixed: &[Coord]) -> Result<Ends>
     Ok(Ends { field: "coords".to_string(), names: ["start".to_string(), "goal".to_string()], poses: [Pose::from_coords(start), Pose::from_coords(goal)], coords: [start, goal], fixed: fixed.to_vec() })
 }
 
+/// A slice (each coordinate's fixed value, `None` where free) and the goal's coordinates on it.
+type SliceEnds = ([Option<f64>; 6], Vec<[f64; 6]>);
+
 /// The slice the ends lie on — each fixed coordinate at the start's value — and the goal's
 /// coordinates on it (either tilt-and-torsion triple of its rotation when angles are identified).
-fn slice(ends: &Ends, params: PlanParams) -> Result<([Option<f64>; 6], Vec<[f64; 6]>)> {
+fn slice(ends: &Ends, params: PlanParams) -> Result<SliceEnds> {
     let Ends { field, names, coords: [start_coords, goal_coords], fixed: fixed_coords, .. } = ends;
     if fixed_coords.len() >= 6 {
         return Err(Error::new(format!("{field}.fixed"), "every coordinate is fixed: nothing is left to plan over"));

@@ -44,10 +44,14 @@ pub struct Overlay {
     pub atlas: Option<WireAtlas>,
 }
 
+/// A chart over a section: its polygon, its centre (map coordinates), its state and whether the
+/// path runs through it.
+pub type ChartPolygon<'a> = (Vec<(f64, f64)>, (f64, f64), &'a str, bool);
+
 /// The charts of `atlas` as polygons over a section with `axes` (in map coordinates), when the
 /// atlas's slice is over those two coordinates (in either order): each chart's polygon, its
 /// centre, its state and whether the path runs through it.
-pub fn chart_polygons(atlas: &WireAtlas, axes: [Coord; 2]) -> Vec<(Vec<(f64, f64)>, (f64, f64), &str, bool)> {
+pub fn chart_polygons(atlas: &WireAtlas, axes: [Coord; 2]) -> Vec<ChartPolygon<'_>> {
     let names = [axes[0].name(), axes[1].name()];
     let swap = if atlas.coords == names { false } else if atlas.coords == [names[1], names[0]] { true } else { return vec![] };
     let at = |p: &[f64; 2]| if swap { (p[1], p[0]) } else { (p[0], p[1]) };
