@@ -16,6 +16,7 @@ use super::motion::{quat_const, quat_mul, ramp_about, Motion, Param, QuatPoly, A
 use super::pose::{Coord, Pose};
 use crate::poly::Bern;
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
+use smallvec::{smallvec, SmallVec};
 
 /// How a link moves relative to its parent.
 #[derive(Debug, Clone, PartialEq)]
@@ -52,19 +53,23 @@ pub enum Step {
     Turn(Vector3<f64>),
 }
 
+/// A joint's elementary motions, one per coordinate.
+pub type Steps = SmallVec<[Step; 6]>;
+
 impl Joint {
     /// The elementary motions of the joint's coordinates, in order; `None` for the free joint
     /// (tilt-and-torsion angles are no sequence of fixed-axis rotations).
-    pub fn steps(&self) -> Option<Vec<Step>> {
+    /// Kept in place (at most six), since the per-pose checks ask for them at every pose.
+    pub fn steps(&self) -> Option<Steps> {
         let (x, y, z) = (Vector3::x(), Vector3::y(), Vector3::z());
         Some(match self {
             Joint::Free => return None,
-            Joint::Spherical => vec![Step::Turn(x), Step::Turn(y), Step::Turn(z)],
-            Joint::Revolute(a) => vec![Step::Turn(*a)],
-            Joint::Prismatic(a) => vec![Step::Slide(*a)],
-            Joint::Universal([a, b]) => vec![Step::Turn(*a), Step::Turn(*b)],
-            Joint::Planar([u, v, w]) => vec![Step::Slide(*u), Step::Slide(*v), Step::Turn(*w)],
-            Joint::Spatial => vec![Step::Slide(x), Step::Slide(y), Step::Slide(z), Step::Turn(x), Step::Turn(y), Step::Turn(z)],
+            Joint::Spherical => smallvec![Step::Turn(x), Step::Turn(y), Step::Turn(z)],
+            Joint::Revolute(a) => smallvec![Step::Turn(*a)],
+            Joint::Prismatic(a) => smallvec![Step::Slide(*a)],
+            Joint::Universal([a, b]) => smallvec![Step::Turn(*a), Step::Turn(*b)],
+            Joint::Planar([u, v, w]) => smallvec![Step::Slide(*u), Step::Slide(*v), Step::Turn(*w)],
+            Joint::Spatial => smallvec![Step::Slide(x), Step::Slide(y), Step::Slide(z), Step::Turn(x), Step::Turn(y), Step::Turn(z)],
         })
     }
 

@@ -215,7 +215,7 @@ fn plan(json: &str, query: &str, id: &str, [max_charts, steps]: [usize; 2], iden
             since = now();
             if let Some(atlas) = p.as_atlas().filter(|_| !done) {
                 let (coords, charts) = atlas.charts_since(sent);
-                if !charts.is_empty() && (2..=3).contains(&coords.len()) {
+                if !charts.is_empty() && WireAtlas::drawn(&coords) {
                     report(Reply::Charts { coords, from: sent, charts: charts.iter().map(WireChart::of).collect() });
                     sent += charts.len();
                 }

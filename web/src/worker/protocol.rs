@@ -151,7 +151,13 @@ impl WireChart {
 impl WireAtlas {
     /// The charts of a 2-D or 3-D slice's atlas; `None` for another dimension.
     pub fn of(view: &cablenav::plan::atlas::view::AtlasView) -> Option<WireAtlas> {
-        (2..=3).contains(&view.coords.len()).then(|| WireAtlas { coords: view.coords.clone(), charts: view.charts.iter().map(WireChart::of).collect() })
+        WireAtlas::drawn(&view.coords).then(|| WireAtlas { coords: view.coords.clone(), charts: view.charts.iter().map(WireChart::of).collect() })
+    }
+
+    /// Whether the page draws the atlas of a slice over `coords`: two (over the slice map) or
+    /// three (in the slice's own space).
+    pub fn drawn(coords: &[String]) -> bool {
+        (2..=3).contains(&coords.len())
     }
 }
 
