@@ -2,7 +2,7 @@
 //! wrench, the platform's weight about the wrench point, and along a timed trajectory the
 //! d'Alembert inertial wrench (`crate::model::dynamics`).
 //!
-//! With p = P̂/w, R = M̂/w and g = dλ/ds (s the time; a polynomial for a uniform time law), every
+//! With p = P̂/w, R = M̂/w and g = dλ/ds (s the time; g² and g g' polynomials, [`TimeLaw`]), every
 //! term is a polynomial over a power of w:
 //!
 //! * centre of mass X̂ = P̂ + M̂ c_b (over w); its acceleration Ã/w³ with
@@ -65,31 +65,70 @@ pub(crate) fn with_inertia(fixed: &Bern, inertial: Option<&Bern>, k: f64) -> Ber
     }
 }
 
-/// dλ/ds along a trajectory piece run in `duration` seconds in all (time = t·duration), as a
-/// polynomial in λ; `None` for a motion without time (a ray).
-pub(crate) fn time_rate(param: &Param, duration: f64) -> Option<Bern> {
-    match *param {
-        Param::Trajectory { psi, h, t0, t1 } => {
-            let span = (t1 - t0) * duration;
-            Some(if psi < 1e-9 {
-                Bern::constant(1.0 / span)
-            } else {
-                // t = t0 + (t1 − t0)·2·atan(hλ)/ψ  ⇒  dλ/dt = ψ(1 + h²λ²)/(2h(t1 − t0))
-                let a = psi / (2.0 * h * span);
-                Bern::from_monomial(&[a, 0.0, a * h * h])
-            })
-        }
-        Param::Linear { .. } | Param::Angle { .. } => None,
+/// How λ runs in time along a motion (s the time, g = dλ/ds): g² and g·g' = ½ d(g²)/dλ as
+/// polynomials in λ — all that the inertial wrench and the winch limits take from the time law.
+/// A law whose g² is a polynomial is any uniform law (the slerp's atan parameter included) and
+/// any law of piecewise constant λ̈ (g² linear: a time-optimal law, `crate::plan::timing`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TimeLaw {
+    /// g² = λ̇².
+    pub square: Bern,
+    /// g·g' = λ̈.
+    pub accel: Bern,
+}
+
+impl TimeLaw {
+    /// The law with λ̇² = `square` (a polynomial, non-negative on [0, 1]).
+    pub fn from_square(square: Bern) -> TimeLaw {
+        let accel = square.derivative().scale(0.5);
+        TimeLaw { square, accel }
     }
+
+    /// The uniform law along a trajectory's motion run in `duration` seconds in all (time =
+    /// t·duration); `None` for a motion without time (a ray).
+    pub fn uniform(param: &Param, duration: f64) -> Option<TimeLaw> {
+        let Param::Trajectory { psi, h, t0, t1, within: (a, b) } = *param else { return None };
+        // g on the whole stretch, then on its part: λ = a + (b − a)λ' ⇒ dλ'/ds = g(λ)/(b − a)
+        let span = (t1 - t0) * duration;
+        let g = if psi < 1e-9 {
+            Bern::constant(1.0 / span)
+        } else {
+            // t = t0 + (t1 − t0)·2·atan(hλ)/ψ  ⇒  dλ/dt = ψ(1 + h²λ²)/(2h(t1 − t0))
+            let c = psi / (2.0 * h * span);
+            Bern::from_monomial(&[c, 0.0, c * h * h])
+        };
+        let g = g.restrict(a, b).scale(1.0 / (b - a));
+        Some(TimeLaw::from_square(g.mul(&g)))
+    }
+
+    /// The law run `1/k` times as fast: λ̇² and λ̈ times `k` (k = 1/T² turns a law for one second
+    /// into one for T seconds).
+    pub fn scaled(&self, k: f64) -> TimeLaw {
+        TimeLaw { square: self.square.scale(k), accel: self.accel.scale(k) }
+    }
+}
+
+/// The time law of `sweep` at its duration: its own law (or the uniform one) with 1/T² applied;
+/// `None` at rest.
+pub(crate) fn sweep_law(sweep: &super::Sweep) -> Option<TimeLaw> {
+    let k = inverse_square(Some(sweep.duration?));
+    reference_law(sweep).map(|law| law.scaled(k))
+}
+
+/// The time law of `sweep` for a duration of one second: its own, or the uniform one; `None`
+/// when the sweep is at rest.
+pub(crate) fn reference_law(sweep: &super::Sweep) -> Option<TimeLaw> {
+    sweep.duration?;
+    sweep.law.clone().or_else(|| TimeLaw::uniform(&sweep.motion().param, 1.0))
 }
 
 fn mat_vec(m: &[[Bern; 3]; 3], v: &[Bern; 3]) -> [Bern; 3] {
     [0, 1, 2].map(|i| m[i][0].mul(&v[0]).add(&m[i][1].mul(&v[1])).add(&m[i][2].mul(&v[2])))
 }
 
-/// The load along the motion of `local` (expanded on all of [0, 1] of the motion whose λ maps to
-/// time through `rate` = dλ/ds for a duration of one second; `None` at rest).
-pub(crate) fn load_polys(local: &Local, load: &Load, rate: Option<&Bern>) -> LoadPolys {
+/// The load along the motion of `local` (expanded on all of [0, 1] of the motion whose λ runs in
+/// time as `law` for a duration of one second; `None` at rest).
+pub(crate) fn load_polys(local: &Local, load: &Load, law: Option<&TimeLaw>) -> LoadPolys {
     let w = &local.weight;
     let w2 = w.mul(w);
     let w0 = &load.wrench.nominal;
@@ -110,8 +149,8 @@ pub(crate) fn load_polys(local: &Local, load: &Load, rate: Option<&Bern>) -> Loa
             w2.scale(w0[j]).add(&static_moment[j - 3].mul(w))
         }
     });
-    let Some(g) = rate else { return LoadPolys { rows: statics, inertial: None, scale: None } };
-    let inertial = inertial_rows(local, dynamics, &com, &r, g);
+    let Some(law) = law else { return LoadPolys { rows: statics, inertial: None, scale: None } };
+    let inertial = inertial_rows(local, dynamics, &com, &r, law);
     // everything over w⁴: the static rows times w⁴
     let w4 = w2.mul(&w2);
     LoadPolys { rows: statics.each_ref().map(|p| p.mul(&w4)), inertial: Some(inertial), scale: Some(w4) }
@@ -119,13 +158,11 @@ pub(crate) fn load_polys(local: &Local, load: &Load, rate: Option<&Bern>) -> Loa
 
 /// The d'Alembert rows over w⁴ (D_w-scaled): force −m Ã·w², moment
 /// −m (r̃ × Ã)·w² − (M̂ I_b M̂ᵀ α̃)·w − g² Ω̂ × (M̂ I_b M̂ᵀ Ω̂); `com` is M̂ c_b.
-fn inertial_rows(local: &Local, d: &Dynamics, com: &[Bern; 3], r: &[Bern; 3], g: &Bern) -> [Bern; 6] {
+fn inertial_rows(local: &Local, d: &Dynamics, com: &[Bern; 3], r: &[Bern; 3], law: &TimeLaw) -> [Bern; 6] {
     let w = &local.weight;
     let dw = w.derivative();
     let ddw = dw.derivative();
-    let dg = g.derivative();
-    let gg = g.mul(g);
-    let gdg = g.mul(&dg);
+    let (gg, gdg) = (&law.square, &law.accel);
     // centre of mass numerator X̂ = P̂ + M̂ c_b
     let x: [Bern; 3] = [0, 1, 2].map(|i| local.position[i].add(&com[i]));
     let accel: [Bern; 3] = [0, 1, 2].map(|i| {
@@ -159,7 +196,7 @@ fn inertial_rows(local: &Local, d: &Dynamics, com: &[Bern; 3], r: &[Bern; 3], g:
             accel[j].mul(&w2).scale(-d.mass)
         } else {
             let k = j - 3;
-            r_x_a[k].mul(&w2).scale(-d.mass).sub(&i_alpha[k].mul(w)).sub(&gyro[k].mul(&gg))
+            r_x_a[k].mul(&w2).scale(-d.mass).sub(&i_alpha[k].mul(w)).sub(&gyro[k].mul(gg))
         }
     })
 }

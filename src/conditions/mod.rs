@@ -43,7 +43,8 @@ use crate::poly::{Bern, Partition, Truth};
 use crate::query::cables::{attached_inside, PoseCables};
 use crate::scenario::Scenario;
 use algebra::{Alg, HVec};
-use load::{load_polys, time_rate, LoadPolys};
+use load::{load_polys, reference_law, LoadPolys};
+pub use load::TimeLaw;
 use tube::Tube;
 use nalgebra::Vector3;
 
@@ -83,6 +84,10 @@ pub struct Sweep {
     /// depend on speed (inertia, winch limits) take their rates from it. `None` for a motion
     /// without time (a ray, an untimed trajectory): those conditions see the robot at rest.
     pub duration: Option<f64>,
+    /// How λ runs in time for a duration of one second, when not uniformly (a part of a
+    /// time-optimal law, `crate::plan::timing`): `duration` still scales it (1/T²). `None`: the
+    /// uniform law of the motion's parameter.
+    pub law: Option<TimeLaw>,
 }
 
 impl Sweep {
@@ -111,7 +116,7 @@ impl Sweep {
             let tube = Tube::new(cable.base, &tip, w);
             cables.push(SweptCable { base: cable.base, s, tube });
         }
-        Sweep { alg: Alg::new(w), cables, tol, links: links.to_vec(), tension: None, facets: None, settled: Vec::new(), duration: None }
+        Sweep { alg: Alg::new(w), cables, tol, links: links.to_vec(), tension: None, facets: None, settled: Vec::new(), duration: None, law: None }
     }
 
     /// The platform's motion (the first link's for a multi-link robot): the weight and the
@@ -150,8 +155,7 @@ impl Local {
             load: LoadPolys { rows: std::array::from_fn(|_| Bern::constant(0.0)), inertial: None, scale: None },
         };
         // timed: the inertial rows for one second, scaled to the sweep's duration when used
-        let rate = sweep.duration.and_then(|_| time_rate(&m.param, 1.0));
-        local.load = load_polys(&local, load, rate.as_ref());
+        local.load = load_polys(&local, load, reference_law(sweep).as_ref());
         local
     }
 

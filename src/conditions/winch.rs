@@ -6,11 +6,11 @@
 //!
 //! * l̇ = g u / (w² √P), so |l̇| < v ⇔ v² w⁴ P − g² u² > 0;
 //! * l̈ = g Z / (w³ P^{3/2}) with Z = (g'u + g u') w P − 2 g u w' P − g u w P'/2, so
-//!   |l̈| < a ⇔ a² w⁶ P³ − g² Z² > 0.
+//!   |l̈| < a ⇔ a² w⁶ P³ − (g Z)² > 0, g Z a polynomial in g² and g g' ([`TimeLaw`]).
 //!
 //! A motion without time (a ray, an untimed trajectory) is at rest: the limits hold.
 
-use super::load::time_rate;
+use super::load::{sweep_law, TimeLaw};
 use super::{Condition, Kind, PoseCheck, Sweep};
 use crate::poly::{Bern, Partition, Truth};
 use crate::query::cables::PoseCables;
@@ -37,8 +37,8 @@ pub struct WinchLimit {
 
 impl WinchLimit {
     /// The polynomial that is positive exactly where the limit holds, on the sweep's motion timed
-    /// by `g` = dλ/ds.
-    fn margin(&self, sweep: &Sweep, g: &Bern) -> Bern {
+    /// by `law`.
+    fn margin(&self, sweep: &Sweep, law: &TimeLaw) -> Bern {
         let w = &sweep.motion().weight;
         let s = &sweep.cables[self.cable].s;
         let st: [&Bern; 3] = [&s[0].p, &s[1].p, &s[2].p];
@@ -51,14 +51,17 @@ impl WinchLimit {
         let w2 = w.mul(w);
         let limit2 = self.limit * self.limit;
         match self.rate {
-            Rate::Speed => w2.mul(&w2).mul(&p).scale(limit2).sub(&g.mul(g).mul(&u).mul(&u)),
+            Rate::Speed => w2.mul(&w2).mul(&p).scale(limit2).sub(&law.square.mul(&u).mul(&u)),
             Rate::Acceleration => {
                 let dp = dot(st, [&d[0], &d[1], &d[2]]).scale(2.0);
                 let du = u.derivative();
-                let gu = g.mul(&u);
-                let z = g.derivative().mul(&u).add(&g.mul(&du)).mul(w).mul(&p).sub(&gu.mul(&dw).mul(&p).scale(2.0)).sub(&gu.mul(w).mul(&dp).scale(0.5));
+                // g·Z = g g' u w P + g² (u' w P − 2 u w' P − u w P'/2): the first term squared, the
+                // cross term and the last squared, each a polynomial in g² and g g'
+                let first = u.mul(w).mul(&p);
+                let second = du.mul(w).mul(&p).sub(&u.mul(&dw).mul(&p).scale(2.0)).sub(&u.mul(w).mul(&dp).scale(0.5));
+                let gz = law.accel.mul(&first).add(&law.square.mul(&second));
                 let w6p3 = w2.mul(&w2).mul(&w2).mul(&p).mul(&p).mul(&p);
-                w6p3.scale(limit2).sub(&g.mul(g).mul(&z).mul(&z))
+                w6p3.scale(limit2).sub(&gz.mul(&gz))
             }
         }
     }
@@ -81,10 +84,10 @@ impl Condition for WinchLimit {
     }
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
-        let Some(g) = sweep.duration.and_then(|d| time_rate(&sweep.motion().param, d)) else {
+        let Some(law) = sweep_law(sweep) else {
             return Partition::constant(Truth::False);
         };
-        let margin = self.margin(sweep, &g);
+        let margin = self.margin(sweep, &law);
         Partition::atom_outside(&margin, true, sweep.tol, &sweep.settled).not()
     }
 

@@ -30,8 +30,9 @@ pub const ANGLE_PIECE: f64 = FRAC_PI_2 / 4.0;
 /// How λ ∈ [0, 1] maps to the parameter a user sees.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Param {
-    /// A piece [t0, t1] of a trajectory's t that rotates by ψ at a constant rate:
-    /// t = t0 + (t1 − t0)·2·atan(hλ)/ψ with h = tan(ψ/2) (t = t0 + (t1 − t0)·λ when ψ = 0).
+    /// A stretch [t0, t1] of a trajectory's t that rotates by ψ at a constant rate:
+    /// t = t0 + (t1 − t0)·2·atan(hλ)/ψ with h = tan(ψ/2) (t = t0 + (t1 − t0)·λ when ψ = 0), or a
+    /// part of such a stretch (`within`).
     Trajectory {
         /// The piece's rotation angle ψ.
         psi: f64,
@@ -39,8 +40,11 @@ pub enum Param {
         h: f64,
         /// The whole trajectory's t at λ = 0.
         t0: f64,
-        /// The whole trajectory's t at λ = 1.
+        /// The whole trajectory's t at λ = 1 of the stretch.
         t1: f64,
+        /// The part [a, b] of the stretch's λ this motion covers: (0, 1) but for a part
+        /// ([`Motion::part`]), whose λ' ∈ [0, 1] is the stretch's a + (b − a)·λ'.
+        within: (f64, f64),
     },
     /// A linear coordinate: value = lo + (hi − lo)·λ.
     Linear {
@@ -64,7 +68,8 @@ impl Param {
     /// The user-facing value (t for trajectories) at λ; exactly the range's ends at λ = 0 and 1.
     pub fn value(&self, lam: f64) -> f64 {
         match *self {
-            Param::Trajectory { psi, h, t0, t1 } => {
+            Param::Trajectory { psi, h, t0, t1, within: (a, b) } => {
+                let lam = if lam >= 1.0 { b } else { a + (b - a) * lam };
                 let local = if psi < 1e-9 || lam <= 0.0 || lam >= 1.0 {
                     lam.clamp(0.0, 1.0)
                 } else {
@@ -90,8 +95,8 @@ impl Param {
     /// An upper bound on |d value / dλ| over [0, 1].
     pub fn max_slope(&self) -> f64 {
         match *self {
-            Param::Trajectory { psi, h, t0, t1 } => {
-                let span = t1 - t0;
+            Param::Trajectory { psi, h, t0, t1, within: (a, b) } => {
+                let span = (t1 - t0) * (b - a);
                 if psi < 1e-9 {
                     span
                 } else {
@@ -284,7 +289,7 @@ impl Motion {
                     vec![q0.j, lin.j, quad.j],
                     vec![q0.k, lin.k, quad.k],
                 ];
-                let param = Param::Trajectory { psi, h, t0: whole(t0), t1: whole(t1) };
+                let param = Param::Trajectory { psi, h, t0: whole(t0), t1: whole(t1), within: (0.0, 1.0) };
                 if pieces == 1 {
                     return Motion::from_parts(translation.clone(), &n, param);
                 }
@@ -329,7 +334,7 @@ impl Motion {
                 let position = whole.each_ref().map(|p| p.restrict(s.a, s.b));
                 let relative: QuatPoly = [s.cos.clone(), s.sin.iter().map(|c| c * axis.x).collect(), s.sin.iter().map(|c| c * axis.y).collect(), s.sin.iter().map(|c| c * axis.z).collect()];
                 let n = quat_mul(&quat_const(q0), &relative);
-                Motion::from_parts(position, &n, Param::Trajectory { psi: 0.0, h: 0.0, t0: at(s.a), t1: at(s.b) })
+                Motion::from_parts(position, &n, Param::Trajectory { psi: 0.0, h: 0.0, t0: at(s.a), t1: at(s.b), within: (0.0, 1.0) })
             })
             .collect()
     }
@@ -435,6 +440,21 @@ impl Motion {
             rotation: [0, 1, 2].map(|i| [0, 1, 2].map(|j| w.scale(r[(i, j)]))),
             weight: w.clone(),
             param,
+        }
+    }
+
+    /// The part λ ∈ [a, b] of this motion as a motion of its own in λ' ∈ [0, 1]
+    /// (λ = a + (b − a)·λ'), its parameter mapped to match. Only a trajectory's motion has parts.
+    pub fn part(&self, a: f64, b: f64) -> Motion {
+        let Param::Trajectory { psi, h, t0, t1, within: (c, d) } = self.param else {
+            panic!("only a trajectory's motion is cut into parts");
+        };
+        let r = |p: &Bern| p.restrict(a, b);
+        Motion {
+            position: self.position.each_ref().map(r),
+            rotation: self.rotation.each_ref().map(|row| row.each_ref().map(r)),
+            weight: r(&self.weight),
+            param: Param::Trajectory { psi, h, t0, t1, within: (c + (d - c) * a, c + (d - c) * b) },
         }
     }
 
