@@ -20,6 +20,7 @@ pub mod exists;
 mod joint_closure;
 mod load;
 mod offset;
+mod speed;
 mod structure;
 mod tension;
 pub mod tube;
@@ -33,6 +34,7 @@ pub use cable_shape::CableShape;
 pub use closure::{FacetPolys, WrenchClosure, WrenchFeasibility};
 pub use joint_closure::JointClosure;
 pub use tension::{CableTension, TensionPolys, TensionSide};
+pub use speed::PlatformSpeed;
 pub use winch::{Rate, WinchLimit};
 pub use wrench_lp::WrenchFeasibilityLp;
 
@@ -255,8 +257,8 @@ pub enum Kind {
     Tension,
     /// Cable–cable and cable–obstacle clearance.
     Interference,
-    /// Winch speed and acceleration limits: only along timed motions (a pose, a ray or a slice
-    /// is at rest).
+    /// Speed limits — the winches' cable speed and acceleration, the platform's speed: only
+    /// along timed motions (a pose, a ray or a slice is at rest).
     Winch,
 }
 
@@ -349,6 +351,9 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
         if let Some(limit) = limit {
             out.extend((0..m).map(|cable| Box::new(WinchLimit { cable, rate, limit }) as Box<dyn Condition>));
         }
+    }
+    if let Some(limit) = robot.speed {
+        out.push(Box::new(PlatformSpeed { limit }));
     }
     if let Some(load) = s.load() {
         let load = Rc::new(load);

@@ -13,7 +13,7 @@
 use super::load::{sweep_law, TimeLaw};
 use super::{Condition, Kind, PoseCheck, Sweep};
 use crate::poly::{Bern, Partition, Truth};
-use crate::query::cables::PoseCables;
+use crate::query::cables::{cable_rates, PoseCables};
 
 /// Which rate a [`WinchLimit`] bounds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -91,20 +91,15 @@ impl Condition for WinchLimit {
         Partition::atom_outside(&margin, true, sweep.tol, &sweep.settled).not()
     }
 
-    /// The cable's rate at the pose (its platform anchor moving as the pose's kinematics say):
-    /// l̇ = e·v_b, l̈ = e·a_b + (|v_b|² − l̇²)/l, e the unit cable direction. The distance is the
-    /// rate's magnitude; at rest both are 0.
+    /// The cable's rate at the pose ([`cable_rates`]); the distance is the rate's magnitude; at
+    /// rest both are 0.
     fn check(&self, at: &PoseCables) -> PoseCheck {
         let Some(kin) = &at.kinematics else { return PoseCheck { violated: false, distance: Some(0.0) } };
         let (a, x) = at.cables[self.cable];
-        let b = at.pose.rotation.inverse_transform_vector(&(x - at.pose.position));
-        let (v, acc) = kin.of_point(&at.pose, &b);
-        let len = (x - a).norm();
-        let e = (x - a) / len;
-        let speed = e.dot(&v);
+        let (speed, accel) = cable_rates(&at.pose, kin, &a, &x);
         let rate = match self.rate {
             Rate::Speed => speed.abs(),
-            Rate::Acceleration => (e.dot(&acc) + (v.norm_squared() - speed * speed) / len).abs(),
+            Rate::Acceleration => accel.abs(),
         };
         PoseCheck { violated: !(rate < self.limit), distance: Some(rate) }
     }

@@ -52,6 +52,8 @@ pub struct Robot {
     pub dynamics: Option<Dynamics>,
     /// The winches' speed and acceleration limits (format 4); both `None` when not limited.
     pub winch: Winch,
+    /// The largest speed of the platform's origin (format 4 `robot.speed`, m/s), if limited.
+    pub speed: Option<f64>,
 }
 
 /// Minimum distances the verifier enforces, between cable centrelines and from a centreline to an

@@ -92,3 +92,15 @@ fn cables_of_chain(robot: &Robot, links: Vec<Frame>) -> PoseCables {
 pub fn attached_inside(b: &Vector3<f64>, body: &[Vector3<f64>; 2], r: f64) -> bool {
     super::point_segment_dist2(b, &body[0], &(body[1] - body[0]), None) < r * r
 }
+
+/// A cable's length rates (l̇, l̈) at `pose` moving as `kin`, the cable from the base anchor `a`
+/// to the platform anchor `x` (world frame): with e the unit cable direction and v_b, a_b the
+/// anchor's velocity and acceleration, l̇ = e·v_b and l̈ = e·a_b + (|v_b|² − l̇²)/l.
+pub fn cable_rates(pose: &crate::model::Pose, kin: &crate::model::Kinematics, a: &Vector3<f64>, x: &Vector3<f64>) -> (f64, f64) {
+    let b = pose.rotation.inverse_transform_vector(&(x - pose.position));
+    let (v, acc) = kin.of_point(pose, &b);
+    let len = (x - a).norm();
+    let e = (x - a) / len;
+    let speed = e.dot(&v);
+    (speed, e.dot(&acc) + (v.norm_squared() - speed * speed) / len)
+}

@@ -316,12 +316,45 @@ pub fn tension_ranges_at(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector
 /// rank below 6 (no facet has columns off its hyperplane, or some hyperplane holds them all): W,
 /// or w0, is then balanced nowhere but on that hyperplane, reported as singular.
 pub fn wrench_set_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, nominal: &Vector6<f64>, ellipsoid_inv: &Matrix6<f64>, bounds: &[Bounds]) -> Option<f64> {
-    let j = structure_matrix_m(cables, point);
+    let facets = facets(&structure_matrix_m(cables, point), bounds)?;
+    let best = facets
+        .iter()
+        .map(|f| {
+            let reach = (f.normal.dot(&(ellipsoid_inv * f.normal))).max(0.0).sqrt();
+            let centre = f.normal.dot(nominal);
+            // n·w ≤ upper and n·w ≥ lower for every w of W, with the box shrunk by t
+            ((f.upper - centre).min(centre - f.lower) - reach) / f.spread
+        })
+        .fold(f64::INFINITY, f64::min);
+    // past half the narrowest finite tension range the shrunk box is empty
+    let half = bounds.iter().filter(|b| b.max.is_finite()).map(|b| 0.5 * (b.max - b.min)).fold(f64::INFINITY, f64::min);
+    (!facets.is_empty()).then_some(best.min(half))
+}
+
+/// One facet pair of the zonotope {J f : f_min ≤ f ≤ f_max} ([`wrench_set_margin`]): the wrenches
+/// w with `lower` ≤ n·w ≤ `upper`, n the hyperplane's normal; shrinking the tension box by t
+/// moves both sides inward by t·`spread`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Facet {
+    /// n_S, the cofactors of [J_S | x].
+    pub normal: Vector6<f64>,
+    /// The least n·J f over the tension box.
+    pub lower: f64,
+    /// The greatest n·J f over the tension box.
+    pub upper: f64,
+    /// Σ_k |n·j_k| over the columns off the hyperplane.
+    pub spread: f64,
+}
+
+/// The facet pairs of the zonotope {J f : f_min ≤ f ≤ f_max} of the 6×m structure matrix `j`
+/// (C(m, 5) candidate sets of five columns; those not spanning a hyperplane are skipped), or
+/// `None` when J has rank below 6 (some hyperplane holds every column).
+pub fn facets(j: &DMatrix<f64>, bounds: &[Bounds]) -> Option<Vec<Facet>> {
     let m = j.ncols();
     let norms: Vec<f64> = (0..m).map(|i| j.column(i).norm()).collect();
-    let mut best: Option<f64> = None;
+    let mut out = Vec::new();
     for s in subsets(m, 5) {
-        let n = facet_normal(&j, &s);
+        let n = facet_normal(j, &s);
         let scale: f64 = s.iter().map(|&k| norms[k]).product();
         if !(n.norm() > SINGULAR_RATIO * scale) {
             continue; // the five columns do not span a hyperplane
@@ -340,15 +373,9 @@ pub fn wrench_set_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector
         if spread == 0.0 {
             return None; // every column on this hyperplane: rank 5
         }
-        let reach = (n.dot(&(ellipsoid_inv * n))).max(0.0).sqrt();
-        let centre = n.dot(nominal);
-        // n·w ≤ upper and n·w ≥ lower for every w of W, with the box shrunk by t
-        let t = (upper - centre).min(centre - lower) - reach;
-        best = Some(best.map_or(t / spread, |b: f64| b.min(t / spread)));
+        out.push(Facet { normal: n, lower, upper, spread });
     }
-    // past half the narrowest finite tension range the shrunk box is empty
-    let half = bounds.iter().filter(|b| b.max.is_finite()).map(|b| 0.5 * (b.max - b.min)).fold(f64::INFINITY, f64::min);
-    best.map(|b| b.min(half))
+    Some(out)
 }
 
 /// The normal of the hyperplane through the five columns `s` of the 6×m matrix `j`: the cofactors

@@ -96,6 +96,9 @@ pub struct RawRobot {
     /// The winches' limits (format 4).
     #[serde(default)]
     pub winch: Option<RawWinch>,
+    /// The largest speed of the platform's origin (format 4).
+    #[serde(default)]
+    pub speed: Option<f64>,
 }
 
 /// The platform as a rigid body: mass, centre of mass and inertia about it (platform frame),

@@ -58,6 +58,7 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
     let mut robot = robot::robot(&raw.robot)?;
     robot.dynamics = robot::dynamics(&raw, version)?;
     robot.winch = robot::winch(&raw, version)?;
+    robot.speed = robot::platform_speed(&raw, version)?;
     let clearance = robot::clearance(&raw)?;
     let configs = chains::multi_link(&raw, &mut robot, &clearance, &mut warnings)?;
     if robot.chain.is_some() {

@@ -51,7 +51,7 @@ pub(super) fn robot(raw: &RawRobot) -> Result<Robot> {
         .zip(tension)
         .map(|(((base, platform), length), tension)| Cable { base, platform, link: 0, length, tension })
         .collect();
-    Ok(Robot { cables, diameter, chain: None, dynamics: None, winch: Winch { speed: None, acceleration: None } })
+    Ok(Robot { cables, diameter, chain: None, dynamics: None, winch: Winch { speed: None, acceleration: None }, speed: None })
 }
 
 /// One value of a bound and the JSON path it came from (empty for the default).
@@ -171,4 +171,14 @@ pub(super) fn winch(raw: &RawScenario, version: u8) -> Result<Winch> {
     let speed = speed.map(|v| positive("robot.winch.speed", v)).transpose()?;
     let acceleration = acceleration.map(|a| positive("robot.winch.acceleration", a)).transpose()?;
     Ok(Winch { speed, acceleration })
+}
+
+/// The largest speed of the platform's origin (none when absent); positive.
+pub(super) fn platform_speed(raw: &RawScenario, version: u8) -> Result<Option<f64>> {
+    let Some(v) = raw.robot.speed else { return Ok(None) };
+    needs_format_4(version, "robot.speed")?;
+    if raw.robot.links.is_some() {
+        return Err(Error::new("robot.speed", "not supported for multi-link robots yet"));
+    }
+    positive("robot.speed", v).map(Some)
 }
