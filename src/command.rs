@@ -12,8 +12,9 @@ use crate::lattice::{Lattice, LatticeReport, LatticeSpec};
 use crate::model::Trajectory;
 use crate::plan::atlas::{PlanParams, PlanReport};
 use crate::plan::lattice::{LatticeParams, LatticePlanReport};
+use crate::plan::timing::{self, TimingOptions};
 use crate::plan::{self, Details, PlanStatus, PlannerKind, PlannerOptions};
-use crate::report::{PoseReport, RayReport, Side, TensionEnvelope, VerifyReport};
+use crate::report::{PoseReport, RayReport, Side, TensionEnvelope, TimingReport, VerifyReport};
 use crate::verify::slice::{default_range, slice_counted, Class, SliceMap};
 use crate::verify::{along, check_along, check_config, check_pose, ray, tension_envelope, verify_all_counted, verify_along, verify_pointwise_along};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -63,6 +64,15 @@ pub enum Request {
         trajectory: Option<String>,
         /// Sample count (`None`: 100).
         samples: Option<usize>,
+    },
+    /// The fastest timing of a trajectory, certified along it (docs/timing.md).
+    Time {
+        /// Trajectory name (`None`: the scenario's first).
+        trajectory: Option<String>,
+        /// Grid cells (`None`: 400).
+        cells: Option<usize>,
+        /// Relative margin on the limits at the grid points (`None`: 1e-3).
+        margin: Option<f64>,
     },
     /// A res × res classified grid over two coordinates and its feasible components.
     Slice {
@@ -120,6 +130,8 @@ pub enum Output {
     Check(PoseReport),
     /// Of [`Request::Envelope`].
     Envelope(TensionEnvelope),
+    /// Of [`Request::Time`].
+    Time(TimingReport),
     /// Of [`Request::Slice`].
     Slice(SliceMap),
     /// Of [`Request::Plan`] with the atlas planner, the path as a trajectory, and the atlas file
@@ -174,6 +186,11 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
         Request::Envelope { trajectory, samples } => {
             let traj = scenario.trajectory(trajectory.as_deref())?;
             Output::Envelope(tension_envelope(scenario, traj, samples.unwrap_or(100))?)
+        }
+        Request::Time { trajectory, cells, margin } => {
+            let defaults = TimingOptions::default();
+            let options = TimingOptions { cells: cells.unwrap_or(defaults.cells), margin: margin.unwrap_or(defaults.margin), ..defaults };
+            Output::Time(timing::fastest(scenario, scenario.trajectory(trajectory.as_deref())?, options)?.0)
         }
         Request::Slice { pose, axes, res, range } => {
             let axes = [scenario.coord("--axes", &axes[0])?, scenario.coord("--axes", &axes[1])?];
@@ -263,6 +280,7 @@ impl Output {
             Output::Ray(r) => to_json(r),
             Output::Check(r) => to_json(r),
             Output::Envelope(r) => to_json(r),
+            Output::Time(r) => to_json(r),
             Output::Slice(r) => to_json(r),
             Output::Plan(r, ..) => to_json(r),
             Output::Lattice(r) => to_json(r),
@@ -299,6 +317,7 @@ impl Output {
             Output::Ray(r) => ray_text(r),
             Output::Check(r) => check_text(r),
             Output::Envelope(r) => envelope_text(r),
+            Output::Time(r) => time_text(r),
             Output::Slice(r) => slice_text(r),
             Output::Plan(r, ..) => plan_text(r),
             Output::Lattice(r) => lattice_text(r),
@@ -453,6 +472,23 @@ fn slice_text(m: &SliceMap) -> String {
         }
     }
     out
+}
+
+fn time_text(r: &TimingReport) -> String {
+    let mut out = format!("{}: fastest safe timing\n", r.trajectory);
+    match r.duration {
+        Some(d) => out += &format!("  certified duration: {d:.6} s (uncertified optimum of the same grid {:.6} s; the certificate cost {:.3} %)\n", r.uncertified_duration, 100.0 * r.certificate_cost.unwrap_or(0.0)),
+        None => out += &format!("  not certified: {} (best law {:.6} s)\n", intervals(&r.not_certified), r.profile.last().map_or(0.0, |p| p.time)),
+    }
+    out += &format!("  grid: {} cells, limits tightened by {} relative; {} slow-down rounds", r.cells, r.margin, r.rounds);
+    if !r.slowed.is_empty() {
+        out += &format!(", slowed on t ∈ {}", intervals(&r.slowed));
+    }
+    out += "\n  binding:\n";
+    for b in &r.binding {
+        out += &format!("    t ∈ [{:.6}, {:.6}] ({:.4} – {:.4} s): {}\n", b.t[0], b.t[1], b.seconds[0], b.seconds[1], b.constraint);
+    }
+    out + &notes(&r.notes)
 }
 
 fn envelope_text(e: &TensionEnvelope) -> String {

@@ -188,3 +188,62 @@ pub struct TensionEnvelope {
     /// Each cable's tension bounds [min, max].
     pub bounds: Vec<[f64; 2]>,
 }
+
+/// The fastest safe timing of a trajectory (`cablenav time`): a time law certified along the
+/// whole path by the exact verifier, and what it cost over the grid's uncertified optimum.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TimingReport {
+    /// The trajectory's name.
+    pub trajectory: String,
+    /// The certified duration (s), rest to rest; `None` when some cell could not be certified
+    /// (`not_certified` says where).
+    pub duration: Option<f64>,
+    /// The duration of the time-optimal law on the same grid before certification (s): the
+    /// limits met at the grid's points only, as sampled planners give it.
+    pub uncertified_duration: f64,
+    /// duration / uncertified_duration − 1: what the certificate cost.
+    pub certificate_cost: Option<f64>,
+    /// Grid cells the path was cut into.
+    pub cells: usize,
+    /// Slow-down rounds the certification took (0: the optimum certified as it was).
+    pub rounds: usize,
+    /// The relative margin the limits were tightened by on the grid.
+    pub margin: f64,
+    /// The constraint that binds along the path, stretch by stretch.
+    pub binding: Vec<BindingStretch>,
+    /// The t-intervals the certification slowed down (a limit was left between grid points).
+    pub slowed: Vec<[f64; 2]>,
+    /// The t-intervals left uncertified after the last round (empty when `duration` is given).
+    pub not_certified: Vec<[f64; 2]>,
+    /// The law at every grid point.
+    pub profile: Vec<ProfilePoint>,
+    /// Notes: geometry along the path, what was left out.
+    pub notes: Vec<String>,
+}
+
+/// A stretch of the path over which one constraint binds.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BindingStretch {
+    /// [t0, t1] in the trajectory's parameter.
+    pub t: [f64; 2],
+    /// [s0, s1] in seconds.
+    pub seconds: [f64; 2],
+    /// The constraint, e.g. `"cable 3 max, cable 7 min tension"`, `"cable 2 speed"`.
+    pub constraint: String,
+}
+
+/// The timed law at one grid point.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ProfilePoint {
+    /// The trajectory's parameter.
+    pub t: f64,
+    /// Time (s).
+    pub time: f64,
+    /// dt/dtime (1/s).
+    pub rate: f64,
+    /// The platform origin's speed (m/s).
+    pub speed: f64,
+    /// Tensions balancing the load there, moving (the linear program's most central ones for
+    /// more than six cables); empty where the robot has no load.
+    pub tensions: Vec<f64>,
+}

@@ -107,6 +107,25 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// The fastest timing of a trajectory, rest to rest, certified along it by the exact verifier
+    /// (tension bounds with the wrench set, winch and platform speed limits)
+    #[command(after_help = EXIT_CODES)]
+    Time {
+        #[arg(value_name = "SCENARIO", help = SCENARIO_HELP)]
+        scenario: String,
+        /// The trajectory [default: the scenario's first]
+        #[arg(long, value_name = "NAME")]
+        trajectory: Option<String>,
+        /// Grid cells over the whole path [default: 400]
+        #[arg(long, value_name = "N")]
+        cells: Option<usize>,
+        /// Relative margin the limits are tightened by at the grid points [default: 0.001]
+        #[arg(long, value_name = "M", value_parser = finite, allow_negative_numbers = true)]
+        margin: Option<f64>,
+        /// Print the report as JSON
+        #[arg(long)]
+        json: bool,
+    },
     /// Classify a res×res grid over two coordinates (the others from the pose) and find the
     /// connected components of its feasible cells
     #[command(after_help = EXIT_CODES)]
@@ -272,6 +291,7 @@ impl Command {
                 plain(scenario, request, json)
             }
             Command::Envelope { scenario, trajectory, samples, json } => plain(scenario, Request::Envelope { trajectory, samples }, json),
+            Command::Time { scenario, trajectory, cells, margin, json } => plain(scenario, Request::Time { trajectory, cells, margin }, json),
             Command::Slice { scenario, pose, axes, res, range, png, json } => {
                 let range = range.map(|r| [[r[0], r[1]], [r[2], r[3]]]);
                 Ok(Invocation { scenario, request: Request::Slice { pose, axes, res, range }, json, png, out: None, atlas: None })

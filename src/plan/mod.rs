@@ -8,6 +8,7 @@
 
 pub mod atlas;
 pub mod lattice;
+pub mod timing;
 
 use crate::error::{Error, Result};
 use crate::model::{Orientation, Pose, Segment, Trajectory, Translation};

@@ -336,6 +336,8 @@ pub fn wrench_set_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector
 /// moves both sides inward by t·`spread`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Facet {
+    /// Which five columns: the index of the set in [`subsets`]`(m, 5)`'s order.
+    pub set: usize,
     /// n_S, the cofactors of [J_S | x].
     pub normal: Vector6<f64>,
     /// The least n·J f over the tension box.
@@ -353,7 +355,7 @@ pub fn facets(j: &DMatrix<f64>, bounds: &[Bounds]) -> Option<Vec<Facet>> {
     let m = j.ncols();
     let norms: Vec<f64> = (0..m).map(|i| j.column(i).norm()).collect();
     let mut out = Vec::new();
-    for s in subsets(m, 5) {
+    for (set, s) in subsets(m, 5).into_iter().enumerate() {
         let n = facet_normal(j, &s);
         let scale: f64 = s.iter().map(|&k| norms[k]).product();
         if !(n.norm() > SINGULAR_RATIO * scale) {
@@ -373,14 +375,14 @@ pub fn facets(j: &DMatrix<f64>, bounds: &[Bounds]) -> Option<Vec<Facet>> {
         if spread == 0.0 {
             return None; // every column on this hyperplane: rank 5
         }
-        out.push(Facet { normal: n, lower, upper, spread });
+        out.push(Facet { set, normal: n, lower, upper, spread });
     }
     Some(out)
 }
 
 /// The normal of the hyperplane through the five columns `s` of the 6×m matrix `j`: the cofactors
 /// of the last column of [J_S | x], so that n·x = det [J_S | x].
-fn facet_normal(j: &DMatrix<f64>, s: &[usize]) -> Vector6<f64> {
+pub fn facet_normal(j: &DMatrix<f64>, s: &[usize]) -> Vector6<f64> {
     Vector6::from_fn(|r, _| {
         let minor = DMatrix::from_fn(5, 5, |a, b| j[(if a < r { a } else { a + 1 }, s[b])]);
         let sign = if (r + 5) % 2 == 0 { 1.0 } else { -1.0 };

@@ -47,7 +47,7 @@ enum Verdict {
 }
 
 /// The speed-dependent conditions of `s`: tensions (under weight and inertia) and winch limits.
-fn speed_conditions(s: &Scenario) -> Vec<Box<dyn Condition>> {
+pub(crate) fn speed_conditions(s: &Scenario) -> Vec<Box<dyn Condition>> {
     for_scenario(s).into_iter().filter(|c| matches!(c.kind(), Kind::Tension | Kind::Winch)).collect()
 }
 

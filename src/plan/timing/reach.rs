@@ -1,0 +1,209 @@
+//! The fastest law along a grid of cells by reachability (Pham & Pham's TOPP-RA, in the
+//! first-order form that checks each cell's limits at both its ends): the state on cell i is
+//! x = λ̇² at its start and the control u = λ̈, constant on the cell, so x at its end is
+//! x + 2Δu. A backward pass finds, for each cell, the interval of start states from which the
+//! rest of the path can still be followed to a stop (the controllable sets); a forward pass then
+//! takes the greatest acceleration that stays inside them. Knows nothing of robots: each cell
+//! comes as half-planes in (u, x).
+
+use super::limits::HalfPlane;
+
+/// One step of the passes: cell i's half-planes in (u, x_start) (its limits at the start, and
+/// at the end with x_end = x + 2Δu substituted), its width Δ in λ, the factor from its end's x
+/// to the next cell's start, and whether the platform stops at its end.
+#[derive(Debug, Clone)]
+pub struct Step {
+    /// The half-planes.
+    pub planes: Vec<HalfPlane>,
+    /// Δ.
+    pub delta: f64,
+    /// The next cell's x per unit of this one's end x.
+    pub factor: f64,
+    /// x = 0 at its end.
+    pub stop: bool,
+    /// Caps on x at its start and end (the certification's slow-downs; infinite: none).
+    pub caps: (f64, f64),
+}
+
+/// A convex polygon in (u, x), counter-clockwise.
+#[derive(Debug, Clone)]
+struct Polygon(Vec<[f64; 2]>);
+
+impl Polygon {
+    fn rect(u: f64, x: f64) -> Polygon {
+        Polygon(vec![[-u, 0.0], [u, 0.0], [u, x], [-u, x]])
+    }
+
+    /// The part with a·u + b·x ≤ c (Sutherland–Hodgman against one half-plane).
+    fn clip(&self, a: f64, b: f64, c: f64) -> Polygon {
+        let value = |p: &[f64; 2]| a * p[0] + b * p[1] - c;
+        let n = self.0.len();
+        let mut out = Vec::with_capacity(n + 1);
+        for k in 0..n {
+            let (p, q) = (self.0[k], self.0[(k + 1) % n]);
+            let (vp, vq) = (value(&p), value(&q));
+            if vp <= 0.0 {
+                out.push(p);
+            }
+            if (vp < 0.0 && vq > 0.0) || (vp > 0.0 && vq < 0.0) {
+                let s = vp / (vp - vq);
+                out.push([p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])]);
+            }
+        }
+        Polygon(out)
+    }
+
+    fn clip_all(self, planes: &[HalfPlane]) -> Polygon {
+        planes.iter().fold(self, |p, h| if p.0.is_empty() { p } else { p.clip(h.a, h.b, h.c) })
+    }
+
+    /// The least and greatest x.
+    fn x_range(&self) -> Option<(f64, f64)> {
+        let xs = self.0.iter().map(|p| p[1]);
+        (!self.0.is_empty()).then(|| (xs.clone().fold(f64::INFINITY, f64::min), xs.fold(f64::NEG_INFINITY, f64::max)))
+    }
+
+    fn extent(&self) -> f64 {
+        self.0.iter().map(|p| p[0].abs().max(p[1].abs())).fold(0.0, f64::max)
+    }
+}
+
+/// Beyond this a state or control counts as unbounded: nothing limits the speed there.
+pub const UNBOUNDED: f64 = 1e12;
+
+/// The least and greatest start state x of `step` from which its end state lies in [lo, hi]
+/// with x ≤ `cap`: the x-range of its half-planes and that strip, clipped first inside a huge
+/// box to learn its extent, then again inside a box just around it, so that the vertices carry
+/// no rounding from the huge one. `Err(())` when unbounded.
+fn start_range(step: &Step, lo: f64, hi: f64, cap: f64) -> Result<Option<(f64, f64)>, ()> {
+    if lo == hi {
+        // a stop (or an end state pinned to one value): u = (lo − x)/(2Δ), each half-plane a
+        // bound on x alone — a strip of width zero would leave the clipping only rounding
+        let (mut x_lo, mut x_hi) = (0.0f64, cap);
+        for h in &step.planes {
+            let (k, r) = (h.b - h.a / (2.0 * step.delta), h.c - h.a * lo / (2.0 * step.delta));
+            if k > 0.0 {
+                x_hi = x_hi.min(r / k);
+            } else if k < 0.0 {
+                x_lo = x_lo.max(r / k);
+            } else if r < 0.0 {
+                return Ok(None);
+            }
+        }
+        if x_hi >= 0.5 * UNBOUNDED {
+            return Err(());
+        }
+        return Ok((x_lo <= x_hi).then_some((x_lo, x_hi)));
+    }
+    let clip = |p: Polygon| p.clip(2.0 * step.delta, 1.0, hi).clip(-2.0 * step.delta, -1.0, -lo).clip(0.0, 1.0, cap).clip_all(&step.planes);
+    let first = clip(Polygon::rect(UNBOUNDED, UNBOUNDED));
+    if first.0.is_empty() {
+        return Ok(None);
+    }
+    let e = first.extent();
+    if e >= 0.5 * UNBOUNDED {
+        return Err(());
+    }
+    Ok(clip(Polygon::rect(2.0 * e + 1e-300, 2.0 * e + 1e-300)).x_range().or(first.x_range()))
+}
+
+/// Why no law exists.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Failure {
+    /// No state of cell `0` can still reach the end (or no (u, x) meets its limits at all).
+    Stuck(usize),
+    /// Cell `0`'s states are unbounded: nothing limits the speed there.
+    Unbounded(usize),
+}
+
+/// The fastest law: x at every cell's start and end, from rest to rest.
+pub fn fastest(steps: &[Step]) -> Result<Vec<(f64, f64)>, Failure> {
+    let n = steps.len();
+    // backward: controllable start states of each cell
+    let mut controllable = vec![(0.0, 0.0); n];
+    let mut next = (0.0, 0.0); // the end: at rest
+    for i in (0..n).rev() {
+        let s = &steps[i];
+        // the end state x + 2Δu within next / factor (0 at a stop) and the end cap
+        let (lo, mut hi) = if s.stop { (0.0, 0.0) } else { (next.0 / s.factor, next.1 / s.factor) };
+        hi = hi.min(s.caps.1);
+        let Some((x_lo, x_hi)) = start_range(s, lo, hi, s.caps.0).map_err(|()| Failure::Unbounded(i))? else { return Err(Failure::Stuck(i)) };
+        controllable[i] = (x_lo.max(0.0), x_hi.max(0.0));
+        next = controllable[i];
+    }
+    if controllable[0].0 > 0.0 {
+        return Err(Failure::Stuck(0));
+    }
+    // forward: the greatest u that keeps the end state controllable
+    let mut out = Vec::with_capacity(n);
+    let mut x: f64 = 0.0;
+    for i in 0..n {
+        let s = &steps[i];
+        x = x.clamp(controllable[i].0, controllable[i].1);
+        let (lo, hi) = match (s.stop, controllable.get(i + 1)) {
+            (true, _) | (_, None) => (0.0, 0.0),
+            (false, Some(c)) => (c.0 / s.factor, (c.1 / s.factor).min(s.caps.1)),
+        };
+        let mut u_hi = (hi - x) / (2.0 * s.delta);
+        for h in s.planes.iter().filter(|h| h.a > 0.0) {
+            u_hi = u_hi.min((h.c - h.b * x) / h.a);
+        }
+        // where the interval is a point rounding can leave it empty (u_hi a hair below u_lo):
+        // the greatest u, which keeps the end controllable, is the one to take either way
+        let u = u_hi;
+        let end = if hi == 0.0 { 0.0 } else { (x + 2.0 * s.delta * u).clamp(lo, hi) };
+        out.push((x, end));
+        x = end * s.factor;
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::limits::What;
+    use super::*;
+
+    fn plane(a: f64, b: f64, c: f64) -> HalfPlane {
+        HalfPlane { a, b, c, what: What::Cap }
+    }
+
+    /// A point moving a unit distance with |u| ≤ 1: bang-bang, x peaks at 1 in the middle
+    /// (x = 2·s on the way up), and the law meets the limits at every cell.
+    #[test]
+    fn bang_bang_under_an_acceleration_limit() {
+        let n = 100;
+        let delta = 1.0 / n as f64;
+        let steps: Vec<Step> = (0..n)
+            .map(|i| Step { planes: vec![plane(1.0, 0.0, 1.0), plane(-1.0, 0.0, 1.0)], delta, factor: 1.0, stop: i + 1 == n, caps: (f64::INFINITY, f64::INFINITY) })
+            .collect();
+        let law = fastest(&steps).unwrap();
+        for (i, &(x0, x1)) in law.iter().enumerate() {
+            let s = i as f64 * delta;
+            let expect = (2.0 * s).min(2.0 * (1.0 - s));
+            assert!((x0 - expect).abs() < 1e-9, "cell {i}: x = {x0}, expected {expect}");
+            let u = (x1 - x0) / (2.0 * delta);
+            assert!(u.abs() <= 1.0 + 1e-9, "cell {i}: u = {u}");
+        }
+    }
+
+    /// A speed limit x ≤ 0.25 on top: the law cruises at it in the middle.
+    #[test]
+    fn cruises_at_a_speed_limit() {
+        let n = 200;
+        let delta = 1.0 / n as f64;
+        let steps: Vec<Step> = (0..n)
+            .map(|i| Step { planes: vec![plane(1.0, 0.0, 1.0), plane(-1.0, 0.0, 1.0), plane(0.0, 1.0, 0.25)], delta, factor: 1.0, stop: i + 1 == n, caps: (f64::INFINITY, f64::INFINITY) })
+            .collect();
+        let law = fastest(&steps).unwrap();
+        assert!((law[n / 2].0 - 0.25).abs() < 1e-12);
+        assert!(law.iter().all(|&(a, b)| a <= 0.25 + 1e-12 && b <= 0.25 + 1e-12));
+    }
+
+    #[test]
+    fn an_infeasible_cell_is_named() {
+        let steps: Vec<Step> = (0..10)
+            .map(|i| Step { planes: if i == 4 { vec![plane(0.0, 1.0, -1.0)] } else { vec![plane(1.0, 0.0, 1.0), plane(-1.0, 0.0, 1.0)] }, delta: 0.1, factor: 1.0, stop: i == 9, caps: (f64::INFINITY, f64::INFINITY) })
+            .collect();
+        assert_eq!(fastest(&steps), Err(Failure::Stuck(4)));
+    }
+}
