@@ -39,8 +39,16 @@ const SAMPLES: usize = 400;
 /// Finite-difference step in t (5-point stencils: truncation ~h⁴, rounding ~1e-16/h²).
 const H: f64 = 1e-3;
 
+/// The step along a time-optimal law, whose acceleration jumps from cell to cell: the stencils
+/// stay inside one cell (rounding ~1e-6 relative, hence the wider [`TIMED_EPS`]).
+const TIMED_H: f64 = 1e-5;
+
+/// Relative band around a bound inside which the reference calls a timed sample undecided.
+const TIMED_EPS: f64 = 1e-5;
+
 /// A robot with mass, its load and one timed trajectory, as the reference sees them. z points
 /// down: gravity is +z, the cables mostly hang from anchors at z = 0.
+#[derive(Clone)]
 struct Case {
     cables: Vec<(V3, V3)>,
     tension: (f64, f64),
@@ -54,14 +62,22 @@ struct Case {
     winch: Option<(f64, f64)>,
     path: Path,
     duration: f64,
+    /// Finite-difference step ([`H`], or [`TIMED_H`] along a time-optimal law).
+    h: f64,
+    /// Relative band around a bound within which a verdict is left undecided.
+    eps: f64,
 }
 
 /// How the reference moves the platform in t ∈ [0, 1].
+#[derive(Clone)]
 enum Path {
     /// The thesis' form: translation in τ, slerp in t.
     Slerp(RefTrajectory),
     /// CASPR's spline through knots (times in seconds, poses): [`Spline`].
     Spline(Spline),
+    /// Another path run by a time law (`cablenav time`'s): t here is time / duration, and the
+    /// path's own t is the law's at that time.
+    Timed(Box<Path>, cablenav::plan::timing::TimedPath),
 }
 
 /// CASPR's quintic spline as its documentation and `generateTrajectoryQuinticSpline` state it,
@@ -69,6 +85,7 @@ enum Path {
 /// quintic with zero end velocities and accelerations — solved here from its six conditions, not
 /// taken from a closed form — and the rotation R_k·Rot(axis, θ·s), axis and θ those of R_kᵀR_(k+1),
 /// s the same quintic from 0 to 1.
+#[derive(Clone)]
 struct Spline {
     times: Vec<f64>,
     poses: Vec<(Vector3<f64>, Matrix3<f64>)>,
@@ -138,6 +155,10 @@ struct At {
     verdict: Option<bool>,
     /// For six cables without winch limits: the largest u = 1/k² that holds here (∞ if any).
     u_max: f64,
+    /// The least slack to a bound, relative to it (winch limits) or to the tension range
+    /// (tensions: the largest uniform shrink of the tension box that still balances), where
+    /// computed: 0 where some constraint is at its bound.
+    slack: f64,
 }
 
 impl Case {
@@ -173,12 +194,17 @@ impl Case {
     }
 
     fn pose(&self, t: f64) -> (Vector3<f64>, Matrix3<f64>) {
-        match &self.path {
+        Case::pose_on(&self.path, t)
+    }
+
+    fn pose_on(path: &Path, t: f64) -> (Vector3<f64>, Matrix3<f64>) {
+        match path {
             Path::Slerp(traj) => {
                 let (p, r) = traj.pose(t);
                 (to_v(p), to_m(&r))
             }
             Path::Spline(spline) => spline.pose(t),
+            Path::Timed(inner, law) => Case::pose_on(inner, law.t_at(t * law.duration())),
         }
     }
 
@@ -187,9 +213,10 @@ impl Case {
     where
         T: std::ops::Add<Output = T> + std::ops::Sub<Output = T> + std::ops::Mul<f64, Output = T> + Copy,
     {
-        let (m2, m1, z, p1, p2) = (f(t - 2.0 * H), f(t - H), f(t), f(t + H), f(t + 2.0 * H));
-        let d1 = (m2 - p2 + (p1 - m1) * 8.0) * (1.0 / (12.0 * H));
-        let d2 = ((p1 + m1) * 16.0 - z * 30.0 - m2 - p2) * (1.0 / (12.0 * H * H));
+        let h = self.h;
+        let (m2, m1, z, p1, p2) = (f(t - 2.0 * h), f(t - h), f(t), f(t + h), f(t + 2.0 * h));
+        let d1 = (m2 - p2 + (p1 - m1) * 8.0) * (1.0 / (12.0 * h));
+        let d2 = ((p1 + m1) * 16.0 - z * 30.0 - m2 - p2) * (1.0 / (12.0 * h * h));
         (z, d1, d2)
     }
 
@@ -268,12 +295,50 @@ impl Case {
         }
     }
 
+    /// The largest t such that every wrench of the ellipsoid around `w` is balanced by tensions
+    /// within [f_min + t, f_max − t]: the ellipsoid inside the polytope {J f} shrunk by t holds
+    /// against each of its facets; a facet's normal n is the dual vector of five columns (the
+    /// last row of the inverse of those columns completed by a random sixth).
+    fn ellipsoid_margin(&self, j: &DMatrix<f64>, w: &Vector6<f64>, e_inv: &Matrix6<f64>) -> f64 {
+        let m = j.ncols();
+        let mut rng = Rng::new(5);
+        let mut least = f64::INFINITY;
+        let mut subset = [0usize, 1, 2, 3, 4];
+        loop {
+            let extra = Vector6::from_fn(|_, _| rng.normal());
+            let square = Matrix6::from_fn(|r, c| if c < 5 { j[(r, subset[c])] } else { extra[r] });
+            let scale: f64 = subset.iter().map(|&k| j.column(k).norm()).product::<f64>() * extra.norm();
+            if square.determinant().abs() > 1e-9 * scale {
+                let inv = square.try_inverse().unwrap();
+                let n: Vector6<f64> = Vector6::from_fn(|c, _| inv[(5, c)]).normalize();
+                let (mut lower, mut upper, mut spread) = (0.0, 0.0, 0.0);
+                for k in (0..m).filter(|k| !subset.contains(k)) {
+                    let d = n.dot(&j.column(k));
+                    lower += (d * self.tension.0).min(d * self.tension.1);
+                    upper += (d * self.tension.0).max(d * self.tension.1);
+                    spread += d.abs();
+                }
+                let reach = n.dot(&(e_inv * n)).max(0.0).sqrt();
+                let centre = n.dot(w);
+                least = least.min(((upper - centre).min(centre - lower) - reach) / spread);
+            }
+            // the next 5-subset in lexicographic order
+            let Some(i) = (0..5).rev().find(|&i| subset[i] < m - 5 + i) else { break };
+            subset[i] += 1;
+            for k in i + 1..5 {
+                subset[k] = subset[k - 1] + 1;
+            }
+        }
+        least.min(0.5 * (self.tension.1 - self.tension.0))
+    }
+
     /// The reference at t, run in `duration`.
     fn at(&self, t: f64, duration: f64, rng: &mut Rng) -> At {
         let (w, j) = self.required(t, Some(duration));
         let scale = self.mass * to_v(self.gravity).norm();
-        let eps = 1e-7 * scale;
-        let mut at = At { verdict: None, u_max: f64::INFINITY };
+        let eps = self.eps * scale;
+        let range = self.tension.1 - self.tension.0;
+        let mut at = At { verdict: None, u_max: f64::INFINITY, slack: f64::INFINITY };
         // winch limits
         if let Some((speed, accel)) = self.winch {
             for (a, b) in &self.cables {
@@ -282,12 +347,13 @@ impl Case {
                     (p + r * to_v(*b) - to_v(*a)).norm()
                 });
                 let (v, acc) = (l1.abs() / duration, l2.abs() / (duration * duration));
-                if v > speed * (1.0 + 1e-7) || acc > accel * (1.0 + 1e-7) {
+                if v > speed * (1.0 + self.eps) || acc > accel * (1.0 + self.eps) {
                     return At { verdict: Some(false), ..at };
                 }
-                if v > speed * (1.0 - 1e-7) || acc > accel * (1.0 - 1e-7) {
-                    return at; // too close to call
+                if v > speed * (1.0 - self.eps) || acc > accel * (1.0 - self.eps) {
+                    return At { slack: 0.0, ..at }; // too close to call
                 }
+                at.slack = at.slack.min(1.0 - v / speed).min(1.0 - acc / accel);
             }
         }
         let m = self.cables.len();
@@ -312,9 +378,11 @@ impl Case {
             if least.abs() > eps {
                 at.verdict = Some(least > 0.0);
             }
+            at.slack = at.slack.min(least / range);
             return at;
         }
         let Some((margin, f)) = self.lp_margin(&j, &w) else { return At { verdict: Some(false), ..at } };
+        at.slack = at.slack.min(margin / range);
         if margin < -eps {
             return At { verdict: Some(false), ..at };
         }
@@ -324,6 +392,9 @@ impl Case {
             }
             return at;
         };
+        if e_inv.iter().any(|x| *x != 0.0) {
+            at.slack = at.slack.min(self.ellipsoid_margin(&j, &w, e_inv) / range);
+        }
         // necessary: sampled directions against the zonotope's support function
         for _ in 0..64 {
             let u = Vector6::from_fn(|_, _| rng.normal());
@@ -332,7 +403,7 @@ impl Case {
                 let d = u.dot(&j.column(k));
                 (d * self.tension.0).max(d * self.tension.1)
             }).sum();
-            if u.dot(&w) + reach > support + 1e-7 * u.norm() * scale {
+            if u.dot(&w) + reach > support + self.eps * u.norm() * scale {
                 return At { verdict: Some(false), ..at };
             }
         }
@@ -407,7 +478,7 @@ fn random_case_of(rng: &mut Rng, m: usize) -> Case {
     let qs = quat_normalize(quat_axis_angle(rng.unit_vector(), rng.range(0.0, 30f64.to_radians())));
     let qe = quat_normalize(quat_mul(qs, quat_axis_angle(rng.unit_vector(), rng.range(0.0, 60f64.to_radians()))));
     let traj = RefTrajectory { name: "t".into(), translation: RefTranslation::Polynomial(coeffs), qs, qe };
-    Case { cables, tension, mass, com: rng.in_box(0.1), inertia, gravity, wrench, winch, path: Path::Slerp(traj), duration: rng.range(0.5, 2.5) }
+    Case { cables, tension, mass, com: rng.in_box(0.1), inertia, gravity, wrench, winch, path: Path::Slerp(traj), duration: rng.range(0.5, 2.5), h: H, eps: 1e-7 }
 }
 
 /// Per case: samples compared, contradictions, boundaries checked, mixed sections.
@@ -492,6 +563,66 @@ fn many_cables_by_linear_programs_match_the_reference() {
     let mixed = results.iter().filter(|r| r.3).count();
     let boundaries: usize = results.iter().map(|r| r.2).sum();
     assert!(mixed * 5 >= n && boundaries * 12 >= n, "{mixed} of {n} trajectories with both kinds of section, {boundaries} boundaries checked");
+}
+
+/// The fastest timing (`cablenav time`) of random robots' trajectories (6 to 10 cables with mass,
+/// wrench sets, winch limits on some; rest to rest): wherever a law exists, it is certified, the
+/// reference moved by it in time (finite differences of the pose along the law, inside each of
+/// its cells) finds no sample violated, and it is near time-optimal: at most samples some
+/// constraint is within 1 % of its bound (the tension range, the winch limit).
+#[test]
+fn fastest_timing_is_certified_and_near_optimal_against_the_reference() {
+    use cablenav::plan::timing::{fastest, TimingOptions};
+    let mut rng = Rng::new(31);
+    // many random robots fail at rest somewhere along their path (then no timing exists): as
+    // many are drawn as it takes to time about `n` of them
+    let n = if cfg!(target_arch = "wasm32") { 8 } else { env_usize("CABLENAV_TIMING_CASES", 100) };
+    let cases: Vec<Case> = (0..4 * n).map(|_| random_case(&mut rng)).collect();
+    let run = |k: usize| -> (usize, usize, usize, Vec<String>) {
+        let case = &cases[k];
+        let s = Scenario::from_json(&case.json()).unwrap();
+        let (report, law) = match fastest(&s, &s.trajectories[0], TimingOptions::default()) { Ok(x) => x, Err(_) => return (0, 0, 0, vec![]) };
+        let mut bad = Vec::new();
+        if report.duration.is_none() {
+            bad.push(format!("case {k}: not certified on {:?}", report.not_certified));
+        }
+        let duration = law.duration();
+        let timed = Case { path: Path::Timed(Box::new(Path::Slerp(match &case.path { Path::Slerp(t) => t.clone(), _ => unreachable!() })), law.clone()), duration, h: TIMED_H, eps: TIMED_EPS, ..case.clone() };
+        let mut rng = Rng::new(k as u64);
+        let (mut compared, mut near) = (0, 0);
+        let knots = law.knots();
+        for (i, &(_, start)) in knots.iter().enumerate() {
+            let end = knots.get(i + 1).map_or(duration, |k| k.1);
+            // two samples per cell, the stencils inside it
+            for _ in 0..2 {
+                let margin = 3.0 * TIMED_H * duration;
+                if end - start <= 2.0 * margin {
+                    continue;
+                }
+                let time = start + margin + rng.f64() * (end - start - 2.0 * margin);
+                let at = timed.at(time / duration, duration, &mut rng);
+                if at.verdict == Some(false) {
+                    bad.push(format!("case {k}: violated at {time} s of {duration} (cell {i})"));
+                }
+                if at.slack.is_finite() {
+                    compared += 1;
+                    near += usize::from(at.slack <= 0.01);
+                }
+            }
+        }
+        (1, compared, near, bad.into_iter().map(|b| format!("{b}\n{}", case.json())).collect())
+    };
+    #[cfg(not(target_arch = "wasm32"))]
+    let results = support::on_two_threads(cases.len(), &run);
+    #[cfg(target_arch = "wasm32")]
+    let results: Vec<_> = (0..cases.len()).map(run).collect();
+    let timed: usize = results.iter().map(|r| r.0).sum();
+    let compared: usize = results.iter().map(|r| r.1).sum();
+    let near: usize = results.iter().map(|r| r.2).sum();
+    let failures: Vec<&String> = results.iter().flat_map(|r| &r.3).collect();
+    assert!(failures.is_empty(), "{} failures, first: {}", failures.len(), failures[0]);
+    assert!(timed >= n, "only {timed} of {} cases have a timing", cases.len());
+    assert!(near as f64 >= 0.9 * compared as f64, "near a bound at {near} of {compared} samples");
 }
 
 /// The least time scale of six-cable trajectories (no winch limits) against the reference's:
@@ -608,7 +739,7 @@ fn cogiro_spline_trajectories_match_the_reference() {
         let spline = Spline::from_caspr(COGIRO_TRAJECTORIES, id);
         let duration = spline.duration();
         assert_eq!(traj.duration, Some(duration));
-        let case = Case { cables: cables.clone(), tension, mass: d.mass, com: to3(&d.com), inertia: d.inertia, gravity: to3(&d.gravity), wrench: None, winch: None, path: Path::Spline(spline), duration };
+        let case = Case { cables: cables.clone(), tension, mass: d.mass, com: to3(&d.com), inertia: d.inertia, gravity: to3(&d.gravity), wrench: None, winch: None, path: Path::Spline(spline), duration, h: H, eps: 1e-7 };
         let r = verify_trajectory(&s, traj).unwrap();
         assert!(r.uncertain.iter().map(|u| u[1] - u[0]).sum::<f64>() < 1e-6, "{id}: uncertain {:?}", r.uncertain);
         let mut compared = 0;

@@ -90,6 +90,24 @@ export interface TensionEnvelope {
   bounds: Interval[];
 }
 
+/** What `time` returns (`cablenav time --json`): the certified duration (null when some cell
+ * could not be certified), the uncertified optimum of the same grid, the binding constraint along
+ * the path and the law at every grid point. */
+export interface TimingReport {
+  trajectory: string;
+  duration: number | null;
+  uncertified_duration: number;
+  certificate_cost: number | null;
+  cells: number;
+  rounds: number;
+  margin: number;
+  binding: { t: Interval; seconds: Interval; constraint: string }[];
+  slowed: Interval[];
+  not_certified: Interval[];
+  profile: { t: number; time: number; rate: number; speed: number; tensions: number[] }[];
+  notes: string[];
+}
+
 /** What `slice` returns (`cablenav slice --json`); cells row-major, index j·res + i. */
 export interface SliceMap {
   axes: [Coord, Coord];
@@ -323,6 +341,14 @@ pub fn ray(
 #[wasm_bindgen(unchecked_return_type = "TensionEnvelope")]
 pub fn envelope(#[wasm_bindgen(unchecked_param_type = "ScenarioInput")] scenario: JsValue, trajectory: Option<String>, samples: Option<usize>) -> Result<JsValue, JsValue> {
     call(scenario, Ok(Request::Envelope { trajectory, samples }))
+}
+
+/// The fastest rest-to-rest timing of a trajectory (default: the scenario's first), certified
+/// along it by the exact verifier; `cells` grid cells (default 400), `margin` the relative margin
+/// the limits are tightened by at the grid points (default 1e-3).
+#[wasm_bindgen(unchecked_return_type = "TimingReport")]
+pub fn time(#[wasm_bindgen(unchecked_param_type = "ScenarioInput")] scenario: JsValue, trajectory: Option<String>, cells: Option<usize>, margin: Option<f64>) -> Result<JsValue, JsValue> {
+    call(scenario, Ok(Request::Time { trajectory, cells, margin }))
 }
 
 /// A res × res classified grid over two coordinates (the others from the pose) and the

@@ -69,6 +69,10 @@ test('timed trajectories: seconds, checkAt and the envelope with inertia equal t
     }
   }
   close(cablenav.envelope(text, 'swing', 10), cli('envelope', timed, '--trajectory', 'swing', '--samples', 10));
+  const fastest = cablenav.time(text, 'swing', 100);
+  close(fastest, cli('time', timed, '--trajectory', 'swing', '--cells', 100));
+  assert.ok(fastest.duration >= fastest.uncertified_duration && fastest.uncertified_duration > 0);
+  assert.throws(() => cablenav.time(text, 'swing', undefined, 0.7), (e) => e.name === 'ScenarioError' && e.field === '--margin');
   assert.throws(() => cablenav.checkAt(text, 1.5), (e) => e.name === 'ScenarioError' && e.field === 't');
 });
 
@@ -225,7 +229,7 @@ test('the bundler entry loads (ES module import of the .wasm) and agrees with th
 test('the TypeScript declarations type every function with its report', () => {
   for (const target of ['web', 'bundler']) {
     const dts = readFileSync(join(installed, target, 'cablenav.d.ts'), 'utf8');
-    for (const [fn, report] of [['verify', 'VerifyReport'], ['check', 'PoseReport'], ['ray', 'RayReport'], ['envelope', 'TensionEnvelope'], ['slice', 'SliceMap'], ['lattice', 'LatticeReport'], ['plan', 'PlanReport \\| LatticePlanReport \\| PlanReport\\[\\] \\| LatticePlanReport\\[\\] \\| PlanWithAtlas']]) {
+    for (const [fn, report] of [['verify', 'VerifyReport'], ['check', 'PoseReport'], ['ray', 'RayReport'], ['envelope', 'TensionEnvelope'], ['time', 'TimingReport'], ['slice', 'SliceMap'], ['lattice', 'LatticeReport'], ['plan', 'PlanReport \\| LatticePlanReport \\| PlanReport\\[\\] \\| LatticePlanReport\\[\\] \\| PlanWithAtlas']]) {
       assert.match(dts, new RegExp(`export function ${fn}\\(scenario: ScenarioInput[^)]*\\): ${report};`), `${target}: ${fn}`);
       for (const name of report.split(' \\| ').map((n) => n.replace('\\[\\]', ''))) assert.match(dts, new RegExp(`export interface ${name} \\{`), `${target}: ${name}`);
     }

@@ -244,6 +244,16 @@ fn envelope(py: Python<'_>, scenario: &Bound<'_, PyAny>, trajectory: Option<Stri
     call(py, scenario, Ok(Request::Envelope { trajectory, samples }))
 }
 
+/// The fastest rest-to-rest timing of a trajectory, certified along it by the exact verifier.
+///
+/// Returns the dict `cablenav time SCENARIO --json` prints (`trajectory` defaults to the
+/// scenario's first, `cells` to 400, `margin` to 1e-3).
+#[pyfunction]
+#[pyo3(signature = (scenario, trajectory=None, *, cells=None, margin=None))]
+fn time(py: Python<'_>, scenario: &Bound<'_, PyAny>, trajectory: Option<String>, cells: Option<usize>, margin: Option<f64>) -> PyResult<Py<PyAny>> {
+    call(py, scenario, Ok(Request::Time { trajectory, cells, margin }))
+}
+
 /// A res × res grid over two coordinates (the others from `pose`), each cell classified, and the
 /// connected components of the feasible cells.
 ///
@@ -382,6 +392,7 @@ fn _cablenav(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(check_at, m)?)?;
     m.add_function(wrap_pyfunction!(ray, m)?)?;
     m.add_function(wrap_pyfunction!(envelope, m)?)?;
+    m.add_function(wrap_pyfunction!(time, m)?)?;
     m.add_function(wrap_pyfunction!(slice, m)?)?;
     m.add_function(wrap_pyfunction!(lattice, m)?)?;
     m.add_function(wrap_pyfunction!(plan, m)?)?;

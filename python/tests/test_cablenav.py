@@ -66,6 +66,12 @@ def test_timed_trajectories_equal_the_cli(cli):
         for t in (0.0, 0.3, 1.0):
             assert cablenav.check_at(timed, t, trajectory) == cli("check", timed, "--trajectory", trajectory, "--t", t)
     assert cablenav.envelope(timed, "swing", samples=10) == cli("envelope", timed, "--trajectory", "swing", "--samples", 10)
+    fastest = cablenav.time(timed, "swing", cells=100)
+    assert fastest == cli("time", timed, "--trajectory", "swing", "--cells", 100)
+    assert fastest["duration"] >= fastest["uncertified_duration"] > 0
+    with pytest.raises(cablenav.ScenarioError) as e:
+        cablenav.time(timed, "swing", margin=0.7)
+    assert e.value.field == "--margin"
     with pytest.raises(cablenav.ScenarioError) as e:
         cablenav.check_at(timed, 1.5)
     assert e.value.field == "t"

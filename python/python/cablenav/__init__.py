@@ -18,6 +18,6 @@ designs with ``concurrent.futures`` or on a Dask cluster.
 plans on it (any robot), ``plan(...)`` with the atlas (6 cables with a wrench set).
 """
 
-from ._cablenav import ScenarioError, __version__, check, check_at, envelope, import_caspr, lattice, plan, ray, slice, verify
+from ._cablenav import ScenarioError, __version__, check, check_at, envelope, import_caspr, lattice, plan, ray, slice, time, verify
 
-__all__ = ["ScenarioError", "__version__", "check", "check_at", "envelope", "import_caspr", "lattice", "plan", "ray", "slice", "verify"]
+__all__ = ["ScenarioError", "__version__", "check", "check_at", "envelope", "import_caspr", "lattice", "plan", "ray", "slice", "time", "verify"]

@@ -42,6 +42,11 @@ def ray(scenario: Scenario, pose: str, vary: str, range: Tuple[float, float]) ->
 def envelope(scenario: Scenario, trajectory: Optional[str] = None, *, samples: Optional[int] = None) -> Report:
     """Each cable's least and greatest tension over the wrench set along a trajectory."""
 
+def time(scenario: Scenario, trajectory: Optional[str] = None, *, cells: Optional[int] = None, margin: Optional[float] = None) -> Report:
+    """The fastest rest-to-rest timing of a trajectory, certified along it (``cablenav time``):
+    ``duration``, ``uncertified_duration``, the ``binding`` constraint stretch by stretch, the
+    ``profile`` (t, time, rate, speed, tensions) at every grid point."""
+
 def slice(
     scenario: Scenario,
     pose: str,

@@ -203,7 +203,11 @@ fn failure(limits: &Limits, cells: &[Cell], jets: &[Jet], steps: &[Step], f: Fai
         Failure::Stuck(i) => {
             let c = &cells[i];
             let at_rest: Vec<String> = steps[i].planes.iter().filter(|h| h.c < 0.0).map(|h| limits.name(h.what, &jets[i])).collect::<std::collections::BTreeSet<_>>().into_iter().collect();
-            let why = if at_rest.is_empty() { "the limits leave no speed to go on with".to_string() } else { format!("violated at rest there: {}", at_rest.join("; ")) };
+            let why = match at_rest.len() {
+                0 => "the limits leave no speed to go on with (nor to stop in time)".to_string(),
+                1..=3 => format!("violated at rest there: {}", at_rest.join("; ")),
+                k => format!("violated at rest there: {}; and {} more", at_rest[..3].join("; "), k - 3),
+            };
             Error::new("trajectory", format!("no timing follows the path: at t ∈ [{:.6}, {:.6}] {why}", t_of(c, c.a), t_of(c, c.b)))
         }
         Failure::Unbounded(i) => {
