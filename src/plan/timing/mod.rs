@@ -212,7 +212,13 @@ fn failure(limits: &Limits, cells: &[Cell], jets: &[Jet], steps: &[Step], f: Fai
         }
         Failure::Unbounded(i) => {
             let c = &cells[i];
-            Error::new("trajectory", format!("nothing limits the speed at t ∈ [{:.6}, {:.6}]: give the platform a mass, winch limits or a speed limit", t_of(c, c.a), t_of(c, c.b)))
+            let (t0, t1) = (t_of(c, c.a), t_of(c, c.b));
+            let jet = &jets[i];
+            if jet.dp.norm() + jet.omega.norm() < 1e-9 * (1.0 + jet.pose.position.norm()) {
+                Error::new("trajectory", format!("the path stands still at t ∈ [{t0:.6}, {t1:.6}] (repeated points): no speed along it means anything there; remove the stretch"))
+            } else {
+                Error::new("trajectory", format!("nothing limits the speed at t ∈ [{t0:.6}, {t1:.6}]: give the platform a mass, winch limits or a speed limit"))
+            }
         }
     }
 }
