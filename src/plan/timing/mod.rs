@@ -112,7 +112,8 @@ pub fn fastest(s: &Scenario, traj: &Trajectory, options: TimingOptions) -> Resul
         steps.push(Step { planes, delta, factor: c.factor, stop: c.stop, caps: (f64::INFINITY, f64::INFINITY) });
         jets.push(start);
     }
-    let first = reach::fastest(&steps).map_err(|f| failure(&limits, &cells, &jets, &steps, f, &t_of))?;
+    let total_of = |law: &[(f64, f64)]| duration(&cells, law);
+    let first = reach::fastest(&mut steps, total_of).map_err(|f| failure(&limits, &cells, &jets, &steps, f, &t_of))?;
     let uncertified = duration(&cells, &first);
     let mut law = first;
     let mut known: Vec<Option<((f64, f64), Verdict)>> = vec![None; cells.len()];
@@ -133,7 +134,7 @@ pub fn fastest(s: &Scenario, traj: &Trajectory, options: TimingOptions) -> Resul
             steps[i].caps = (x0 * SLOW_DOWN, x1 * SLOW_DOWN);
             slowed[i] = true;
         }
-        law = reach::fastest(&steps).map_err(|f| failure(&limits, &cells, &jets, &steps, f, &t_of))?;
+        law = reach::fastest(&mut steps, total_of).map_err(|f| failure(&limits, &cells, &jets, &steps, f, &t_of))?;
     };
     let total = duration(&cells, &law);
     let certified = open.is_empty();

@@ -92,9 +92,8 @@ impl Rates {
             (f / w, d1, (f2 * w - f * w2) / (w * w) - 2.0 * w1 * d1 / w)
         };
         let mut p = [Vector3::zeros(); 3];
-        for i in 0..3 {
-            let (v, d1, d2) = quotient(at(&self.motion.position[i]), at(&self.dpos[i]), at(&self.ddpos[i]));
-            (p[0][i], p[1][i], p[2][i]) = (v, d1, d2);
+        for (i, ((f, d1), d2)) in self.motion.position.iter().zip(&self.dpos).zip(&self.ddpos).enumerate() {
+            (p[0][i], p[1][i], p[2][i]) = quotient(at(f), at(d1), at(d2));
         }
         let mut r = [Matrix3::zeros(); 3];
         for i in 0..3 {

@@ -71,11 +71,23 @@ impl Polygon {
 /// Beyond this a state or control counts as unbounded: nothing limits the speed there.
 pub const UNBOUNDED: f64 = 1e12;
 
-/// The least and greatest start state x of `step` from which its end state lies in [lo, hi]
-/// with x ≤ `cap`: the x-range of its half-planes and that strip, clipped first inside a huge
-/// box to learn its extent, then again inside a box just around it, so that the vertices carry
-/// no rounding from the huge one. `Err(())` when unbounded.
-fn start_range(step: &Step, lo: f64, hi: f64, cap: f64) -> Result<Option<(f64, f64)>, ()> {
+/// The start states of a cell from which its end state can be kept within the controllable set
+/// of the next: their least and greatest x, and the "peak": the greatest x among those from which
+/// the end state goes furthest.
+#[derive(Debug, Clone, Copy)]
+struct Range {
+    lo: f64,
+    hi: f64,
+    /// Past it a faster start only leaves a slower end: where the path nearly stands still, a
+    /// large λ̇² means little speed, and the start's limits, which hold λ̈ for the whole cell,
+    /// then take more braking than the extra start speed gives.
+    peak: f64,
+}
+
+/// The [`Range`] of `step` for an end state in [lo, hi] and x ≤ `cap`: its half-planes and that
+/// strip, clipped first inside a huge box to learn the set's extent, then again inside a box just
+/// around it, so that the vertices carry no rounding from the huge one. `Err(())` when unbounded.
+fn start_range(step: &Step, lo: f64, hi: f64, cap: f64) -> Result<Option<Range>, ()> {
     if lo == hi {
         // a stop (or an end state pinned to one value): u = (lo − x)/(2Δ), each half-plane a
         // bound on x alone — a strip of width zero would leave the clipping only rounding
@@ -93,7 +105,7 @@ fn start_range(step: &Step, lo: f64, hi: f64, cap: f64) -> Result<Option<(f64, f
         if x_hi >= 0.5 * UNBOUNDED {
             return Err(());
         }
-        return Ok((x_lo <= x_hi).then_some((x_lo, x_hi)));
+        return Ok((x_lo <= x_hi).then_some(Range { lo: x_lo, hi: x_hi, peak: x_hi }));
     }
     let clip = |p: Polygon| p.clip(2.0 * step.delta, 1.0, hi).clip(-2.0 * step.delta, -1.0, -lo).clip(0.0, 1.0, cap).clip_all(&step.planes);
     let first = clip(Polygon::rect(UNBOUNDED, UNBOUNDED));
@@ -104,7 +116,14 @@ fn start_range(step: &Step, lo: f64, hi: f64, cap: f64) -> Result<Option<(f64, f
     if e >= 0.5 * UNBOUNDED {
         return Err(());
     }
-    Ok(clip(Polygon::rect(2.0 * e + 1e-300, 2.0 * e + 1e-300)).x_range().or(first.x_range()))
+    let tight = clip(Polygon::rect(2.0 * e + 1e-300, 2.0 * e + 1e-300));
+    let set = if tight.0.is_empty() { first } else { tight };
+    let Some((x_lo, x_hi)) = set.x_range() else { return Ok(None) };
+    let end = |p: &[f64; 2]| p[1] + 2.0 * step.delta * p[0];
+    let best = set.0.iter().map(end).fold(f64::NEG_INFINITY, f64::max);
+    let slack = 1e-12 * (best.abs() + e);
+    let peak = set.0.iter().filter(|p| end(p) >= best - slack).map(|p| p[1]).fold(x_lo, f64::max);
+    Ok(Some(Range { lo: x_lo, hi: x_hi, peak }))
 }
 
 /// Why no law exists.
@@ -116,19 +135,30 @@ pub enum Failure {
     Unbounded(usize),
 }
 
-/// The fastest law: x at every cell's start and end, from rest to rest.
-pub fn fastest(steps: &[Step]) -> Result<Vec<(f64, f64)>, Failure> {
+/// A law: x at every cell's start and end, and each cell's peak ([`Range`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Law {
+    /// (x at the start, x at the end) per cell.
+    pub x: Vec<(f64, f64)>,
+    /// The start speed past which the cell's end speed falls.
+    pub peaks: Vec<f64>,
+}
+
+/// The greatest law within the limits: x at every cell's start and end, from rest to rest.
+pub fn greedy(steps: &[Step]) -> Result<Law, Failure> {
     let n = steps.len();
     // backward: controllable start states of each cell
     let mut controllable = vec![(0.0, 0.0); n];
+    let mut peaks = vec![0.0; n];
     let mut next = (0.0, 0.0); // the end: at rest
     for i in (0..n).rev() {
         let s = &steps[i];
         // the end state x + 2Δu within next / factor (0 at a stop) and the end cap
         let (lo, mut hi) = if s.stop { (0.0, 0.0) } else { (next.0 / s.factor, next.1 / s.factor) };
         hi = hi.min(s.caps.1);
-        let Some((x_lo, x_hi)) = start_range(s, lo, hi, s.caps.0).map_err(|()| Failure::Unbounded(i))? else { return Err(Failure::Stuck(i)) };
-        controllable[i] = (x_lo.max(0.0), x_hi.max(0.0));
+        let Some(range) = start_range(s, lo, hi, s.caps.0).map_err(|()| Failure::Unbounded(i))? else { return Err(Failure::Stuck(i)) };
+        controllable[i] = (range.lo.max(0.0), range.hi.max(0.0));
+        peaks[i] = range.peak.max(0.0);
         next = controllable[i];
     }
     if controllable[0].0 > 0.0 {
@@ -150,13 +180,50 @@ pub fn fastest(steps: &[Step]) -> Result<Vec<(f64, f64)>, Failure> {
         }
         // where the interval is a point rounding can leave it empty (u_hi a hair below u_lo):
         // the greatest u, which keeps the end controllable, is the one to take either way
-        let u = u_hi;
-        let end = if hi == 0.0 { 0.0 } else { (x + 2.0 * s.delta * u).clamp(lo, hi) };
+        let end = if hi == 0.0 { 0.0 } else { (x + 2.0 * s.delta * u_hi).clamp(lo, hi) };
         out.push((x, end));
         x = end * s.factor;
     }
-    Ok(out)
+    Ok(Law { x: out, peaks })
 }
+
+/// The fastest law found: the greedy one, improved where it starts a cell past its peak (a
+/// faster start there leaves a slower end: where the path nearly stands still, a large λ̇² means
+/// little speed, and the start's limits, which hold λ̈ for the whole cell, then take more braking
+/// than the extra start speed gives — the greedy law is not the fastest then). Such starts are
+/// capped, round by round (at their peak, or at 0.8 of the speed when the peak is lower), while
+/// the law gets shorter (`duration`).
+pub fn fastest(steps: &mut [Step], duration: impl Fn(&[(f64, f64)]) -> f64) -> Result<Vec<(f64, f64)>, Failure> {
+    let mut law = greedy(steps)?;
+    let mut best = duration(&law.x);
+    for _ in 0..IMPROVE_ROUNDS {
+        let past: Vec<usize> = (0..steps.len()).filter(|&i| law.x[i].0 > law.peaks[i] * (1.0 + 1e-9) && law.peaks[i] < steps[i].caps.0).collect();
+        if past.is_empty() {
+            break;
+        }
+        let kept: Vec<(f64, f64)> = past.iter().map(|&i| steps[i].caps).collect();
+        for &i in &past {
+            steps[i].caps.0 = law.peaks[i].max(super::SLOW_DOWN * law.x[i].0);
+        }
+        let trial = greedy(steps);
+        match trial {
+            Ok(t) if duration(&t.x) < best => {
+                best = duration(&t.x);
+                law = t;
+            }
+            _ => {
+                for (&i, &c) in past.iter().zip(&kept) {
+                    steps[i].caps = c;
+                }
+                break;
+            }
+        }
+    }
+    Ok(law.x)
+}
+
+/// Most improvement rounds of [`fastest`].
+const IMPROVE_ROUNDS: usize = 20;
 
 #[cfg(test)]
 mod tests {
@@ -176,7 +243,7 @@ mod tests {
         let steps: Vec<Step> = (0..n)
             .map(|i| Step { planes: vec![plane(1.0, 0.0, 1.0), plane(-1.0, 0.0, 1.0)], delta, factor: 1.0, stop: i + 1 == n, caps: (f64::INFINITY, f64::INFINITY) })
             .collect();
-        let law = fastest(&steps).unwrap();
+        let law = greedy(&steps).unwrap().x;
         for (i, &(x0, x1)) in law.iter().enumerate() {
             let s = i as f64 * delta;
             let expect = (2.0 * s).min(2.0 * (1.0 - s));
@@ -194,7 +261,7 @@ mod tests {
         let steps: Vec<Step> = (0..n)
             .map(|i| Step { planes: vec![plane(1.0, 0.0, 1.0), plane(-1.0, 0.0, 1.0), plane(0.0, 1.0, 0.25)], delta, factor: 1.0, stop: i + 1 == n, caps: (f64::INFINITY, f64::INFINITY) })
             .collect();
-        let law = fastest(&steps).unwrap();
+        let law = greedy(&steps).unwrap().x;
         assert!((law[n / 2].0 - 0.25).abs() < 1e-12);
         assert!(law.iter().all(|&(a, b)| a <= 0.25 + 1e-12 && b <= 0.25 + 1e-12));
     }
@@ -204,6 +271,6 @@ mod tests {
         let steps: Vec<Step> = (0..10)
             .map(|i| Step { planes: if i == 4 { vec![plane(0.0, 1.0, -1.0)] } else { vec![plane(1.0, 0.0, 1.0), plane(-1.0, 0.0, 1.0)] }, delta: 0.1, factor: 1.0, stop: i == 9, caps: (f64::INFINITY, f64::INFINITY) })
             .collect();
-        assert_eq!(fastest(&steps), Err(Failure::Stuck(4)));
+        assert_eq!(greedy(&steps), Err(Failure::Stuck(4)));
     }
 }
