@@ -191,7 +191,7 @@ pub struct TensionEnvelope {
 
 /// The fastest safe timing of a trajectory (`cablenav time`): a time law certified along the
 /// whole path by the exact verifier, and what it cost over the grid's uncertified optimum.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
 pub struct TimingReport {
     /// The trajectory's name.
     pub trajectory: String,
@@ -222,7 +222,7 @@ pub struct TimingReport {
 }
 
 /// A stretch of the path over which one constraint binds.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
 pub struct BindingStretch {
     /// [t0, t1] in the trajectory's parameter.
     pub t: [f64; 2],
@@ -233,7 +233,7 @@ pub struct BindingStretch {
 }
 
 /// The timed law at one grid point.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
 pub struct ProfilePoint {
     /// The trajectory's parameter.
     pub t: f64,

@@ -138,6 +138,14 @@ pub fn time_scale_summary(s: &Seconds) -> String {
     format!("{lead}. {}", s.min_time_scale_note)
 }
 
+/// Intervals as `[a, b] ∪ [c, d]` (`none` for none), their ends as [`fmt_num`] writes them.
+pub fn intervals_text(v: &[[f64; 2]]) -> String {
+    if v.is_empty() {
+        return "none".to_string();
+    }
+    v.iter().map(|[a, b]| format!("[{}, {}]", fmt_num(*a), fmt_num(*b))).collect::<Vec<_>>().join(" ∪ ")
+}
+
 /// A number for machines (`data-t0` etc.): the shortest text that parses back to the same f64.
 pub fn fmt_exact(x: f64) -> String {
     format!("{x:?}")

@@ -92,7 +92,7 @@ fn apply(reply: Reply, query: &str, ui: Ui) {
             ui.growing.set(None);
             ui.state.set(RunState::Failed(error));
         }
-        Reply::Sliced { .. } | Reply::Singular { .. } | Reply::LatticeRays { .. } | Reply::Profiles { .. } | Reply::Verified { .. } | Reply::VerifiedEvery { .. } => {
+        Reply::Sliced { .. } | Reply::Singular { .. } | Reply::LatticeRays { .. } | Reply::Profiles { .. } | Reply::Verified { .. } | Reply::VerifiedEvery { .. } | Reply::Timed { .. } => {
             ui.state.set(RunState::Failed("the worker answered a planning job with another job's reply".into()));
         }
     }

@@ -11,6 +11,7 @@ pub mod section;
 pub mod slice;
 pub mod strip;
 pub mod tension;
+pub mod timing;
 
 use leptos::prelude::*;
 

@@ -7,6 +7,7 @@
 
 mod every;
 mod exports;
+mod fastest;
 mod path;
 mod playback;
 mod plot_jobs;
@@ -363,6 +364,7 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
             <TabList open=tab on_pick=pick_tab />
             <TabPanel of=Tab::Intervals open=tab>
                 <ResultTables parsed verified=shown />
+                <fastest::FastestTiming parsed source trajectory=selected_trajectory />
             </TabPanel>
             <TabPanel of=Tab::Planning open=tab>
                 <Planning parsed source planned settings growing />

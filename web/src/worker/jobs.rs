@@ -142,6 +142,7 @@ pub fn run(job: Job, report: &mut dyn FnMut(Reply), now: fn() -> f64) {
         Job::Profiles { scenario, name, samples, trajectory } => profiles(&scenario, &name, &samples, trajectory.as_deref()),
         Job::Verify { scenario, index } => Ok(verify(&scenario, index, now)),
         Job::VerifyEvery { scenario } => verify_every(&scenario, report, now),
+        Job::Time { scenario, index } => Ok(fastest_timing(&scenario, index, now)),
     };
     report(last.unwrap_or_else(|error| Reply::Failed { error }));
 }
@@ -155,6 +156,18 @@ fn verify(json: &str, index: usize, now: fn() -> f64) -> Reply {
         crate::logic::verify_sections(&s, i)
     });
     Reply::Verified { report: report.as_ref().map(WireReport::from).map_err(Clone::clone), ms: now() - started }
+}
+
+/// Trajectory `index` (clamped) of the scenario timed as fast as its limits allow, certified
+/// (`cablenav time` with its defaults), timed by `now`.
+fn fastest_timing(json: &str, index: usize, now: fn() -> f64) -> Reply {
+    let started = now();
+    let report = scenario(json).and_then(|s| {
+        let i = crate::logic::trajectory_index(&s, index).ok_or("the scenario has no trajectory")?;
+        let options = cablenav::plan::timing::TimingOptions::default();
+        cablenav::plan::timing::fastest(&s, &s.trajectories[i], options).map(|(r, _)| r).map_err(|e| e.to_string())
+    });
+    Reply::Timed { report, ms: now() - started }
 }
 
 fn verify_every(json: &str, report: &mut dyn FnMut(Reply), now: fn() -> f64) -> Result<Reply, String> {

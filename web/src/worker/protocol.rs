@@ -74,6 +74,9 @@ pub enum Job {
     /// The exact verification of every trajectory of the scenario, as [`Job::Verify`] each (the
     /// page draws them together: the thesis' families of paths, Figs. 4.4, 4.6 and 4.7).
     VerifyEvery { scenario: String },
+    /// The fastest safe timing of trajectory `index` (clamped) of the scenario, as `cablenav
+    /// time` gives it with its defaults (docs/timing.md).
+    Time { scenario: String, index: usize },
 }
 
 /// What a worker answers.
@@ -99,6 +102,9 @@ pub enum Reply {
     Verified { report: Result<WireReport, String>, ms: f64 },
     /// Every trajectory's exact verification (or why not), in the scenario's order.
     VerifiedEvery { reports: Vec<Result<WireReport, String>> },
+    /// A trajectory's fastest safe timing (or why there is none) and the worker's time for it
+    /// (ms).
+    Timed { report: Result<cablenav::report::TimingReport, String>, ms: f64 },
     /// A slice map's rows `rows[0]..rows[1]`: their cells' classes, row-major.
     Sliced { rows: [usize; 2], classes: Vec<Class> },
     /// A slice's singularity curves, polylines of [first axis, second axis] points.
