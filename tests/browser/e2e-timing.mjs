@@ -13,7 +13,9 @@
 // - "Make it a timed spline": a trajectory becomes a quintic spline through knots (its start and
 //   end poses, at rest), edited knot by knot, verified as the CLI verifies the page's text;
 // - "Give the platform a mass" on the 7-cable preset: the mass section appears, the format becomes
-//   4, and a mass typed there changes what the page verifies as the CLI does.
+//   4, and a mass typed there changes what the page verifies as the CLI does;
+// - "Fastest safe timing" of the swing: Cancel, then the certified duration, the binding
+//   stretches and the plot against `cablenav time`.
 // Screenshots in tests/browser/artifacts/. Ends with "N passed, M failed"; exits 1 on failure.
 
 import { writeFileSync } from 'node:fs';
@@ -107,6 +109,34 @@ await test('the tension envelope of a timed trajectory: axis in seconds, inertia
   await page.screenshot({ path: join(artifacts, 'timing-tension.png'), fullPage: true });
   await openTab(page, 'intervals');
   return `ticks ${ticks.join(', ')}; bounds left ${violated ? 'somewhere' : 'nowhere'}, as the CLI's envelope says`;
+});
+
+await test('the fastest safe timing of `swing`: certified duration, binding stretches and plot as `cablenav time` gives them; Cancel stops it', async () => {
+  // the swing is selected (the previous test) and the Intervals tab open
+  await page.waitForSelector('[data-testid="fastest-run"]', { timeout: TIMEOUT });
+  // Cancel right after starting: no result, the status says so
+  await page.click('[data-testid="fastest-run"]');
+  await page.click('[data-testid="fastest-cancel"]', { timeout: TIMEOUT });
+  await page.waitForFunction(() => document.querySelector('[data-testid="fastest-status"]')?.textContent === 'cancelled', null, { timeout: TIMEOUT });
+  if (await page.$('[data-testid="fastest"]')) throw new Error('a result after Cancel');
+  await page.click('[data-testid="fastest-run"]');
+  await page.waitForSelector('[data-testid="fastest"][data-trajectory="swing"]', { timeout: TIMEOUT });
+  const file = join(scratch, 'page.json');
+  writeFileSync(file, await source());
+  const cli = cliJson(root, ['time', file, '--trajectory', 'swing']);
+  const duration = Number(await page.getAttribute('[data-testid="fastest"]', 'data-duration'));
+  const uncertified = Number(await page.getAttribute('[data-testid="fastest"]', 'data-uncertified'));
+  // wasm's sin and cos may differ from the native build's in the last bit: equal to 1e-9
+  if (Math.abs(duration - cli.duration) > 1e-9 * cli.duration) throw new Error(`page ${duration} s, CLI ${cli.duration} s`);
+  if (Math.abs(uncertified - cli.uncertified_duration) > 1e-9 * cli.duration) throw new Error(`uncertified: page ${uncertified}, CLI ${cli.uncertified_duration}`);
+  const rows = await page.$$eval('table[data-testid="fastest-binding"] tbody tr', (trs) => trs.map((tr) => tr.lastElementChild.textContent));
+  if (rows.join('|') !== cli.binding.map((b) => b.constraint).join('|')) throw new Error(`binding: page ${rows}, CLI ${cli.binding.map((b) => b.constraint)}`);
+  const bands = await page.$$eval('[data-testid="chart-fastest"] [data-testid="binding-band"]', (bs) => bs.length);
+  const panels = await page.$$eval('[data-testid="chart-fastest"] [data-testid="fastest-panel"] path', (ps) => ps.length);
+  if (bands !== cli.binding.length || panels !== 1 + 6) throw new Error(`${bands} bands, ${panels} lines`);
+  await page.screenshot({ path: join(artifacts, 'timing-fastest.png'), fullPage: true });
+  problems.assertNone();
+  return `${duration.toFixed(4)} s certified (CLI ${cli.duration.toFixed(4)} s), ${rows.length} binding stretches, cancel stopped the first run`;
 });
 
 await test('a duration typed in the editor: the format becomes 4 and the page follows the CLI; 0 is refused', async () => {

@@ -203,7 +203,9 @@ fn failure(limits: &Limits, cells: &[Cell], jets: &[Jet], steps: &[Step], f: Fai
     match f {
         Failure::Stuck(i) => {
             let c = &cells[i];
-            let at_rest: Vec<String> = steps[i].planes.iter().filter(|h| h.c < 0.0).map(|h| limits.name(h.what, &jets[i])).collect::<std::collections::BTreeSet<_>>().into_iter().collect();
+            let mut at_rest: Vec<String> = steps[i].planes.iter().filter(|h| h.c < 0.0).map(|h| limits.name(h.what, &jets[i])).collect();
+            at_rest.sort_unstable();
+            at_rest.dedup();
             let why = match at_rest.len() {
                 0 => "the limits leave no speed to go on with (nor to stop in time)".to_string(),
                 1..=3 => format!("violated at rest there: {}", at_rest.join("; ")),

@@ -45,7 +45,8 @@ pub fn FastestTiming(parsed: Memo<Parsed>, source: RwSignal<String>, trajectory:
         status.set("timing the path and certifying it in a worker…".to_string());
         let part = |reply: Reply| match reply {
             Reply::Progress { .. } => None,
-            Reply::Timed { report, ms } => Some(Ok((report, ms))),
+            Reply::Timed { report, error, ms } if error.is_empty() => Some(Ok((serde_json::from_str(&report).map_err(|e| e.to_string()), ms))),
+            Reply::Timed { error, ms, .. } => Some(Ok((Err(error), ms))),
             Reply::Failed { error } => Some(Err(error)),
             _ => Some(Err("the worker answered with another job's reply".to_string())),
         };

@@ -167,7 +167,11 @@ fn fastest_timing(json: &str, index: usize, now: fn() -> f64) -> Reply {
         let options = cablenav::plan::timing::TimingOptions::default();
         cablenav::plan::timing::fastest(&s, &s.trajectories[i], options).map(|(r, _)| r).map_err(|e| e.to_string())
     });
-    Reply::Timed { report, ms: now() - started }
+    let ms = now() - started;
+    match report {
+        Ok(r) => Reply::Timed { report: serde_json::to_string(&r).unwrap_or_default(), error: String::new(), ms },
+        Err(error) => Reply::Timed { report: String::new(), error, ms },
+    }
 }
 
 fn verify_every(json: &str, report: &mut dyn FnMut(Reply), now: fn() -> f64) -> Result<Reply, String> {

@@ -35,9 +35,10 @@ fn angles_identified() -> bool {
 /// The message a worker sends once it listens.
 pub const READY: &str = r#"{"ready":true}"#;
 
-/// Work for a worker.
+/// Work for a worker. Externally tagged (`{"plan": {…}}`): an internally tagged enum is decoded
+/// through serde's buffered `Content`, which grows the page by tens of kilobytes.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
+#[serde(rename_all = "snake_case")]
 pub enum Job {
     /// Plan query `query` of the scenario JSON `scenario` with planner `planner` (an id of
     /// [`crate::state::PLANNERS`]), at most `max_charts` charts (or the planner's own budget);
@@ -81,7 +82,7 @@ pub enum Job {
 
 /// What a worker answers.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "kind", rename_all = "snake_case")]
+#[serde(rename_all = "snake_case")]
 pub enum Reply {
     /// How far the job is: a fraction in [0, 1] (never going back) and a line for people.
     Progress { fraction: f64, detail: String },
@@ -102,9 +103,11 @@ pub enum Reply {
     Verified { report: Result<WireReport, String>, ms: f64 },
     /// Every trajectory's exact verification (or why not), in the scenario's order.
     VerifiedEvery { reports: Vec<Result<WireReport, String>> },
-    /// A trajectory's fastest safe timing (or why there is none) and the worker's time for it
-    /// (ms).
-    Timed { report: Result<cablenav::report::TimingReport, String>, ms: f64 },
+    /// A trajectory's fastest safe timing as `cablenav time --json` prints it (empty when there
+    /// is none), or why there is none (`error`, empty otherwise), and the worker's time for it
+    /// (ms). As text, so the page decodes the report straight from JSON (no `Result` of it to
+    /// decode: the page stays smaller).
+    Timed { report: String, error: String, ms: f64 },
     /// A slice map's rows `rows[0]..rows[1]`: their cells' classes, row-major.
     Sliced { rows: [usize; 2], classes: Vec<Class> },
     /// A slice's singularity curves, polylines of [first axis, second axis] points.
@@ -494,7 +497,7 @@ mod tests {
     fn jobs_and_replies_round_trip_as_json() {
         let job = Job::Plan { scenario: "{}".into(), query: "q1-q2".into(), planner: "continuation".into(), max_charts: 7, steps: 7, identify_angles: false };
         let text = encode_job(3, &job);
-        assert!(text.contains(r#""kind":"plan""#), "{text}");
+        assert!(text.contains(r#""body":{"plan":{"#), "{text}");
         assert_eq!(decode_job(&text), Ok(Envelope { id: 3, body: job }));
         let reply = Reply::Sliced { rows: [0, 2], classes: vec![Class::Feasible, Class::Singular] };
         assert_eq!(decode_reply(&encode_reply(9, &reply)), Some(Ok(Envelope { id: 9, body: reply })));
@@ -504,7 +507,7 @@ mod tests {
         assert_eq!(decode_job(&encode_job(1, &slice)).unwrap().body, slice, "the range crosses bit for bit");
         let singular = Job::Singular { map };
         assert_eq!(decode_job(&encode_job(2, &singular)).unwrap().body, singular);
-        assert!(decode_job(r#"{"id":1,"body":{"kind":"dance"}}"#).is_err());
+        assert!(decode_job(r#"{"id":1,"body":{"dance":{}}}"#).is_err());
     }
 
     #[test]
