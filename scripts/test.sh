@@ -24,9 +24,10 @@
 #   8c. tests/browser/e2e-multilink.mjs the 4-DoF arm: strip, 3-D view, joint sliders, the α–β
 #                                      slice map and ray lattice against `cablenav verify|check|slice|lattice`
 #   8d. tests/browser/e2e-timing.mjs   timed trajectories and the platform's mass: sections in
-#                                      seconds and the fastest timing, the tension plot against
-#                                      time, a duration, a timed spline and a mass edited, against
-#                                      `cablenav verify|envelope`
+#                                      seconds and the fastest uniform timing, the tension plot
+#                                      against time, the fastest safe timing and its Cancel, a
+#                                      duration, a timed spline and a mass edited, against
+#                                      `cablenav verify|envelope|time`
 #   9. python/ (maturin, pytest)       the wheel built and installed into target/venv; pytest
 #                                      compares it with the CLI that step 1 built, runs the sweep
 #                                      example serially, on threads and on a Dask LocalCluster
