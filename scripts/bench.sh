@@ -12,6 +12,8 @@
 #                                     (examples/bench/atlas.rs, native, ~10 min: the former defaults
 #                                     take minutes on the 6-D query); rewrites only the "Atlas planner
 #                                     defaults" section (a full run keeps that section as it is)
+#   scripts/bench.sh --timing         only the fastest safe timing (examples/bench/timing.rs, native,
+#                                     ~1 min); rewrites only the "Fastest safe timing" section
 #   (--no-write and --before combine)
 # Needs the wasm tools from scripts/install.sh (wasm32 target, wasm-bindgen-test-runner 0.2.130).
 # Timings are wall-clock: run it on an otherwise idle machine (the load average is recorded).
@@ -23,13 +25,15 @@ WRITE=1
 BEFORE=""
 LATTICE_ONLY=0
 ATLAS_ONLY=0
+TIMING_ONLY=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --no-write) WRITE=0 ;;
     --before) BEFORE="$2"; shift ;;
     --lattice) LATTICE_ONLY=1 ;;
     --atlas) ATLAS_ONLY=1 ;;
-    *) echo "usage: scripts/bench.sh [--no-write] [--before REF] | --lattice | --atlas" >&2; exit 2 ;;
+    --timing) TIMING_ONLY=1 ;;
+    *) echo "usage: scripts/bench.sh [--no-write] [--before REF] | --lattice | --atlas | --timing" >&2; exit 2 ;;
   esac
   shift
 done
@@ -54,17 +58,17 @@ run_lattice() {
     cargo test --release --target wasm32-unknown-unknown --features bench --test bench_wasm -- --nocapture bench_wasm_lattice >> "$1"
 }
 ATLAS_CMD="cargo run --release --example bench -- atlas"
-# Puts the section in "$2" (between its <!-- atlas:begin/end --> markers) into file "$1": in place of
+# Puts the section in "$2" (between its <!-- $3:begin/end --> markers) into file "$1": in place of
 # the old one, else before "## Targets", else at the end.
-put_atlas_section() {
-  awk -v f="$2" '
+put_section() {
+  awk -v f="$2" -v begin="<!-- $3:begin" -v end="<!-- $3:end -->" '
     function section() { while ((getline l < f) > 0) print l; close(f); done = 1 }
-    /<!-- atlas:begin/ { section(); skip = 1; next }
-    /<!-- atlas:end -->/ { skip = 0; next }
+    index($0, begin) == 1 { section(); skip = 1; next }
+    index($0, end) == 1 { skip = 0; next }
     /^## Targets/ && !done && !has { section(); print "" }
     !skip { print }
     END { if (!done) { print ""; section() } }
-  ' has="$(grep -c '<!-- atlas:begin' "$1" || true)" "$1" > "$1.new" && mv "$1.new" "$1"
+  ' has="$(grep -c "<!-- $3:begin" "$1" || true)" "$1" > "$1.new" && mv "$1.new" "$1"
 }
 if [ "$ATLAS_ONLY" = 1 ]; then
   say "building (release, native)"
@@ -108,8 +112,47 @@ if [ "$ATLAS_ONLY" = 1 ]; then
       }' "$TMP/atlas.txt"
     echo "<!-- atlas:end -->"
   } > "$TMP/section.md"
-  put_atlas_section "$OUT" "$TMP/section.md"
+  put_section "$OUT" "$TMP/section.md" atlas
   say "wrote the atlas section of $OUT"
+  exit 0
+fi
+TIMING_CMD="cargo run --release --example bench -- timing"
+# The fastest safe timing section (examples/bench/timing.rs, measured now), to "$1".
+timing_section() {
+  local before after
+  before=$(cut -d' ' -f1-3 /proc/loadavg)
+  say "fastest safe timing: $TIMING_CMD"
+  cargo run -q --release --example bench -- timing > "$TMP/timing.txt"
+  after=$(cut -d' ' -f1-3 /proc/loadavg)
+  cat "$TMP/timing.txt" >&2
+  {
+    echo "<!-- timing:begin (scripts/bench.sh --timing rewrites this section) -->"
+    echo "## Fastest safe timing"
+    echo
+    echo "\`cablenav time\` (docs/timing.md): each path timed rest to rest as fast as its limits allow on a"
+    echo "400-cell grid (\"uncertified\": the limits met at the grid points, as sampled time-optimal planners"
+    echo "give it), then certified cell by cell by the exact verifier and slowed where a limit is left"
+    echo "between points (\"certified\"; \"cost\" is what that took in duration). Time: median of five runs"
+    echo "of the whole command, natively (release, the cells verified on both cores). Measured"
+    echo "$(date -u '+%Y-%m-%d %H:%M UTC'), commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- src examples 2>/dev/null || echo ' (with uncommitted changes)'); load average before"
+    echo "$before, after $after on the shared 2-core VM."
+    echo
+    echo "    $TIMING_CMD"
+    echo
+    echo "| robot | trajectory | certified | uncertified | cost | cells | rounds | time |"
+    echo "|---|---|---:|---:|---:|---:|---:|---:|"
+    cat "$TMP/timing.txt"
+    echo
+    echo "The comparison with batotp on its own CSPR3DOF case waits for point-mass robots (issue 23)."
+    echo "<!-- timing:end -->"
+  } > "$1"
+}
+if [ "$TIMING_ONLY" = 1 ]; then
+  say "building (release, native)"
+  cargo build --release --example bench >&2
+  timing_section "$TMP/section.md"
+  put_section "$OUT" "$TMP/section.md" timing
+  say "wrote the timing section of $OUT"
   exit 0
 fi
 
@@ -483,8 +526,10 @@ fi
 # rewrites it).
 if grep -q '<!-- atlas:begin' "$OUT"; then
   sed -n '/<!-- atlas:begin/,/<!-- atlas:end -->/p' "$OUT" > "$TMP/atlas-kept.md"
-  put_atlas_section "$TMP/benchmarks.md" "$TMP/atlas-kept.md"
+  put_section "$TMP/benchmarks.md" "$TMP/atlas-kept.md" atlas
 fi
+timing_section "$TMP/timing-section.md"
+put_section "$TMP/benchmarks.md" "$TMP/timing-section.md" timing
 
 if [ "$WRITE" = 1 ]; then
   cp "$TMP/benchmarks.md" "$OUT"

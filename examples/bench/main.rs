@@ -4,6 +4,7 @@
 //!     cargo run --release --example bench -- tree/   # the cases whose id contains "tree/"
 //!     cargo run --release --example bench -- lattice # the ray lattice cases (lattice.rs) instead
 //!     cargo run --release --example bench -- atlas   # the atlas planner's defaults, before/after (atlas.rs)
+//!     cargo run --release --example bench -- timing  # the fastest safe timing (timing.rs)
 //!
 //! `scripts/bench.sh` runs it together with the wasm-in-node benchmark (`tests/bench_wasm.rs`,
 //! same cases from `cases.rs`) and writes `docs/benchmarks.md`.
@@ -11,6 +12,7 @@
 mod atlas;
 mod cases;
 mod lattice;
+mod timing;
 
 fn main() {
     let origin = std::time::Instant::now();
@@ -18,6 +20,10 @@ fn main() {
     let filter = std::env::args().nth(1).unwrap_or_default();
     if filter == "atlas" {
         atlas::run_atlas();
+        return;
+    }
+    if filter == "timing" {
+        timing::run_timing();
         return;
     }
     if filter.starts_with("lattice") {
