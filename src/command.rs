@@ -477,10 +477,10 @@ fn slice_text(m: &SliceMap) -> String {
 fn time_text(r: &TimingReport) -> String {
     let mut out = format!("{}: fastest safe timing\n", r.trajectory);
     match r.duration {
-        Some(d) => out += &format!("  certified duration: {d:.6} s (uncertified optimum of the same grid {:.6} s; the certificate cost {:.3} %)\n", r.uncertified_duration, 100.0 * r.certificate_cost.unwrap_or(0.0)),
+        Some(d) => out += &format!("  certified duration: {d:.6} s (uncertified optimum of the first grid {:.6} s; the certificate cost {:.3} %)\n", r.uncertified_duration, 100.0 * r.certificate_cost.unwrap_or(0.0)),
         None => out += &format!("  not certified: {} (best law {:.6} s)\n", intervals(&r.not_certified), r.profile.last().map_or(0.0, |p| p.time)),
     }
-    out += &format!("  grid: {} cells, limits tightened by {} relative; {} slow-down rounds", r.cells, r.margin, r.rounds);
+    out += &format!("  grid: {} cells, limits tightened by {} relative; {} certification rounds", r.cells, r.margin, r.rounds);
     if !r.slowed.is_empty() {
         out += &format!(", slowed on t ∈ {}", intervals(&r.slowed));
     }

@@ -205,7 +205,8 @@ pub struct TimingReport {
     pub certificate_cost: Option<f64>,
     /// Grid cells the path was cut into.
     pub cells: usize,
-    /// Slow-down rounds the certification took (0: the optimum certified as it was).
+    /// Rounds the certification took (0: the optimum certified as it was), each halving the
+    /// cells that failed (once) or slowing them.
     pub rounds: usize,
     /// The relative margin the limits were tightened by on the grid.
     pub margin: f64,

@@ -7,8 +7,9 @@
 //! 2. Reachability analysis finds the fastest law on that grid, λ̈ constant per cell
 //!    ([`reach`]): the uncertified optimum, which meets the limits at the grid points only.
 //! 3. Each cell of the law is verified exactly ([`certify`]); where a limit is left between grid
-//!    points (or cannot be decided) the speed there is capped lower and the law recomputed, until
-//!    every cell is certified (or the rounds run out: then the report says where it is not).
+//!    points (or cannot be decided) the cell is halved (once), then its speed capped lower, and
+//!    the law recomputed, until every cell is certified (or the rounds run out: then the report
+//!    says where it is not).
 //!
 //! The planner of step 2 knows nothing of robots: it sees half-planes per cell.
 
@@ -47,6 +48,9 @@ impl Default for TimingOptions {
 
 /// Each slow-down round caps a failing cell's speed (x = λ̇²) at this share of what it was.
 const SLOW_DOWN: f64 = 0.8;
+
+/// How many times a failing cell is halved before it is slowed instead.
+const MAX_HALVINGS: u8 = 1;
 
 /// Relative difference of the velocity per unit t across a junction of motions above which the
 /// path has a corner there (the platform must stop).
@@ -98,22 +102,15 @@ pub fn fastest(s: &Scenario, traj: &Trajectory, options: TimingOptions) -> Resul
     let (cells, rates) = path::grid(&motions, options.cells, CORNER);
     let t_of = |c: &Cell, lam: f64| rates[c.motion].motion().param.value(lam);
     // the limits at both ends of every cell, as half-planes in (u, x_start)
+    let mut cells = cells;
     let mut steps = Vec::with_capacity(cells.len());
     let mut jets = Vec::with_capacity(cells.len());
     for c in &cells {
-        let (start, end) = (rates[c.motion].jet(c.a), rates[c.motion].jet(c.b));
-        let delta = c.b - c.a;
-        let mut planes = Vec::new();
-        limits.at(&start, t_of(c, c.a), &mut planes)?;
-        let mut at_end = Vec::new();
-        limits.at(&end, t_of(c, c.b), &mut at_end)?;
-        // x_end = x + 2Δu
-        planes.extend(at_end.into_iter().map(|h| HalfPlane { a: h.a + 2.0 * delta * h.b, ..h }));
-        steps.push(Step { planes, delta, factor: c.factor, stop: c.stop, caps: (f64::INFINITY, f64::INFINITY) });
-        jets.push(start);
+        let (step, jet) = step_of(&limits, &rates, c)?;
+        steps.push(step);
+        jets.push(jet);
     }
-    let total_of = |law: &[(f64, f64)]| duration(&cells, law);
-    let first = reach::fastest(&mut steps, total_of).map_err(|f| failure(&limits, &cells, &jets, &steps, f, &t_of))?;
+    let first = reach::fastest(&mut steps, |law| duration(&cells, law)).map_err(|f| failure(&limits, &cells, &jets, &steps, f, &t_of))?;
     let uncertified = duration(&cells, &first);
     let mut law = first;
     let mut known: Vec<Option<((f64, f64), Verdict)>> = vec![None; cells.len()];
@@ -129,12 +126,25 @@ pub fn fastest(s: &Scenario, traj: &Trajectory, options: TimingOptions) -> Resul
             break failing;
         }
         rounds += 1;
-        for &i in &failing {
-            let (x0, x1) = law[i];
-            steps[i].caps = (x0 * SLOW_DOWN, x1 * SLOW_DOWN);
-            slowed[i] = true;
+        // a failing cell is halved (the law then follows the limits more closely) until it is
+        // small enough, then slowed
+        for &i in failing.iter().rev() {
+            if cells[i].depth < MAX_HALVINGS {
+                let halves = cells[i].halves();
+                let made = [step_of(&limits, &rates, &halves[0])?, step_of(&limits, &rates, &halves[1])?];
+                cells.splice(i..=i, halves);
+                let [(s0, j0), (s1, j1)] = made;
+                steps.splice(i..=i, [s0, s1]);
+                jets.splice(i..=i, [j0, j1]);
+                known.splice(i..=i, [None, None]);
+                slowed.splice(i..=i, [false, false]);
+            } else {
+                let (x0, x1) = law[i];
+                steps[i].caps = (x0 * SLOW_DOWN, x1 * SLOW_DOWN);
+                slowed[i] = true;
+            }
         }
-        law = reach::fastest(&mut steps, total_of).map_err(|f| failure(&limits, &cells, &jets, &steps, f, &t_of))?;
+        law = reach::fastest(&mut steps, |law| duration(&cells, law)).map_err(|f| failure(&limits, &cells, &jets, &steps, f, &t_of))?;
     };
     let total = duration(&cells, &law);
     let certified = open.is_empty();
@@ -166,7 +176,7 @@ pub fn fastest(s: &Scenario, traj: &Trajectory, options: TimingOptions) -> Resul
             Some((_, Verdict::Fails(v) | Verdict::Undecided(v))) => Some(v.join(", ")),
             _ => None,
         }).take(3).collect();
-        notes.push(format!("{} cells not certified after {rounds} slow-down rounds ({}…)", open.len(), names.join("; ")));
+        notes.push(format!("{} cells not certified after {rounds} rounds ({}…)", open.len(), names.join("; ")));
     }
     let report = TimingReport {
         trajectory: traj.name.clone(),
@@ -187,6 +197,21 @@ pub fn fastest(s: &Scenario, traj: &Trajectory, options: TimingOptions) -> Resul
         duration: total,
     };
     Ok((report, timed))
+}
+
+/// A cell's limits at both its ends as half-planes in (u, x_start) (the end's with
+/// x_end = x + 2Δu substituted), and the jet at its start.
+fn step_of(limits: &Limits, rates: &[Rates], c: &Cell) -> Result<(Step, Jet)> {
+    let r = &rates[c.motion];
+    let t_of = |lam: f64| r.motion().param.value(lam);
+    let (start, end) = (r.jet(c.a), r.jet(c.b));
+    let delta = c.b - c.a;
+    let mut planes = Vec::new();
+    limits.at(&start, t_of(c.a), &mut planes)?;
+    let mut at_end = Vec::new();
+    limits.at(&end, t_of(c.b), &mut at_end)?;
+    planes.extend(at_end.into_iter().map(|h| HalfPlane { a: h.a + 2.0 * delta * h.b, ..h }));
+    Ok((Step { planes, delta, factor: c.factor, stop: c.stop, caps: (f64::INFINITY, f64::INFINITY) }, start))
 }
 
 /// Seconds a cell takes: λ̇² linear in λ from x₀ to x₁ over Δ gives 2Δ/(√x₀ + √x₁).

@@ -27,6 +27,17 @@ pub struct Cell {
     pub factor: f64,
     /// Whether the platform must stand still at this cell's end (a corner, or the path's end).
     pub stop: bool,
+    /// How many times the certification halved the grid's cell this one is part of.
+    pub depth: u8,
+}
+
+impl Cell {
+    /// Its two halves: the first flows into the second; the second ends as this one does.
+    pub fn halves(&self) -> [Cell; 2] {
+        let m = 0.5 * (self.a + self.b);
+        let depth = self.depth + 1;
+        [Cell { b: m, factor: 1.0, stop: false, depth, ..self.clone() }, Cell { a: m, depth, ..self.clone() }]
+    }
 }
 
 /// The platform at a point of the path with its rates per unit λ: velocity ṗ = `dp`·λ̇,
@@ -145,7 +156,7 @@ pub fn grid(motions: &[Motion], count: usize, corner: f64) -> (Vec<Cell>, Vec<Ra
         for j in 0..n {
             let (a, b) = (j as f64 / n as f64, (j + 1) as f64 / n as f64);
             let end = j + 1 == n;
-            cells.push(Cell { motion: k, a, b, factor: if end { factor } else { 1.0 }, stop: end && stop });
+            cells.push(Cell { motion: k, a, b, factor: if end { factor } else { 1.0 }, stop: end && stop, depth: 0 });
         }
     }
     (cells, rates)

@@ -114,7 +114,7 @@ fn Summary(report: TimingReport, bounds: Vec<[f64; 2]>) -> impl IntoView {
     view! {
         <div data-testid="fastest" data-trajectory=report.trajectory.clone() data-duration=report.duration.map(logic::fmt_exact).unwrap_or_default()
             data-uncertified=logic::fmt_exact(report.uncertified_duration)>
-            <p><strong>{headline}</strong>{format!(" — {} cells, {} slow-down rounds.", report.cells, report.rounds)}</p>
+            <p><strong>{headline}</strong>{format!(" — {} cells, {} certification rounds.", report.cells, report.rounds)}</p>
             <TimingChart report=report.clone() bounds />
             <table data-testid="fastest-binding">
                 <caption>"What binds along the path"</caption>
