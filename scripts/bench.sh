@@ -70,14 +70,19 @@ put_section() {
     END { if (!done) { print ""; section() } }
   ' has="$(grep -c "<!-- $3:begin" "$1" || true)" "$1" > "$1.new" && mv "$1.new" "$1"
 }
+# Runs the native benchmark's mode "$1" into "$2" (and to stderr), with the load average before and
+# after it in $before and $after.
+run_measured() {
+  before=$(cut -d' ' -f1-3 /proc/loadavg)
+  cargo run -q --release --example bench -- "$1" > "$2"
+  after=$(cut -d' ' -f1-3 /proc/loadavg)
+  cat "$2" >&2
+}
 if [ "$ATLAS_ONLY" = 1 ]; then
   say "building (release, native)"
   cargo build --release --example bench >&2
-  before=$(cut -d' ' -f1-3 /proc/loadavg)
   say "atlas planner defaults: $ATLAS_CMD"
-  cargo run -q --release --example bench -- atlas > "$TMP/atlas.txt"
-  after=$(cut -d' ' -f1-3 /proc/loadavg)
-  cat "$TMP/atlas.txt" >&2
+  run_measured atlas "$TMP/atlas.txt"
   {
     echo "<!-- atlas:begin (scripts/bench.sh --atlas rewrites this section) -->"
     echo "## Atlas planner defaults: adaptive chart radii and a weighted heuristic"
@@ -119,12 +124,8 @@ fi
 TIMING_CMD="cargo run --release --example bench -- timing"
 # The fastest safe timing section (examples/bench/timing.rs, measured now), to "$1".
 timing_section() {
-  local before after
-  before=$(cut -d' ' -f1-3 /proc/loadavg)
   say "fastest safe timing: $TIMING_CMD"
-  cargo run -q --release --example bench -- timing > "$TMP/timing.txt"
-  after=$(cut -d' ' -f1-3 /proc/loadavg)
-  cat "$TMP/timing.txt" >&2
+  run_measured timing "$TMP/timing.txt"
   {
     echo "<!-- timing:begin (scripts/bench.sh --timing rewrites this section) -->"
     echo "## Fastest safe timing"
