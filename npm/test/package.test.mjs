@@ -72,7 +72,7 @@ test('timed trajectories: seconds, checkAt and the envelope with inertia equal t
   const fastest = cablenav.time(text, 'swing', 100);
   close(fastest, cli('time', timed, '--trajectory', 'swing', '--cells', 100));
   assert.ok(fastest.duration >= fastest.uncertified_duration && fastest.uncertified_duration > 0);
-  assert.throws(() => cablenav.time(text, 'swing', undefined, 0.7), (e) => e.name === 'ScenarioError' && e.field === '--margin');
+  assert.throws(() => cablenav.time(text, 'swing', undefined, 0.7), (e) => e.name === 'ScenarioError' && e.field === 'margin');
   assert.throws(() => cablenav.checkAt(text, 1.5), (e) => e.name === 'ScenarioError' && e.field === 't');
 });
 

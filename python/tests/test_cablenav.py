@@ -71,7 +71,7 @@ def test_timed_trajectories_equal_the_cli(cli):
     assert fastest["duration"] >= fastest["uncertified_duration"] > 0
     with pytest.raises(cablenav.ScenarioError) as e:
         cablenav.time(timed, "swing", margin=0.7)
-    assert e.value.field == "--margin"
+    assert e.value.field == "margin"
     with pytest.raises(cablenav.ScenarioError) as e:
         cablenav.check_at(timed, 1.5)
     assert e.value.field == "t"
