@@ -190,7 +190,8 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
         Request::Time { trajectory, cells, margin } => {
             let defaults = TimingOptions::default();
             let options = TimingOptions { cells: cells.unwrap_or(defaults.cells), margin: margin.unwrap_or(defaults.margin), ..defaults };
-            Output::Time(timing::fastest(scenario, scenario.trajectory(trajectory.as_deref())?, options)?.0)
+            let mut hear = |p: timing::TimingProgress| progress(Progress { stage: "cells certified", done: p.done, total: p.total });
+            Output::Time(timing::fastest_reporting(scenario, scenario.trajectory(trajectory.as_deref())?, options, &mut hear)?.0)
         }
         Request::Slice { pose, axes, res, range } => {
             let axes = [scenario.coord("--axes", &axes[0])?, scenario.coord("--axes", &axes[1])?];

@@ -89,8 +89,26 @@ impl TimedPath {
     }
 }
 
+/// How far a timing has come: in certification round `round` (0 first), `done` of the `total`
+/// cells that round verifies (reported as a round starts and ends: chunks of a round would leave
+/// the cores idle at each chunk's end, cells near a spline's knots taking far longer than others).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct TimingProgress {
+    /// The round.
+    pub round: usize,
+    /// Cells verified in it.
+    pub done: usize,
+    /// Cells it verifies.
+    pub total: usize,
+}
+
 /// The fastest certified timing of `traj` in `s`, rest to rest.
 pub fn fastest(s: &Scenario, traj: &Trajectory, options: TimingOptions) -> Result<(TimingReport, TimedPath)> {
+    fastest_reporting(s, traj, options, &mut |_| {})
+}
+
+/// [`fastest`], telling `progress` how the certification goes.
+pub fn fastest_reporting(s: &Scenario, traj: &Trajectory, options: TimingOptions, progress: &mut dyn FnMut(TimingProgress)) -> Result<(TimingReport, TimedPath)> {
     if !(options.cells >= 1 && options.cells <= 100_000) {
         return Err(Error::new("--cells", format!("{} cells: give 1 to 100000", options.cells)));
     }
@@ -118,9 +136,11 @@ pub fn fastest(s: &Scenario, traj: &Trajectory, options: TimingOptions) -> Resul
     let mut rounds = 0;
     let open = loop {
         let which: Vec<usize> = (0..cells.len()).filter(|&i| known[i].as_ref().is_none_or(|(x, _)| *x != law[i])).collect();
+        progress(TimingProgress { round: rounds, done: 0, total: which.len() });
         for (i, v) in which.iter().zip(certify::verdicts(s, &cells, &rates, &law, &which)) {
             known[*i] = Some((law[*i], v));
         }
+        progress(TimingProgress { round: rounds, done: which.len(), total: which.len() });
         let failing: Vec<usize> = (0..cells.len()).filter(|&i| !matches!(known[i], Some((_, Verdict::Holds)))).collect();
         if failing.is_empty() || rounds == options.rounds {
             break failing;
@@ -130,14 +150,14 @@ pub fn fastest(s: &Scenario, traj: &Trajectory, options: TimingOptions) -> Resul
         // small enough, then slowed
         for &i in failing.iter().rev() {
             if cells[i].depth < MAX_HALVINGS {
-                let halves = cells[i].halves();
-                let made = [step_of(&limits, &rates, &halves[0])?, step_of(&limits, &rates, &halves[1])?];
-                cells.splice(i..=i, halves);
-                let [(s0, j0), (s1, j1)] = made;
-                steps.splice(i..=i, [s0, s1]);
-                jets.splice(i..=i, [j0, j1]);
-                known.splice(i..=i, [None, None]);
-                slowed.splice(i..=i, [false, false]);
+                let [first, second] = cells[i].halves();
+                let ((s0, j0), (s1, j1)) = (step_of(&limits, &rates, &first)?, step_of(&limits, &rates, &second)?);
+                (cells[i], steps[i], jets[i], known[i], slowed[i]) = (first, s0, j0, None, false);
+                cells.insert(i + 1, second);
+                steps.insert(i + 1, s1);
+                jets.insert(i + 1, j1);
+                known.insert(i + 1, None);
+                slowed.insert(i + 1, false);
             } else {
                 let (x0, x1) = law[i];
                 steps[i].caps = (x0 * SLOW_DOWN, x1 * SLOW_DOWN);

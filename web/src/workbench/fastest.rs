@@ -43,8 +43,14 @@ pub fn FastestTiming(parsed: Memo<Parsed>, source: RwSignal<String>, trajectory:
         result.set(None);
         running.set(true);
         status.set("timing the path and certifying it in a worker…".to_string());
-        let part = |reply: Reply| match reply {
-            Reply::Progress { .. } => None,
+        let part = move |reply: Reply| match reply {
+            Reply::Progress { detail, .. } => {
+                // a reply already on its way when Cancel stopped the run says nothing now
+                if run.is_current(this) {
+                    status.set(detail);
+                }
+                None
+            }
             Reply::Timed { report, error, ms } if error.is_empty() => Some(Ok((serde_json::from_str(&report).map_err(|e| e.to_string()), ms))),
             Reply::Timed { error, ms, .. } => Some(Ok((Err(error), ms))),
             Reply::Failed { error } => Some(Err(error)),

@@ -142,7 +142,7 @@ pub fn run(job: Job, report: &mut dyn FnMut(Reply), now: fn() -> f64) {
         Job::Profiles { scenario, name, samples, trajectory } => profiles(&scenario, &name, &samples, trajectory.as_deref()),
         Job::Verify { scenario, index } => Ok(verify(&scenario, index, now)),
         Job::VerifyEvery { scenario } => verify_every(&scenario, report, now),
-        Job::Time { scenario, index } => Ok(fastest_timing(&scenario, index, now)),
+        Job::Time { scenario, index } => Ok(fastest_timing(&scenario, index, report, now)),
     };
     report(last.unwrap_or_else(|error| Reply::Failed { error }));
 }
@@ -159,13 +159,20 @@ fn verify(json: &str, index: usize, now: fn() -> f64) -> Reply {
 }
 
 /// Trajectory `index` (clamped) of the scenario timed as fast as its limits allow, certified
-/// (`cablenav time` with its defaults), timed by `now`.
-fn fastest_timing(json: &str, index: usize, now: fn() -> f64) -> Reply {
+/// (`cablenav time` with its defaults), timed by `now`; each certification round reported as it
+/// starts (round r at fraction 1 − 1/(1 + r): rising, below 1).
+fn fastest_timing(json: &str, index: usize, report: &mut dyn FnMut(Reply), now: fn() -> f64) -> Reply {
     let started = now();
+    let mut hear = |p: cablenav::plan::timing::TimingProgress| {
+        if p.done == 0 {
+            let fraction = 1.0 - 1.0 / (1.0 + p.round as f64);
+            report(Reply::Progress { fraction, detail: format!("certifying: round {}, {} cells", p.round + 1, p.total) });
+        }
+    };
     let report = scenario(json).and_then(|s| {
         let i = crate::logic::trajectory_index(&s, index).ok_or("the scenario has no trajectory")?;
         let options = cablenav::plan::timing::TimingOptions::default();
-        cablenav::plan::timing::fastest(&s, &s.trajectories[i], options).map(|(r, _)| r).map_err(|e| e.to_string())
+        cablenav::plan::timing::fastest_reporting(&s, &s.trajectories[i], options, &mut hear).map(|(r, _)| r).map_err(|e| e.to_string())
     });
     let ms = now() - started;
     match report {
