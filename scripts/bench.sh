@@ -132,7 +132,7 @@ timing_section() {
     echo
     echo "\`cablenav time\` (docs/timing.md): each path timed rest to rest as fast as its limits allow on a"
     echo "400-cell grid (\"uncertified\": the limits met at the grid points, as sampled time-optimal planners"
-    echo "give it), then certified cell by cell by the exact verifier and slowed where a limit is left"
+    echo "give it), then certified cell by cell by the exact verifier, halved and slowed where a limit is left"
     echo "between points (\"certified\"; \"cost\" is what that took in duration). Time: median of five runs"
     echo "of the whole command, natively (release, the cells verified on both cores). Measured"
     echo "$(date -u '+%Y-%m-%d %H:%M UTC'), commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- src examples 2>/dev/null || echo ' (with uncommitted changes)'); load average before"
