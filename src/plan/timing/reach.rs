@@ -135,7 +135,8 @@ pub enum Failure {
     Unbounded(usize),
 }
 
-/// A law: x at every cell's start and end, and each cell's peak ([`Range`]).
+/// A law: x at every cell's start and end, and each cell's peak: the start speed past which a
+/// faster start ends the cell slower.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Law {
     /// (x at the start, x at the end) per cell.
