@@ -116,8 +116,7 @@ pub fn fastest_reporting(s: &Scenario, traj: &Trajectory, options: TimingOptions
         return Err(Error::new("--margin", format!("{}: give a relative margin in (0, 0.5)", options.margin)));
     }
     let limits = Limits::new(s, options.margin)?;
-    let motions = Motion::trajectory(traj);
-    let (cells, rates) = path::grid(&motions, options.cells, CORNER);
+    let (cells, rates) = path::grid(Motion::trajectory(traj), options.cells, CORNER);
     let t_of = |c: &Cell, lam: f64| rates[c.motion].motion().param.value(lam);
     // the limits at both ends of every cell, as half-planes in (u, x_start)
     let mut cells = cells;

@@ -78,7 +78,7 @@ pub struct Rates {
 
 impl Rates {
     /// The derivatives of `motion`.
-    pub fn new(motion: &Motion) -> Rates {
+    pub fn new(motion: Motion) -> Rates {
         let d = |p: &Bern| p.derivative();
         let dpos = motion.position.each_ref().map(d);
         let ddpos = dpos.each_ref().map(d);
@@ -86,7 +86,7 @@ impl Rates {
         let ddrot = drot.each_ref().map(|r| r.each_ref().map(d));
         let dw = motion.weight.derivative();
         let ddw = dw.derivative();
-        Rates { motion: motion.clone(), dpos, ddpos, drot, ddrot, dw, ddw }
+        Rates { motion, dpos, ddpos, drot, ddrot, dw, ddw }
     }
 
     /// The motion.
@@ -130,17 +130,17 @@ impl Rates {
 /// proportion to each motion's share of t, equal steps of λ within a motion; and the rates of
 /// every motion. A corner between motions (the velocity or angular velocity per unit t differs
 /// by more than `corner` relative) makes the platform stop there.
-pub fn grid(motions: &[Motion], count: usize, corner: f64) -> (Vec<Cell>, Vec<Rates>) {
-    let rates: Vec<Rates> = motions.iter().map(Rates::new).collect();
-    let span = |m: &Motion| match m.param {
+pub fn grid(motions: Vec<Motion>, count: usize, corner: f64) -> (Vec<Cell>, Vec<Rates>) {
+    let rates: Vec<Rates> = motions.into_iter().map(Rates::new).collect();
+    let span = |r: &Rates| match r.motion.param {
         Param::Trajectory { t0, t1, within: (a, b), .. } => (t1 - t0) * (b - a),
         _ => 1.0,
     };
-    let whole: f64 = motions.iter().map(span).sum();
+    let whole: f64 = rates.iter().map(span).sum();
     let mut cells = Vec::new();
-    for (k, m) in motions.iter().enumerate() {
-        let n = ((count as f64 * span(m) / whole).round() as usize).max(1);
-        let last = k + 1 == motions.len();
+    for (k, r) in rates.iter().enumerate() {
+        let n = ((count as f64 * span(r) / whole).round() as usize).max(1);
+        let last = k + 1 == rates.len();
         let (factor, stop) = if last {
             (1.0, true)
         } else {
