@@ -21,6 +21,7 @@ pub mod reach;
 use crate::error::{Error, Result};
 use crate::model::motion::Param;
 use crate::model::{Motion, Trajectory};
+use crate::query::cables::anchors;
 use crate::query::wrench::static_margin;
 use crate::report::{BindingStretch, ProfilePoint, TimingReport};
 use crate::scenario::Scenario;
@@ -116,10 +117,9 @@ pub fn fastest_reporting(s: &Scenario, traj: &Trajectory, options: TimingOptions
         return Err(Error::new("--margin", format!("{}: give a relative margin in (0, 0.5)", options.margin)));
     }
     let limits = Limits::new(s, options.margin)?;
-    let (cells, rates) = path::grid(Motion::trajectory(traj), options.cells, CORNER);
+    let (mut cells, rates) = path::grid(Motion::trajectory(traj), options.cells, CORNER);
     let t_of = |c: &Cell, lam: f64| rates[c.motion].motion().param.value(lam);
     // the limits at both ends of every cell, as half-planes in (u, x_start)
-    let mut cells = cells;
     let mut steps = Vec::with_capacity(cells.len());
     let mut jets = Vec::with_capacity(cells.len());
     for c in &cells {
@@ -187,7 +187,7 @@ pub fn fastest_reporting(s: &Scenario, traj: &Trajectory, options: TimingOptions
         clock += cell_time(c, x0, x1);
     }
     times.push(clock);
-    let binding = binding_stretches(&limits, &cells, &jets, &steps, &law, &times, &t_of);
+    let binding = binding_stretches(&limits, &cells, &jets, &steps, &slowed, &law, &times, &t_of);
     let profile = profile(s, &cells, &rates, &jets, &law, &times, &t_of);
     let mut notes = vec!["the certificate covers the speed-dependent conditions (tensions under weight and inertia, winch and speed limits); the path's geometry (lengths, interference, closure) does not depend on the timing: `cablenav verify` certifies it".to_string()];
     if !certified {
@@ -271,13 +271,16 @@ fn failure(limits: &Limits, cells: &[Cell], jets: &[Jet], steps: &[Step], f: Fai
 }
 
 /// The binding constraint cell by cell (the half-plane with the least relative slack at the
-/// law's (u, x), or the certification's cap), merged into stretches.
-fn binding_stretches(limits: &Limits, cells: &[Cell], jets: &[Jet], steps: &[Step], law: &[(f64, f64)], times: &[f64], t_of: &dyn Fn(&Cell, f64) -> f64) -> Vec<BindingStretch> {
+/// law's (u, x), or the certification's cap where a `slowed` cell runs at it), merged into
+/// stretches. (The law's own improvement caps a cell's start past its peak too; that cap is a
+/// choice of the law, not a certification's slow-down, and the least slack names the cell.)
+#[allow(clippy::too_many_arguments)]
+fn binding_stretches(limits: &Limits, cells: &[Cell], jets: &[Jet], steps: &[Step], slowed: &[bool], law: &[(f64, f64)], times: &[f64], t_of: &dyn Fn(&Cell, f64) -> f64) -> Vec<BindingStretch> {
     let mut out: Vec<BindingStretch> = Vec::new();
     for (i, c) in cells.iter().enumerate() {
         let (x0, x1) = law[i];
         let u = (x1 - x0) / (2.0 * (c.b - c.a));
-        let capped = x0 >= steps[i].caps.0 * (1.0 - 1e-9) || x1 >= steps[i].caps.1 * (1.0 - 1e-9);
+        let capped = slowed[i] && (x0 >= steps[i].caps.0 * (1.0 - 1e-9) || x1 >= steps[i].caps.1 * (1.0 - 1e-9));
         let what = if capped {
             What::Cap
         } else {
@@ -307,8 +310,7 @@ fn profile(s: &Scenario, cells: &[Cell], rates: &[Rates], jets: &[Jet], law: &[(
         let kin = jet.kinematics(u, x);
         let tensions = load.as_ref().map_or(Vec::new(), |l| {
             let w = l.nominal_at(&jet.pose, Some(&kin));
-            let anchors: Vec<_> = s.robot.cables.iter().map(|cb| (cb.base, jet.pose.transform(&cb.platform))).collect();
-            static_margin(&anchors, &l.wrench.point_at(&jet.pose), &w, &bounds).map_or(Vec::new(), |(_, f)| f)
+            static_margin(&anchors(&s.robot, &jet.pose), &l.wrench.point_at(&jet.pose), &w, &bounds).map_or(Vec::new(), |(_, f)| f)
         });
         ProfilePoint { t: t_of(c, lam), time: 0.0, rate: x.max(0.0).sqrt() / per_t, speed: kin.velocity.norm(), tensions }
     };
