@@ -75,4 +75,9 @@ impl Robot {
         let (a, b) = (&self.cables[i], &self.cables[j]);
         a.base == b.base || (a.link == b.link && a.platform == b.platform)
     }
+
+    /// (base anchor, platform anchor in the world frame) per cable of a platform robot at `pose`.
+    pub fn anchors(&self, pose: &super::Pose) -> Vec<(Vector3<f64>, Vector3<f64>)> {
+        self.cables.iter().map(|c| (c.base, pose.transform(&c.platform))).collect()
+    }
 }

@@ -54,16 +54,11 @@ impl PoseCables {
     }
 }
 
-/// (base anchor, platform anchor in the world frame) per cable of a platform robot at `pose`.
-pub fn anchors(robot: &Robot, pose: &Pose) -> Vec<(Vector3<f64>, Vector3<f64>)> {
-    robot.cables.iter().map(|c| (c.base, pose.transform(&c.platform))).collect()
-}
-
 /// The cables of a platform robot at `pose`.
 pub fn cables_at(robot: &Robot, pose: &Pose) -> PoseCables {
     PoseCables {
         pose: *pose,
-        cables: anchors(robot, pose),
+        cables: robot.anchors(pose),
         links: vec![(pose.position, pose.matrix())],
         kinematics: None,
         tensions: OnceCell::new(),

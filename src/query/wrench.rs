@@ -279,7 +279,7 @@ pub struct TensionRange {
 /// The tension ranges of the six cables at `pose` over the wrench set alone (no weight or inertia
 /// of the platform), or `None` at a singular pose (J not invertible to within [`SINGULAR_RATIO`]).
 pub fn tension_ranges(robot: &Robot, pose: &Pose, wrench: &Wrench) -> Option<[TensionRange; 6]> {
-    let cables = super::cables::anchors(robot, pose);
+    let cables = robot.anchors(pose);
     tension_ranges_at(&cables, &wrench.point_at(pose), &wrench.nominal, wrench)
 }
 

@@ -13,7 +13,7 @@
 use super::path::Jet;
 use crate::error::{Error, Result};
 use crate::model::{Bounds, Load};
-use crate::query::cables::{anchors, cable_rates};
+use crate::query::cables::cable_rates;
 use crate::query::wrench::{facet_normal, facets, structure_matrix_m, subsets};
 use crate::scenario::Scenario;
 use nalgebra::{Matrix6, Vector3, Vector6};
@@ -93,7 +93,7 @@ impl<'a> Limits<'a> {
     pub fn at(&self, jet: &Jet, t: f64, out: &mut Vec<HalfPlane>) -> Result<()> {
         let robot = &self.scenario.robot;
         let pose = &jet.pose;
-        let cables = anchors(robot, pose);
+        let cables = robot.anchors(pose);
         if let Some(load) = self.load.as_ref().filter(|l| l.dynamics.is_some() || !l.is_zero()) {
             let point = load.wrench.point_at(pose);
             let w0 = load.nominal_at(pose, None);
@@ -144,7 +144,7 @@ impl<'a> Limits<'a> {
             What::Facet { set, upper } => {
                 let robot = &self.scenario.robot;
                 let m = robot.cables.len();
-                let cables = anchors(robot, &jet.pose);
+                let cables = robot.anchors(&jet.pose);
                 let point = self.load.as_ref().map_or(Vector3::zeros(), |l| l.wrench.point_at(&jet.pose));
                 let j = structure_matrix_m(&cables, &point);
                 let Some(five) = subsets(m, 5).into_iter().nth(set) else { return "tensions".to_string() };
