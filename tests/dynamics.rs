@@ -692,7 +692,7 @@ fn six_cable_wrench_set_margin_agrees_with_paper_1() {
         w0[2] += case.mass * case.gravity.z; // the weight, as a load
         let c = p + r * to_v(point);
         let bounds = vec![Bounds { min: case.tension.0, max: case.tension.1 }; 6];
-        let facets = wrench_set_margin(&cables, &c, &w0, &e_inv, &bounds);
+        let facets = wrench_set_margin(&cables, &c, &w0, &e_inv, &bounds, &[0, 1, 2, 3, 4, 5]);
         let wrench = cablenav::model::Wrench {
             nominal: w0,
             ellipsoid: e_inv.try_inverse().unwrap(),
@@ -701,7 +701,7 @@ fn six_cable_wrench_set_margin_agrees_with_paper_1() {
             frame: cablenav::model::PointFrame::Platform,
             closure: false,
         };
-        let ranges = tension_ranges_at(&cables, &c, &w0, &wrench);
+        let ranges = tension_ranges_at(&cables, &c, &w0, &wrench, &[0, 1, 2, 3, 4, 5]);
         match (facets, ranges) {
             (Some(f), Some(ranges)) => {
                 let paper = ranges.iter().map(|t| (t.nominal - t.spread - case.tension.0).min(case.tension.1 - t.nominal - t.spread)).fold(f64::INFINITY, f64::min);

@@ -9,6 +9,9 @@ use cablenav::model::{Bounds, Pose};
 use cablenav::query::cables::cables_at;
 use cablenav::query::lp::{maximise, LpResult};
 use cablenav::query::wrench::{closure_holds, static_margin, structure_matrix_m};
+
+/// Every wrench component: these robots are spatial platforms.
+const ALL: &[usize] = &[0, 1, 2, 3, 4, 5];
 use cablenav::verify::{verify_trajectory, wrench_at};
 use cablenav::Scenario;
 use nalgebra::{DMatrix, DVector, UnitQuaternion, Vector3, Vector6};
@@ -92,12 +95,12 @@ fn seven_cable_closure_matches_an_lp_check() {
         let pose = random_pose(&mut rng);
         let at = cables_at(&s.robot, &pose);
         let point = pose.position;
-        let (lp, t) = closure_by_lp(&structure_matrix_m(&at.cables, &point));
+        let (lp, t) = closure_by_lp(&structure_matrix_m(&at.cables, &point, ALL));
         if t.abs() < 1e-9 {
             skipped += 1; // on the boundary: either answer is within rounding
             continue;
         }
-        assert_eq!(closure_holds(&at.cables, &point), lp, "pose {pose:?}: LP margin {t}");
+        assert_eq!(closure_holds(&at.cables, &point, ALL), lp, "pose {pose:?}: LP margin {t}");
         if lp { closed += 1 } else { open += 1 }
     }
     // Closure holds in a few percent of these poses: both answers must be exercised.
@@ -135,13 +138,13 @@ fn static_feasibility_lp_matches_a_null_space_search() {
     for _ in 0..poses {
         let pose = random_pose(&mut rng);
         let at = cables_at(&s.robot, &pose);
-        let j = structure_matrix_m(&at.cables, &pose.position);
+        let j = structure_matrix_m(&at.cables, &pose.position, ALL);
         let sv = j.clone().svd(false, false).singular_values;
         if sv.min() < 1e-6 * sv.max() {
             continue;
         }
         let want = static_margin_by_line(&j, &w.nominal, bounds[0]);
-        let (got, f) = static_margin(&at.cables, &pose.position, &w.nominal, &bounds).expect("rank 6: w0 is balanced by some tensions");
+        let (got, f) = static_margin(&at.cables, &pose.position, &w.nominal, &bounds, ALL).expect("rank 6: w0 is balanced by some tensions");
         assert!((got - want).abs() < 1e-7 * (1.0 + want.abs()), "pose {pose:?}: LP margin {got}, null-space search {want}");
         // The LP's tensions balance w0 and keep the margin.
         let fj = &j * DVector::from_vec(f.clone());
@@ -242,7 +245,7 @@ fn twelve_cable_closure_sections_match_the_lp_reference() {
             }
             let pose = traj.pose_at(t);
             let at = cables_at(&s.robot, &pose);
-            let (closed, margin) = closure_by_lp(&structure_matrix_m(&at.cables, &pose.position));
+            let (closed, margin) = closure_by_lp(&structure_matrix_m(&at.cables, &pose.position, ALL));
             if margin.abs() < 1e-9 {
                 continue; // on a boundary: either answer is within rounding
             }

@@ -1,10 +1,11 @@
-//! Wrench conditions written with the facets of the structure matrix's columns (any m ≥ 6; the
-//! verifier uses them for m ≥ 7): wrench closure (thesis WCC: a strictly positive tension vector
-//! in the null space of J, J of rank 6), where the scenario asks for it, and wrench feasibility
+//! Wrench conditions written with the facets of the structure matrix's columns (any m ≥ n, n the
+//! wrench components balanced: 6, or 3 for a point mass or a planar platform; the verifier uses
+//! them for m > n): wrench closure (thesis WCC: a strictly positive tension vector in the null
+//! space of J, J of rank n), where the scenario asks for it, and wrench feasibility
 //! (every wrench of the ellipsoid around the nominal load — the wrench set's w0, plus the
 //! platform's weight and inertia — is balanced by tensions strictly within their bounds).
 //!
-//! For a set S of five columns, n_S·x = det [J_S | x]. Up to a positive factor (powers of w and
+//! For a set S of n − 1 columns (five on a spatial platform), n_S·x = det [J_S | x]. Up to a positive factor (powers of w and
 //! cable lengths), det [J_S | j_k] = d_k = det [Ñ_S | ñ_k] and det [J_S | x] = n̂_S·(D_w x), with
 //! Ñ the polynomial structure matrix of [`super::structure`] and n̂_S its cofactor vector.
 //!
@@ -23,14 +24,14 @@ use std::rc::Rc;
 use super::interval::Iv;
 use super::load::{inverse_square, with_inertia};
 use super::primitives::{GT, LT};
-use super::structure::{det_with, minors, quadratic_form, structure_numerators};
+use super::structure::{det_with, minors, quadratic_form, row_weight, structure_numerators};
 use super::{Condition, Kind, Local, PoseCheck, Sweep};
 use crate::model::{Bounds, Load};
 use crate::poly::{Bern, Partition, Truth};
 use crate::query::cables::PoseCables;
 use crate::query::wrench::{closure_holds, subsets, wrench_set_margin};
 
-/// One facet candidate: five columns S, d_k for the other columns, d_0 and the ellipsoid's reach.
+/// One facet candidate: n − 1 columns S, d_k for the other columns, d_0 and the ellipsoid's reach.
 #[derive(Debug, Clone)]
 struct Facet {
     /// (k, d_k) for every column k ∉ S.
@@ -65,31 +66,35 @@ impl FacetPolys {
     /// The shared polynomials of `sweep` under `load`.
     pub fn new(sweep: &Sweep, load: &Load) -> FacetPolys {
         let local = Local::of(sweep, load);
-        let n = structure_numerators(&local, &load.wrench);
+        let rows = load.rows();
+        let dim = rows.len();
+        let n = structure_numerators(&local, &load.wrench, rows);
         let w = &local.weight;
         let w2 = w.mul(w);
         let e_inv = &load.wrench.ellipsoid_inv;
         let single = load.wrench.is_single();
-        let (rows, inertial) = (&local.load.rows, local.load.inertial.as_ref());
+        let (load_rows, inertial) = (&local.load.rows, local.load.inertial.as_ref());
         let m = local.cables.len();
-        let facets = subsets(m, 5)
+        let facets = subsets(m, dim - 1)
             .into_iter()
             .map(|s| {
                 let minors = minors(&n, &s);
                 let others = (0..m)
                     .filter(|k| !s.contains(k))
-                    .map(|k| (k, det_with(&minors, &std::array::from_fn::<_, 6, _>(|j| &n[j][k]))))
+                    .map(|k| (k, det_with(&minors, &(0..dim).map(|j| &n[j][k]).collect::<Vec<_>>())))
                     .collect();
                 let reach2 = (!single).then(|| {
-                    // D_w n̂: the cofactors (−1)^(j+5) M_j times w (force rows) or w² (moments)
-                    let g: [Bern; 6] = std::array::from_fn(|j| {
-                        let c = minors[j].mul(if j < 3 { w } else { &w2 });
-                        if (j + 5) % 2 == 0 { c } else { c.scale(-1.0) }
-                    });
-                    local.load.scaled_square(quadratic_form(&g, e_inv))
+                    // D_w n̂: the cofactors (−1)^(j+n−1) M_j times w (force rows) or w² (moments)
+                    let g: Vec<Bern> = (0..dim)
+                        .map(|j| {
+                            let c = minors[j].mul(row_weight(rows[j], w, &w2));
+                            if (j + dim - 1) % 2 == 0 { c } else { c.scale(-1.0) }
+                        })
+                        .collect();
+                    local.load.scaled_square(quadratic_form(&g, e_inv, rows))
                 });
-                let d0 = |rows: &[Bern; 6]| det_with(&minors, &std::array::from_fn::<_, 6, _>(|j| &rows[j]));
-                Facet { others, load: (d0(rows), inertial.map(d0)), reach2 }
+                let d0 = |all: &[Bern; 6]| det_with(&minors, &rows.iter().map(|&r| &all[r]).collect::<Vec<_>>());
+                Facet { others, load: (d0(load_rows), inertial.map(d0)), reach2 }
             })
             .collect();
         let len2 = local.len2();
@@ -132,7 +137,7 @@ impl Condition for WrenchClosure {
     }
 
     fn check(&self, at: &PoseCables) -> PoseCheck {
-        PoseCheck { violated: !closure_holds(&at.cables, &self.load.wrench.point_at(&at.pose)), distance: None }
+        PoseCheck { violated: !closure_holds(&at.cables, &self.load.wrench.point_at(&at.pose), self.load.rows()), distance: None }
     }
 }
 
@@ -161,7 +166,7 @@ pub(super) fn not_spanning(facets: impl Iterator<Item = Vec<Bern>>, tol: f64) ->
     holds.not()
 }
 
-/// Wrench feasibility of a robot with m ≥ 7 cables: every wrench of the ellipsoid around the
+/// Wrench feasibility of a robot with more cables than degrees of freedom: every wrench of the ellipsoid around the
 /// load is balanced by tensions strictly within their bounds.
 #[derive(Debug, Clone)]
 pub struct WrenchFeasibility {
@@ -328,7 +333,7 @@ impl Condition for WrenchFeasibility {
         let polys = FacetPolys::of(sweep, &self.load);
         let live: Vec<usize> = (0..polys.facets.len()).filter(|&i| !polys.facets[i].degenerate()).collect();
         if live.is_empty() {
-            return Partition::constant(Truth::True); // rank < 5 all along: nothing is balanced
+            return Partition::constant(Truth::True); // rank < n − 1 all along: nothing is balanced
         }
         let mut pieces = Vec::new();
         let mut budget = MAX_NODES;
@@ -340,7 +345,7 @@ impl Condition for WrenchFeasibility {
 
     fn check(&self, at: &PoseCables) -> PoseCheck {
         let wrench = &self.load.wrench;
-        match wrench_set_margin(&at.cables, &wrench.point_at(&at.pose), &at.nominal(&self.load), &wrench.ellipsoid_inv, &self.bounds) {
+        match wrench_set_margin(&at.cables, &wrench.point_at(&at.pose), &at.nominal(&self.load), &wrench.ellipsoid_inv, &self.bounds, self.load.rows()) {
             Some(margin) => PoseCheck { violated: !(margin > 0.0), distance: Some(margin) },
             None => PoseCheck { violated: true, distance: None },
         }

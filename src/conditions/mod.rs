@@ -358,14 +358,14 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
     if let Some(load) = s.load() {
         let load = Rc::new(load);
         if load.wrench.closure {
-            if m <= crate::scenario::validate::MAX_WRENCH_CABLES {
+            if crate::scenario::validate::facets_enumerable(m, robot.mobility) {
                 out.push(Box::new(WrenchClosure { load: Rc::clone(&load) }));
             } else {
                 // beyond the facets' reach: the linear programs' certificates
                 out.push(Box::new(WrenchFeasibilityLp::closure(&load, m)));
             }
         }
-        if m == 6 {
+        if m == robot.mobility.dof() {
             for (i, cable) in robot.cables.iter().enumerate() {
                 let bounds = [(TensionSide::Lower, cable.tension.min), (TensionSide::Upper, cable.tension.max)];
                 for (side, bound) in bounds.into_iter().filter(|(_, b)| b.is_finite()) {

@@ -26,25 +26,34 @@ pub(crate) fn point_offset(m: &Local, wrench: &Wrench) -> [Bern; 3] {
     }
 }
 
-/// Numerators of the columns of Ñ: entry [row][cable], rows 0–2 over w, rows 3–5 over w².
-pub(crate) fn structure_numerators(m: &Local, wrench: &Wrench) -> [Vec<Bern>; 6] {
+/// Numerators of the columns of Ñ in the wrench components `rows` (all six for a spatial
+/// platform, [`crate::model::Mobility::rows`]): entry [k][cable] for component rows[k], a force
+/// over w, a moment over w² ([`row_weight`]).
+pub(crate) fn structure_numerators(m: &Local, wrench: &Wrench, rows: &[usize]) -> Vec<Vec<Bern>> {
     let w = &m.weight;
     // c̃ = c·w, the application point.
     let offset = point_offset(m, wrench);
     let c: [Bern; 3] = [0, 1, 2].map(|i| m.position[i].add(&offset[i]));
-    let mut rows: [Vec<Bern>; 6] = Default::default();
+    let mut out: Vec<Vec<Bern>> = vec![Vec::with_capacity(m.cables.len()); rows.len()];
+    let moments = rows.iter().any(|&r| r >= 3);
     for (base, s) in &m.cables {
         // r̃ = a·w − c̃; (x − c) × s = r × s because s × s = 0.
-        let r: [Bern; 3] = [0, 1, 2].map(|i| w.scale(base[i]).sub(&c[i]));
-        let moment = cross(&r, s);
-        for k in 0..3 {
-            rows[k].push(s[k].clone());
-        }
-        for (k, mk) in moment.into_iter().enumerate() {
-            rows[k + 3].push(mk);
+        let moment = moments.then(|| cross(&[0, 1, 2].map(|i| w.scale(base[i]).sub(&c[i])), s));
+        for (k, &row) in rows.iter().enumerate() {
+            out[k].push(match (row, &moment) {
+                (0..3, _) => s[row].clone(),
+                (_, Some(mo)) => mo[row - 3].clone(),
+                (_, None) => unreachable!("moments are computed when a moment row is asked for"),
+            });
         }
     }
-    rows
+    out
+}
+
+/// The power of w a structure row's numerator is over: w for a force component (rows 0–2), w²
+/// for a moment (rows 3–5); `w2` is w².
+pub(crate) fn row_weight<'a>(row: usize, w: &'a Bern, w2: &'a Bern) -> &'a Bern {
+    if row < 3 { w } else { w2 }
 }
 
 /// The (n−1)×(n−1) minors of the n-row matrix `rows` restricted to the n − 1 columns `cols` (in
@@ -88,11 +97,12 @@ pub(crate) fn det_with(minors: &[Bern], x: &[&Bern]) -> Bern {
     })
 }
 
-/// gᵀ M g for the symmetric 6×6 matrix `m` (E⁻¹) and six polynomials g: each product once, the
-/// off-diagonal ones twice.
-pub(crate) fn quadratic_form(g: &[Bern], m: &nalgebra::Matrix6<f64>) -> Bern {
-    (0..6).fold(Bern::constant(0.0), |acc, j| {
-        let terms: Vec<(&Bern, f64)> = (j..6).map(|k| (&g[k], if k == j { 1.0 } else { 2.0 } * m[(j, k)])).collect();
+/// gᵀ M g for the block of the symmetric 6×6 matrix `m` (E⁻¹) on the wrench components `rows`
+/// and as many polynomials g: each product once, the off-diagonal ones twice.
+pub(crate) fn quadratic_form(g: &[Bern], m: &nalgebra::Matrix6<f64>, rows: &[usize]) -> Bern {
+    let n = rows.len();
+    (0..n).fold(Bern::constant(0.0), |acc, j| {
+        let terms: Vec<(&Bern, f64)> = (j..n).map(|k| (&g[k], if k == j { 1.0 } else { 2.0 } * m[(rows[j], rows[k])])).collect();
         acc.add(&g[j].mul(&Bern::linear_combination(&terms)))
     })
 }

@@ -1,4 +1,6 @@
-//! Wrench feasibility of a 6-cable robot as exact conditions: cable i's tension stays within its
+//! Wrench feasibility of a robot with as many cables as degrees of freedom (six on a spatial
+//! platform, three on a point mass or a planar platform, whose structure matrix has the rows of
+//! the wrench components it balances) as exact conditions: cable i's tension stays within its
 //! lower (upper) bound for every wrench of the ellipsoid W (Bohigas et al. §3).
 //!
 //! Along a motion every quantity is a polynomial in λ once denominators are cleared (the
@@ -18,7 +20,7 @@ use std::rc::Rc;
 use super::algebra::H;
 use super::load::{inverse_square, with_inertia};
 use super::primitives::{all_of, any_of, GT, LT};
-use super::structure::{minors, quadratic_form, structure_numerators};
+use super::structure::{minors, quadratic_form, row_weight, structure_numerators};
 use super::{Condition, Kind, Local, PoseCheck, Sweep};
 use crate::model::Load;
 use crate::poly::{Bern, Partition, Truth};
@@ -33,10 +35,11 @@ pub enum TensionSide {
     Upper,
 }
 
-/// One tension bound of one cable of a 6-cable robot, over the whole wrench ellipsoid.
+/// One tension bound of one cable of a robot with as many cables as degrees of freedom, over the
+/// whole wrench ellipsoid.
 #[derive(Debug, Clone)]
 pub struct CableTension {
-    /// The cable (0-based, < 6).
+    /// The cable (0-based, below the degrees of freedom).
     pub cable: usize,
     /// Which bound.
     pub side: TensionSide,
@@ -56,7 +59,7 @@ pub struct TensionPolys {
     local: Local,
     /// Δ = det Ñ.
     delta: Bern,
-    /// (i, α_i, β_i, α_i's inertial part for one second) for the cables expanded here (all six
+    /// (i, α_i, β_i, α_i's inertial part for one second) for the cables expanded here (all
     /// on a whole motion, one on a refined piece); with a load over w^q (inertia), α_i carries the
     /// factor w^q and β_i its square. A motion run in T seconds has α_i + inertial/T².
     columns: Vec<(usize, Bern, Bern, Option<Bern>)>,
@@ -65,9 +68,11 @@ pub struct TensionPolys {
 }
 
 impl TensionPolys {
-    /// The shared polynomials of `sweep` (whose robot has exactly 6 cables) under `load`.
+    /// The shared polynomials of `sweep` (whose robot has as many cables as `load` has wrench
+    /// components: 6, or 3 for a point mass or a planar platform) under `load`.
     pub fn new(sweep: &Sweep, load: &Load) -> TensionPolys {
-        TensionPolys::on(Local::of(sweep, load), (0.0, 1.0), load, &[0, 1, 2, 3, 4, 5])
+        let all: Vec<usize> = (0..load.rows().len()).collect();
+        TensionPolys::on(Local::of(sweep, load), (0.0, 1.0), load, &all)
     }
 
     /// α_i (for a motion run in T seconds, `inv_t2` = 1/T², 0 at rest) and β_i of cable i, if
@@ -86,30 +91,30 @@ impl TensionPolys {
     fn on(local: Local, span: (f64, f64), load: &Load, cables: &[usize]) -> TensionPolys {
         let wrench = &load.wrench;
         let w = &local.weight;
-        let n = structure_numerators(&local, wrench);
+        let rows = load.rows();
+        let dim = rows.len();
+        let n = structure_numerators(&local, wrench, rows);
         let w2 = w.mul(w);
-        // D_w w0 and the row weights w^{k_j}.
-        let row_weight = |j: usize| if j < 3 { w } else { &w2 };
         let mut delta: Option<Bern> = None;
         let mut columns = Vec::with_capacity(cables.len());
         for &i in cables {
-            let others: Vec<usize> = (0..6).filter(|&c| c != i).collect();
+            let others: Vec<usize> = (0..dim).filter(|&c| c != i).collect();
             let minors = minors(&n, &others);
             // Cofactors C_ji = (−1)^{i+j} M_ji; Δ = Σ_j Ñ_ji C_ji; g_j = w^{k_j} C_ji.
-            let cofactors: Vec<Bern> = (0..6).map(|j| if (i + j) % 2 == 0 { minors[j].clone() } else { minors[j].scale(-1.0) }).collect();
+            let cofactors: Vec<Bern> = (0..dim).map(|j| if (i + j) % 2 == 0 { minors[j].clone() } else { minors[j].scale(-1.0) }).collect();
             if delta.is_none() {
-                delta = Some((0..6).fold(Bern::constant(0.0), |d, j| d.add(&n[j][i].mul(&cofactors[j]))));
+                delta = Some((0..dim).fold(Bern::constant(0.0), |d, j| d.add(&n[j][i].mul(&cofactors[j]))));
             }
-            let g: Vec<Bern> = cofactors.iter().enumerate().map(|(j, c)| c.mul(row_weight(j))).collect();
+            let g: Vec<Bern> = cofactors.iter().zip(rows).map(|(c, &row)| c.mul(row_weight(row, w, &w2))).collect();
             // α = Σ C_j (D_w ℓ)_j w^q
-            let dot = |rows: &[Bern; 6]| (0..6).fold(Bern::constant(0.0), |acc, j| acc.add(&cofactors[j].mul(&rows[j])));
+            let dot = |load_rows: &[Bern; 6]| (0..dim).fold(Bern::constant(0.0), |acc, j| acc.add(&cofactors[j].mul(&load_rows[rows[j]])));
             let a = match (&local.load.scale, load.dynamics.is_some()) {
                 // a constant load: α = Σ g_j w0_j
-                (None, false) => Bern::linear_combination(&[0, 1, 2, 3, 4, 5].map(|j| (&g[j], wrench.nominal[j]))),
+                (None, false) => Bern::linear_combination(&(0..dim).map(|j| (&g[j], wrench.nominal[rows[j]])).collect::<Vec<_>>()),
                 _ => dot(&local.load.rows),
             };
             let inertial = local.load.inertial.as_ref().map(dot);
-            let b = local.load.scaled_square(quadratic_form(&g, &wrench.ellipsoid_inv));
+            let b = local.load.scaled_square(quadratic_form(&g, &wrench.ellipsoid_inv, rows));
             columns.push((i, a, b, inertial));
         }
         let len2 = local.len2();

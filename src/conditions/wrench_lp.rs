@@ -40,7 +40,7 @@
 
 use std::rc::Rc;
 
-use nalgebra::{DMatrix, DVector, Vector6};
+use nalgebra::{DMatrix, DVector};
 
 use super::interval::Iv;
 use super::load::{inverse_square, with_inertia};
@@ -74,18 +74,19 @@ impl WrenchFeasibilityLp {
     /// Wrench closure of `m` cables about the point of `load`'s wrench set.
     pub fn closure(load: &Load, m: usize) -> WrenchFeasibilityLp {
         let wrench = crate::model::Wrench { point: load.wrench.point, frame: load.wrench.frame, ..crate::model::Wrench::zero() };
-        WrenchFeasibilityLp { load: Rc::new(Load { wrench, dynamics: None }), bounds: vec![Bounds { min: 1.0, max: f64::INFINITY }; m], closure: true }
+        WrenchFeasibilityLp { load: Rc::new(Load { wrench, dynamics: None, mobility: load.mobility }), bounds: vec![Bounds { min: 1.0, max: f64::INFINITY }; m], closure: true }
     }
 }
 
-/// The scaled system on a piece of the motion: N (6 × m), the load rows at the motion's timing,
+/// The scaled system on a piece of the motion: N (n × m, the wrench components balanced), the
+/// load rows at the motion's timing,
 /// their factor W = w·w^q, and per cable P_k with its first and second derivatives in the
 /// motion's parameter (taken on the whole motion and halved along: derivatives of the local
 /// expansions would carry rounding amplified by the degree at every level), and the piece's width.
 #[derive(Debug, Clone)]
 struct Piece {
-    n: [Vec<Bern>; 6],
-    load: [Bern; 6],
+    n: Vec<Vec<Bern>>,
+    load: Vec<Bern>,
     w: Bern,
     len2: Vec<[Bern; 3]>,
     width: f64,
@@ -94,10 +95,10 @@ struct Piece {
 impl Piece {
     fn of(sweep: &Sweep, load: &Load) -> Piece {
         let local = Local::of(sweep, load);
-        let n = structure_numerators(&local, &load.wrench);
+        let n = structure_numerators(&local, &load.wrench, load.rows());
         let k = inverse_square(sweep.duration);
         let inertial = local.load.inertial.as_ref();
-        let rows = std::array::from_fn(|j| with_inertia(&local.load.rows[j], inertial.map(|r| &r[j]), k));
+        let rows = load.rows().iter().map(|&j| with_inertia(&local.load.rows[j], inertial.map(|r| &r[j]), k)).collect();
         let w = match &local.load.scale {
             Some(q) => local.weight.mul(q),
             None => local.weight.clone(),
@@ -116,17 +117,14 @@ impl Piece {
 
     fn halves(&self) -> (Piece, Piece) {
         let split_all = |ps: &[Bern]| -> (Vec<Bern>, Vec<Bern>) { ps.iter().map(|p| p.split(0.5)).unzip() };
-        let (mut nl, mut nr): ([Vec<Bern>; 6], [Vec<Bern>; 6]) = Default::default();
-        for j in 0..6 {
-            (nl[j], nr[j]) = split_all(&self.n[j]);
-        }
+        let (nl, nr): (Vec<Vec<Bern>>, Vec<Vec<Bern>>) = self.n.iter().map(|row| split_all(row)).unzip();
         // the halves of an array's polynomials, as two arrays (moved, not copied)
         fn split_array<const N: usize>(ps: &[Bern; N]) -> ([Bern; N], [Bern; N]) {
             let (l, r): (Vec<Bern>, Vec<Bern>) = ps.iter().map(|p| p.split(0.5)).unzip();
             let array = |v: Vec<Bern>| v.try_into().unwrap_or_else(|_| unreachable!("N halves of N polynomials"));
             (array(l), array(r))
         }
-        let (ll, lr) = split_array(&self.load);
+        let (ll, lr) = split_all(&self.load);
         let (wl, wr) = self.w.split(0.5);
         let (pl, pr) = self.len2.iter().map(split_array).unzip();
         let width = 0.5 * self.width;
@@ -186,12 +184,12 @@ impl WrenchFeasibilityLp {
             return Truth::Unknown;
         }
         let Some(inv) = piece.len2.iter().map(|p| InverseLength::of(p, piece.width)).collect::<Option<Vec<_>>>() else { return Truth::Unknown };
-        let m = inv.len();
+        let (n, m) = (piece.n.len(), inv.len());
         let wc = piece.w.eval(0.5).0;
-        let nc = DMatrix::from_fn(6, m, |r, k| piece.n[r][k].eval(0.5).0);
+        let nc = DMatrix::from_fn(n, m, |r, k| piece.n[r][k].eval(0.5).0);
         // the scaled structure matrix at the middle: columns n_k·W/L_k, and the load rows
-        let j = DMatrix::from_fn(6, m, |r, k| nc[(r, k)] * wc * inv[k].mid);
-        let b = Vector6::from_fn(|r, _| piece.load[r].eval(0.5).0);
+        let j = DMatrix::from_fn(n, m, |r, k| nc[(r, k)] * wc * inv[k].mid);
+        let b = DVector::from_fn(n, |r, _| piece.load[r].eval(0.5).0);
         match static_margin_of(&j, &b, &self.bounds) {
             Some((t, f)) if t > 0.0 => self.feasible(piece, &inv, &nc, &f, w),
             _ if self.closure => match enclosing_direction(&j) {
@@ -208,34 +206,34 @@ impl WrenchFeasibilityLp {
     /// True when the tensions `f` at the middle, carried along the piece to first order and
     /// corrected, stay strictly within the bounds throughout (module docs).
     fn feasible(&self, piece: &Piece, inv: &[InverseLength], nc: &DMatrix<f64>, f: &[f64], w: Iv) -> Truth {
-        let m = inv.len();
+        let (n, m) = (piece.n.len(), inv.len());
         let wc = piece.w.eval(0.5).0;
         // ψ0_k = s_k f_k; P_r = Σ_k n_rk ψ0_k and ρ0 = load − W P, of which only ρ0'(½) is needed
         let psi0: Vec<[f64; 2]> = inv.iter().zip(f).map(|(i, fk)| [i.s.c[0] * fk, i.s.c[1] * fk]).collect();
         let (wc1, load1) = (piece.w.derivative().eval(0.5).0, |r: usize| piece.load[r].derivative().eval(0.5).0);
         // rows scaled to unit largest entry at the middle
-        let d: Vec<f64> = (0..6).map(|r| 1.0 / nc.row(r).amax()).collect();
+        let d: Vec<f64> = (0..n).map(|r| 1.0 / nc.row(r).amax()).collect();
         if d.iter().any(|x| !x.is_finite()) {
             return Truth::Unknown;
         }
-        let slope = DVector::from_fn(6, |r, _| {
+        let slope = DVector::from_fn(n, |r, _| {
             let p = affine_sum(&piece.n[r], &psi0);
             d[r] * (load1(r) - wc1 * p.eval(0.5).0 - wc * p.derivative().eval(0.5).0) / wc
         });
-        let dn = DMatrix::from_fn(6, m, |r, k| d[r] * nc[(r, k)]);
+        let dn = DMatrix::from_fn(n, m, |r, k| d[r] * nc[(r, k)]);
         let svd = dn.svd(true, true);
         let (smin, smax) = (svd.singular_values.min(), svd.singular_values.max());
         // γ: least-norm solution of N(½) γ = ρ0'(½)/W(½), so that ρ vanishes to first order:
         // ψ_k = s_k f_k + (λ − ½) γ_k and ρ = load − W Σ_k n_k ψ_k
         let Ok(gamma) = svd.solve(&slope, SLACK * smax) else { return Truth::Unknown };
         let psi: Vec<[f64; 2]> = psi0.iter().zip(gamma.iter()).map(|(p, g)| [p[0] - 0.5 * g, p[1] + 0.5 * g]).collect();
-        let residual = (0..6)
+        let residual = (0..n)
             .map(|r| (d[r] * Iv::of(&piece.load[r].sub(&piece.w.mul(&affine_sum(&piece.n[r], &psi)))).mag()).powi(2))
             .sum::<f64>()
             .sqrt();
         // σ_min(D N(λ)) ≥ σ_min(D N(½)) − ‖D (N(λ) − N(½))‖_F
         let mut drift = 0.0;
-        for r in 0..6 {
+        for r in 0..n {
             for k in 0..m {
                 let range = Iv::of(&piece.n[r][k]);
                 let dev = (range.hi - nc[(r, k)]).max(nc[(r, k)] - range.lo) + piece.n[r][k].eval(0.5).1;
@@ -264,15 +262,15 @@ impl WrenchFeasibilityLp {
 
     /// False when the direction `y` keeps y·load above the zonotope's support on the whole piece
     /// (module docs).
-    fn infeasible(&self, piece: &Piece, inv: &[InverseLength], y: &Vector6<f64>, w: Iv) -> Truth {
-        let m = inv.len();
+    fn infeasible(&self, piece: &Piece, inv: &[InverseLength], y: &DVector<f64>, w: Iv) -> Truth {
+        let (n, m) = (piece.n.len(), inv.len());
         // max(f_min a_k, f_max a_k) ≤ α_k + β_k a_k on the range of a_k = y·n_k (the chord of a
         // convex function); the support's polynomial part over W is Σ_k s_k (α_k + β_k a_k) =
         // Σ_k α_k s_k + Σ_r y_r Σ_k β_k s_k n_rk, and Σ_k ε_k |α_k + β_k a_k| bounds the rest
         let (mut constant, mut rest) = ([0.0; 2], 0.0);
         let mut weights = Vec::with_capacity(m);
         for (k, il) in inv.iter().enumerate() {
-            let a = Bern::linear_combination(&(0..6).map(|r| (&piece.n[r][k], y[r])).collect::<Vec<_>>());
+            let a = Bern::linear_combination(&(0..n).map(|r| (&piece.n[r][k], y[r])).collect::<Vec<_>>());
             let range = Iv::of(&a);
             let Bounds { min, max } = self.bounds[k];
             let (alpha, beta) = if range.hi <= 0.0 {
@@ -293,11 +291,11 @@ impl WrenchFeasibilityLp {
             weights.push([beta * il.s.c[0], beta * il.s.c[1]]);
         }
         let mut support = Bern::from_bernstein(constant.to_vec());
-        for r in 0..6 {
+        for r in 0..n {
             let c: Vec<[f64; 2]> = weights.iter().map(|b| [y[r] * b[0], y[r] * b[1]]).collect();
             support = support.add(&affine_sum(&piece.n[r], &c));
         }
-        let excess = Bern::linear_combination(&(0..6).map(|r| (&piece.load[r], y[r])).collect::<Vec<_>>()).sub(&piece.w.mul(&support));
+        let excess = Bern::linear_combination(&(0..n).map(|r| (&piece.load[r], y[r])).collect::<Vec<_>>()).sub(&piece.w.mul(&support));
         if least(&excess) - w.hi * rest - SLACK * excess.max_abs() > 0.0 {
             Truth::False
         } else {
@@ -340,10 +338,10 @@ impl Condition for WrenchFeasibilityLp {
     fn check(&self, at: &PoseCables) -> PoseCheck {
         let wrench = &self.load.wrench;
         if self.closure {
-            let j = crate::query::wrench::structure_matrix_m(&at.cables, &wrench.point_at(&at.pose));
+            let j = crate::query::wrench::structure_matrix_m(&at.cables, &wrench.point_at(&at.pose), self.load.rows());
             return PoseCheck { violated: !closure_by_lp(&j), distance: None };
         }
-        match static_margin(&at.cables, &wrench.point_at(&at.pose), &at.nominal(&self.load), &self.bounds) {
+        match static_margin(&at.cables, &wrench.point_at(&at.pose), &at.nominal(&self.load), &self.bounds, self.load.rows()) {
             Some((margin, _)) => PoseCheck { violated: !(margin > 0.0), distance: Some(margin) },
             None => PoseCheck { violated: true, distance: None },
         }

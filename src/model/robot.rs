@@ -36,6 +36,46 @@ pub struct Cable {
     pub tension: Bounds,
 }
 
+/// How the platform of a platform robot moves, and so which wrench components its cables must
+/// balance (format 5 `robot.mobility`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Mobility {
+    /// A rigid body with six degrees of freedom: forces and moments.
+    #[default]
+    Spatial,
+    /// A point mass (three translations): every cable ends at the point, forces only.
+    Point,
+    /// A rigid body in the plane z = 0 (x, y and a rotation about z): the forces along x and y
+    /// and the moment about z.
+    Planar,
+}
+
+impl Mobility {
+    /// The components of the 6-D wrench [fx, fy, fz, mx, my, mz] the cables balance: all six for
+    /// a spatial platform, the force for a point mass, fx, fy and mz for a planar one.
+    pub fn rows(self) -> &'static [usize] {
+        match self {
+            Mobility::Spatial => &[0, 1, 2, 3, 4, 5],
+            Mobility::Point => &[0, 1, 2],
+            Mobility::Planar => &[0, 1, 5],
+        }
+    }
+
+    /// The number of degrees of freedom (the wrench components balanced).
+    pub fn dof(self) -> usize {
+        self.rows().len()
+    }
+
+    /// The name `robot.mobility` gives it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Mobility::Spatial => "spatial",
+            Mobility::Point => "point",
+            Mobility::Planar => "planar",
+        }
+    }
+}
+
 /// The robot: its cables, the cable diameter (informational; clearances are between
 /// centrelines), and its links if it is a multi-link robot.
 #[derive(Debug, Clone, PartialEq)]
@@ -54,6 +94,8 @@ pub struct Robot {
     pub winch: Winch,
     /// The largest speed of the platform's origin (format 4 `robot.speed`, m/s), if limited.
     pub speed: Option<f64>,
+    /// How the platform moves (format 5; spatial before).
+    pub mobility: Mobility,
 }
 
 /// Minimum distances the verifier enforces, between cable centrelines and from a centreline to an

@@ -3,6 +3,7 @@
 
 use super::dynamics::{Dynamics, Kinematics};
 use super::pose::Pose;
+use super::robot::Mobility;
 use nalgebra::{Matrix6, Vector3, Vector6};
 
 /// Where the wrench's application point is held.
@@ -68,9 +69,16 @@ pub struct Load {
     pub wrench: Wrench,
     /// The platform's rigid-body data, if given.
     pub dynamics: Option<Dynamics>,
+    /// How the platform moves: which wrench components the cables balance.
+    pub mobility: Mobility,
 }
 
 impl Load {
+    /// The wrench components the cables balance ([`Mobility::rows`]).
+    pub fn rows(&self) -> &'static [usize] {
+        self.mobility.rows()
+    }
+
     /// Whether the load is zero everywhere: no nominal wrench and no platform dynamics (whose
     /// weight alone is a load).
     pub fn is_zero(&self) -> bool {

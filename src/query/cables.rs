@@ -23,7 +23,7 @@ pub struct PoseCables {
     pub links: Vec<Frame>,
     /// How the platform moves there, on a timed trajectory; `None`: at rest.
     pub kinematics: Option<Kinematics>,
-    tensions: OnceCell<Option<[TensionRange; 6]>>,
+    tensions: OnceCell<Option<Vec<TensionRange>>>,
 }
 
 impl std::ops::Deref for PoseCables {
@@ -34,10 +34,10 @@ impl std::ops::Deref for PoseCables {
 }
 
 impl PoseCables {
-    /// The six cables' tension ranges under `load` (the scenario's only one), or `None` at a
-    /// singular pose or when the robot does not have six cables.
-    pub fn tension_ranges(&self, load: &Load) -> Option<[TensionRange; 6]> {
-        *self.tensions.get_or_init(|| tension_ranges_at(&self.cables, &load.wrench.point_at(&self.pose), &self.nominal(load), &load.wrench))
+    /// The cables' tension ranges under `load` (the scenario's only one), or `None` at a
+    /// singular pose or when the robot has not as many cables as degrees of freedom.
+    pub fn tension_ranges(&self, load: &Load) -> Option<&[TensionRange]> {
+        self.tensions.get_or_init(|| tension_ranges_at(&self.cables, &load.wrench.point_at(&self.pose), &self.nominal(load), &load.wrench, load.rows())).as_deref()
     }
 
     /// The nominal wrench the cables balance here under `load` (with the platform's weight and,

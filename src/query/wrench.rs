@@ -1,5 +1,11 @@
-//! Per-pose wrench feasibility (Bohigas et al. §3): the tension ranges of a 6-cable robot, wrench
-//! closure, and the wrench set inside the available wrench set for any number of cables.
+//! Per-pose wrench feasibility (Bohigas et al. §3): the tension ranges of a robot with as many
+//! cables as degrees of freedom, wrench closure, and the wrench set inside the available wrench
+//! set for any number of cables.
+//!
+//! A point-mass or planar robot balances only some of the six wrench components
+//! ([`crate::model::Mobility::rows`]): its structure matrix has those rows (n = 3), and every
+//! test below works in that n-dimensional wrench space; wrenches and facet normals are passed and
+//! returned as 6-vectors, the components not balanced ignored (normals zero there).
 //!
 //! The structure matrix J has one column per cable, [e_i ; (x_i − c) × e_i], where e_i is the unit
 //! vector from the base anchor to the platform anchor x_i and c the wrench's application point.
@@ -11,6 +17,20 @@ use crate::model::{Pose, Robot, Wrench};
 use super::lp::{maximise, LpResult};
 use crate::model::Bounds;
 use nalgebra::{DMatrix, DVector, Matrix6, Vector3, Vector6};
+
+/// The components `rows` of the 6-D wrench `w`.
+pub fn select(w: &Vector6<f64>, rows: &[usize]) -> DVector<f64> {
+    DVector::from_iterator(rows.len(), rows.iter().map(|&r| w[r]))
+}
+
+/// The 6-D wrench with components `rows` from `v` (as many), zero elsewhere.
+pub fn embed(v: &DVector<f64>, rows: &[usize]) -> Vector6<f64> {
+    let mut w = Vector6::zeros();
+    for (k, &r) in rows.iter().enumerate() {
+        w[r] = v[k];
+    }
+    w
+}
 
 /// Below this |det J| / Π‖column‖ (Hadamard ratio) a pose counts as singular.
 pub const SINGULAR_RATIO: f64 = 1e-10;
@@ -40,21 +60,25 @@ fn column(base: Vector3<f64>, x: Vector3<f64>, point: &Vector3<f64>) -> Vector6<
     Vector6::new(e.x, e.y, e.z, m.x, m.y, m.z)
 }
 
-/// The 6×m structure matrix of any number of cables.
-pub fn structure_matrix_m(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>) -> DMatrix<f64> {
-    let mut j = DMatrix::zeros(6, cables.len());
+/// The n×m structure matrix of any number of cables: the wrench components `rows` (all six for
+/// a spatial platform) of each column.
+pub fn structure_matrix_m(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, rows: &[usize]) -> DMatrix<f64> {
+    let mut j = DMatrix::zeros(rows.len(), cables.len());
     for (i, &(base, x)) in cables.iter().enumerate() {
-        j.set_column(i, &column(base, x, point));
+        let c = column(base, x, point);
+        for (r, &row) in rows.iter().enumerate() {
+            j[(r, i)] = c[row];
+        }
     }
     j
 }
 
-/// Wrench closure at one pose (m ≥ 6 cables): J has rank 6 and, for every five columns S
-/// spanning a hyperplane, the other columns lie strictly on both sides of it — equivalently, a
-/// strictly positive tension vector lies in J's null space. Determinants below
-/// [`SINGULAR_RATIO`] times the product of the columns' norms count as zero.
-pub fn closure_holds(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>) -> bool {
-    positively_spans(&structure_matrix_m(cables, point))
+/// Wrench closure at one pose (m > n cables, n the wrench components `rows`): J has rank n and,
+/// for every n − 1 columns S spanning a hyperplane, the other columns lie strictly on both sides
+/// of it — equivalently, a strictly positive tension vector lies in J's null space. Determinants
+/// below [`SINGULAR_RATIO`] times the product of the columns' norms count as zero.
+pub fn closure_holds(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, rows: &[usize]) -> bool {
+    positively_spans(&structure_matrix_m(cables, point, rows))
 }
 
 /// Whether the columns of the n×m matrix `j` positively span ℝⁿ: rank n and, for every n − 1
@@ -93,6 +117,11 @@ pub fn positively_spans(j: &DMatrix<f64>) -> bool {
     full_rank
 }
 
+/// C(m, k): how many k-element subsets 0..m has.
+pub fn binomial(m: usize, k: usize) -> usize {
+    (0..k.min(m + 1)).fold(1, |c, i| c * (m - i) / (i + 1))
+}
+
 /// The k-element subsets of 0..m in lexicographic order.
 pub fn subsets(m: usize, k: usize) -> Vec<Vec<usize>> {
     let mut out = Vec::new();
@@ -112,29 +141,29 @@ pub fn subsets(m: usize, k: usize) -> Vec<Vec<usize>> {
     out
 }
 
-/// Static feasibility of the wrench `w0` at one pose (any m ≥ 6): the largest t such that
-/// tensions with f_min + t ≤ f ≤ f_max − t balance w0 (J f = w0), found by a linear program, and
-/// those tensions. Feasible (strictly within the bounds) iff t > 0. `None` if no tensions at all
-/// balance w0 (J f = w0 has no solution).
-pub fn static_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, w0: &Vector6<f64>, bounds: &[Bounds]) -> Option<(f64, Vec<f64>)> {
-    static_margin_of(&structure_matrix_m(cables, point), w0, bounds)
+/// Static feasibility of the wrench `w0` at one pose (any number of cables; its components
+/// `rows`): the largest t such that tensions with f_min + t ≤ f ≤ f_max − t balance w0
+/// (J f = w0), found by a linear program, and those tensions. Feasible (strictly within the
+/// bounds) iff t > 0. `None` if no tensions at all balance w0 (J f = w0 has no solution).
+pub fn static_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, w0: &Vector6<f64>, bounds: &[Bounds], rows: &[usize]) -> Option<(f64, Vec<f64>)> {
+    static_margin_of(&structure_matrix_m(cables, point, rows), &select(w0, rows), bounds)
 }
 
-/// [`static_margin`] for the structure matrix `j` (6×m) itself.
-pub fn static_margin_of(j: &DMatrix<f64>, w0: &Vector6<f64>, bounds: &[Bounds]) -> Option<(f64, Vec<f64>)> {
-    let m = j.ncols();
+/// [`static_margin`] for the structure matrix `j` (n×m) itself and the n components of `w0`.
+pub fn static_margin_of(j: &DMatrix<f64>, w0: &DVector<f64>, bounds: &[Bounds]) -> Option<(f64, Vec<f64>)> {
+    let (n, m) = j.shape();
     // f = f_min + t·1 + g with g ≥ 0 and t = tp − tn; rows: J g + J1 (tp − tn) = w0 − J f_min;
     // g_k + 2 (tp − tn) + s_k = f_max,k − f_min,k for finite f_max; tp + s = CAP.
     let finite: Vec<usize> = (0..m).filter(|&k| bounds[k].max.is_finite()).collect();
     let cap = bounds.iter().map(|b| b.min.abs() + if b.max.is_finite() { b.max.abs() } else { 0.0 }).sum::<f64>() + w0.amax() + 1.0;
     let nvar = m + 2 + finite.len() + 1;
-    let rows = 6 + finite.len() + 1;
+    let rows = n + finite.len() + 1;
     let mut a = DMatrix::zeros(rows, nvar);
     let mut b = DVector::zeros(rows);
     let fmin = DVector::from_iterator(m, bounds.iter().map(|b| b.min));
     let rhs = w0 - j * &fmin;
     let ones = j.column_sum();
-    for r in 0..6 {
+    for r in 0..n {
         for k in 0..m {
             a[(r, k)] = j[(r, k)];
         }
@@ -143,7 +172,7 @@ pub fn static_margin_of(j: &DMatrix<f64>, w0: &Vector6<f64>, bounds: &[Bounds]) 
         b[r] = rhs[r];
     }
     for (i, &k) in finite.iter().enumerate() {
-        let r = 6 + i;
+        let r = n + i;
         a[(r, k)] = 1.0;
         a[(r, m)] = 2.0;
         a[(r, m + 1)] = -2.0;
@@ -163,24 +192,24 @@ pub fn static_margin_of(j: &DMatrix<f64>, w0: &Vector6<f64>, bounds: &[Bounds]) 
 }
 
 /// A wrench direction y (|y_i| ≤ 1) that shows `w0` unbalanced by tensions within their bounds
-/// at the structure matrix `j` (6×m): y·w0 exceeds the support Σ_k max(f_min,k y·j_k,
+/// at the structure matrix `j` (n×m, `w0` its n components): y·w0 exceeds the support Σ_k max(f_min,k y·j_k,
 /// f_max,k y·j_k) of the zonotope {J f : f_min ≤ f ≤ f_max} (with an infinite f_max, y·j_k ≤ 0).
 /// Found by a linear program (the dual of the static-feasibility program); returns y and its
 /// excess as the program computed it (the caller re-checks it), or `None` when no direction has
 /// a positive excess (w0 lies in the zonotope).
-pub fn separating_direction(j: &DMatrix<f64>, w0: &Vector6<f64>, bounds: &[Bounds]) -> Option<(Vector6<f64>, f64)> {
-    let m = j.ncols();
+pub fn separating_direction(j: &DMatrix<f64>, w0: &DVector<f64>, bounds: &[Bounds]) -> Option<(DVector<f64>, f64)> {
+    let (n, m) = j.shape();
     // max(f_min a, f_max a) = f_min a + (f_max − f_min) max(a, 0), a = y·j_k: with v_k ≥ a_k,
     // v_k ≥ 0 (v_k − a_k − s_k = 0), maximise y·w0 − Σ_k (f_min,k a_k + (f_max,k − f_min,k) v_k);
     // an infinite f_max needs a_k ≤ 0 instead (a_k + s_k = 0).
-    // variables: y⁺ (6), y⁻ (6), v (m), s (m), p (6), q (6), all ≥ 0; y = y⁺ − y⁻, y⁺ + p = 1, y⁻ + q = 1
-    let (yp, yn, v, sl, pp, qq) = (0, 6, 12, 12 + m, 12 + 2 * m, 18 + 2 * m);
-    let nvar = 24 + 2 * m;
-    let rows = m + 12;
+    // variables: y⁺ (n), y⁻ (n), v (m), s (m), p (n), q (n), all ≥ 0; y = y⁺ − y⁻, y⁺ + p = 1, y⁻ + q = 1
+    let (yp, yn, v, sl, pp, qq) = (0, n, 2 * n, 2 * n + m, 2 * n + 2 * m, 3 * n + 2 * m);
+    let nvar = 4 * n + 2 * m;
+    let rows = m + 2 * n;
     let mut a = DMatrix::zeros(rows, nvar);
     let mut b = DVector::zeros(rows);
     let mut c = DVector::zeros(nvar);
-    for r in 0..6 {
+    for r in 0..n {
         c[yp + r] = w0[r];
         c[yn + r] = -w0[r];
     }
@@ -194,7 +223,7 @@ pub fn separating_direction(j: &DMatrix<f64>, w0: &Vector6<f64>, bounds: &[Bound
             a[(k, sl + k)] = 1.0;
         }
         let sign = if finite { -1.0 } else { 1.0 };
-        for r in 0..6 {
+        for r in 0..n {
             let d = j[(r, k)];
             a[(k, yp + r)] = sign * d;
             a[(k, yn + r)] = -sign * d;
@@ -203,68 +232,69 @@ pub fn separating_direction(j: &DMatrix<f64>, w0: &Vector6<f64>, bounds: &[Bound
             c[yn + r] += bounds[k].min * d;
         }
     }
-    box_rows(&mut a, &mut b, m, [yp, yn, pp, qq]);
+    box_rows(&mut a, &mut b, m, n, [yp, yn, pp, qq]);
     // an excess within the program's rounding is none
     let size = w0.amax() + j.amax() * bounds.iter().map(|b| b.min.abs().max(if b.max.is_finite() { b.max.abs() } else { 0.0 })).sum::<f64>();
     match maximise(&a, &b, &c) {
-        LpResult::Optimal { x, value } if value > 1e-12 * (1.0 + size) => Some((Vector6::from_fn(|r, _| x[yp + r] - x[yn + r]), value)),
+        LpResult::Optimal { x, value } if value > 1e-12 * (1.0 + size) => Some((DVector::from_fn(n, |r, _| x[yp + r] - x[yn + r]), value)),
         _ => None,
     }
 }
 
-/// Rows `row .. row + 12` of a direction program: y⁺ + p = 1 and y⁻ + q = 1 per component
-/// (|y_i| ≤ 1 for y = y⁺ − y⁻), the variables' first columns given as `[y⁺, y⁻, p, q]`.
-fn box_rows(a: &mut DMatrix<f64>, b: &mut DVector<f64>, row: usize, [yp, yn, pp, qq]: [usize; 4]) {
-    for r in 0..6 {
+/// Rows `row .. row + 2n` of a direction program in n dimensions: y⁺ + p = 1 and y⁻ + q = 1 per
+/// component (|y_i| ≤ 1 for y = y⁺ − y⁻), the variables' first columns given as `[y⁺, y⁻, p, q]`.
+fn box_rows(a: &mut DMatrix<f64>, b: &mut DVector<f64>, row: usize, n: usize, [yp, yn, pp, qq]: [usize; 4]) {
+    for r in 0..n {
         a[(row + r, yp + r)] = 1.0;
         a[(row + r, pp + r)] = 1.0;
         b[row + r] = 1.0;
-        a[(row + 6 + r, yn + r)] = 1.0;
-        a[(row + 6 + r, qq + r)] = 1.0;
-        b[row + 6 + r] = 1.0;
+        a[(row + n + r, yn + r)] = 1.0;
+        a[(row + n + r, qq + r)] = 1.0;
+        b[row + n + r] = 1.0;
     }
 }
 
-/// A direction y (|y_i| ≤ 1) with every column of `j` (6×m) strictly on its negative side:
+/// A direction y (|y_i| ≤ 1) with every column of `j` (n×m) strictly on its negative side:
 /// y·j_k ≤ −s < 0 for all k, with the largest such s (a linear program). It shows that no
 /// strictly positive tensions balance zero: wrench closure fails, robustly. `None` when no
 /// direction has s above the program's rounding.
-pub fn enclosing_direction(j: &DMatrix<f64>) -> Option<Vector6<f64>> {
-    let m = j.ncols();
-    // variables: y⁺ (6), y⁻ (6), s, slacks (m), p (6), q (6), s's cap slack; rows: y·j_k + s +
+pub fn enclosing_direction(j: &DMatrix<f64>) -> Option<DVector<f64>> {
+    let (n, m) = j.shape();
+    // variables: y⁺ (n), y⁻ (n), s, slacks (m), p (n), q (n), s's cap slack; rows: y·j_k + s +
     // slack_k = 0, y⁺ + p = 1, y⁻ + q = 1, s + cap = 1
-    let (yp, yn, sv, sl, pp, qq, cap) = (0, 6, 12, 13, 13 + m, 19 + m, 25 + m);
-    let nvar = 26 + m;
-    let rows = m + 13;
+    let (yp, yn, sv, sl) = (0, n, 2 * n, 2 * n + 1);
+    let (pp, qq, cap) = (sl + m, sl + m + n, sl + m + 2 * n);
+    let nvar = cap + 1;
+    let rows = m + 2 * n + 1;
     let mut a = DMatrix::zeros(rows, nvar);
     let mut b = DVector::zeros(rows);
     for k in 0..m {
-        for r in 0..6 {
+        for r in 0..n {
             a[(k, yp + r)] = j[(r, k)];
             a[(k, yn + r)] = -j[(r, k)];
         }
         a[(k, sv)] = 1.0;
         a[(k, sl + k)] = 1.0;
     }
-    box_rows(&mut a, &mut b, m, [yp, yn, pp, qq]);
-    a[(m + 12, sv)] = 1.0;
-    a[(m + 12, cap)] = 1.0;
-    b[m + 12] = 1.0;
+    box_rows(&mut a, &mut b, m, n, [yp, yn, pp, qq]);
+    a[(m + 2 * n, sv)] = 1.0;
+    a[(m + 2 * n, cap)] = 1.0;
+    b[m + 2 * n] = 1.0;
     let mut c = DVector::zeros(nvar);
     c[sv] = 1.0;
     match maximise(&a, &b, &c) {
-        LpResult::Optimal { x, value } if value > 1e-12 * (1.0 + j.amax()) => Some(Vector6::from_fn(|r, _| x[yp + r] - x[yn + r])),
+        LpResult::Optimal { x, value } if value > 1e-12 * (1.0 + j.amax()) => Some(DVector::from_fn(n, |r, _| x[yp + r] - x[yn + r])),
         _ => None,
     }
 }
 
-/// Wrench closure at one pose by linear programs, for any number of cables: J of rank 6 (its
-/// least singular value above [`SINGULAR_RATIO`] of its largest) and tensions f ≥ 1 with J f = 0
-/// (then a strictly positive null vector exists, and J's columns positively span ℝ⁶).
+/// Wrench closure at one pose by linear programs, for any number of cables: J (n×m) of rank n
+/// (its least singular value above [`SINGULAR_RATIO`] of its largest) and tensions f ≥ 1 with
+/// J f = 0 (then a strictly positive null vector exists, and J's columns positively span ℝⁿ).
 pub fn closure_by_lp(j: &DMatrix<f64>) -> bool {
     let sv = j.clone().svd(false, false).singular_values;
     let unit = vec![Bounds { min: 1.0, max: f64::INFINITY }; j.ncols()];
-    sv.min() > SINGULAR_RATIO * sv.max() && static_margin_of(j, &Vector6::zeros(), &unit).is_some_and(|(t, _)| t >= 0.0)
+    j.ncols() >= j.nrows() && sv.min() > SINGULAR_RATIO * sv.max() && static_margin_of(j, &DVector::zeros(j.nrows()), &unit).is_some_and(|(t, _)| t >= 0.0)
 }
 
 /// Tension range of one cable over the wrench set.
@@ -276,34 +306,40 @@ pub struct TensionRange {
     pub spread: f64,
 }
 
-/// The tension ranges of the six cables at `pose` over the wrench set alone (no weight or inertia
-/// of the platform), or `None` at a singular pose (J not invertible to within [`SINGULAR_RATIO`]).
-pub fn tension_ranges(robot: &Robot, pose: &Pose, wrench: &Wrench) -> Option<[TensionRange; 6]> {
+/// The tension ranges of the cables of a robot with as many cables as degrees of freedom (six
+/// on a spatial platform, three on a point mass or a planar platform) at `pose` over the wrench
+/// set alone (no weight or inertia of the platform), or `None` at a singular pose (J not
+/// invertible to within [`SINGULAR_RATIO`]).
+pub fn tension_ranges(robot: &Robot, pose: &Pose, wrench: &Wrench) -> Option<Vec<TensionRange>> {
     let cables = robot.anchors(pose);
-    tension_ranges_at(&cables, &wrench.point_at(pose), &wrench.nominal, wrench)
+    tension_ranges_at(&cables, &wrench.point_at(pose), &wrench.nominal, wrench, robot.mobility.rows())
 }
 
 /// The tension ranges from the cables' world anchors and the wrench's application point, for the
 /// ellipsoid of `wrench` around `nominal` (the wrench set's own nominal wrench, or that plus the
-/// platform's weight and inertia); `None` also when there are not exactly six cables.
-pub fn tension_ranges_at(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, nominal: &Vector6<f64>, wrench: &Wrench) -> Option<[TensionRange; 6]> {
-    if cables.len() != 6 {
+/// platform's weight and inertia), in the wrench components `rows`; `None` also when there are
+/// not exactly as many cables as components.
+pub fn tension_ranges_at(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, nominal: &Vector6<f64>, wrench: &Wrench, rows: &[usize]) -> Option<Vec<TensionRange>> {
+    let n = rows.len();
+    if cables.len() != n {
         return None;
     }
-    let j = structure_matrix_of(cables, point);
-    let scale: f64 = (0..6).map(|i| j.column(i).norm()).product();
+    let j = structure_matrix_m(cables, point, rows);
+    let scale: f64 = (0..n).map(|i| j.column(i).norm()).product();
     let lu = j.lu();
     if !(lu.determinant().abs() > SINGULAR_RATIO * scale) {
         return None;
     }
     let inv = lu.try_inverse()?;
-    let f0 = inv * nominal;
-    let v = inv * wrench.ellipsoid_inv * inv.transpose();
-    Some(std::array::from_fn(|i| TensionRange { nominal: f0[i], spread: v[(i, i)].max(0.0).sqrt() }))
+    let f0 = &inv * select(nominal, rows);
+    let e_inv = DMatrix::from_fn(n, n, |a, b| wrench.ellipsoid_inv[(rows[a], rows[b])]);
+    let v = &inv * e_inv * inv.transpose();
+    Some((0..n).map(|i| TensionRange { nominal: f0[i], spread: v[(i, i)].max(0.0).sqrt() }).collect())
 }
 
 /// Hyperplane shifting (Gouttefarde & Gosselin; Bouchard et al.): the zonotope
-/// Z(t) = {J f : f_min + t ≤ f ≤ f_max − t} has a facet pair for every set S of five columns
+/// Z(t) = {J f : f_min + t ≤ f ≤ f_max − t} has a facet pair for every set S of five columns (n − 1
+/// in the n wrench components `rows` of a point-mass or planar robot)
 /// spanning a hyperplane, with normal n_S (the cofactors of [J_S | x], so n_S·x = det [J_S | x])
 /// and support h(±n_S) = Σ_k max(±d_k (f_min,k + t), ±d_k (f_max,k − t)), d_k = n_S·j_k. The
 /// ellipsoid W = {w : (w − w0)ᵀE(w − w0) ≤ 1} lies in Z(t) iff for every S,
@@ -312,11 +348,11 @@ pub fn tension_ranges_at(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector
 /// and at most half the narrowest finite tension range (the shrunk box is empty beyond).
 /// The result is that largest t: every wrench of W is balanced within [f_min + t, f_max − t], so
 /// the pose is wrench-feasible iff t > 0; for a single wrench (E⁻¹ = 0) it is the
-/// static-feasibility LP's margin. Any number of cables ≥ 6 (C(m, 5) facets). `None` when J has
-/// rank below 6 (no facet has columns off its hyperplane, or some hyperplane holds them all): W,
-/// or w0, is then balanced nowhere but on that hyperplane, reported as singular.
-pub fn wrench_set_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, nominal: &Vector6<f64>, ellipsoid_inv: &Matrix6<f64>, bounds: &[Bounds]) -> Option<f64> {
-    let facets = facets(&structure_matrix_m(cables, point), bounds)?;
+/// static-feasibility LP's margin. Any number of cables ≥ n (C(m, n − 1) facets). `None` when J
+/// has rank below n (no facet has columns off its hyperplane, or some hyperplane holds them all):
+/// W, or w0, is then balanced nowhere but on that hyperplane, reported as singular.
+pub fn wrench_set_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, nominal: &Vector6<f64>, ellipsoid_inv: &Matrix6<f64>, bounds: &[Bounds], rows: &[usize]) -> Option<f64> {
+    let facets = facets(&structure_matrix_m(cables, point, rows), rows, bounds)?;
     let best = facets
         .iter()
         .map(|f| {
@@ -336,9 +372,9 @@ pub fn wrench_set_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector
 /// moves both sides inward by t·`spread`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Facet {
-    /// Which five columns: the index of the set in [`subsets`]`(m, 5)`'s order.
+    /// Which n − 1 columns: the index of the set in [`subsets`]`(m, n − 1)`'s order.
     pub set: usize,
-    /// n_S, the cofactors of [J_S | x].
+    /// n_S, the cofactors of [J_S | x], as a 6-D wrench (zero in the components not balanced).
     pub normal: Vector6<f64>,
     /// The least n·J f over the tension box.
     pub lower: f64,
@@ -348,14 +384,15 @@ pub struct Facet {
     pub spread: f64,
 }
 
-/// The facet pairs of the zonotope {J f : f_min ≤ f ≤ f_max} of the 6×m structure matrix `j`
-/// (C(m, 5) candidate sets of five columns; those not spanning a hyperplane are skipped), or
-/// `None` when J has rank below 6 (some hyperplane holds every column).
-pub fn facets(j: &DMatrix<f64>, bounds: &[Bounds]) -> Option<Vec<Facet>> {
+/// The facet pairs of the zonotope {J f : f_min ≤ f ≤ f_max} of the n×m structure matrix `j` of
+/// the wrench components `rows` (C(m, n − 1) candidate sets of n − 1 columns; those not spanning a
+/// hyperplane are skipped), or `None` when J has rank below n (some hyperplane holds every
+/// column).
+pub fn facets(j: &DMatrix<f64>, rows: &[usize], bounds: &[Bounds]) -> Option<Vec<Facet>> {
     let m = j.ncols();
     let norms: Vec<f64> = (0..m).map(|i| j.column(i).norm()).collect();
     let mut out = Vec::new();
-    for (set, s) in subsets(m, 5).into_iter().enumerate() {
+    for (set, s) in subsets(m, j.nrows() - 1).into_iter().enumerate() {
         let n = facet_normal(j, &s);
         let scale: f64 = s.iter().map(|&k| norms[k]).product();
         if !(n.norm() > SINGULAR_RATIO * scale) {
@@ -375,17 +412,18 @@ pub fn facets(j: &DMatrix<f64>, bounds: &[Bounds]) -> Option<Vec<Facet>> {
         if spread == 0.0 {
             return None; // every column on this hyperplane: rank 5
         }
-        out.push(Facet { set, normal: n, lower, upper, spread });
+        out.push(Facet { set, normal: embed(&n, rows), lower, upper, spread });
     }
     Some(out)
 }
 
-/// The normal of the hyperplane through the five columns `s` of the 6×m matrix `j`: the cofactors
-/// of the last column of [J_S | x], so that n·x = det [J_S | x].
-pub fn facet_normal(j: &DMatrix<f64>, s: &[usize]) -> Vector6<f64> {
-    Vector6::from_fn(|r, _| {
-        let minor = DMatrix::from_fn(5, 5, |a, b| j[(if a < r { a } else { a + 1 }, s[b])]);
-        let sign = if (r + 5) % 2 == 0 { 1.0 } else { -1.0 };
+/// The normal of the hyperplane through the n − 1 columns `s` of the n×m matrix `j`: the
+/// cofactors of the last column of [J_S | x], so that n·x = det [J_S | x].
+pub fn facet_normal(j: &DMatrix<f64>, s: &[usize]) -> DVector<f64> {
+    let n = j.nrows();
+    DVector::from_fn(n, |r, _| {
+        let minor = DMatrix::from_fn(n - 1, n - 1, |a, b| j[(if a < r { a } else { a + 1 }, s[b])]);
+        let sign = if (r + n - 1) % 2 == 0 { 1.0 } else { -1.0 };
         sign * minor.determinant()
     })
 }
@@ -404,20 +442,22 @@ mod separating_tests {
             ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
         };
         let (mut found, mut none) = (0, 0);
-        for _ in 0..300 {
-            let m = 7 + (rnd().abs() * 10.0) as usize;
-            let j = DMatrix::from_fn(6, m, |_, _| rnd());
-            let w0 = Vector6::from_fn(|_, _| 1.5 * rnd());
+        for round in 0..300 {
+            // six rows (a spatial platform) or three (a point mass, a planar platform)
+            let n = if round % 3 == 0 { 3 } else { 6 };
+            let m = n + 1 + (rnd().abs() * 10.0) as usize;
+            let j = DMatrix::from_fn(n, m, |_, _| rnd());
+            let w0 = DVector::from_fn(n, |_, _| 1.5 * rnd());
             let bounds: Vec<Bounds> = (0..m).map(|_| Bounds { min: 0.1, max: 2.0 }).collect();
             let (t, f) = static_margin_of(&j, &w0, &bounds).expect("full rank");
             let f = DVector::from_vec(f);
-            let residual = (&j * &f - DVector::from_iterator(6, w0.iter().copied())).amax();
+            let residual = (&j * &f - &w0).amax();
             assert!(residual < 1e-9 * (1.0 + w0.amax()), "the margin's tensions leave J f = w0 by {residual} (margin {t})");
             assert!(f.iter().all(|x| *x >= 0.1 + t - 1e-9 && *x <= 2.0 - t + 1e-9), "tensions {f} outside the box shrunk by {t}");
             match separating_direction(&j, &w0, &bounds) {
                 Some((y, excess)) => {
                     let support: f64 = (0..m).map(|k| {
-                        let d = y.dot(&j.column(k).into_owned().fixed_rows::<6>(0).into_owned());
+                        let d = y.dot(&j.column(k));
                         (d * 0.1).max(d * 2.0)
                     }).sum();
                     assert!((y.dot(&w0) - support - excess).abs() < 1e-9 * (1.0 + excess), "excess {excess} vs {}", y.dot(&w0) - support);

@@ -29,10 +29,13 @@ pub const FORMAT_3: &str = "cablenav-scenario/3";
 /// trajectories' `duration`) and the opt-in wrench closure condition (`wrench.closure`). A file
 /// using them must declare it.
 pub const FORMAT_4: &str = "cablenav-scenario/4";
+/// Format version 5: version 4 plus point-mass and planar robots (`robot.mobility`). A file using
+/// them must declare it.
+pub const FORMAT_5: &str = "cablenav-scenario/5";
 
-/// The version number of a format string this reader knows (1 to 4), or `None`.
+/// The version number of a format string this reader knows (1 to 5), or `None`.
 pub fn version(format: &str) -> Option<u8> {
-    [FORMAT, FORMAT_2, FORMAT_3, FORMAT_4].iter().position(|f| *f == format).map(|k| k as u8 + 1)
+    [FORMAT, FORMAT_2, FORMAT_3, FORMAT_4, FORMAT_5].iter().position(|f| *f == format).map(|k| k as u8 + 1)
 }
 
 /// The whole file.
@@ -99,6 +102,9 @@ pub struct RawRobot {
     /// The largest speed of the platform's origin (format 4).
     #[serde(default)]
     pub speed: Option<f64>,
+    /// How the platform moves: "spatial", "point" or "planar" (format 5).
+    #[serde(default)]
+    pub mobility: Option<String>,
 }
 
 /// The platform as a rigid body: mass, centre of mass and inertia about it (platform frame),
@@ -109,7 +115,9 @@ pub struct RawDynamics {
     pub mass: f64,
     #[serde(default)]
     pub com: Option<Fixed<f64, 3>>,
-    pub inertia: Fixed<Fixed<f64, 3>, 3>,
+    /// Required but for a point mass, which has none.
+    #[serde(default)]
+    pub inertia: Option<Fixed<Fixed<f64, 3>, 3>>,
     #[serde(default)]
     pub gravity: Option<Fixed<f64, 3>>,
 }
@@ -179,7 +187,9 @@ pub struct RawBounds {
 #[serde(deny_unknown_fields)]
 pub struct RawCable {
     pub base: Fixed<f64, 3>,
-    pub platform: Fixed<f64, 3>,
+    /// Required but for a point-mass robot, whose cables all end at the point.
+    #[serde(default)]
+    pub platform: Option<Fixed<f64, 3>>,
     /// The link the cable pulls (multi-link robots), by name.
     #[serde(default)]
     pub link: Option<String>,
@@ -339,7 +349,9 @@ pub struct RawKnot {
 #[serde(deny_unknown_fields)]
 pub struct RawPiece {
     pub translation: RawTranslation,
-    pub orientation: RawOrientation,
+    /// Required but for a point-mass robot (its orientation is immaterial).
+    #[serde(default)]
+    pub orientation: Option<RawOrientation>,
 }
 
 /// Exactly one of the three forms (checked in `validate`).
@@ -587,11 +599,11 @@ pub fn parse(text: &str) -> Result<RawScenario> {
     let head: FormatOnly = read(text)?;
     match head.format {
         None => {
-            return Err(Error::new("format", format!("missing; this version reads \"{FORMAT}\" to \"{FORMAT_4}\"")));
+            return Err(Error::new("format", format!("missing; this version reads \"{FORMAT}\" to \"{FORMAT_5}\"")));
         }
         Some(serde_json::Value::String(s)) if version(&s).is_some() => {}
         Some(other) => {
-            return Err(Error::new("format", format!("unsupported format {other}; this version reads \"{FORMAT}\" to \"{FORMAT_4}\"")));
+            return Err(Error::new("format", format!("unsupported format {other}; this version reads \"{FORMAT}\" to \"{FORMAT_5}\"")));
         }
     }
     read(text)

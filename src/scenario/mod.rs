@@ -10,7 +10,7 @@ use crate::error::{Error, Result};
 use crate::model::{Clearance, Coord, Pose, Robot, Trajectory, Wrench};
 use crate::shape::Obstacle;
 
-pub use json::{FORMAT, FORMAT_3, FORMAT_4};
+pub use json::{FORMAT, FORMAT_3, FORMAT_4, FORMAT_5};
 pub use validate::STANDARD_GRAVITY;
 
 /// A planning query between two named poses, optionally on a slice with some coordinates fixed.
@@ -76,7 +76,7 @@ impl Scenario {
         if self.wrench.is_none() && self.robot.dynamics.is_none() {
             return None;
         }
-        Some(crate::model::Load { wrench: self.wrench.clone().unwrap_or_else(Wrench::zero), dynamics: self.robot.dynamics.clone() })
+        Some(crate::model::Load { wrench: self.wrench.clone().unwrap_or_else(Wrench::zero), dynamics: self.robot.dynamics.clone(), mobility: self.robot.mobility })
     }
 
     /// The pose called `name`.

@@ -360,7 +360,7 @@ pub fn wrench_of(s: &Scenario, at: &PoseCables) -> Option<WrenchReport> {
     let load = s.load()?;
     let cables = &s.robot.cables;
     let bad_length = cables.iter().zip(at.iter()).position(|(c, (a, x))| !c.length.contains((x - a).norm()));
-    if cables.len() != 6 {
+    if cables.len() != load.mobility.dof() {
         return Some(facet_report(s, at, &load, bad_length));
     }
     let Some(ranges) = at.tension_ranges(&load) else {
@@ -398,7 +398,7 @@ pub fn wrench_of(s: &Scenario, at: &PoseCables) -> Option<WrenchReport> {
     })
 }
 
-/// The per-pose wrench report of a robot with more than six cables: the margin of the wrench set
+/// The per-pose wrench report of a robot with more cables than degrees of freedom: the margin of the wrench set
 /// inside the available wrench set (hyperplane shifting), the LP's tensions balancing the nominal
 /// load, and wrench closure where the scenario asks for it (`tension_min`/`tension_max` stay
 /// empty: the tensions are not unique).
@@ -407,15 +407,15 @@ fn facet_report(s: &Scenario, at: &PoseCables, load: &Load, bad_length: Option<u
     let point = wrench.point_at(&at.pose);
     let bounds: Vec<Bounds> = s.robot.cables.iter().map(|c| c.tension).collect();
     let closed = !wrench.closure
-        || if bounds.len() <= crate::scenario::validate::MAX_WRENCH_CABLES {
-            closure_holds(&at.cables, &point)
+        || if crate::scenario::validate::facets_enumerable(bounds.len(), load.mobility) {
+            closure_holds(&at.cables, &point, load.rows())
         } else {
-            crate::query::wrench::closure_by_lp(&crate::query::wrench::structure_matrix_m(&at.cables, &point))
+            crate::query::wrench::closure_by_lp(&crate::query::wrench::structure_matrix_m(&at.cables, &point, load.rows()))
         };
     let nominal = at.nominal(load);
-    let lp = static_margin(&at.cables, &point, &nominal, &bounds);
+    let lp = static_margin(&at.cables, &point, &nominal, &bounds, load.rows());
     // a single wrench's margin is the linear program's; an ellipsoid's, hyperplane shifting's
-    let margin = if wrench.is_single() { lp.as_ref().map(|(t, _)| *t) } else { wrench_set_margin(&at.cables, &point, &nominal, &wrench.ellipsoid_inv, &bounds) };
+    let margin = if wrench.is_single() { lp.as_ref().map(|(t, _)| *t) } else { wrench_set_margin(&at.cables, &point, &nominal, &wrench.ellipsoid_inv, &bounds, load.rows()) };
     let tensions = lp.map(|(_, f)| f).unwrap_or_default();
     let active = if let Some(i) = bad_length {
         format!("cable {} length", i + 1)

@@ -16,7 +16,7 @@
 
 use crate::error::Result;
 use crate::model::{Coord, Pose};
-use crate::query::wrench::structure_matrix;
+use crate::query::wrench::structure_matrix_m;
 use crate::scenario::Scenario;
 use std::collections::HashMap;
 
@@ -28,11 +28,12 @@ const ZERO: f64 = 1e-12;
 
 /// The singularity curves (det J = 0) of the slice of `s` through pose `pose_name` over `axes`
 /// and `range`, sampled at the corners of `res` × `res` cells: polylines of points
-/// [first axis, second axis]. Empty for a robot without exactly six cables or a multi-link
-/// robot. Checks its arguments as [`super::slice::slice`] does.
+/// [first axis, second axis]. Empty for a robot without as many cables as degrees of freedom
+/// or a multi-link robot. Checks its arguments as [`super::slice::slice`] does.
 pub fn singularity_curves(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: usize, range: [[f64; 2]; 2]) -> Result<Vec<Vec<[f64; 2]>>> {
     let fixed = super::slice::slice_rows(s, pose_name, axes, res, range, 0..0).and_then(|_| s.config(pose_name))?;
-    if s.robot.chain.is_some() || s.robot.cables.len() != 6 {
+    let rows = s.robot.mobility.rows();
+    if s.robot.chain.is_some() || s.robot.cables.len() != rows.len() {
         return Ok(vec![]);
     }
     let at = |u: f64, v: f64| -> f64 {
@@ -41,7 +42,7 @@ pub fn singularity_curves(s: &Scenario, pose_name: &str, axes: [Coord; 2], res: 
         c[axes[0].index()] = u;
         c[axes[1].index()] = v;
         let pose = Pose::from_coords(c);
-        structure_matrix(&s.robot, &pose, &pose.position).determinant()
+        structure_matrix_m(&s.robot.anchors(&pose), &pose.position, rows).determinant()
     };
     let coord = |a: usize, k: f64| range[a][0] + (range[a][1] - range[a][0]) * k / res as f64;
     let n = res + 1;

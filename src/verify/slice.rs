@@ -124,7 +124,7 @@ fn classify(s: &Scenario, load: Option<&Load>, conditions: &[Box<dyn Condition>]
         return Class::Length;
     }
     if let Some(load) = load {
-        if s.robot.cables.len() == 6 && cables.tension_ranges(load).is_none() {
+        if s.robot.cables.len() == s.robot.mobility.dof() && cables.tension_ranges(load).is_none() {
             return Class::Singular;
         }
     }

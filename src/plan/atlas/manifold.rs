@@ -150,6 +150,9 @@ impl CableManifold {
     pub fn new(scenario: &Scenario, fixed: [Option<f64>; 6], periodic: bool, kappa: f64, min_margin: f64, rotation_length: f64) -> crate::Result<CableManifold> {
         use crate::error::Error;
         let robot = scenario.robot.clone();
+        if robot.mobility != crate::model::Mobility::Spatial {
+            return Err(Error::new("robot.mobility", format!("the atlas planner is for spatial platforms (the 6-D C-space of Bohigas et al.); a {} robot moves in a lower-dimensional space: use the lattice planner", robot.mobility.name())));
+        }
         if robot.cables.len() != 6 {
             return Err(Error::new("robot.cables", format!("the planner needs exactly 6 cables (the wrench model of Bohigas et al.), got {}", robot.cables.len())));
         }

@@ -14,12 +14,14 @@ use super::path::Jet;
 use crate::error::{Error, Result};
 use crate::model::{Bounds, Load};
 use crate::query::cables::cable_rates;
-use crate::query::wrench::{facet_normal, facets, structure_matrix_m, subsets};
+use crate::query::wrench::{binomial, facet_normal, facets, structure_matrix_m, subsets};
 use crate::scenario::Scenario;
-use nalgebra::{Matrix6, Vector3, Vector6};
+use nalgebra::{Matrix6, Vector3};
 
-/// Most cables the timing takes: its tension limits enumerate C(m, 5) facets at every point.
-pub const MAX_TIMING_CABLES: usize = 12;
+/// Most facet pairs the timing's tension limits enumerate at every point: C(m, n − 1) for m
+/// cables and n degrees of freedom, 792 = C(12, 5) (12 cables on a spatial platform, 40 on a
+/// point mass or a planar one).
+pub const MAX_TIMING_FACETS: usize = 792;
 
 /// What a half-plane stands for, to name the binding constraint.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -75,8 +77,9 @@ impl<'a> Limits<'a> {
             return Err(Error::new("--trajectory", "the fastest timing is for platform robots; a multi-link robot has no timed motion yet"));
         }
         let load = s.load();
-        if load.as_ref().is_some_and(|l| l.dynamics.is_some()) && m > MAX_TIMING_CABLES {
-            return Err(Error::new("robot.cables", format!("the fastest timing takes at most {MAX_TIMING_CABLES} cables ({m} given): its tension limits enumerate the C(m, 5) facets of the available wrench set at every point")));
+        let n = s.robot.mobility.dof();
+        if load.as_ref().is_some_and(|l| l.dynamics.is_some()) && binomial(m, n - 1) > MAX_TIMING_FACETS {
+            return Err(Error::new("robot.cables", format!("the fastest timing's tension limits enumerate the C(m, {}) facets of the available wrench set at every point, at most {MAX_TIMING_FACETS} (12 cables on a spatial platform, 40 on a point mass or a planar one); {m} cables give {}", n - 1, binomial(m, n - 1))));
         }
         let limited = s.robot.dynamics.is_some() || s.robot.winch.speed.is_some() || s.robot.winch.acceleration.is_some() || s.robot.speed.is_some();
         if !limited {
@@ -99,8 +102,8 @@ impl<'a> Limits<'a> {
             let w0 = load.nominal_at(pose, None);
             let coefficient = |u: f64, x: f64| load.nominal_at(pose, Some(&jet.kinematics(u, x))) - w0;
             let (au, bx) = (coefficient(1.0, 0.0), coefficient(0.0, 1.0));
-            let j = structure_matrix_m(&cables, &point);
-            let Some(facets) = facets(&j, &self.bounds) else {
+            let j = structure_matrix_m(&cables, &point, load.rows());
+            let Some(facets) = facets(&j, load.rows(), &self.bounds) else {
                 return Err(Error::new("trajectory", format!("the structure matrix is singular at t = {t:.6}: no tensions balance the load there")));
             };
             let e_inv: &Matrix6<f64> = &load.wrench.ellipsoid_inv;
@@ -146,11 +149,11 @@ impl<'a> Limits<'a> {
                 let m = robot.cables.len();
                 let cables = robot.anchors(&jet.pose);
                 let point = self.load.as_ref().map_or(Vector3::zeros(), |l| l.wrench.point_at(&jet.pose));
-                let j = structure_matrix_m(&cables, &point);
-                let Some(five) = subsets(m, 5).into_iter().nth(set) else { return "tensions".to_string() };
-                let n: Vector6<f64> = facet_normal(&j, &five);
+                let j = structure_matrix_m(&cables, &point, robot.mobility.rows());
+                let Some(s) = subsets(m, j.nrows() - 1).into_iter().nth(set) else { return "tensions".to_string() };
+                let n = facet_normal(&j, &s);
                 let sides: Vec<String> = (0..m)
-                    .filter(|k| !five.contains(k))
+                    .filter(|k| !s.contains(k))
                     .filter_map(|k| {
                         let d = n.dot(&j.column(k));
                         (d != 0.0).then(|| format!("cable {} {}", k + 1, if (d > 0.0) == upper { "max" } else { "min" }))

@@ -309,7 +309,7 @@ fn profile(s: &Scenario, cells: &[Cell], rates: &[Rates], jets: &[Jet], law: &[(
         let kin = jet.kinematics(u, x);
         let tensions = load.as_ref().map_or(Vec::new(), |l| {
             let w = l.nominal_at(&jet.pose, Some(&kin));
-            static_margin(&s.robot.anchors(&jet.pose), &l.wrench.point_at(&jet.pose), &w, &bounds).map_or(Vec::new(), |(_, f)| f)
+            static_margin(&s.robot.anchors(&jet.pose), &l.wrench.point_at(&jet.pose), &w, &bounds, l.rows()).map_or(Vec::new(), |(_, f)| f)
         });
         ProfilePoint { t: t_of(c, lam), time: 0.0, rate: x.max(0.0).sqrt() / per_t, speed: kin.velocity.norm(), tensions }
     };

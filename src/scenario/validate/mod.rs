@@ -16,12 +16,12 @@ mod wrench;
 
 use nalgebra::{Cholesky, Const, SMatrix, Vector3};
 
-use super::json::{Fixed, RawScenario, FORMAT_4};
+use super::json::{Fixed, RawScenario, FORMAT_4, FORMAT_5};
 use super::Scenario;
 use crate::error::{finite, Error, Result};
 use crate::model::Pose;
 
-/// Fewest cables of a 6-DoF robot.
+/// Fewest cables of a 6-DoF robot (a point-mass or planar robot needs 3).
 pub const MIN_CABLES: usize = 6;
 /// Most cables supported.
 pub const MAX_CABLES: usize = 64;
@@ -55,8 +55,8 @@ pub const STANDARD_GRAVITY: [f64; 3] = [0.0, 0.0, -9.80665];
 pub fn scenario(raw: RawScenario) -> Result<Scenario> {
     let mut warnings = Vec::new();
     let version = super::json::version(&raw.format).unwrap_or(1);
-    let mut robot = robot::robot(&raw.robot)?;
-    robot.dynamics = robot::dynamics(&raw, version)?;
+    let mut robot = robot::robot(&raw.robot, robot::mobility(&raw.robot, version)?)?;
+    robot.dynamics = robot::dynamics(&raw, version, robot.mobility)?;
     robot.winch = robot::winch(&raw, version)?;
     robot.speed = robot::platform_speed(&raw, version)?;
     let clearance = robot::clearance(&raw)?;
@@ -67,10 +67,12 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
         return Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses: Vec::new(), written_angles: Vec::new(), trajectories: Vec::new(), queries: Vec::new(), wrench: None, configs, joint_paths, warnings });
     }
     let obstacles = obstacles::obstacles(&raw.obstacles)?;
-    let poses = motion::poses(&raw.poses.0, &mut warnings)?;
+    // a point mass has no orientation to give
+    let unoriented = robot.mobility == crate::model::Mobility::Point;
+    let poses = motion::poses(&raw.poses.0, unoriented, &mut warnings)?;
     let written_angles = motion::written_angles(&raw.poses.0);
     motion::check_cable_lengths(&robot, &poses)?;
-    let mut trajectories = motion::trajectories(&raw.trajectories, version >= 2, &poses, &mut warnings)?;
+    let mut trajectories = motion::trajectories(&raw.trajectories, version >= 2, &poses, unoriented, &mut warnings)?;
     motion::durations(&raw, version, &mut trajectories)?;
     let queries = queries::queries(&raw.queries, &poses)?;
     let mut wrench = raw.wrench.as_ref().map(|w| wrench::wrench(w, version)).transpose()?;
@@ -78,24 +80,37 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
         w.closure = wrench::closure(&raw, version)?;
     }
     let m = robot.cables.len();
-    if wrench.as_ref().is_some_and(|w| !w.is_single()) && m > MAX_WRENCH_CABLES {
+    if wrench.as_ref().is_some_and(|w| !w.is_single()) && !facets_enumerable(m, robot.mobility) {
         let field = if raw.wrench.as_ref().is_some_and(|r| r.radius.is_some()) { "wrench.radius" } else { "wrench.ellipsoid" };
+        let n = robot.mobility.dof();
         return Err(Error::new(
             field,
             format!(
-                "a wrench ellipsoid is supported for up to {MAX_WRENCH_CABLES} cables (it is tested against every facet of the \
-                 available wrench set, one per 5 structure-matrix columns; beyond that a single wrench, the platform's \
-                 dynamics and closure are tested by linear programs); this robot has {m}"
+                "a wrench ellipsoid is supported while the available wrench set has at most {MAX_FACETS} facet pairs (it is \
+                 tested against every one, one per {} structure-matrix columns: up to 10 cables on a spatial platform, 23 on a \
+                 point mass or a planar one; beyond that a single wrench, the platform's dynamics and closure are tested by \
+                 linear programs); this robot has {m} cables, {} facet pairs",
+                n - 1,
+                crate::query::wrench::binomial(m, n - 1)
             ),
         ));
     }
     Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses, written_angles, trajectories, queries, wrench, configs, joint_paths: Vec::new(), warnings })
 }
 
-/// Most cables for which the wrench conditions test all C(m, 5) facets of the structure matrix
-/// (252 for 10 cables): a wrench ellipsoid is supported up to this; beyond it a single wrench and
-/// closure are tested by linear programs (`conditions::WrenchFeasibilityLp`).
-pub const MAX_WRENCH_CABLES: usize = 10;
+/// Most facet pairs (sets of n − 1 of the structure matrix's m columns, C(m, n − 1); 252 = C(10, 5))
+/// for which the wrench conditions test them all: a wrench ellipsoid is supported up to this;
+/// beyond it a single wrench and closure are tested by linear programs
+/// (`conditions::WrenchFeasibilityLp`).
+pub const MAX_FACETS: usize = 252;
+
+/// Whether the wrench conditions enumerate the facets of `m` cables for a platform moving as
+/// `mobility` (at most [`MAX_FACETS`] of them): up to 10 cables on a spatial platform, 23 on a
+/// point mass or a planar one.
+pub fn facets_enumerable(m: usize, mobility: crate::model::Mobility) -> bool {
+    crate::query::wrench::binomial(m, mobility.dof() - 1) <= MAX_FACETS
+}
+
 
 /// A finite number at `field`.
 fn num(field: &str, x: f64) -> Result<f64> {
@@ -167,10 +182,11 @@ fn spd<const N: usize>(field: &str, m: &Fixed<Fixed<f64, N>, N>, what: &str) -> 
     Ok(sym)
 }
 
-/// Refuses a format-4 field in a file of an older version.
-fn needs_format_4(version: u8, field: &str) -> Result<()> {
-    if version < 4 {
-        return Err(Error::new(field, format!("needs \"format\": \"{FORMAT_4}\"")));
+/// Refuses a field of format version `least` (4 or 5) in a file of an older version.
+fn needs_format(version: u8, least: u8, field: &str) -> Result<()> {
+    if version < least {
+        let format = if least >= 5 { FORMAT_5 } else { FORMAT_4 };
+        return Err(Error::new(field, format!("needs \"format\": \"{format}\"")));
     }
     Ok(())
 }

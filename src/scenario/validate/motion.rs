@@ -4,14 +4,15 @@
 
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 
-use super::{find_pose, known_poses, max_abs, needs_format_4, num, positive, unique_name, vec3, JOIN_TOLERANCE, MAX_PIECES, UNIT_TOLERANCE};
+use super::{find_pose, known_poses, max_abs, needs_format, num, positive, unique_name, vec3, JOIN_TOLERANCE, MAX_PIECES, UNIT_TOLERANCE};
 use crate::error::{finite, Error, Result};
 use crate::model::trajectory::MAX_DEGREE;
 use crate::model::{Knot, Knots, Orientation, Pose, Profile, Robot, Segment, Trajectory, Translation};
 use crate::scenario::json::{Fixed, QuatRef, RawKnot, RawOrientation, RawPiece, RawPose, RawScenario, RawTrajectory, RawTranslation, FORMAT_2};
 
-/// The named poses, in file order, named uniquely.
-pub(super) fn poses(raw: &[(String, RawPose)], warnings: &mut Vec<String>) -> Result<Vec<(String, Pose)>> {
+/// The named poses, in file order, named uniquely. `unoriented`: an orientation may be omitted
+/// (the identity), as for a point mass, whose orientation is immaterial.
+pub(super) fn poses(raw: &[(String, RawPose)], unoriented: bool, warnings: &mut Vec<String>) -> Result<Vec<(String, Pose)>> {
     let mut out: Vec<(String, Pose)> = Vec::with_capacity(raw.len());
     for (name, p) in raw {
         let path = format!("poses.{name}");
@@ -21,7 +22,7 @@ pub(super) fn poses(raw: &[(String, RawPose)], warnings: &mut Vec<String>) -> Re
         if out.iter().any(|(n, _)| n == name) {
             return Err(Error::new(path, format!("duplicate pose name \"{name}\"")));
         }
-        out.push((name.clone(), pose(&path, p, warnings)?));
+        out.push((name.clone(), pose(&path, p, unoriented, warnings)?));
     }
     Ok(out)
 }
@@ -32,8 +33,9 @@ pub(super) fn written_angles(raw: &[(String, RawPose)]) -> Vec<(String, [f64; 3]
     raw.iter().filter_map(|(name, p)| p.tilt_torsion.as_ref().and_then(|a| angles("", a).ok()).map(|a| (name.clone(), a))).collect()
 }
 
-/// One pose at `path`: its position and exactly one orientation form.
-fn pose(path: &str, p: &RawPose, warnings: &mut Vec<String>) -> Result<Pose> {
+/// One pose at `path`: its position and exactly one orientation form (or, `unoriented`, none: the
+/// identity).
+fn pose(path: &str, p: &RawPose, unoriented: bool, warnings: &mut Vec<String>) -> Result<Pose> {
     let position = vec3(&format!("{path}.position"), &p.position)?;
     let given: Vec<&str> = [
         ("quaternion", p.quaternion.is_some()),
@@ -44,6 +46,9 @@ fn pose(path: &str, p: &RawPose, warnings: &mut Vec<String>) -> Result<Pose> {
     .filter(|(_, present)| *present)
     .map(|(n, _)| *n)
     .collect();
+    if given.is_empty() && unoriented {
+        return Ok(Pose { position, rotation: UnitQuaternion::identity() });
+    }
     if given.len() != 1 {
         let got = if given.is_empty() { "none".to_owned() } else { given.join(" and ") };
         return Err(Error::new(
@@ -118,11 +123,13 @@ pub(super) fn check_cable_lengths(robot: &Robot, poses: &[(String, Pose)]) -> Re
     Ok(())
 }
 
-/// The trajectories of a platform robot, named uniquely; `version_2`: pieces are allowed.
+/// The trajectories of a platform robot, named uniquely; `version_2`: pieces are allowed;
+/// `unoriented`: orientations may be omitted (a constant identity), as for a point mass.
 pub(super) fn trajectories(
     raw: &[RawTrajectory],
     version_2: bool,
     poses: &[(String, Pose)],
+    unoriented: bool,
     warnings: &mut Vec<String>,
 ) -> Result<Vec<Trajectory>> {
     let mut out: Vec<Trajectory> = Vec::with_capacity(raw.len());
@@ -133,7 +140,7 @@ pub(super) fn trajectories(
             if t.pieces.is_some() || t.translation.is_some() || t.orientation.is_some() {
                 return Err(Error::new(format!("{path}.knots"), "give either knots or translation and orientation (or pieces), not both"));
             }
-            out.push(through_knots(&path, t, poses, warnings)?);
+            out.push(through_knots(&path, t, poses, unoriented, warnings)?);
             continue;
         }
         let traj = match (&t.pieces, &t.translation, &t.orientation) {
@@ -144,18 +151,17 @@ pub(super) fn trajectories(
                         format!("piecewise trajectories need \"format\": \"{}\"", FORMAT_2),
                     ));
                 }
-                piecewise(&path, &t.name, pieces, poses, warnings)?
+                piecewise(&path, &t.name, pieces, poses, unoriented, warnings)?
             }
             (Some(_), _, _) => {
                 return Err(Error::new(format!("{path}.pieces"), "give either pieces or translation and orientation, not both"));
             }
-            (None, Some(tr), Some(or)) => Trajectory::single(
+            (None, Some(tr), or) => Trajectory::single(
                 t.name.clone(),
                 translation(&format!("{path}.translation"), tr)?,
-                orientation(&format!("{path}.orientation"), or, poses, warnings)?,
+                orientation(&format!("{path}.orientation"), or.as_ref(), poses, unoriented, warnings)?,
             ),
             (None, None, _) => return Err(Error::new(format!("{path}.translation"), "missing field `translation`")),
-            (None, _, None) => return Err(Error::new(format!("{path}.orientation"), "missing field `orientation`")),
         };
         out.push(traj);
     }
@@ -164,7 +170,7 @@ pub(super) fn trajectories(
 
 /// A piecewise trajectory: 1 to [`MAX_PIECES`] pieces, each starting where the previous ends
 /// (position and rotation within [`JOIN_TOLERANCE`]).
-fn piecewise(path: &str, name: &str, raw: &[RawPiece], poses: &[(String, Pose)], warnings: &mut Vec<String>) -> Result<Trajectory> {
+fn piecewise(path: &str, name: &str, raw: &[RawPiece], poses: &[(String, Pose)], unoriented: bool, warnings: &mut Vec<String>) -> Result<Trajectory> {
     let field = format!("{path}.pieces");
     if raw.is_empty() || raw.len() > MAX_PIECES {
         return Err(Error::new(field, format!("needs 1 to {MAX_PIECES} pieces, got {}", raw.len())));
@@ -174,7 +180,7 @@ fn piecewise(path: &str, name: &str, raw: &[RawPiece], poses: &[(String, Pose)],
         let pf = format!("{field}[{j}]");
         let seg = Segment {
             translation: translation(&format!("{pf}.translation"), &p.translation)?,
-            orientation: orientation(&format!("{pf}.orientation"), &p.orientation, poses, warnings)?,
+            orientation: orientation(&format!("{pf}.orientation"), p.orientation.as_ref(), poses, unoriented, warnings)?,
         };
         if let Some(prev) = pieces.last() {
             let (a, b) = (prev.pose_at(1.0), seg.pose_at(0.0));
@@ -266,13 +272,20 @@ fn translation(path: &str, t: &RawTranslation) -> Result<Translation> {
     Err(Error::new(path, "give exactly one of polynomial, bezier, line"))
 }
 
-/// A slerp between two quaternions, each given or a named pose's.
+/// A slerp between two quaternions, each given or a named pose's; when none is given and
+/// `unoriented`, the constant identity.
 fn orientation(
     path: &str,
-    o: &RawOrientation,
+    o: Option<&RawOrientation>,
     poses: &[(String, Pose)],
+    unoriented: bool,
     warnings: &mut Vec<String>,
 ) -> Result<Orientation> {
+    let o = match o {
+        Some(o) => o,
+        None if unoriented => return Ok(Orientation::Slerp(UnitQuaternion::identity(), UnitQuaternion::identity())),
+        None => return Err(Error::new(path, "missing field `orientation`")),
+    };
     let field = format!("{path}.slerp");
     let mut ends = Vec::with_capacity(2);
     for (i, r) in o.slerp.0.iter().enumerate() {
@@ -313,14 +326,14 @@ fn orientation(
 pub(super) fn durations(raw: &RawScenario, version: u8, trajectories: &mut [Trajectory]) -> Result<()> {
     for (k, (t, out)) in raw.trajectories.iter().zip(trajectories.iter_mut()).enumerate() {
         if t.knots.is_some() {
-            needs_format_4(version, &format!("trajectories[{k}].knots"))?;
+            needs_format(version, 4, &format!("trajectories[{k}].knots"))?;
             if t.duration.is_some() {
                 return Err(Error::new(format!("trajectories[{k}].duration"), "a trajectory through knots takes its time from them: drop duration"));
             }
         }
         if let Some(d) = t.duration {
             let field = format!("trajectories[{k}].duration");
-            needs_format_4(version, &field)?;
+            needs_format(version, 4, &field)?;
             out.duration = Some(positive(&field, d)?);
         }
     }
@@ -330,7 +343,7 @@ pub(super) fn durations(raw: &RawScenario, version: u8, trajectories: &mut [Traj
 /// A trajectory through timed knots (format 4 `spline` and `knots`): two or more knots, the
 /// first at time 0, times strictly increasing; each knot's pose a named pose or a position and
 /// one orientation form; velocities and accelerations (quintic only) finite, zero when absent.
-fn through_knots(path: &str, raw: &RawTrajectory, poses: &[(String, Pose)], warnings: &mut Vec<String>) -> Result<Trajectory> {
+fn through_knots(path: &str, raw: &RawTrajectory, poses: &[(String, Pose)], unoriented: bool, warnings: &mut Vec<String>) -> Result<Trajectory> {
     let profile = match raw.spline.as_deref() {
         None | Some("quintic") => Profile::Quintic,
         Some("cubic") => Profile::Cubic,
@@ -354,7 +367,7 @@ fn through_knots(path: &str, raw: &RawTrajectory, poses: &[(String, Pose)], warn
             }
             _ => {}
         }
-        let pose = knot_pose(&kf, k, poses, warnings)?;
+        let pose = knot_pose(&kf, k, poses, unoriented, warnings)?;
         let velocity = k.velocity.as_ref().map(|v| vec3(&format!("{kf}.velocity"), v)).transpose()?.unwrap_or_else(Vector3::zeros);
         let acceleration = match (&k.acceleration, profile) {
             (Some(_), Profile::Cubic) => {
@@ -369,7 +382,7 @@ fn through_knots(path: &str, raw: &RawTrajectory, poses: &[(String, Pose)], warn
 }
 
 /// A knot's pose: the named pose `pose`, or `position` with one orientation form.
-fn knot_pose(kf: &str, k: &RawKnot, poses: &[(String, Pose)], warnings: &mut Vec<String>) -> Result<Pose> {
+fn knot_pose(kf: &str, k: &RawKnot, poses: &[(String, Pose)], unoriented: bool, warnings: &mut Vec<String>) -> Result<Pose> {
     let inline = k.position.is_some() || k.quaternion.is_some() || k.tilt_torsion.is_some() || k.euler_xyz_deg.is_some();
     match (&k.pose, inline) {
         (Some(_), true) => Err(Error::new(format!("{kf}.pose"), "give a pose name or a position and orientation, not both")),
@@ -381,7 +394,7 @@ fn knot_pose(kf: &str, k: &RawKnot, poses: &[(String, Pose)], warnings: &mut Vec
         (None, _) => {
             let Some(position) = k.position.clone() else { return Err(Error::new(format!("{kf}.position"), "a knot needs a pose name or a position")) };
             let raw = RawPose { position, quaternion: k.quaternion.clone(), tilt_torsion: k.tilt_torsion.clone(), euler_xyz_deg: k.euler_xyz_deg.clone() };
-            pose(kf, &raw, warnings)
+            pose(kf, &raw, unoriented, warnings)
         }
     }
 }

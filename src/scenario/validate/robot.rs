@@ -1,20 +1,67 @@
 //! The robot section: its cables (anchors, length and tension bounds, diameter), the platform's
 //! dynamics and the winches' limits (format 4), and the clearances its cables keep.
 
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Vector3};
 
-use super::{needs_format_4, non_negative, positive, spd, vec3, MAX_CABLES, MIN_CABLES, STANDARD_GRAVITY};
+use super::{needs_format, non_negative, positive, spd, vec3, MAX_CABLES, MIN_CABLES, STANDARD_GRAVITY};
 use crate::error::{Error, Result};
-use crate::model::{Bounds, Cable, Clearance, Dynamics, Robot, Winch};
+use crate::model::{Bounds, Cable, Clearance, Dynamics, Mobility, Robot, Winch};
 use crate::scenario::json::{RawBounds, RawCable, RawCableBounds, RawRobot, RawScenario, RawWinch, ScalarOrList};
 
-/// The robot's cables: at least [`MIN_CABLES`] (one for a multi-link robot), at most
-/// [`MAX_CABLES`], no two on one link with the same anchors; their bounds and the diameter.
-pub(super) fn robot(raw: &RawRobot) -> Result<Robot> {
+/// How the platform moves (`robot.mobility`, format 5): spatial when absent; a multi-link robot's
+/// links move by their joints instead.
+pub(super) fn mobility(raw: &RawRobot, version: u8) -> Result<Mobility> {
+    let Some(name) = &raw.mobility else { return Ok(Mobility::Spatial) };
+    needs_format(version, 5, "robot.mobility")?;
+    let all = [Mobility::Spatial, Mobility::Point, Mobility::Planar];
+    let Some(mobility) = all.into_iter().find(|m| m.name() == name) else {
+        return Err(Error::new("robot.mobility", format!("unknown mobility \"{name}\": expected \"spatial\", \"point\" or \"planar\"")));
+    };
+    if raw.links.is_some() && mobility != Mobility::Spatial {
+        return Err(Error::new("robot.mobility", "a multi-link robot moves by its links' joints: omit robot.mobility"));
+    }
+    Ok(mobility)
+}
+
+/// A cable's platform anchor: given for a spatial or planar platform; omitted (or the origin)
+/// for a point mass, whose cables all end at the point.
+fn platform_anchor(i: usize, c: &RawCable, mobility: Mobility) -> Result<Vector3<f64>> {
+    let field = format!("robot.cables[{i}].platform");
+    match (&c.platform, mobility) {
+        (None, Mobility::Point) => Ok(Vector3::zeros()),
+        (Some(p), Mobility::Point) => {
+            let p = vec3(&field, p)?;
+            if p != Vector3::zeros() {
+                return Err(Error::new(field, format!("a point-mass robot's cables all end at the point: omit it or give [0, 0, 0], got [{}, {}, {}]", p.x, p.y, p.z)));
+            }
+            Ok(p)
+        }
+        (None, _) => Err(Error::new(field, "missing field `platform`: each cable of a rigid platform names its anchor on the platform (only a point mass's cables omit it)")),
+        (Some(p), _) => vec3(&field, p),
+    }
+}
+
+/// For a planar robot, `v` (at `field`) lies in the plane z = 0.
+pub(super) fn in_plane(field: &str, v: &Vector3<f64>, mobility: Mobility) -> Result<()> {
+    if mobility == Mobility::Planar && v.z != 0.0 {
+        return Err(Error::new(format!("{field}[2]"), format!("a planar robot lies in the plane z = 0, got z = {}", v.z)));
+    }
+    Ok(())
+}
+
+/// The robot's cables: at least [`MIN_CABLES`] for a spatial platform, three for a point mass or
+/// a planar platform (one for a multi-link robot), at most [`MAX_CABLES`], no two on one link
+/// with the same anchors; their bounds and the diameter.
+pub(super) fn robot(raw: &RawRobot, mobility: Mobility) -> Result<Robot> {
     let n = raw.cables.len();
-    let least = if raw.links.is_some() { 1 } else { MIN_CABLES };
+    let least = if raw.links.is_some() { 1 } else { MIN_CABLES.min(mobility.dof()) };
     if n < least {
-        let what = if raw.links.is_some() { "a multi-link robot" } else { "a 6-DoF robot" };
+        let what = match (raw.links.is_some(), mobility) {
+            (true, _) => "a multi-link robot",
+            (false, Mobility::Spatial) => "a 6-DoF robot",
+            (false, Mobility::Point) => "a point-mass robot",
+            (false, Mobility::Planar) => "a planar robot",
+        };
         return Err(Error::new("robot.cables", format!("{what} needs at least {least} cable(s), got {n}")));
     }
     if n > MAX_CABLES {
@@ -23,7 +70,9 @@ pub(super) fn robot(raw: &RawRobot) -> Result<Robot> {
     let mut anchors = Vec::with_capacity(n);
     for (i, c) in raw.cables.iter().enumerate() {
         let base = vec3(&format!("robot.cables[{i}].base"), &c.base)?;
-        let platform = vec3(&format!("robot.cables[{i}].platform"), &c.platform)?;
+        in_plane(&format!("robot.cables[{i}].base"), &base, mobility)?;
+        let platform = platform_anchor(i, c, mobility)?;
+        in_plane(&format!("robot.cables[{i}].platform"), &platform, mobility)?;
         for (j, (b, p)) in anchors.iter().enumerate() {
             if *b == base && *p == platform && raw.cables[j].link == c.link {
                 return Err(Error::new(
@@ -51,7 +100,7 @@ pub(super) fn robot(raw: &RawRobot) -> Result<Robot> {
         .zip(tension)
         .map(|(((base, platform), length), tension)| Cable { base, platform, link: 0, length, tension })
         .collect();
-    Ok(Robot { cables, diameter, chain: None, dynamics: None, winch: Winch { speed: None, acceleration: None }, speed: None })
+    Ok(Robot { cables, diameter, chain: None, dynamics: None, winch: Winch { speed: None, acceleration: None }, speed: None, mobility })
 }
 
 /// One value of a bound and the JSON path it came from (empty for the default).
@@ -142,9 +191,9 @@ pub(super) fn clearance(raw: &RawScenario) -> Result<Clearance> {
 /// The platform's dynamics, if given: a positive mass, the centre of mass (default the platform
 /// origin), a symmetric positive definite inertia about it, gravity (default
 /// [`STANDARD_GRAVITY`]).
-pub(super) fn dynamics(raw: &RawScenario, version: u8) -> Result<Option<Dynamics>> {
+pub(super) fn dynamics(raw: &RawScenario, version: u8, mobility: Mobility) -> Result<Option<Dynamics>> {
     let Some(d) = &raw.robot.dynamics else { return Ok(None) };
-    needs_format_4(version, "robot.dynamics")?;
+    needs_format(version, 4, "robot.dynamics")?;
     if raw.robot.links.is_some() {
         return Err(Error::new("robot.dynamics", "not supported for multi-link robots yet: the platform's dynamics apply to a 6-DoF platform"));
     }
@@ -153,7 +202,16 @@ pub(super) fn dynamics(raw: &RawScenario, version: u8) -> Result<Option<Dynamics
         Some(c) => vec3("robot.dynamics.com", c)?,
         None => Vector3::zeros(),
     };
-    let inertia = spd("robot.dynamics.inertia", &d.inertia, "an inertia tensor about the centre of mass is symmetric positive definite (kg·m²)")?;
+    let inertia = match (&d.inertia, mobility) {
+        (None, Mobility::Point) => Matrix3::zeros(),
+        (Some(_), Mobility::Point) => return Err(Error::new("robot.dynamics.inertia", "a point mass has no inertia: omit it")),
+        (None, _) => return Err(Error::new("robot.dynamics.inertia", "missing field `inertia`: a rigid platform's inertia tensor about its centre of mass (kg·m²); only a point mass has none")),
+        (Some(i), _) => spd("robot.dynamics.inertia", i, "an inertia tensor about the centre of mass is symmetric positive definite (kg·m²)")?,
+    };
+    if mobility == Mobility::Point && com != Vector3::zeros() {
+        return Err(Error::new("robot.dynamics.com", "a point mass's centre of mass is the point: omit it or give [0, 0, 0]"));
+    }
+    in_plane("robot.dynamics.com", &com, mobility)?;
     let gravity = match &d.gravity {
         Some(g) => vec3("robot.dynamics.gravity", g)?,
         None => Vector3::from(STANDARD_GRAVITY),
@@ -164,7 +222,7 @@ pub(super) fn dynamics(raw: &RawScenario, version: u8) -> Result<Option<Dynamics
 /// The winches' limits (none when absent); each given limit positive.
 pub(super) fn winch(raw: &RawScenario, version: u8) -> Result<Winch> {
     let Some(RawWinch { speed, acceleration }) = &raw.robot.winch else { return Ok(Winch { speed: None, acceleration: None }) };
-    needs_format_4(version, "robot.winch")?;
+    needs_format(version, 4, "robot.winch")?;
     if raw.robot.links.is_some() {
         return Err(Error::new("robot.winch", "not supported for multi-link robots yet"));
     }
@@ -176,7 +234,7 @@ pub(super) fn winch(raw: &RawScenario, version: u8) -> Result<Winch> {
 /// The largest speed of the platform's origin (none when absent); positive.
 pub(super) fn platform_speed(raw: &RawScenario, version: u8) -> Result<Option<f64>> {
     let Some(v) = raw.robot.speed else { return Ok(None) };
-    needs_format_4(version, "robot.speed")?;
+    needs_format(version, 4, "robot.speed")?;
     if raw.robot.links.is_some() {
         return Err(Error::new("robot.speed", "not supported for multi-link robots yet"));
     }

@@ -3,7 +3,7 @@
 
 use nalgebra::{Matrix6, Vector3, Vector6};
 
-use super::{needs_format_4, num, positive, spd, vec3};
+use super::{needs_format, num, positive, spd, vec3};
 use crate::error::{Error, Result};
 use crate::model::{PointFrame, Wrench};
 use crate::scenario::json::{RawScenario, RawWrench};
@@ -44,7 +44,7 @@ pub(super) fn wrench(raw: &RawWrench, version: u8) -> Result<Wrench> {
 pub(super) fn closure(raw: &RawScenario, version: u8) -> Result<bool> {
     match raw.wrench.as_ref().and_then(|w| w.closure) {
         Some(c) => {
-            needs_format_4(version, "wrench.closure")?;
+            needs_format(version, 4, "wrench.closure")?;
             Ok(c)
         }
         None => Ok(false),
