@@ -1,6 +1,8 @@
 //! CASPR model import: the real model files of ../shared/models/caspr (embedded by path at
-//! compile time, so this also runs under `wasm-pack test --node`; never copied into the repo)
-//! against the numbers written in them and against the thesis preset, plus every refusal.
+//! compile time, so this also runs under `wasm-pack test --node`; not copied into the repo) and
+//! of tests/data/caspr (CASPR's planar and point-mass examples, copied with their source and
+//! license: tests/data/caspr/README.md) against the numbers written in them and against the thesis
+//! preset, plus every refusal.
 
 #[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
@@ -28,6 +30,23 @@ const COGIRO_BODIES: &str = model!("CoGiRo/CoGiRo_bodies.xml");
 const COGIRO_CABLES: &str = model!("CoGiRo/CoGiRo_cables.xml");
 const COGIRO_TRAJECTORIES: &str = model!("CoGiRo/CoGiRo_trajectories.xml");
 const CDPR7_PRESET: &str = include_str!("../static/scenarios/cdpr7.json");
+
+/// A model file of tests/data/caspr (copies of CASPR's, see its README.md).
+macro_rules! data {
+    ($path:literal) => {
+        include_str!(concat!("data/caspr/", $path))
+    };
+}
+
+const PLANAR_BODIES: &str = data!("Example_planar_XY/Example_planar_XY_bodies.xml");
+const PLANAR_CABLES: &str = data!("Example_planar_XY/Example_planar_XY_cables.xml");
+const PLANAR_TRAJECTORIES: &str = data!("Example_planar_XY/Example_planar_XY_trajectories.xml");
+const POINT_BODIES: &str = data!("Example_point_XZ/Example_point_XZ_bodies.xml");
+const POINT_CABLES: &str = data!("Example_point_XZ/Example_point_XZ_cables.xml");
+const POINT_TRAJECTORIES: &str = data!("Example_point_XZ/Example_point_XZ_trajectories.xml");
+const KNTU_BODIES: &str = data!("KNTU_planar/KNTU_planar_bodies.xml");
+const KNTU_CABLES: &str = data!("KNTU_planar/KNTU_planar_cables.xml");
+const KNTU_TRAJECTORIES: &str = data!("KNTU_planar/KNTU_planar_trajectories.xml");
 
 fn v(x: f64, y: f64, z: f64) -> Vector3<f64> {
     Vector3::new(x, y, z)
@@ -298,4 +317,230 @@ fn trajectories_import_as_timed_splines() {
     // a multi-link model's trajectories are not read, with a note
     let out = model_to_json("arm", ARM_BODIES, ARM_CABLES, Some(COGIRO_TRAJECTORIES), None).unwrap();
     assert!(out.notes.iter().any(|n| n.contains("multi-link")), "{:?}", out.notes);
+}
+
+/// CASPR's Example_planar_XY (a `PLANAR_XY` joint: q = x y θ, θ about z) imports as a planar
+/// robot (format 5): its anchors, tension bounds, mass and inertia as written, the pose `initial`
+/// at q_initial, and its quintic and cubic splines as knots in the plane z = 0 turning about z only
+/// (the other kinds skipped with a note); `verify` runs on it and agrees with CASPR's names: the
+/// trajectory "example_quintic" is feasible, "example_infeasible" is not where it stops at x = 1.
+#[test]
+fn the_planar_example_imports_as_a_planar_robot() {
+    use cablenav::model::Mobility;
+    use cablenav::scenario::caspr::model_to_json;
+    let out = model_to_json("Example_planar_XY", PLANAR_BODIES, PLANAR_CABLES, Some(PLANAR_TRAJECTORIES), None).unwrap();
+    for skipped in ["example_linear", "example_cubic_average_velocity", "example_parabolic_blend", "example_file"] {
+        assert!(out.notes.iter().any(|n| n.contains(&format!("id=\"{skipped}\"")) && n.contains("skipped")), "{skipped}: {:?}", out.notes);
+    }
+    assert!(out.notes.iter().any(|n| n.contains("cable set \"basic\" of 3")), "{:?}", out.notes);
+    assert_eq!(out.notes.len(), 5, "{:?}", out.notes);
+
+    // the JSON as written: format 5, every position in z = 0, every rotation about z
+    let json: serde_json::Value = serde_json::from_str(&out.json).unwrap();
+    assert_eq!(json["format"], "cablenav-scenario/5");
+    assert_eq!(json["robot"]["mobility"], "planar");
+    assert_eq!(json["poses"]["initial"]["position"], serde_json::json!([0.5, 0.5, 0.0]));
+    assert_eq!(json["poses"]["initial"]["euler_xyz_deg"], serde_json::json!([0.0, 0.0, 0.0]));
+    let mut knots = 0;
+    for t in json["trajectories"].as_array().unwrap() {
+        for k in t["knots"].as_array().into_iter().flatten() {
+            knots += 1;
+            assert_eq!(k["position"][2], 0.0, "{k}");
+            assert_eq!((&k["euler_xyz_deg"][0], &k["euler_xyz_deg"][1]), (&0.0.into(), &0.0.into()), "{k}");
+            assert_eq!(k["velocity"][2], 0.0, "{k}");
+        }
+    }
+    assert_eq!(knots, 2 + 2 + 3 + 3 + 3 + 3 + 2 + 3 + 3);
+
+    // the scenario
+    let s = Scenario::from_json(&out.json).unwrap();
+    assert_eq!(s.robot.mobility, Mobility::Planar);
+    let bases = [v(0.0, 0.0, 0.0), v(1.0, 0.0, 0.0), v(1.0, 1.0, 0.0), v(0.0, 1.0, 0.0)];
+    let platforms = [v(-0.125, 0.0, 0.0), v(0.125, 0.0, 0.0), v(0.125, 0.0, 0.0), v(-0.125, 0.0, 0.0)];
+    assert_eq!(s.robot.cables.len(), 4);
+    for (i, c) in s.robot.cables.iter().enumerate() {
+        assert_eq!((c.base, c.platform), (bases[i], platforms[i]), "cable {}", i + 1);
+        assert_eq!((c.tension.min, c.tension.max), (0.01, 1000.0), "cable {}", i + 1);
+    }
+    let d = s.robot.dynamics.as_ref().expect("mass 10");
+    assert_eq!((d.mass, d.com, d.gravity), (10.0, v(0.0, 0.0, 0.0), v(0.0, 0.0, -9.81)));
+    assert_eq!(d.inertia, nalgebra::Matrix3::identity() * 10.0);
+    let initial = s.pose("initial").unwrap();
+    assert_eq!(initial.position, v(0.5, 0.5, 0.0));
+    assert_eq!(initial.rotation.angle(), 0.0);
+    let names: Vec<&str> = s.trajectories.iter().map(|t| t.name.as_str()).collect();
+    assert_eq!(
+        names,
+        [
+            "hold initial",
+            "example_cubic",
+            "example_quintic",
+            "example_infeasible",
+            "example_inside",
+            "setpoint_eMPC_infeasible",
+            "example_outside1",
+            "example_outside1_alt",
+            "example_outside2",
+            "example_outside3"
+        ]
+    );
+    for t in &s.trajectories {
+        for k in t.knots.iter().flat_map(|k| &k.points) {
+            assert_eq!(k.pose.position.z, 0.0, "{}", t.name);
+            assert_eq!((k.pose.rotation.i, k.pose.rotation.j), (0.0, 0.0), "{}: a rotation about z", t.name);
+        }
+    }
+    // relative times; θ = 0.3 about z at the end of example_outside3
+    let inside = s.trajectory(Some("example_inside")).unwrap().knots.as_ref().unwrap();
+    assert_eq!(inside.points.iter().map(|k| k.time).collect::<Vec<_>>(), [0.0, 5.0, 10.0]);
+    let turned = s.trajectory(Some("example_outside3")).unwrap().knots.as_ref().unwrap().points[2].pose;
+    assert_eq!(turned.position, v(0.3, 0.5, 0.0));
+    let about_z = nalgebra::UnitQuaternion::from_axis_angle(&Vector3::z_axis(), 0.3);
+    assert!(turned.rotation.angle_to(&about_z) < 1e-12, "{:?}", turned.rotation);
+    assert_eq!(s.trajectory(Some("example_cubic")).unwrap().duration, Some(5.0));
+
+    // verify: the wrench conditions in fx, fy, mz
+    let report = check_pose(&s, "initial", initial);
+    assert!(report.wrench.as_ref().is_some_and(|w| w.feasible), "{:?}", report.wrench);
+    let quintic = cablenav::verify::verify_trajectory(&s, s.trajectory(Some("example_quintic")).unwrap()).unwrap();
+    assert_eq!((quintic.feasible.as_slice(), quintic.uncertain.len()), (&[[0.0, 1.0]][..], 0), "{quintic:?}");
+    // it stops at x = 1 (t = 0.5), where all four cables pull towards −x: no tension balances that
+    let stop = cablenav::verify::verify_trajectory(&s, s.trajectory(Some("example_infeasible")).unwrap()).unwrap();
+    assert!(stop.infeasible.iter().any(|[a, b]| *a < 0.5 && 0.5 < *b), "{stop:?}");
+    assert!(stop.feasible.iter().any(|[a, _]| *a == 0.0), "{stop:?}");
+
+    // another cable set of the file
+    let cross = Scenario::from_json(&model_to_json("x", PLANAR_BODIES, PLANAR_CABLES, None, Some("basic_cross")).unwrap().json).unwrap();
+    assert_eq!(cross.robot.cables[0].platform, v(-0.1, 0.05, 0.0));
+    assert_eq!(cross.robot.mobility, Mobility::Planar);
+}
+
+/// KNTU_planar (also `PLANAR_XY`) imports too; its inertia (Izz alone) is not positive definite,
+/// which a planar platform would not need but `robot.dynamics` does: imported massless, and the
+/// note says why.
+#[test]
+fn kntu_planar_imports_massless_with_a_note() {
+    use cablenav::scenario::caspr::model_to_json;
+    let out = model_to_json("KNTU_planar", KNTU_BODIES, KNTU_CABLES, Some(KNTU_TRAJECTORIES), None).unwrap();
+    assert!(out.notes.iter().any(|n| n.contains("massless") && n.contains("turns about z only")), "{:?}", out.notes);
+    assert!(out.notes.iter().any(|n| n.contains("no quintic or cubic spline")), "{:?}", out.notes);
+    let s = Scenario::from_json(&out.json).unwrap();
+    assert_eq!(s.robot.mobility, cablenav::model::Mobility::Planar);
+    assert!(s.robot.dynamics.is_none());
+    assert_eq!(s.robot.cables[1].base, v(-1.12, 1.05, 0.0));
+    assert_eq!(s.robot.cables[2].platform, v(0.15, 0.0, 0.0));
+    assert_eq!(s.robot.cables[3].tension.max, 60.0);
+    assert!(check_pose(&s, "initial", s.pose("initial").unwrap()).feasible);
+}
+
+/// What a planar import refuses, naming the element: anything out of the plane z = 0, a turn of
+/// half a turn or more between two points of a spline, an angular rate at a point, a `q` of the
+/// wrong length, and planar joints in other planes.
+#[test]
+fn planar_refusals_name_the_element() {
+    use cablenav::scenario::caspr::model_to_json;
+    let e = err(PLANAR_BODIES, &PLANAR_CABLES.replacen("<location>1.0 1.0 0.0</location>", "<location>1.0 1.0 0.2</location>", 1));
+    assert!(e.field == "cables" && e.reason.contains("cable \"cable 3\" (line 38)") && e.reason.contains("base anchor") && e.reason.contains("z = 0"), "{e}");
+    let e = err(PLANAR_BODIES, &PLANAR_CABLES.replacen("<location>0.125 0 0</location>", "<location>0.125 0 0.01</location>", 1));
+    assert!(e.field == "cables" && e.reason.contains("cable \"cable 2\"") && e.reason.contains("platform anchor"), "{e}");
+    let high = PLANAR_BODIES.replace("<location>0.0 0.0 0.0</location>", "<location>0.0 0.0 1.0</location>");
+    let e = err(&high, PLANAR_CABLES);
+    assert!(e.field == "bodies" && e.reason.contains("line 21") && e.reason.contains("z = 1"), "{e}");
+    let e = err(&PLANAR_BODIES.replace("<com_location>0.0 0.0 0.0</com_location>", "<com_location>0.0 0.0 0.1</com_location>"), PLANAR_CABLES);
+    assert!(e.field == "bodies" && e.reason.contains("centre of mass"), "{e}");
+    let e = err(&PLANAR_BODIES.replace("q_initial=\"0.5 0.5 0\"", "q_initial=\"0.5 0.5 0 0 0 0\""), PLANAR_CABLES);
+    assert!(e.reason.contains("line 7") && e.reason.contains("needs 3 numbers"), "{e}");
+    for other in ["PLANAR_XZ", "PLANAR_YZ"] {
+        let e = err(&PLANAR_BODIES.replace("PLANAR_XY", other), PLANAR_CABLES);
+        assert!(e.field == "bodies" && e.reason.contains(&format!("line 7: <joint type=\"{other}\">")) && e.reason.contains("plane z = 0"), "{e}");
+    }
+    let traj = |xml: &str| model_to_json("x", PLANAR_BODIES, PLANAR_CABLES, Some(xml), None).unwrap_err();
+    let e = traj(&PLANAR_TRAJECTORIES.replace("<q>0.3 0.5 0.3</q>", "<q>0.3 0.5 3.3</q>"));
+    assert!(e.field == "trajectories" && e.reason.contains("example_outside3") && e.reason.contains("half a turn"), "{e}");
+    let e = traj(&PLANAR_TRAJECTORIES.replacen("<q_dot>0.0 0.0 0.0</q_dot>", "<q_dot>0.1 0.0 0.2</q_dot>", 1));
+    assert!(e.reason.contains("line 17") && e.reason.contains("angular rate"), "{e}");
+    let e = traj(&PLANAR_TRAJECTORIES.replacen("<q>0.3 0.5 0.0</q>\n                    <q_dot>", "<q>0.3 0.5 0.0 0</q>\n                    <q_dot>", 1));
+    assert!(e.reason.contains("needs 3 numbers"), "{e}");
+}
+
+/// CASPR's Example_point_XZ (`P_XZ`: a point moving in the XZ plane, 2 DoF) is refused naming the
+/// joint: cablenav's point masses move in 3-D, and its cables, all in the plane y = 0, could not
+/// hold one across it; `P_XY` (2_DoF_VSD) likewise.
+#[test]
+fn the_point_example_is_refused_naming_its_joint() {
+    use cablenav::scenario::caspr::model_to_json;
+    let e = model_to_json("Example_point_XZ", POINT_BODIES, POINT_CABLES, Some(POINT_TRAJECTORIES), None).unwrap_err();
+    assert_eq!(e.field, "bodies");
+    assert!(e.reason.starts_with("line 6: <joint type=\"P_XZ\">: a point moving in the XZ plane (2 DoF) is not supported"), "{e}");
+    assert!(e.reason.contains("T_XYZ") && e.reason.contains("PLANAR_XY"), "{e}");
+    let e = err(&POINT_BODIES.replace("P_XZ", "P_XY"), POINT_CABLES);
+    assert!(e.reason.contains("<joint type=\"P_XY\">") && e.reason.contains("XY plane"), "{e}");
+}
+
+/// CASPR's 3-D translational joint `T_XYZ` (q = x y z; no model of CASPR's uses it, so
+/// Example_point_XZ is edited into one) imports as a point mass (format 5 mobility "point"): the
+/// cables omit their platform anchor, the dynamics the inertia and centre of mass, poses and knots
+/// their orientation. Cables must all end at one point of the link (the cable that does not is
+/// named); a common point off the joint moves the positions by it, with a note.
+#[test]
+fn a_t_xyz_link_imports_as_a_point_mass() {
+    use cablenav::scenario::caspr::model_to_json;
+    let bodies = POINT_BODIES
+        .replace("type=\"P_XZ\" q_initial=\"1.0 1.0\" q_min=\"0.0 -2.0\" q_max=\"2.0 2.0\"", "type=\"T_XYZ\" q_initial=\"0.0 0.1 0.2\" q_min=\"-1 -1 -1\" q_max=\"1 1 1\"")
+        .replace("<mass>5</mass>", "<mass>1</mass>");
+    // the 4-cable set, its base anchors moved off the plane y = 0 (a regular tetrahedron)
+    let cables = POINT_CABLES
+        .replace("default_cable_set=\"3_cables\"", "default_cable_set=\"4_cables\"")
+        .replace("<location>0.5 0.0 0.5</location>", "<location>0.5 0.5 0.5</location>")
+        .replace("<location>-0.5 0.0 0.5</location>", "<location>-0.5 -0.5 0.5</location>")
+        .replace("<location>-0.5 0.0 -0.5</location>", "<location>-0.5 0.5 -0.5</location>")
+        .replace("<location>0.5 0.0 -0.5</location>", "<location>0.5 -0.5 -0.5</location>");
+    assert!(bodies.contains("T_XYZ") && cables.contains("-0.5 0.5 -0.5"), "the test edits must apply");
+    let trajectories = POINT_TRAJECTORIES.replace("<q>0.0 -0.1</q>", "<q>0.0 0.0 -0.1</q>").replace("<q>0.0 0.1</q>", "<q>0.0 0.0 0.1</q>").replace("<q>0.0 0.0</q>", "<q>0.0 0.0 0.0</q>").replace("0.0 0.0</q_dot>", "0.0 0.0 0.0</q_dot>").replace("0.0 0.0</q_ddot>", "0.0 0.0 0.0</q_ddot>");
+    let out = model_to_json("point", &bodies, &cables, Some(&trajectories), None).unwrap();
+    assert_eq!(out.notes.len(), 1, "{:?}", out.notes); // the cable set
+    let json: serde_json::Value = serde_json::from_str(&out.json).unwrap();
+    assert_eq!(json["format"], "cablenav-scenario/5");
+    assert_eq!(json["robot"]["mobility"], "point");
+    assert!(json["robot"]["cables"].as_array().unwrap().iter().all(|c| c.get("platform").is_none()));
+    assert_eq!(json["robot"]["dynamics"], serde_json::json!({"mass": 1.0, "gravity": [0.0, 0.0, -9.81]}));
+    assert_eq!(json["poses"]["initial"], serde_json::json!({"position": [0.0, 0.1, 0.2]}));
+    assert!(!out.json.contains("euler_xyz_deg") && !out.json.contains("slerp"), "{}", out.json);
+
+    let s = Scenario::from_json(&out.json).unwrap();
+    assert_eq!(s.robot.mobility, cablenav::model::Mobility::Point);
+    assert_eq!(s.robot.cables[2].base, v(-0.5, 0.5, -0.5));
+    assert!(s.robot.cables.iter().all(|c| c.platform == v(0.0, 0.0, 0.0)));
+    assert_eq!((c_tension(&s), s.robot.dynamics.as_ref().unwrap().mass), ((5.0, 50.0), 1.0));
+    assert_eq!(s.pose("initial").unwrap().position, v(0.0, 0.1, 0.2));
+    let up = s.trajectory(Some("traj_bottom_to_top")).unwrap().knots.as_ref().unwrap();
+    assert_eq!((up.points[1].time, up.points[1].pose.position), (4.0, v(0.0, 0.0, 0.1)));
+    let report = check_pose(&s, "initial", s.pose("initial").unwrap());
+    assert!(report.wrench.as_ref().is_some_and(|w| w.feasible), "{:?}", report.wrench);
+
+    // a cable ending elsewhere on the link is named
+    let mut apart = cables.clone();
+    let last = apart.rfind("<location>0 0 0</location>").unwrap();
+    apart.replace_range(last..last + "<location>0 0 0</location>".len(), "<location>0 0 0.1</location>");
+    let e = err(&bodies, &apart);
+    assert!(e.field == "cables" && e.reason.contains("cable \"cable 4\"") && e.reason.contains("point mass"), "{e}");
+    // all ending at the centre of mass, off the joint: the positions move by it
+    let off = bodies.replace("<com_location>0.0 0.0 0.0</com_location>", "<com_location>0.1 0.0 0.0</com_location>");
+    let out = model_to_json("point", &off, &cables, Some(&trajectories), None).unwrap();
+    assert!(out.notes.iter().any(|n| n.contains("[0.1, 0.0, 0.0]")), "{:?}", out.notes);
+    let s = Scenario::from_json(&out.json).unwrap();
+    assert_eq!(s.pose("initial").unwrap().position, v(0.1, 0.1, 0.2));
+    assert_eq!(s.trajectory(Some("traj_bottom_to_top")).unwrap().knots.as_ref().unwrap().points[0].pose.position, v(0.1, 0.0, -0.1));
+    // an inertia is left out, with a note
+    let spinning = bodies.replace("<Izz>0.0</Izz>", "<Izz>0.5</Izz>");
+    let out = model_to_json("point", &spinning, &cables, None, None).unwrap();
+    assert!(out.notes.iter().any(|n| n.contains("inertia") && n.contains("left out")), "{:?}", out.notes);
+    // Example_point_XZ's own trajectories give two coordinates
+    let e = model_to_json("point", &bodies, &cables, Some(POINT_TRAJECTORIES), None).unwrap_err();
+    assert!(e.field == "trajectories" && e.reason.contains("needs 3 numbers"), "{e}");
+}
+
+/// The robot-level tension bounds of the first cable.
+fn c_tension(s: &Scenario) -> (f64, f64) {
+    (s.robot.cables[0].tension.min, s.robot.cables[0].tension.max)
 }

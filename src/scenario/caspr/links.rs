@@ -35,13 +35,15 @@ const BODIES: &str = "bodies";
 const CABLES: &str = "cables";
 
 /// Whether a bodies file describes a multi-link robot: more than one link, or one whose joint is
-/// not the free `SPATIAL_EULER_XYZ` of a platform.
+/// none of the platform joints [`super::platform::LONE_LINK_JOINTS`] (`SPATIAL_EULER_XYZ`,
+/// `PLANAR_XY`, `T_XYZ`, and the reduced point and planar joints `platform.rs` refuses by name):
+/// a lone revolute, prismatic, universal or spherical link is an arm of one link.
 pub(super) fn is_multi_link(bodies_xml: &str) -> bool {
     let Ok(doc) = parse_xml(bodies_xml) else { return false };
     let Some(links) = child(doc.root_element(), "links") else { return false };
     let all: Vec<Node> = links.children().filter(|c| c.is_element()).collect();
     match all.as_slice() {
-        [one] => child(*one, "joint").and_then(|j| j.attribute("type")).is_some_and(|t| t != "SPATIAL_EULER_XYZ"),
+        [one] => child(*one, "joint").and_then(|j| j.attribute("type")).is_some_and(|t| !super::platform::LONE_LINK_JOINTS.contains(&t)),
         more => more.len() > 1,
     }
 }
@@ -223,6 +225,7 @@ pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str, set: Optio
         format: FORMAT_3,
         name,
         robot: OutRobot {
+            mobility: None,
             dynamics: None,
             links: Some(links
                 .iter()
@@ -239,7 +242,7 @@ pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str, set: Optio
                 .map(|c| OutCable {
                     base: c.base,
                     link: link_name(c.link),
-                    platform: c.anchor,
+                    platform: Some(c.anchor),
                     tension: per_cable.then_some(OutCableBounds { min: c.props[0], max: c.props[1] }),
                 })
                 .collect(),

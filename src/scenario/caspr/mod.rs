@@ -1,13 +1,19 @@
 //! Import of CASPR robot models (the XML "bodies" and "cables" files of CASPR, the Cable-robot
-//! Analysis and Simulation Platform for Research) into a `cablenav-scenario/1` scenario.
+//! Analysis and Simulation Platform for Research) into a scenario (`cablenav-scenario/1`, or a
+//! later format when the model needs it).
 //!
 //! What is read:
 //!
 //! * bodies: exactly one rigid link (the platform) with a `SPATIAL_EULER_XYZ` joint on the
 //!   base (parent 0). Its `q_initial = "x y z a b g"` becomes the pose `initial`: position
 //!   (x, y, z) plus the parent `location`, orientation R = Rx(a)·Ry(b)·Rz(g) with the angles in
-//!   radians (written as `euler_xyz_deg`). Multi-link robots (arms, trees) are read by
-//!   `links.rs` into a `cablenav-scenario/3` scenario.
+//!   radians (written as `euler_xyz_deg`). A lone `PLANAR_XY` link (q = x y θ) is a planar robot
+//!   (`cablenav-scenario/5`, `robot.mobility` "planar": position (x, y, 0) plus the location,
+//!   R = Rz(θ)) when its joint, centre of mass and every anchor lie in z = 0; a lone `T_XYZ` link
+//!   (q = x y z) a point mass ("point") when its cables all end at one point of it. The reduced
+//!   joints `P_XY`/`P_XZ` (a point in a plane, 2 DoF) and `PLANAR_XZ`/`PLANAR_YZ` are refused
+//!   naming the joint (`platform.rs`). Multi-link robots (arms, trees, a lone link on another
+//!   joint) are read by `links.rs` into a `cablenav-scenario/3` scenario.
 //! * cables: the `default_cable_set` (or the only set); every `cable_*` element with two
 //!   attachments, one on link 0 (the base anchor, world frame) and one on link 1 (the platform
 //!   anchor). With `attachment_reference="com"` the platform location is relative to the
@@ -19,7 +25,7 @@
 //!   `robot.dynamics` (format 4) with CASPR's gravity, 9.81 m/s² down the base's z axis; an
 //!   inertia given about the joint (`ref="joint"`) is moved to the centre of mass (parallel axes).
 //!   A link without a positive mass and a positive definite inertia is imported massless, with a
-//!   note.
+//!   note. A point mass keeps its mass alone.
 //!
 //! The scenario also gets one trajectory, `hold initial`, that stays at the initial pose, as a
 //! starting point for editing. Everything else (clearances, obstacles, length bounds) is left at
@@ -44,7 +50,7 @@ use xml::parse_xml;
 /// An imported model: the scenario JSON and what the user should know about the conversion.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Import {
-    /// The scenario, as `cablenav-scenario/1` JSON text (pretty-printed).
+    /// The scenario, as `cablenav-scenario/1` to `/5` JSON text (pretty-printed).
     pub json: String,
     /// Notes on the conversion (values combined or left out).
     pub notes: Vec<String>,

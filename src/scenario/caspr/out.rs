@@ -44,9 +44,13 @@ fn combine(values: impl Iterator<Item = Option<f64>>) -> Option<OneOrEach> {
     Some(if all.iter().all(|x| *x == first) { OneOrEach::One(first) } else { OneOrEach::Each(all) })
 }
 
-/// The robot as written: its links (multi-link robots only), cables, tension bounds, diameter.
+/// The robot as written: how its platform moves (format 5; point-mass and planar platforms
+/// only), its links (multi-link robots only), cables, tension bounds, diameter.
 #[derive(Serialize)]
 pub(super) struct OutRobot {
+    /// `"point"` or `"planar"` (format 5); absent for a spatial platform and a multi-link robot.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) mobility: Option<&'static str>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) links: Option<Vec<OutLink>>,
     pub(super) cables: Vec<OutCable>,
@@ -59,23 +63,26 @@ pub(super) struct OutRobot {
     pub(super) dynamics: Option<OutDynamics>,
 }
 
-/// `robot.dynamics` as written.
+/// `robot.dynamics` as written; a point mass has neither centre of mass nor inertia.
 #[derive(Serialize)]
 pub(super) struct OutDynamics {
     pub(super) mass: f64,
-    pub(super) com: [f64; 3],
-    pub(super) inertia: [[f64; 3]; 3],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) com: Option<[f64; 3]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) inertia: Option<[[f64; 3]; 3]>,
     pub(super) gravity: [f64; 3],
 }
 
 /// A cable as written: its base anchor, the link it pulls (multi-link robots only), its anchor
-/// there, its own tension bounds.
+/// there (none for a point mass: the cable ends at the point), its own tension bounds.
 #[derive(Serialize)]
 pub(super) struct OutCable {
     pub(super) base: [f64; 3],
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) link: Option<String>,
-    pub(super) platform: [f64; 3],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) platform: Option<[f64; 3]>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) tension: Option<OutCableBounds>,
 }

@@ -1,7 +1,11 @@
-//! The reader of a platform robot (one rigid link on a `SPATIAL_EULER_XYZ` joint): the platform
-//! link with its physical data, its cables, and the scenario with the pose `initial` and the
-//! trajectory `hold initial` (format 1; format 4 with dynamics or the trajectories file's
-//! splines). The module doc of [`super`] says what is read.
+//! The reader of a platform robot: one rigid link on the base whose joint moves it freely — a
+//! 6-DoF platform (`SPATIAL_EULER_XYZ`), a platform in the plane z = 0 (`PLANAR_XY`, format 5
+//! `robot.mobility` "planar") or a point mass (`T_XYZ`, "point") —: the platform link with its
+//! physical data, its cables, and the scenario with the pose `initial` and the trajectory `hold
+//! initial` (format 1; format 4 with dynamics or the trajectories file's splines; format 5 for a
+//! planar platform or a point mass). CASPR's reduced point and planar joints (`P_XY`, `P_XZ`,
+//! `PLANAR_XZ`, `PLANAR_YZ`) are refused naming the joint. The module doc of [`super`] says what
+//! is read.
 
 use roxmltree::Node;
 use serde::Serialize;
@@ -9,28 +13,110 @@ use std::collections::BTreeMap;
 
 use super::out::{OutCable, OutCableBounds, OutDynamics, OutRobot, Properties};
 use super::trajectories::{splines, OutSpline};
-use super::xml::{cable_set, child, child_numbers, children, document, line, numbers, properties};
+use super::xml::{cable_set, child, child_numbers, children, document, line, numbers_n, properties};
 use super::Import;
 use crate::error::{Error, Result};
-use crate::scenario::{FORMAT, FORMAT_4};
+use crate::model::Mobility;
+use crate::scenario::{FORMAT, FORMAT_4, FORMAT_5};
+
+/// The joint types of a lone link on the base that this reader takes: imported as a platform
+/// ([`mobility_of`]) or refused by name ([`reduced`]). [`super::links::is_multi_link`] leaves
+/// every other lone link (revolute, prismatic, universal, spherical) to the multi-link reader.
+pub(super) const LONE_LINK_JOINTS: [&str; 7] = ["SPATIAL_EULER_XYZ", "PLANAR_XY", "T_XYZ", "P_XY", "P_XZ", "PLANAR_XZ", "PLANAR_YZ"];
+
+/// How a platform joint moves its link, as CASPR's joint classes define it: `SPATIAL_EULER_XYZ`
+/// (q = x y z a b g, R = Rx(a)·Ry(b)·Rz(g)), `PLANAR_XY` (q = x y θ: the translation (x, y, 0),
+/// R = Rz(θ)), `T_XYZ` (q = x y z, no rotation).
+fn mobility_of(joint: &str) -> Option<Mobility> {
+    match joint {
+        "SPATIAL_EULER_XYZ" => Some(Mobility::Spatial),
+        "PLANAR_XY" => Some(Mobility::Planar),
+        "T_XYZ" => Some(Mobility::Point),
+        _ => None,
+    }
+}
+
+/// Why a lone link's reduced joint cannot be imported, or `None`: a point in a plane (2 DoF) is
+/// not a 3-D point mass (its cables, all in that plane, would leave one free across it), and a
+/// planar platform moves in z = 0 only.
+fn reduced(joint: &str) -> Option<String> {
+    match joint {
+        "P_XY" | "P_XZ" => Some(format!(
+            "a point moving in the {} plane (2 DoF) is not supported: cablenav's point masses move in 3-D (T_XYZ, \
+             robot.mobility \"point\"; cables in one plane cannot hold one across it) and its planar robots are rigid \
+             platforms moving in the plane z = 0 (PLANAR_XY, robot.mobility \"planar\")",
+            &joint[2..]
+        )),
+        "PLANAR_XZ" | "PLANAR_YZ" => Some(format!(
+            "a platform moving in the {} plane is not supported: cablenav's planar robots move in the plane z = 0 \
+             (PLANAR_XY, robot.mobility \"planar\")",
+            &joint[7..]
+        )),
+        _ => None,
+    }
+}
+
+/// The number of coordinates (q) of a platform joint.
+pub(super) fn coordinates(mobility: Mobility) -> usize {
+    match mobility {
+        Mobility::Spatial => 6,
+        Mobility::Planar | Mobility::Point => 3,
+    }
+}
+
+/// Where joint coordinates `q` put the platform: its position (`origin` plus the joint's
+/// translation) and its XYZ Euler angles in radians (none for a point mass).
+pub(super) fn place(mobility: Mobility, origin: [f64; 3], q: &[f64]) -> ([f64; 3], Option<[f64; 3]>) {
+    match mobility {
+        Mobility::Spatial => ([origin[0] + q[0], origin[1] + q[1], origin[2] + q[2]], Some([q[3], q[4], q[5]])),
+        Mobility::Planar => ([origin[0] + q[0], origin[1] + q[1], origin[2]], Some([0.0, 0.0, q[2]])),
+        Mobility::Point => ([origin[0] + q[0], origin[1] + q[1], origin[2] + q[2]], None),
+    }
+}
+
+/// A joint rate (`q_dot`, `q_ddot`) split into its linear part, a 3-vector, and its angular
+/// part.
+pub(super) fn split_rate(mobility: Mobility, v: &[f64]) -> ([f64; 3], &[f64]) {
+    match mobility {
+        Mobility::Spatial => ([v[0], v[1], v[2]], &v[3..]),
+        Mobility::Planar => ([v[0], v[1], 0.0], &v[2..]),
+        Mobility::Point => ([v[0], v[1], v[2]], &[]),
+    }
+}
 
 /// Converts a platform robot's bodies and cables files, and its trajectories file when given, into
 /// scenario JSON called `name`.
 pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str, trajectories_xml: Option<&str>, set: Option<&str>) -> Result<Import> {
-    let platform = platform(bodies_xml)?;
+    let mut platform = platform(bodies_xml)?;
     let cables = cables(cables_xml, &platform, set)?;
     let mut notes = Vec::new();
+    let point = platform.mobility == Mobility::Point;
+    if point {
+        // the point mass is where its cables end on the link (one point, checked by `cables`)
+        let end = cables[0].platform;
+        platform.origin = [0, 1, 2].map(|i| platform.origin[i] + end[i]);
+        if end != [0.0; 3] {
+            notes.push(format!("the cables end at {end:?} in the T_XYZ link's frame: the point mass's position is the joint's plus that"));
+        }
+    }
+    let (position, euler_rad) = place(platform.mobility, platform.origin, &platform.q);
     let splines = match trajectories_xml {
-        Some(xml) => splines(xml, platform.origin, &mut notes)?,
+        Some(xml) => splines(xml, platform.mobility, platform.origin, &mut notes)?,
         None => Vec::new(),
     };
     let Properties { diameter, tension, per_cable } = Properties::of(cables.iter().map(|c| [c.force_min, c.force_max, c.diameter]).collect(), &mut notes);
 
-    let dynamics = platform.physical.and_then(|ph| ph.dynamics(&mut notes));
+    let dynamics = platform.physical.and_then(|ph| ph.dynamics(platform.mobility, &mut notes));
+    let format = match platform.mobility {
+        Mobility::Point | Mobility::Planar => FORMAT_5,
+        Mobility::Spatial if dynamics.is_some() || !splines.is_empty() => FORMAT_4,
+        Mobility::Spatial => FORMAT,
+    };
     let out = OutScenario {
-        format: if dynamics.is_some() || !splines.is_empty() { FORMAT_4 } else { FORMAT },
+        format,
         name,
         robot: OutRobot {
+            mobility: (platform.mobility != Mobility::Spatial).then_some(platform.mobility.name()),
             dynamics,
             links: None,
             cables: cables
@@ -38,21 +124,18 @@ pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str, trajectori
                 .map(|c| OutCable {
                     base: c.base,
                     link: None,
-                    platform: c.platform,
+                    platform: (!point).then_some(c.platform),
                     tension: per_cable.then_some(OutCableBounds { min: c.force_min, max: c.force_max }),
                 })
                 .collect(),
             tension,
             diameter,
         },
-        poses: BTreeMap::from([(
-            "initial",
-            OutPose { position: platform.position, euler_xyz_deg: platform.euler_rad.map(f64::to_degrees) },
-        )]),
+        poses: BTreeMap::from([("initial", OutPose { position, euler_xyz_deg: euler_rad.map(|e| e.map(f64::to_degrees)) })]),
         trajectories: std::iter::once(OutTrajectory::Hold {
             name: "hold initial",
-            translation: OutLine { line: [platform.position, platform.position] },
-            orientation: OutSlerp { slerp: ["initial", "initial"] },
+            translation: OutLine { line: [position, position] },
+            orientation: (!point).then_some(OutSlerp { slerp: ["initial", "initial"] }),
         })
         .chain(splines.into_iter().map(OutTrajectory::Spline))
         .collect(),
@@ -88,7 +171,18 @@ struct Physical {
 impl Physical {
     /// `robot.dynamics`, the inertia moved to the centre of mass; `None` (with a note) for data
     /// that gives no rigid body: a mass that is not positive, an inertia not positive definite.
-    fn dynamics(&self, notes: &mut Vec<String>) -> Option<OutDynamics> {
+    /// A point mass keeps its mass alone (a note says when an inertia is left out).
+    fn dynamics(&self, mobility: Mobility, notes: &mut Vec<String>) -> Option<OutDynamics> {
+        if mobility == Mobility::Point {
+            if !(self.mass > 0.0) {
+                notes.push(format!("the point mass's mass {} is not positive; imported massless", self.mass));
+                return None;
+            }
+            if self.inertia.iter().any(|x| *x != 0.0) {
+                notes.push(format!("the T_XYZ link's inertia {:?} is left out: a point mass does not turn", self.inertia));
+            }
+            return Some(OutDynamics { mass: self.mass, com: None, inertia: None, gravity: CASPR_GRAVITY });
+        }
         let [xx, yy, zz, xy, xz, yz] = self.inertia;
         let mut i = nalgebra::Matrix3::new(xx, xy, xz, xy, yy, yz, xz, yz, zz);
         if self.about_joint {
@@ -97,20 +191,29 @@ impl Physical {
             i -= (nalgebra::Matrix3::identity() * c.norm_squared() - c * c.transpose()) * self.mass;
         }
         if !(self.mass > 0.0) || nalgebra::Cholesky::new(i).is_none() {
-            notes.push(format!("the platform's physical data (mass {}, inertia about its centre of mass {:?}) is not a rigid body; imported massless", self.mass, i.as_slice()));
+            let planar = if mobility == Mobility::Planar && self.mass > 0.0 && i[(2, 2)] > 0.0 {
+                " (a planar platform turns about z only, but robot.dynamics.inertia must be positive definite)"
+            } else {
+                ""
+            };
+            notes.push(format!("the platform's physical data (mass {}, inertia about its centre of mass {:?}) is not a rigid body{planar}; imported massless", self.mass, i.as_slice()));
             return None;
         }
-        Some(OutDynamics { mass: self.mass, com: self.com, inertia: [0, 1, 2].map(|r| [0, 1, 2].map(|c| i[(r, c)])), gravity: CASPR_GRAVITY })
+        Some(OutDynamics { mass: self.mass, com: Some(self.com), inertia: Some([0, 1, 2].map(|r| [0, 1, 2].map(|c| i[(r, c)]))), gravity: CASPR_GRAVITY })
     }
 }
 
-/// A link's `<physical>` element, if it has one with a `<mass>`.
-fn physical(node: Node) -> Result<Option<Physical>> {
+/// A link's `<physical>` element, if it has one with a `<mass>`; `point`: the link is a point
+/// mass, whose inertia may be left out.
+fn physical(node: Node, point: bool) -> Result<Option<Physical>> {
     const FILE: &str = "bodies";
     let Some(ph) = child(node, "physical") else { return Ok(None) };
     let Some([mass]) = child_numbers::<1>(FILE, ph, "mass")? else { return Ok(None) };
     let com = child_numbers::<3>(FILE, ph, "com_location")?.unwrap_or([0.0; 3]);
     let Some(inertia) = child(ph, "inertia") else {
+        if point {
+            return Ok(Some(Physical { mass, com, inertia: [0.0; 6], about_joint: false }));
+        }
         return Err(Error::new(FILE, format!("{}: <physical> has a <mass> but no <inertia>", line(ph))));
     };
     let about_joint = match inertia.attribute("ref").unwrap_or("com") {
@@ -128,14 +231,22 @@ fn physical(node: Node) -> Result<Option<Physical>> {
 #[derive(Serialize)]
 struct OutPose {
     position: [f64; 3],
-    euler_xyz_deg: [f64; 3],
+    /// None for a point mass.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    euler_xyz_deg: Option<[f64; 3]>,
 }
 
 /// A trajectory as written: the initial pose held, or a spline of the trajectories file.
 #[derive(Serialize)]
 #[serde(untagged)]
 enum OutTrajectory {
-    Hold { name: &'static str, translation: OutLine, orientation: OutSlerp },
+    Hold {
+        name: &'static str,
+        translation: OutLine,
+        /// None for a point mass.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        orientation: Option<OutSlerp>,
+    },
     Spline(OutSpline),
 }
 
@@ -150,14 +261,15 @@ struct OutSlerp {
 }
 
 /// The platform link as the cables need it.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 struct Platform {
-    /// The parent location: where q's position counts from.
+    /// How its joint moves it.
+    mobility: Mobility,
+    /// The parent location: where q's position counts from (for a point mass, [`to_json`] adds
+    /// the point's place on the link).
     origin: [f64; 3],
-    /// Initial position (parent location + q_initial's x, y, z).
-    position: [f64; 3],
-    /// Initial XYZ Euler angles in radians.
-    euler_rad: [f64; 3],
+    /// `q_initial`, as many coordinates as the joint has ([`coordinates`]).
+    q: Vec<f64>,
     /// The centre of mass in the link frame (for `attachment_reference="com"`).
     com: [f64; 3],
     /// Its physical data, if given.
@@ -174,7 +286,8 @@ struct RawCable {
     diameter: Option<f64>,
 }
 
-/// The platform link: one `<link_rigid>` with a `SPATIAL_EULER_XYZ` joint on the base.
+/// The platform link: one `<link_rigid>` on the base with a `SPATIAL_EULER_XYZ`, `PLANAR_XY` (its
+/// joint and centre of mass in z = 0) or `T_XYZ` joint.
 fn platform(xml: &str) -> Result<Platform> {
     const FILE: &str = "bodies";
     let doc = document(FILE, xml, "bodies_system")?;
@@ -185,8 +298,8 @@ fn platform(xml: &str) -> Result<Platform> {
         return Err(Error::new(
             FILE,
             format!(
-                "{} links; only a single rigid platform (one <link_rigid> with a SPATIAL_EULER_XYZ joint on the \
-                 base) can be imported — multi-link robots (arms, trees) are not supported",
+                "{} links; only a single rigid platform (one <link_rigid> with a SPATIAL_EULER_XYZ, PLANAR_XY or T_XYZ \
+                 joint on the base) can be imported — multi-link robots (arms, trees) are not supported",
                 all.len()
             ),
         ));
@@ -196,15 +309,22 @@ fn platform(xml: &str) -> Result<Platform> {
     }
     let joint = child(*link, "joint").ok_or_else(|| Error::new(FILE, format!("{}: the link has no <joint>", line(*link))))?;
     let kind = joint.attribute("type").unwrap_or_default();
-    if kind != "SPATIAL_EULER_XYZ" {
+    if let Some(why) = reduced(kind) {
+        return Err(Error::new(FILE, format!("{}: <joint type=\"{kind}\">: {why}", line(joint))));
+    }
+    let Some(mobility) = mobility_of(kind) else {
         return Err(Error::new(
             FILE,
-            format!("{}: joint type {kind:?} is not supported; a 6-DoF platform needs SPATIAL_EULER_XYZ", line(joint)),
+            format!(
+                "{}: joint type {kind:?} is not supported; a platform needs SPATIAL_EULER_XYZ (6 DoF), PLANAR_XY (planar) or \
+                 T_XYZ (a point mass)",
+                line(joint)
+            ),
         ));
-    }
-    let q: [f64; 6] = match joint.attribute("q_initial") {
-        Some(text) => numbers(FILE, joint, "q_initial", text)?,
-        None => [0.0; 6],
+    };
+    let q = match joint.attribute("q_initial") {
+        Some(text) => numbers_n(FILE, joint, "q_initial", text, coordinates(mobility))?,
+        None => vec![0.0; coordinates(mobility)],
     };
     let (parent_location, parent_num) = match child(*link, "parent") {
         None => ([0.0; 3], 0.0),
@@ -220,17 +340,25 @@ fn platform(xml: &str) -> Result<Platform> {
         Some(ph) => child_numbers::<3>(FILE, ph, "com_location")?.unwrap_or([0.0; 3]),
         None => [0.0; 3],
     };
-    Ok(Platform {
-        origin: parent_location,
-        position: [parent_location[0] + q[0], parent_location[1] + q[1], parent_location[2] + q[2]],
-        euler_rad: [q[3], q[4], q[5]],
-        com,
-        physical: physical(*link)?,
-    })
+    if mobility == Mobility::Planar {
+        let off_plane = |node: Node, what: &str, z: f64| -> Result<()> {
+            if z != 0.0 {
+                return Err(Error::new(
+                    FILE,
+                    format!("{}: {what} is at z = {z}; a PLANAR_XY platform is imported as a planar robot (robot.mobility \"planar\"), which lies in the plane z = 0", line(node)),
+                ));
+            }
+            Ok(())
+        };
+        off_plane(child(*link, "parent").unwrap_or(*link), "the joint (<parent> <location>)", parent_location[2])?;
+        off_plane(child(*link, "physical").unwrap_or(*link), "the centre of mass (<com_location>)", com[2])?;
+    }
+    Ok(Platform { mobility, origin: parent_location, q, com, physical: physical(*link, mobility == Mobility::Point)? })
 }
 
 /// The cables of the cable set (`set`, else the default one), each from the base (link 0) to the
-/// platform (link 1).
+/// platform (link 1): for a planar platform both anchors in z = 0, for a point mass all ending at
+/// one point of the link.
 fn cables(xml: &str, platform: &Platform, set: Option<&str>) -> Result<Vec<RawCable>> {
     const FILE: &str = "cables";
     let doc = document(FILE, xml, "cables")?;
@@ -268,10 +396,60 @@ fn cables(xml: &str, platform: &Platform, set: Option<&str>) -> Result<Vec<RawCa
             "com" => [local[0] + platform.com[0], local[1] + platform.com[1], local[2] + platform.com[2]],
             other => return Err(Error::new(FILE, format!("{at}: attachment_reference {other:?} is not \"joint\" or \"com\""))),
         };
+        match platform.mobility {
+            Mobility::Planar => {
+                for (what, p) in [("base", base), ("platform", platform_anchor)] {
+                    if p[2] != 0.0 {
+                        return Err(Error::new(
+                            FILE,
+                            format!("{at}: its {what} anchor {p:?} is out of the plane z = 0; a PLANAR_XY platform is imported as a planar robot (robot.mobility \"planar\"), whose anchors all lie in z = 0"),
+                        ));
+                    }
+                }
+            }
+            Mobility::Point => {
+                if let Some(first) = out.first().map(|c: &RawCable| c.platform).filter(|f| *f != platform_anchor) {
+                    return Err(Error::new(
+                        FILE,
+                        format!("{at}: it ends at {platform_anchor:?} on link 1, the first cable at {first:?}; a T_XYZ link is imported as a point mass (robot.mobility \"point\"), whose cables all end at the point"),
+                    ));
+                }
+            }
+            Mobility::Spatial => {}
+        }
         out.push(RawCable { base, platform: platform_anchor, force_min, force_max, diameter });
     }
     if out.is_empty() {
         return Err(Error::new(FILE, "the cable set has no cables"));
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every joint a lone link is read by here is either imported or refused by name, never both;
+    /// and the multi-link reader takes the others.
+    #[test]
+    fn lone_link_joints_are_imported_or_refused() {
+        for joint in LONE_LINK_JOINTS {
+            assert!(mobility_of(joint).is_some() != reduced(joint).is_some(), "{joint}");
+            let bodies = format!(r#"<bodies_system><links><link_rigid num="1"><joint type="{joint}"/></link_rigid></links></bodies_system>"#);
+            assert!(!super::super::links::is_multi_link(&bodies), "{joint}");
+        }
+        let arm = r#"<bodies_system><links><link_rigid num="1"><joint type="R_X"/></link_rigid></links></bodies_system>"#;
+        assert!(super::super::links::is_multi_link(arm));
+    }
+
+    /// CASPR's coordinates: PLANAR_XY's q = x y θ (θ about z), T_XYZ's q = x y z.
+    #[test]
+    fn coordinates_place_the_platform() {
+        let o = [1.0, 2.0, 0.0];
+        assert_eq!(place(Mobility::Planar, o, &[0.5, 0.25, 0.3]), ([1.5, 2.25, 0.0], Some([0.0, 0.0, 0.3])));
+        assert_eq!(place(Mobility::Point, o, &[0.5, 0.25, 0.3]), ([1.5, 2.25, 0.3], None));
+        assert_eq!(place(Mobility::Spatial, o, &[0.5, 0.25, 0.3, 0.1, 0.2, 0.3]), ([1.5, 2.25, 0.3], Some([0.1, 0.2, 0.3])));
+        assert_eq!(split_rate(Mobility::Planar, &[1.0, 2.0, 3.0]), ([1.0, 2.0, 0.0], &[3.0][..]));
+        assert_eq!(split_rate(Mobility::Point, &[1.0, 2.0, 3.0]), ([1.0, 2.0, 3.0], &[][..]));
+    }
 }

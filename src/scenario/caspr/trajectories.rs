@@ -2,18 +2,23 @@
 //! `quintic_spline_trajectory` and `cubic_spline_trajectory` of `<joint_trajectories>` becomes a
 //! timed trajectory through knots (format 4 `spline` and `knots`, [`crate::model::knots`]).
 //!
-//! A point's `q = "x y z a b g"` is read as the platform's `q_initial` is (position plus the
-//! parent location, R = Rx(a)·Ry(b)·Rz(g)); `q_dot` and `q_ddot` give the knot's velocity and
-//! acceleration (their translational parts: CASPR refuses angular rates at a spline's knots, and
-//! so does this import). Times are `relative` (each point's `time` counts from the previous point)
+//! A point's `q` is read as the platform's `q_initial` is: `x y z a b g` of a 6-DoF platform
+//! (position plus the parent location, R = Rx(a)·Ry(b)·Rz(g)), `x y θ` of a planar one (position
+//! (x, y, 0) plus the parent location, R = Rz(θ)), `x y z` of a point mass (no orientation);
+//! `q_dot` and `q_ddot` give the knot's velocity and acceleration (their translational parts:
+//! CASPR refuses angular rates at a spline's knots, and so does this import). A planar platform's
+//! θ may not change by half a turn or more between two points: cablenav's knots turn the shortest
+//! way, CASPR's splines of θ the way the numbers go. Times are `relative` (each point's `time` counts from the previous point)
 //! or `absolute`, as the element's `time_definition` says; the first point is at 0. Other kinds
 //! of trajectory (linear splines, parabolic blends, operational-space trajectories) are skipped
 //! with a note. [`super::model_to_json`] writes them after the bodies and cables.
 
 use serde::Serialize;
 
-use super::xml::{child, children, document, line, numbers};
+use super::platform::{coordinates, place, split_rate};
+use super::xml::{child, children, document, line, numbers_n};
 use crate::error::{Error, Result};
+use crate::model::Mobility;
 
 const FILE: &str = "trajectories";
 
@@ -30,15 +35,17 @@ pub(super) struct OutSpline {
 struct OutKnot {
     time: f64,
     position: [f64; 3],
-    euler_xyz_deg: [f64; 3],
+    /// None for a point mass.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    euler_xyz_deg: Option<[f64; 3]>,
     velocity: [f64; 3],
     #[serde(skip_serializing_if = "Option::is_none")]
     acceleration: Option<[f64; 3]>,
 }
 
-/// The spline trajectories of `trajectories_xml` for a platform whose joint sits at `origin` on
-/// the base; what is skipped goes into `notes`.
-pub(super) fn splines(trajectories_xml: &str, origin: [f64; 3], notes: &mut Vec<String>) -> Result<Vec<OutSpline>> {
+/// The spline trajectories of `trajectories_xml` for a platform that moves as `mobility` says,
+/// its joint's coordinates counting from `origin`; what is skipped goes into `notes`.
+pub(super) fn splines(trajectories_xml: &str, mobility: Mobility, origin: [f64; 3], notes: &mut Vec<String>) -> Result<Vec<OutSpline>> {
     let doc = document(FILE, trajectories_xml, "trajectories")?;
     let mut out = Vec::new();
     for group in doc.root_element().children().filter(|c| c.is_element()) {
@@ -56,7 +63,7 @@ pub(super) fn splines(trajectories_xml: &str, origin: [f64; 3], notes: &mut Vec<
                     continue;
                 }
             };
-            out.push(trajectory(node, id, spline, origin)?);
+            out.push(trajectory(node, id, spline, mobility, origin)?);
         }
     }
     if out.is_empty() {
@@ -66,7 +73,7 @@ pub(super) fn splines(trajectories_xml: &str, origin: [f64; 3], notes: &mut Vec<
 }
 
 /// One spline trajectory element.
-fn trajectory(node: roxmltree::Node, id: &str, spline: &'static str, origin: [f64; 3]) -> Result<OutSpline> {
+fn trajectory(node: roxmltree::Node, id: &str, spline: &'static str, mobility: Mobility, origin: [f64; 3]) -> Result<OutSpline> {
     if id.is_empty() {
         return Err(Error::new(FILE, format!("{}: the trajectory has no id", line(node))));
     }
@@ -78,6 +85,7 @@ fn trajectory(node: roxmltree::Node, id: &str, spline: &'static str, origin: [f6
     let points = child(node, "points").ok_or_else(|| Error::new(FILE, format!("{}: trajectory \"{id}\" has no <points>", line(node))))?;
     let mut knots = Vec::new();
     let mut time = 0.0;
+    let mut previous_theta = 0.0;
     for (j, p) in children(points, "point").enumerate() {
         if j > 0 {
             let given: f64 = p
@@ -87,26 +95,42 @@ fn trajectory(node: roxmltree::Node, id: &str, spline: &'static str, origin: [f6
                 .ok_or_else(|| Error::new(FILE, format!("{}: point {j} of \"{id}\" needs a finite time attribute", line(p))))?;
             time = if absolute { given } else { time + given };
         }
-        let read = |tag: &str| -> Result<[f64; 6]> {
+        let n = coordinates(mobility);
+        let read = |tag: &str| -> Result<Vec<f64>> {
             match child(p, tag) {
-                Some(c) => numbers(FILE, c, &format!("<{tag}>"), c.text().unwrap_or_default()),
+                Some(c) => numbers_n(FILE, c, &format!("<{tag}>"), c.text().unwrap_or_default(), n),
                 None if tag == "q" => Err(Error::new(FILE, format!("{}: point {j} of \"{id}\" has no <q>", line(p)))),
-                None => Ok([0.0; 6]),
+                None => Ok(vec![0.0; n]),
             }
         };
         let (q, qd, qdd) = (read("q")?, read("q_dot")?, read("q_ddot")?);
-        if qd[3..].iter().chain(&qdd[3..]).any(|v| *v != 0.0) {
+        let ((velocity, turning), (acceleration, turning_faster)) = (split_rate(mobility, &qd), split_rate(mobility, &qdd));
+        if turning.iter().chain(turning_faster).any(|v| *v != 0.0) {
             return Err(Error::new(
                 FILE,
                 format!("{}: point {j} of \"{id}\" has an angular rate; CASPR's splines (and cablenav's) turn from rest to rest between knots", line(p)),
             ));
         }
+        if mobility == Mobility::Planar && j > 0 {
+            let turn = q[2] - previous_theta;
+            if turn.abs() >= std::f64::consts::PI {
+                return Err(Error::new(
+                    FILE,
+                    format!(
+                        "{}: point {j} of \"{id}\" turns θ by {turn} rad from the point before, half a turn or more; cablenav's knots turn the shortest way (add a point between)",
+                        line(p)
+                    ),
+                ));
+            }
+        }
+        previous_theta = q.get(2).copied().unwrap_or_default();
+        let (position, euler_rad) = place(mobility, origin, &q);
         knots.push(OutKnot {
             time,
-            position: [origin[0] + q[0], origin[1] + q[1], origin[2] + q[2]],
-            euler_xyz_deg: [q[3].to_degrees(), q[4].to_degrees(), q[5].to_degrees()],
-            velocity: [qd[0], qd[1], qd[2]],
-            acceleration: (spline == "quintic").then_some([qdd[0], qdd[1], qdd[2]]),
+            position,
+            euler_xyz_deg: euler_rad.map(|e| e.map(f64::to_degrees)),
+            velocity,
+            acceleration: (spline == "quintic").then_some(acceleration),
         });
     }
     Ok(OutSpline { name: id.to_string(), spline, knots })

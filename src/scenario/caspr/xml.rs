@@ -42,19 +42,28 @@ pub(super) fn child<'a, 'i>(node: Node<'a, 'i>, tag: &'a str) -> Option<Node<'a,
 
 /// `N` finite numbers separated by white space, from `text` at `node` (for messages).
 pub(super) fn numbers<const N: usize>(file: &str, node: Node, what: &str, text: &str) -> Result<[f64; N]> {
-    let parts: Vec<&str> = text.split_whitespace().collect();
-    if parts.len() != N {
-        return Err(Error::new(file, format!("{}: {what} needs {N} numbers, got {:?}", line(node), text.trim())));
-    }
+    let v = numbers_n(file, node, what, text, N)?;
     let mut out = [0.0; N];
-    for (slot, p) in out.iter_mut().zip(&parts) {
-        *slot = p
-            .parse::<f64>()
-            .ok()
-            .filter(|x| x.is_finite())
-            .ok_or_else(|| Error::new(file, format!("{}: {what}: {p:?} is not a finite number", line(node))))?;
-    }
+    out.copy_from_slice(&v);
     Ok(out)
+}
+
+/// `n` finite numbers separated by white space, from `text` at `node` (for messages): a joint's
+/// coordinates, as many as its type has.
+pub(super) fn numbers_n(file: &str, node: Node, what: &str, text: &str, n: usize) -> Result<Vec<f64>> {
+    let parts: Vec<&str> = text.split_whitespace().collect();
+    if parts.len() != n {
+        return Err(Error::new(file, format!("{}: {what} needs {n} numbers, got {:?}", line(node), text.trim())));
+    }
+    parts
+        .iter()
+        .map(|p| {
+            p.parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite())
+                .ok_or_else(|| Error::new(file, format!("{}: {what}: {p:?} is not a finite number", line(node))))
+        })
+        .collect()
 }
 
 /// The text of child `tag` of `node` as `N` numbers; `None` when there is no such child.
