@@ -14,6 +14,11 @@
 #                                     defaults" section (a full run keeps that section as it is)
 #   scripts/bench.sh --timing         only the fastest safe timing (examples/bench/timing.rs, native,
 #                                     ~1 min); rewrites only the "Fastest safe timing" section
+#   scripts/bench.sh --batotp         only the fastest safe timing against the peer batotp on its CSPR3DOF
+#                                     case (examples/bench/batotp.rs: builds ../shared/peers/batotp in a
+#                                     temporary copy with g++ and Eigen, installed by
+#                                     `scripts/install.sh --batotp`; ~1 min); rewrites only the "Fastest
+#                                     safe timing against batotp" section (a full run keeps it as it is)
 #   (--no-write and --before combine)
 # Needs the wasm tools from scripts/install.sh (wasm32 target, wasm-bindgen-test-runner 0.2.130).
 # Timings are wall-clock: run it on an otherwise idle machine (the load average is recorded).
@@ -26,6 +31,7 @@ BEFORE=""
 LATTICE_ONLY=0
 ATLAS_ONLY=0
 TIMING_ONLY=0
+BATOTP_ONLY=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --no-write) WRITE=0 ;;
@@ -33,7 +39,8 @@ while [ $# -gt 0 ]; do
     --lattice) LATTICE_ONLY=1 ;;
     --atlas) ATLAS_ONLY=1 ;;
     --timing) TIMING_ONLY=1 ;;
-    *) echo "usage: scripts/bench.sh [--no-write] [--before REF] | --lattice | --atlas | --timing" >&2; exit 2 ;;
+    --batotp) BATOTP_ONLY=1 ;;
+    *) echo "usage: scripts/bench.sh [--no-write] [--before REF] | --lattice | --atlas | --timing | --batotp" >&2; exit 2 ;;
   esac
   shift
 done
@@ -144,10 +151,45 @@ timing_section() {
     echo "|---|---|---:|---:|---:|---:|---:|---:|"
     cat "$TMP/timing.txt"
     echo
-    echo "The comparison with batotp on its own CSPR3DOF case waits for point-mass robots (issue 23)."
+    echo "The comparison with batotp on its own CSPR3DOF case is the next section."
     echo "<!-- timing:end -->"
   } > "$1"
 }
+BATOTP_CMD="cargo run --release --example bench -- batotp"
+# The section "Fastest safe timing against batotp" (examples/bench/batotp.rs, measured now), to "$1".
+batotp_section() {
+  say "fastest safe timing against batotp: $BATOTP_CMD"
+  run_measured batotp "$TMP/batotp.txt"
+  {
+    echo "<!-- batotp:begin (scripts/bench.sh --batotp rewrites this section) -->"
+    echo "## Fastest safe timing against batotp"
+    echo
+    echo "cablenav's fastest safe timing (docs/timing.md) and batotp (Barnett & Gosselin, \"A Bisection"
+    echo "Algorithm for Time-Optimal Trajectory Planning Along Fully Specified Paths\", IEEE T-RO 2021;"
+    echo "\`../shared/peers/batotp\`, built from a copy with its \`compile.sh\` and run unmodified) on batotp's own"
+    echo "case, Laval's 3-cable point-mass suspended robot (CSPR3DOF), same machine, one run of"
+    echo "\`$BATOTP_CMD\`. batotp enforces its limits at its integration steps; cablenav certifies its law"
+    echo "between grid points with the exact verifier, and here also verifies batotp's own output trajectory"
+    echo "exactly. Machine: $(nproc) × $(grep -m1 '^model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//'), $(rustc --version | cut -d' ' -f1-2),"
+    echo "$(g++ --version | head -1 | sed 's/ *$//'), Eigen $(dpkg-query -W -f='${Version}' libeigen3-dev 2>/dev/null || echo unknown); measured $(date -u '+%Y-%m-%d %H:%M UTC'), commit"
+    echo "$(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- src examples static 2>/dev/null || echo ' (with uncommitted changes)'); load average before $before, after $after on the shared 2-core VM."
+    echo
+    echo "    scripts/install.sh --batotp      # g++ and libeigen3-dev, if missing"
+    echo "    $BATOTP_CMD"
+    echo
+    cat "$TMP/batotp.txt"
+    echo "<!-- batotp:end -->"
+  } > "$1"
+}
+if [ "$BATOTP_ONLY" = 1 ]; then
+  scripts/install.sh --batotp
+  say "building (release, native)"
+  cargo build --release --example bench >&2
+  batotp_section "$TMP/section.md"
+  put_section "$OUT" "$TMP/section.md" batotp
+  say "wrote the batotp section of $OUT"
+  exit 0
+fi
 if [ "$TIMING_ONLY" = 1 ]; then
   say "building (release, native)"
   cargo build --release --example bench >&2
@@ -531,6 +573,12 @@ if grep -q '<!-- atlas:begin' "$OUT"; then
 fi
 timing_section "$TMP/timing-section.md"
 put_section "$TMP/benchmarks.md" "$TMP/timing-section.md" timing
+# The comparison with batotp needs the peer built (g++, Eigen): a full run keeps that section as it
+# is (--batotp rewrites it).
+if grep -q '<!-- batotp:begin' "$OUT"; then
+  sed -n '/<!-- batotp:begin/,/<!-- batotp:end -->/p' "$OUT" > "$TMP/batotp-kept.md"
+  put_section "$TMP/benchmarks.md" "$TMP/batotp-kept.md" batotp
+fi
 
 if [ "$WRITE" = 1 ]; then
   cp "$TMP/benchmarks.md" "$OUT"

@@ -5,6 +5,8 @@
 #                                 chromium-driver, playwright-core, npm's binaryen (wasm-opt), and a Python virtual environment
 #                                 target/venv with maturin, pytest and dask[distributed])
 #   scripts/install.sh --serve    also trunk, for `scripts/serve.sh`
+#   scripts/install.sh --batotp   only g++ and Eigen (Debian's g++ and libeigen3-dev), to build the peer
+#                                 batotp for `scripts/bench.sh --batotp` (examples/bench/batotp.rs)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -24,6 +26,30 @@ export PATH="$HOME/.cargo/bin:$PATH"
 has_version() { # has_version CMD VERSION: CMD --version mentions VERSION
   command -v "$1" >/dev/null 2>&1 && "$1" --version 2>/dev/null | grep -q "$2"
 }
+
+SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+APT_UPDATED=""
+apt_install() { # apt_install PACKAGE...: Debian packages, non-interactively
+  if [ -z "$APT_UPDATED" ]; then $SUDO apt-get update -qq; APT_UPDATED=1; fi
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "$@" >/dev/null
+}
+has_deb() { # has_deb PACKAGE: the Debian package is installed
+  dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q 'install ok installed'
+}
+
+if [ "${1:-}" = "--batotp" ]; then
+  # the peer batotp (../shared/peers/batotp, PEER.md) is C++11 with Eigen 3 headers only
+  if ! command -v g++ >/dev/null 2>&1; then
+    say "installing g++ (Debian package) to build batotp"
+    apt_install g++
+  fi
+  if ! has_deb libeigen3-dev; then
+    say "installing libeigen3-dev (Debian package, Eigen's headers) to build batotp"
+    apt_install libeigen3-dev
+  fi
+  say "tools ready"
+  exit 0
+fi
 
 if ! rustup target list --installed | grep -q '^wasm32-unknown-unknown$'; then
   say "adding rust target wasm32-unknown-unknown"
@@ -50,13 +76,6 @@ if ! has_version wasm-pack "$WASM_PACK_VERSION"; then
   say "installing wasm-pack $WASM_PACK_VERSION (a few minutes)"
   cargo install wasm-pack --version "$WASM_PACK_VERSION" --locked --force
 fi
-
-SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
-APT_UPDATED=""
-apt_install() { # apt_install PACKAGE...: Debian packages, non-interactively
-  if [ -z "$APT_UPDATED" ]; then $SUDO apt-get update -qq; APT_UPDATED=1; fi
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "$@" >/dev/null
-}
 
 if ! command -v chromium >/dev/null 2>&1; then
   say "installing chromium (Debian package) for the browser tests"

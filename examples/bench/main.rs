@@ -5,11 +5,14 @@
 //!     cargo run --release --example bench -- lattice # the ray lattice cases (lattice.rs) instead
 //!     cargo run --release --example bench -- atlas   # the atlas planner's defaults, before/after (atlas.rs)
 //!     cargo run --release --example bench -- timing  # the fastest safe timing (timing.rs)
+//!     cargo run --release --example bench -- batotp  # the fastest safe timing against batotp (batotp.rs)
+//!     cargo run --release --example bench -- batotp-preset  # writes static/scenarios/laval-cspr3dof.json
 //!
 //! `scripts/bench.sh` runs it together with the wasm-in-node benchmark (`tests/bench_wasm.rs`,
 //! same cases from `cases.rs`) and writes `docs/benchmarks.md`.
 
 mod atlas;
+mod batotp;
 mod cases;
 mod lattice;
 mod timing;
@@ -20,6 +23,14 @@ fn main() {
     let filter = std::env::args().nth(1).unwrap_or_default();
     if filter == "atlas" {
         atlas::run_atlas();
+        return;
+    }
+    if filter == "batotp" {
+        batotp::run_batotp();
+        return;
+    }
+    if filter == "batotp-preset" {
+        batotp::run_preset();
         return;
     }
     if filter == "timing" {
