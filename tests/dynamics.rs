@@ -18,7 +18,7 @@ use wasm_bindgen_test::wasm_bindgen_test as test;
 
 mod support;
 
-use cablenav::model::Bounds;
+use cablenav::model::{Bounds, Mobility};
 use cablenav::query::lp::{maximise, LpResult};
 use cablenav::query::wrench::{tension_ranges_at, wrench_set_margin};
 use cablenav::verify::verify_trajectory;
@@ -47,9 +47,13 @@ const TIMED_H: f64 = 1e-5;
 const TIMED_EPS: f64 = 1e-5;
 
 /// A robot with mass, its load and one timed trajectory, as the reference sees them. z points
-/// down: gravity is +z, the cables mostly hang from anchors at z = 0.
+/// down: gravity is +z, the cables mostly hang from anchors at z = 0 (a planar robot's plane is
+/// z = 0 and its gravity is +y).
 #[derive(Clone)]
 struct Case {
+    /// The wrench components the cables balance: all six on a spatial platform, the force on a
+    /// point mass, fx, fy and mz on a planar platform.
+    mobility: Mobility,
     cables: Vec<(V3, V3)>,
     tension: (f64, f64),
     mass: f64,
@@ -163,18 +167,26 @@ struct At {
 
 impl Case {
     fn json(&self) -> String {
-        let cables: Vec<_> = self.cables.iter().map(|(a, b)| serde_json::json!({"base": a.arr(), "platform": b.arr()})).collect();
+        let point = self.mobility == Mobility::Point;
+        // a point mass's cables end at the point: no platform anchor
+        let cables: Vec<_> = self.cables.iter().map(|(a, b)| if point { serde_json::json!({"base": a.arr()}) } else { serde_json::json!({"base": a.arr(), "platform": b.arr()}) }).collect();
         let inertia: Vec<Vec<f64>> = (0..3).map(|i| (0..3).map(|j| self.inertia[(i, j)]).collect()).collect();
         let Path::Slerp(traj) = &self.path else { unreachable!("spline cases come from CASPR's files") };
         let mut traj = traj.to_json();
         traj["duration"] = serde_json::json!(self.duration);
+        let dynamics = if point {
+            serde_json::json!({"mass": self.mass, "gravity": self.gravity.arr()})
+        } else {
+            serde_json::json!({"mass": self.mass, "com": self.com.arr(), "inertia": inertia, "gravity": self.gravity.arr()})
+        };
         let mut v = serde_json::json!({
-            "format": "cablenav-scenario/4",
+            "format": "cablenav-scenario/5",
             "name": "random timed case",
             "robot": {
+                "mobility": self.mobility.name(),
                 "cables": cables,
                 "tension": {"min": self.tension.0, "max": self.tension.1},
-                "dynamics": {"mass": self.mass, "com": self.com.arr(), "inertia": inertia, "gravity": self.gravity.arr()},
+                "dynamics": dynamics,
             },
             "trajectories": [traj],
         });
@@ -259,15 +271,27 @@ impl Case {
         (w, j)
     }
 
+    /// The components the robot balances of the wrench `w` and of J's rows.
+    fn project(&self, w: &Vector6<f64>, j: &DMatrix<f64>) -> (DVector<f64>, DMatrix<f64>) {
+        let rows = self.mobility.rows();
+        (DVector::from_fn(rows.len(), |r, _| w[rows[r]]), DMatrix::from_fn(rows.len(), j.ncols(), |r, k| j[(rows[r], k)]))
+    }
+
+    /// The block of E⁻¹ on the components the robot balances.
+    fn e_block(&self, e_inv: &Matrix6<f64>) -> DMatrix<f64> {
+        let rows = self.mobility.rows();
+        DMatrix::from_fn(rows.len(), rows.len(), |a, b| e_inv[(rows[a], rows[b])])
+    }
+
     /// Largest t with J f = w, f_min + t ≤ f ≤ f_max − t (an LP over g = f − f_min − t ≥ 0,
     /// t = t⁺ − t⁻, upper slacks, t⁺ capped), and the tensions; None when J f = w has no solution.
-    fn lp_margin(&self, j: &DMatrix<f64>, w: &Vector6<f64>) -> Option<(f64, DVector<f64>)> {
-        let m = j.ncols();
+    fn lp_margin(&self, j: &DMatrix<f64>, w: &DVector<f64>) -> Option<(f64, DVector<f64>)> {
+        let (n, m) = j.shape();
         let (lo, hi) = self.tension;
         let nvar = m + 2 + m + 1;
-        let mut a = DMatrix::zeros(6 + m + 1, nvar);
-        let mut b = DVector::zeros(6 + m + 1);
-        for r in 0..6 {
+        let mut a = DMatrix::zeros(n + m + 1, nvar);
+        let mut b = DVector::zeros(n + m + 1);
+        for r in 0..n {
             let row_sum: f64 = (0..m).map(|k| j[(r, k)]).sum();
             for k in 0..m {
                 a[(r, k)] = j[(r, k)];
@@ -277,15 +301,15 @@ impl Case {
             b[r] = w[r] - lo * row_sum;
         }
         for k in 0..m {
-            a[(6 + k, k)] = 1.0;
-            a[(6 + k, m)] = 2.0;
-            a[(6 + k, m + 1)] = -2.0;
-            a[(6 + k, m + 2 + k)] = 1.0;
-            b[6 + k] = hi - lo;
+            a[(n + k, k)] = 1.0;
+            a[(n + k, m)] = 2.0;
+            a[(n + k, m + 1)] = -2.0;
+            a[(n + k, m + 2 + k)] = 1.0;
+            b[n + k] = hi - lo;
         }
-        a[(6 + m, m)] = 1.0;
-        a[(6 + m, nvar - 1)] = 1.0;
-        b[6 + m] = hi;
+        a[(n + m, m)] = 1.0;
+        a[(n + m, nvar - 1)] = 1.0;
+        b[n + m] = hi;
         let mut c = DVector::zeros(nvar);
         c[m] = 1.0;
         c[m + 1] = -1.0;
@@ -297,20 +321,20 @@ impl Case {
 
     /// The largest t such that every wrench of the ellipsoid around `w` is balanced by tensions
     /// within [f_min + t, f_max − t]: the ellipsoid inside the polytope {J f} shrunk by t holds
-    /// against each of its facets; a facet's normal n is the dual vector of five columns (the
-    /// last row of the inverse of those columns completed by a random sixth).
-    fn ellipsoid_margin(&self, j: &DMatrix<f64>, w: &Vector6<f64>, e_inv: &Matrix6<f64>) -> f64 {
-        let m = j.ncols();
+    /// against each of its facets; a facet's normal n is the dual vector of n − 1 columns (the
+    /// last row of the inverse of those columns completed by a random n-th).
+    fn ellipsoid_margin(&self, j: &DMatrix<f64>, w: &DVector<f64>, e_inv: &DMatrix<f64>) -> f64 {
+        let (dim, m) = j.shape();
         let mut rng = Rng::new(5);
         let mut least = f64::INFINITY;
-        let mut subset = [0usize, 1, 2, 3, 4];
+        let mut subset: Vec<usize> = (0..dim - 1).collect();
         loop {
-            let extra = Vector6::from_fn(|_, _| rng.normal());
-            let square = Matrix6::from_fn(|r, c| if c < 5 { j[(r, subset[c])] } else { extra[r] });
+            let extra = DVector::from_fn(dim, |_, _| rng.normal());
+            let square = DMatrix::from_fn(dim, dim, |r, c| if c < dim - 1 { j[(r, subset[c])] } else { extra[r] });
             let scale: f64 = subset.iter().map(|&k| j.column(k).norm()).product::<f64>() * extra.norm();
             if square.determinant().abs() > 1e-9 * scale {
                 let inv = square.try_inverse().unwrap();
-                let n: Vector6<f64> = Vector6::from_fn(|c, _| inv[(5, c)]).normalize();
+                let n = DVector::from_fn(dim, |c, _| inv[(dim - 1, c)]).normalize();
                 let (mut lower, mut upper, mut spread) = (0.0, 0.0, 0.0);
                 for k in (0..m).filter(|k| !subset.contains(k)) {
                     let d = n.dot(&j.column(k));
@@ -318,14 +342,15 @@ impl Case {
                     upper += (d * self.tension.0).max(d * self.tension.1);
                     spread += d.abs();
                 }
-                let reach = n.dot(&(e_inv * n)).max(0.0).sqrt();
+                let reach = n.dot(&(e_inv * &n)).max(0.0).sqrt();
                 let centre = n.dot(w);
                 least = least.min(((upper - centre).min(centre - lower) - reach) / spread);
             }
-            // the next 5-subset in lexicographic order
-            let Some(i) = (0..5).rev().find(|&i| subset[i] < m - 5 + i) else { break };
+            // the next (n − 1)-subset in lexicographic order
+            let size = dim - 1;
+            let Some(i) = (0..size).rev().find(|&i| subset[i] < m - size + i) else { break };
             subset[i] += 1;
-            for k in i + 1..5 {
+            for k in i + 1..size {
                 subset[k] = subset[k - 1] + 1;
             }
         }
@@ -334,7 +359,9 @@ impl Case {
 
     /// The reference at t, run in `duration`.
     fn at(&self, t: f64, duration: f64, rng: &mut Rng) -> At {
-        let (w, j) = self.required(t, Some(duration));
+        let (w6, j6) = self.required(t, Some(duration));
+        let (w, j) = self.project(&w6, &j6);
+        let dim = w.len();
         let scale = self.mass * to_v(self.gravity).norm();
         let eps = self.eps * scale;
         let range = self.tension.1 - self.tension.0;
@@ -357,15 +384,16 @@ impl Case {
             }
         }
         let m = self.cables.len();
-        if m == 6 {
-            let Some(inv) = DMatrix::from(j.clone()).try_inverse().filter(|i| i.amax() < 1e9) else { return at };
-            let e_inv = self.wrench.as_ref().map_or(Matrix6::zeros(), |w| w.1);
+        if m == dim {
+            let Some(inv) = j.clone().try_inverse().filter(|i| i.amax() < 1e9) else { return at };
+            let e_inv = self.e_block(&self.wrench.as_ref().map_or(Matrix6::zeros(), |w| w.1));
             let (w_rest, _) = self.required(t, None);
+            let (w_rest, _) = self.project(&w_rest, &j6);
             let mut least = f64::INFINITY;
-            for i in 0..6 {
-                let g: Vector6<f64> = Vector6::from_fn(|k, _| inv[(i, k)]);
+            for i in 0..dim {
+                let g = DVector::from_fn(dim, |k, _| inv[(i, k)]);
                 let (f0, f_rest) = (g.dot(&w), g.dot(&w_rest));
-                let v = g.dot(&(e_inv * g)).max(0.0).sqrt();
+                let v = g.dot(&(&e_inv * &g)).max(0.0).sqrt();
                 least = least.min(f0 - v - self.tension.0).min(self.tension.1 - f0 - v);
                 // linear in u: f(u) = f_rest + u·(f0 − f_rest) at u = 1 for this duration
                 let slope = f0 - f_rest;
@@ -392,13 +420,14 @@ impl Case {
             }
             return at;
         };
+        let e_inv = self.e_block(e_inv);
         if e_inv.iter().any(|x| *x != 0.0) {
-            at.slack = at.slack.min(self.ellipsoid_margin(&j, &w, e_inv) / range);
+            at.slack = at.slack.min(self.ellipsoid_margin(&j, &w, &e_inv) / range);
         }
         // necessary: sampled directions against the zonotope's support function
         for _ in 0..64 {
-            let u = Vector6::from_fn(|_, _| rng.normal());
-            let reach = u.dot(&(e_inv * u)).max(0.0).sqrt();
+            let u = DVector::from_fn(dim, |_, _| rng.normal());
+            let reach = u.dot(&(&e_inv * &u)).max(0.0).sqrt();
             let support: f64 = (0..m).map(|k| {
                 let d = u.dot(&j.column(k));
                 (d * self.tension.0).max(d * self.tension.1)
@@ -411,8 +440,8 @@ impl Case {
         let jt = j.transpose();
         let Some(pinv) = (&j * &jt).try_inverse().map(|x| &jt * x) else { return at };
         let worst = (0..m).map(|k| {
-            let row: Vector6<f64> = Vector6::from_fn(|c, _| pinv[(k, c)]);
-            let reach = row.dot(&(e_inv * row)).max(0.0).sqrt();
+            let row = DVector::from_fn(dim, |c, _| pinv[(k, c)]);
+            let reach = row.dot(&(&e_inv * &row)).max(0.0).sqrt();
             (f[k] - reach - self.tension.0).min(self.tension.1 - f[k] - reach)
         }).fold(f64::INFINITY, f64::min);
         if worst > eps {
@@ -478,7 +507,85 @@ fn random_case_of(rng: &mut Rng, m: usize) -> Case {
     let qs = quat_normalize(quat_axis_angle(rng.unit_vector(), rng.range(0.0, 30f64.to_radians())));
     let qe = quat_normalize(quat_mul(qs, quat_axis_angle(rng.unit_vector(), rng.range(0.0, 60f64.to_radians()))));
     let traj = RefTrajectory { name: "t".into(), translation: RefTranslation::Polynomial(coeffs), qs, qe };
-    Case { cables, tension, mass, com: rng.in_box(0.1), inertia, gravity, wrench, winch, path: Path::Slerp(traj), duration: rng.range(0.5, 2.5), h: H, eps: 1e-7 }
+    Case { mobility: Mobility::Spatial, cables, tension, mass, com: rng.in_box(0.1), inertia, gravity, wrench, winch, path: Path::Slerp(traj), duration: rng.range(0.5, 2.5), h: H, eps: 1e-7 }
+}
+
+/// A random point mass (3 to 8 cables meeting at it: hanging from a ring at z = 0, up to two
+/// pulling from below), with mass, a random load and a random timed path (its orientation
+/// immaterial: the identity throughout).
+fn random_point_case(rng: &mut Rng) -> Case {
+    let m = rng.int(3, 8);
+    let b = rng.range(1.5, 2.5);
+    let low = if m > 3 { rng.int(0, 2) } else { 0 };
+    let cables = (0..m)
+        .map(|k| {
+            let angle = 2.0 * std::f64::consts::PI * (k as f64 + rng.range(-0.2, 0.2)) / m as f64;
+            let z = if k < low { 4.0 } else { rng.range(-0.2, 0.2) };
+            (v3(b * angle.cos(), b * angle.sin(), z), v3(0.0, 0.0, 0.0))
+        })
+        .collect();
+    let mut case = random_case_of(rng, 6);
+    let weight = case.mass * 10.0;
+    case.mobility = Mobility::Point;
+    case.cables = cables;
+    case.com = v3(0.0, 0.0, 0.0);
+    case.inertia = Matrix3::zeros();
+    // a point mass's few cables share its weight: tighter bounds than a platform's, so that
+    // paths leave them
+    case.tension = (if rng.chance(0.5) { 0.0 } else { 0.1 * weight }, weight * rng.range(0.35, 1.0));
+    if let Path::Slerp(traj) = &mut case.path {
+        (traj.qs, traj.qe) = ([1.0, 0.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0]);
+        // longer paths than a platform's: towards the ring, where the cables flatten
+        if let RefTranslation::Polynomial(c) = &mut traj.translation {
+            for row in c.iter_mut() {
+                row.iter_mut().skip(1).for_each(|x| *x *= 2.0);
+            }
+        }
+    }
+    case
+}
+
+/// A random planar robot (3 to 8 cables in the plane z = 0 from a ring to a small platform, with
+/// alternating twists), gravity +y in the plane, mass, a random load and a random timed path in
+/// the plane turning about z.
+fn random_planar_case(rng: &mut Rng) -> Case {
+    let m = rng.int(3, 8);
+    let (b, a) = (rng.range(1.5, 2.5), rng.range(0.3, 0.6));
+    let cables = (0..m)
+        .map(|k| {
+            let angle = 2.0 * std::f64::consts::PI * (k as f64 + rng.range(-0.2, 0.2)) / m as f64;
+            let twist = if k % 2 == 0 { 0.6 } else { -0.6 };
+            let on = v3(a * (angle + twist).cos() + rng.range(-0.05, 0.05), a * (angle + twist).sin() + rng.range(-0.05, 0.05), 0.0);
+            (v3(b * angle.cos(), b * angle.sin() - 0.5 * b, 0.0), on)
+        })
+        .collect();
+    let mut case = random_case_of(rng, 6);
+    let weight = case.mass * 10.0;
+    case.mobility = Mobility::Planar;
+    case.cables = cables;
+    case.gravity = v3(0.0, 10.0, 0.0);
+    case.com = v3(rng.range(-0.1, 0.1), rng.range(-0.1, 0.1), 0.0);
+    case.tension = (if rng.chance(0.5) { 0.0 } else { 0.05 * weight }, weight * rng.range(0.6, 2.0));
+    if let Path::Slerp(traj) = &mut case.path {
+        if let RefTranslation::Polynomial(c) = &mut traj.translation {
+            c[0][0] = rng.range(-0.3, 0.3);
+            c[1][0] = rng.range(-0.3, 0.3);
+            c[2] = vec![0.0];
+        }
+        let z = v3(0.0, 0.0, 1.0);
+        traj.qs = quat_axis_angle(z, rng.range(-0.3, 0.3));
+        traj.qe = quat_normalize(quat_mul(traj.qs, quat_axis_angle(z, rng.range(-0.7, 0.7))));
+    }
+    case
+}
+
+/// A random robot of each kind in turn (`k` mod 3): spatial, point mass, planar.
+fn random_case_of_kind(rng: &mut Rng, k: usize) -> Case {
+    match k % 3 {
+        0 => random_case(rng),
+        1 => random_point_case(rng),
+        _ => random_planar_case(rng),
+    }
 }
 
 /// Per case: samples compared, contradictions, boundaries checked, mixed sections.
@@ -535,6 +642,31 @@ fn dynamic_sections_match_an_independent_reference_on_random_robots() {
     assert!(boundaries >= n / 12 && compared > n * samples / 2, "{boundaries} boundaries, {compared} samples");
 }
 
+/// Point masses (3 to 8 cables meeting at the point) and planar robots (3 to 8 cables in the
+/// plane z = 0), with mass, loads and winch limits, along random timed paths: the exact sections
+/// against the reference in the components each balances (the force; fx, fy and mz).
+#[test]
+fn point_mass_and_planar_sections_match_the_reference() {
+    let mut rng = Rng::new(41);
+    let n = if cfg!(target_arch = "wasm32") { 12 } else { env_usize("CABLENAV_DYNAMICS_CASES", 240) };
+    let cases: Vec<Case> = (0..n).map(|k| random_case_of_kind(&mut rng, 1 + k % 2)).collect();
+    #[cfg(not(target_arch = "wasm32"))]
+    let results = support::on_two_threads(cases.len(), &|k| run_case(k, &cases[k]));
+    #[cfg(target_arch = "wasm32")]
+    let results: Vec<_> = cases.iter().enumerate().map(|(k, c)| run_case(k, c)).collect();
+    let failures: Vec<&String> = results.iter().flat_map(|r| &r.1).collect();
+    assert!(failures.is_empty(), "{} contradictions, first: {}", failures.len(), failures[0]);
+    let compared: usize = results.iter().map(|r| r.0).sum();
+    let boundaries: usize = results.iter().map(|r| r.2).sum();
+    let mixed = results.iter().filter(|r| r.3).count();
+    for kind in [1, 2] {
+        let of_kind = results.iter().enumerate().filter(|(k, r)| 1 + k % 2 == kind && r.3).count();
+        assert!(of_kind * 10 >= n / 2, "only {of_kind} of the {} trajectories of kind {kind} have both kinds of section", n / 2);
+    }
+    let samples = env_usize("CABLENAV_DYNAMICS_SAMPLES", SAMPLES);
+    assert!(mixed * 5 >= n && boundaries >= n / 40 && compared > n * samples / 2, "{mixed} mixed, {boundaries} boundaries, {compared} samples");
+}
+
 /// A single wrench for any number of cables (11 to 24, and some up to 64; mass, and for about
 /// half of them a nominal external wrench at a point without an ellipsoid: the linear-program
 /// certificates of `conditions::wrench_lp`), against the same reference.
@@ -565,8 +697,9 @@ fn many_cables_by_linear_programs_match_the_reference() {
     assert!(mixed * 5 >= n && boundaries * 12 >= n, "{mixed} of {n} trajectories with both kinds of section, {boundaries} boundaries checked");
 }
 
-/// The fastest timing (`cablenav time`) of random robots' trajectories (6 to 10 cables with mass,
-/// wrench sets, winch limits on some; rest to rest): wherever a law exists, it is certified, the
+/// The fastest timing (`cablenav time`) of random robots' trajectories (spatial platforms with 6
+/// to 10 cables, point masses and planar platforms with 3 to 8, all with mass, wrench sets, winch
+/// limits on some; rest to rest): wherever a law exists, it is certified, the
 /// reference moved by it in time (finite differences of the pose along the law, inside each of
 /// its cells) finds no sample violated, and it is near time-optimal: at most samples some
 /// constraint is within 1 % of its bound (the tension range, the winch limit).
@@ -577,7 +710,8 @@ fn fastest_timing_is_certified_and_near_optimal_against_the_reference() {
     // many random robots fail at rest somewhere along their path (then no timing exists): as
     // many are drawn, in batches, as it takes to time `n` of them (about one in four can be)
     let n = if cfg!(target_arch = "wasm32") { 8 } else { env_usize("CABLENAV_TIMING_CASES", 100) };
-    let cases: Vec<Case> = (0..12 * n).map(|_| random_case(&mut rng)).collect();
+    // spatial platforms, point masses and planar platforms in turn
+    let cases: Vec<Case> = (0..12 * n).map(|k| random_case_of_kind(&mut rng, k)).collect();
     let run = |k: usize| -> (usize, usize, usize, Vec<String>) {
         let case = &cases[k];
         let s = Scenario::from_json(&case.json()).unwrap();
@@ -628,6 +762,9 @@ fn fastest_timing_is_certified_and_near_optimal_against_the_reference() {
     let failures: Vec<&String> = results.iter().flat_map(|r| &r.3).collect();
     assert!(failures.is_empty(), "{} failures, first: {}", failures.len(), failures[0]);
     assert!(timed >= n, "only {timed} of {drawn} cases have a timing");
+    // results come in the order drawn: case k is of kind k mod 3
+    let of_kind = |kind: usize| results.iter().enumerate().filter(|(k, r)| k % 3 == kind && r.0 == 1).count();
+    assert!((0..3).all(|kind| of_kind(kind) * 5 >= n), "timed: {} spatial, {} point-mass, {} planar", of_kind(0), of_kind(1), of_kind(2));
     assert!(near as f64 >= 0.9 * compared as f64, "near a bound at {near} of {compared} samples");
 }
 
@@ -745,7 +882,7 @@ fn cogiro_spline_trajectories_match_the_reference() {
         let spline = Spline::from_caspr(COGIRO_TRAJECTORIES, id);
         let duration = spline.duration();
         assert_eq!(traj.duration, Some(duration));
-        let case = Case { cables: cables.clone(), tension, mass: d.mass, com: to3(&d.com), inertia: d.inertia, gravity: to3(&d.gravity), wrench: None, winch: None, path: Path::Spline(spline), duration, h: H, eps: 1e-7 };
+        let case = Case { mobility: Mobility::Spatial, cables: cables.clone(), tension, mass: d.mass, com: to3(&d.com), inertia: d.inertia, gravity: to3(&d.gravity), wrench: None, winch: None, path: Path::Spline(spline), duration, h: H, eps: 1e-7 };
         let r = verify_trajectory(&s, traj).unwrap();
         assert!(r.uncertain.iter().map(|u| u[1] - u[0]).sum::<f64>() < 1e-6, "{id}: uncertain {:?}", r.uncertain);
         let mut compared = 0;

@@ -1273,3 +1273,71 @@ fn knots_are_validated() {
     }));
     assert_eq!(cubic.trajectories[0].knots.as_ref().unwrap().profile, cablenav::model::Profile::Cubic);
 }
+
+/// A point mass hanging from three cables and a planar platform on four (format 5), as the
+/// tests below change them.
+fn mobile(mobility: &str) -> Value {
+    let planar = mobility == "planar";
+    let cables = if planar {
+        json!([{"base": [0, 0, 0], "platform": [0.1, 0, 0]}, {"base": [2, 0, 0], "platform": [0, 0.1, 0]},
+               {"base": [2, 2, 0], "platform": [-0.1, 0, 0]}, {"base": [0, 2, 0], "platform": [0, -0.1, 0]}])
+    } else {
+        json!([{"base": [0, 0, 3]}, {"base": [4, 0, 3]}, {"base": [2, 3.5, 3]}])
+    };
+    let dynamics = if planar { json!({"mass": 2, "inertia": [[0, 0, 0], [0, 0, 0], [0, 0, 0.1]]}) } else { json!({"mass": 1}) };
+    let mut v = json!({
+        "format": "cablenav-scenario/5", "name": mobility,
+        "robot": {"mobility": mobility, "cables": cables, "tension": {"min": 1, "max": 50}, "dynamics": dynamics},
+        "poses": {"a": {"position": [1, 1, 1]}},
+        "trajectories": [{"name": "line", "translation": {"line": [[1, 1, 1], [1.2, 1.1, 1.5]]}}]
+    });
+    if planar {
+        // a planar platform's orientation is given (a turn about z), as a spatial one's
+        v["poses"]["a"] = json!({"position": [1, 1, 0], "euler_xyz_deg": [0, 0, 20]});
+        v["trajectories"][0] = json!({"name": "line", "translation": {"line": [[1, 1, 0], [1.2, 1.1, 0]]}, "orientation": {"slerp": ["a", [1, 0, 0, 0]]}});
+    }
+    v
+}
+
+/// `mobile(mobility)` changed by `f` must fail at `field` with `reason_part` in the message.
+fn expect_mobile(mobility: &str, f: impl FnOnce(&mut Value), field: &str, reason_part: &str) {
+    let mut v = mobile(mobility);
+    f(&mut v);
+    let e = parse_value(&v).map(|_| ()).expect_err(&format!("expected an error for {v}"));
+    assert_err(&e, field, reason_part);
+}
+
+#[test]
+fn point_masses_and_planar_platforms_read_and_refuse_what_they_cannot_be() {
+    // as written: a point mass without platform anchors, orientations or inertia; a planar
+    // platform whose inertia is its I_zz alone
+    let point = parse_value(&mobile("point")).expect("the point mass reads");
+    assert_eq!(point.robot.mobility, cablenav::model::Mobility::Point);
+    assert!(point.robot.cables.iter().all(|c| c.platform == nalgebra::Vector3::zeros()));
+    assert_eq!(point.poses[0].1.rotation, nalgebra::UnitQuaternion::identity());
+    let planar = parse_value(&mobile("planar")).expect("the planar robot reads");
+    assert_eq!(planar.robot.mobility.rows(), &[0, 1, 5]);
+    // the version, the name
+    expect_mobile("point", |v| v["format"] = json!("cablenav-scenario/4"), "robot.mobility", "cablenav-scenario/5");
+    expect_mobile("point", |v| v["robot"]["mobility"] = json!("wheeled"), "robot.mobility", "unknown mobility");
+    // a point mass: its cables end at the point, it has no inertia, at least three cables
+    expect_mobile("point", |v| v["robot"]["cables"][1]["platform"] = json!([0, 0, 0.1]), "robot.cables[1].platform", "end at the point");
+    expect_mobile("point", |v| v["robot"]["dynamics"]["inertia"] = json!([[1, 0, 0], [0, 1, 0], [0, 0, 1]]), "robot.dynamics.inertia", "no inertia");
+    expect_mobile("point", |v| v["robot"]["dynamics"]["com"] = json!([0, 0, 0.1]), "robot.dynamics.com", "the point");
+    expect_mobile("point", |v| drop(v["robot"]["cables"].as_array_mut().map(|c| c.pop())), "robot.cables", "a point-mass robot needs at least 3");
+    // a spatial platform still names every platform anchor and its inertia
+    expect_mobile("point", |v| v["robot"]["mobility"] = json!("spatial"), "robot.cables", "at least 6");
+    // a planar platform: everything in z = 0, turning about z only, I_zz > 0
+    expect_mobile("planar", |v| v["robot"]["cables"][2]["base"] = json!([2, 2, 0.5]), "robot.cables[2].base[2]", "plane z = 0");
+    expect_mobile("planar", |v| v["robot"]["cables"][0]["platform"] = json!([0.1, 0, 0.01]), "robot.cables[0].platform[2]", "plane z = 0");
+    expect_mobile("planar", |v| v["poses"]["a"]["position"] = json!([1, 1, 0.2]), "poses.a.position[2]", "plane z = 0");
+    expect_mobile("planar", |v| v["poses"]["a"]["euler_xyz_deg"] = json!([10, 0, 0]), "poses.a", "about the z axis");
+    expect_mobile("planar", |v| v["trajectories"][0]["translation"] = json!({"line": [[1, 1, 0], [1, 1, 0.3]]}), "trajectories[0].translation[2]", "plane z = 0");
+    expect_mobile(
+        "planar",
+        |v| v["trajectories"][0]["orientation"] = json!({"slerp": [[1, 0, 0, 0], [0.9950041652780258, 0.09983341664682815, 0, 0]]}),
+        "trajectories[0].orientation.slerp[1]",
+        "about the z axis",
+    );
+    expect_mobile("planar", |v| v["robot"]["dynamics"]["inertia"][2][2] = json!(0), "robot.dynamics.inertia[2][2]", "must be positive");
+}

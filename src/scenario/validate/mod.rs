@@ -74,6 +74,9 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
     motion::check_cable_lengths(&robot, &poses)?;
     let mut trajectories = motion::trajectories(&raw.trajectories, version >= 2, &poses, unoriented, &mut warnings)?;
     motion::durations(&raw, version, &mut trajectories)?;
+    if robot.mobility == crate::model::Mobility::Planar {
+        motion::in_plane(&poses, &trajectories)?;
+    }
     let queries = queries::queries(&raw.queries, &poses)?;
     let mut wrench = raw.wrench.as_ref().map(|w| wrench::wrench(w, version)).transpose()?;
     if let Some(w) = &mut wrench {
@@ -158,6 +161,17 @@ fn max_abs(v: &[f64]) -> f64 {
 /// A symmetric positive definite N×N matrix at `field`; symmetric up to a relative 1e-9 (then
 /// symmetrised), definiteness by Cholesky.
 fn spd<const N: usize>(field: &str, m: &Fixed<Fixed<f64, N>, N>, what: &str) -> Result<SMatrix<f64, N, N>> {
+    let sym = symmetric(field, m)?;
+    let scale = max_abs(sym.as_slice());
+    if scale == 0.0 || Cholesky::<f64, Const<N>>::new(sym).is_none() || !sym.iter().all(|x| x.is_finite()) {
+        return Err(Error::new(field, format!("not positive definite (its Cholesky factorisation fails): {what}")));
+    }
+    Ok(sym)
+}
+
+/// A symmetric N×N matrix of finite numbers at `field`; symmetric up to a relative 1e-9 (then
+/// symmetrised).
+fn symmetric<const N: usize>(field: &str, m: &Fixed<Fixed<f64, N>, N>) -> Result<SMatrix<f64, N, N>> {
     let mut a = SMatrix::<f64, N, N>::zeros();
     for (i, row) in m.0.iter().enumerate() {
         for (j, x) in row.0.iter().enumerate() {
@@ -175,11 +189,7 @@ fn spd<const N: usize>(field: &str, m: &Fixed<Fixed<f64, N>, N>, what: &str) -> 
             }
         }
     }
-    let sym = (a + a.transpose()) * 0.5;
-    if scale == 0.0 || Cholesky::<f64, Const<N>>::new(sym).is_none() || !sym.iter().all(|x| x.is_finite()) {
-        return Err(Error::new(field, format!("not positive definite (its Cholesky factorisation fails): {what}")));
-    }
-    Ok(sym)
+    Ok((a + a.transpose()) * 0.5)
 }
 
 /// Refuses a field of format version `least` (4 or 5) in a file of an older version.

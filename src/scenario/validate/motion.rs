@@ -398,3 +398,60 @@ fn knot_pose(kf: &str, k: &RawKnot, poses: &[(String, Pose)], unoriented: bool, 
         }
     }
 }
+
+/// Largest |z| of a position and largest x, y component of a unit quaternion accepted as "in the
+/// plane z = 0" for a planar robot.
+const PLANE_TOLERANCE: f64 = 1e-12;
+
+/// For a planar robot: every pose and trajectory stays in the plane z = 0 — positions (and knot
+/// velocities and accelerations) with z = 0, rotations about the z axis only.
+pub(super) fn in_plane(poses: &[(String, Pose)], trajectories: &[Trajectory]) -> Result<()> {
+    let flat = |field: String, v: &Vector3<f64>| -> Result<()> {
+        if v.z.abs() > PLANE_TOLERANCE {
+            return Err(Error::new(format!("{field}[2]"), format!("a planar robot moves in the plane z = 0, got z = {}", v.z)));
+        }
+        Ok(())
+    };
+    let about_z = |field: String, q: &UnitQuaternion<f64>| -> Result<()> {
+        if q.i.abs() > PLANE_TOLERANCE || q.j.abs() > PLANE_TOLERANCE {
+            let axis = q.axis().map_or(Vector3::z(), |a| a.into_inner());
+            return Err(Error::new(field, format!("a planar robot turns about the z axis only, got a rotation about [{:.6}, {:.6}, {:.6}]", axis.x, axis.y, axis.z)));
+        }
+        Ok(())
+    };
+    for (name, p) in poses {
+        flat(format!("poses.{name}.position"), &p.position)?;
+        about_z(format!("poses.{name}"), &p.rotation)?;
+    }
+    for (k, t) in trajectories.iter().enumerate() {
+        let path = format!("trajectories[{k}]");
+        if let Some(knots) = &t.knots {
+            for (j, knot) in knots.points.iter().enumerate() {
+                let kf = format!("{path}.knots[{j}]");
+                flat(format!("{kf}.position"), &knot.pose.position)?;
+                flat(format!("{kf}.velocity"), &knot.velocity)?;
+                flat(format!("{kf}.acceleration"), &knot.acceleration)?;
+                about_z(kf, &knot.pose.rotation)?;
+            }
+            continue;
+        }
+        let segments = std::iter::once((&t.translation, &t.orientation)).chain(t.more.iter().map(|s| (&s.translation, &s.orientation)));
+        for (j, (translation, orientation)) in segments.enumerate() {
+            let pf = if t.more.is_empty() { path.clone() } else { format!("{path}.pieces[{j}]") };
+            let points: Vec<Vector3<f64>> = match translation {
+                Translation::Polynomial(c) => c[2].iter().map(|z| Vector3::new(0.0, 0.0, *z)).collect(),
+                Translation::Bezier(ps) => ps.clone(),
+                Translation::Line(a, b) => vec![*a, *b],
+            };
+            for p in &points {
+                flat(format!("{pf}.translation"), p)?;
+            }
+            // (a turn comes from knots alone, checked above)
+            if let Orientation::Slerp(qs, qe) = orientation {
+                about_z(format!("{pf}.orientation.slerp[0]"), qs)?;
+                about_z(format!("{pf}.orientation.slerp[1]"), qe)?;
+            }
+        }
+    }
+    Ok(())
+}

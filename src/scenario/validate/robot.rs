@@ -3,7 +3,7 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use super::{needs_format, non_negative, positive, spd, vec3, MAX_CABLES, MIN_CABLES, STANDARD_GRAVITY};
+use super::{needs_format, non_negative, positive, spd, symmetric, vec3, MAX_CABLES, MIN_CABLES, STANDARD_GRAVITY};
 use crate::error::{Error, Result};
 use crate::model::{Bounds, Cable, Clearance, Dynamics, Mobility, Robot, Winch};
 use crate::scenario::json::{RawBounds, RawCable, RawCableBounds, RawRobot, RawScenario, RawWinch, ScalarOrList};
@@ -206,6 +206,14 @@ pub(super) fn dynamics(raw: &RawScenario, version: u8, mobility: Mobility) -> Re
         (None, Mobility::Point) => Matrix3::zeros(),
         (Some(_), Mobility::Point) => return Err(Error::new("robot.dynamics.inertia", "a point mass has no inertia: omit it")),
         (None, _) => return Err(Error::new("robot.dynamics.inertia", "missing field `inertia`: a rigid platform's inertia tensor about its centre of mass (kg·m²); only a point mass has none")),
+        // turning about z alone, a planar platform's inertia is its I_zz
+        (Some(i), Mobility::Planar) => {
+            let i = symmetric("robot.dynamics.inertia", i)?;
+            if !(i[(2, 2)] > 0.0) {
+                return Err(Error::new("robot.dynamics.inertia[2][2]", format!("a planar platform's moment of inertia about z must be positive, got {}", i[(2, 2)])));
+            }
+            i
+        }
         (Some(i), _) => spd("robot.dynamics.inertia", i, "an inertia tensor about the centre of mass is symmetric positive definite (kg·m²)")?,
     };
     if mobility == Mobility::Point && com != Vector3::zeros() {
