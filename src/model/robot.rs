@@ -66,6 +66,17 @@ impl Mobility {
         self.rows().len()
     }
 
+    /// The pose coordinates it moves along: all six for a spatial platform, x, y, z for a point
+    /// mass, x, y and σ (the turn about z, at tilt θ = 0) for a planar platform.
+    pub fn coords(self) -> &'static [super::Coord] {
+        use super::Coord;
+        match self {
+            Mobility::Spatial => &Coord::ALL,
+            Mobility::Point => &[Coord::X, Coord::Y, Coord::Z],
+            Mobility::Planar => &[Coord::X, Coord::Y, Coord::Sigma],
+        }
+    }
+
     /// The name `robot.mobility` gives it.
     pub fn name(self) -> &'static str {
         match self {

@@ -124,11 +124,13 @@ impl Scenario {
     }
 
     /// The coordinate called `name`: a joint coordinate's name (or `q1`, `q2`, …) for a
-    /// multi-link robot, one of x, y, z, phi, theta, sigma for a platform robot. Errors name
-    /// `field`.
+    /// multi-link robot, one of x, y, z, phi, theta, sigma for a spatial platform (x, y, z for a
+    /// point mass; x, y, sigma for a planar platform). Errors name `field`.
     pub fn coord(&self, field: &str, name: &str) -> Result<Coord> {
         let Some(chain) = &self.robot.chain else {
-            return Coord::parse(name).ok_or_else(|| Error::new(field, format!("{name:?} is not one of x, y, z, phi, theta, sigma")));
+            let free = self.robot.mobility.coords();
+            let names = || free.iter().map(|c| c.name()).collect::<Vec<_>>().join(", ");
+            return Coord::parse(name).filter(|c| free.contains(c)).ok_or_else(|| Error::new(field, format!("{name:?} is not a coordinate of this robot ({}): its coordinates are {}", self.robot.mobility.name(), names())));
         };
         let by_q = name.strip_prefix('q').and_then(|k| k.parse::<usize>().ok()).filter(|k| (1..=chain.dof()).contains(k)).map(|k| k - 1);
         let index = chain.coord_index(name).or(by_q).ok_or_else(|| {
@@ -138,11 +140,15 @@ impl Scenario {
         Ok(Coord::Joint { index: index as u8, angle: chain.is_angle(index) })
     }
 
-    /// Every coordinate of a configuration, in order: x, y, z, φ, θ, σ for a platform robot, the
-    /// joint coordinates for a multi-link robot (named by [`Scenario::coord_name`]).
+    /// Every coordinate the robot moves along, in order: x, y, z, φ, θ, σ for a spatial platform
+    /// (x, y, z for a point mass, x, y, σ for a planar platform), the joint coordinates for a
+    /// multi-link robot (named by [`Scenario::coord_name`]). [`Coord::index`] places each in a
+    /// configuration.
     pub fn coords(&self) -> Vec<Coord> {
-        let n = self.robot.chain.as_ref().map_or(6, |c| c.dof());
-        (0..n).map(|k| self.coord_at(k)).collect()
+        match &self.robot.chain {
+            Some(c) => (0..c.dof()).map(|k| self.coord_at(k)).collect(),
+            None => self.robot.mobility.coords().to_vec(),
+        }
     }
 
     /// The names of the configurations commands start from: a platform robot's poses, a

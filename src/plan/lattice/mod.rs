@@ -130,8 +130,9 @@ fn metric(a: &Pose, b: &Pose, rotation_length: f64) -> f64 {
 
 impl LatticePlanner {
     /// Prepares the lattice planner for scenario query `query`: the free coordinates are the ones
-    /// the query does not fix, over its `region` (or [`default_range`]), with `params.steps`
-    /// values each. Start and goal must be feasible, inside the region and on the same slice.
+    /// the robot moves along (x, y, z for a point mass; x, y, σ for a planar platform) that the
+    /// query does not fix, over its `region` (or [`default_range`]), with `params.steps` values
+    /// each. Start and goal must be feasible, inside the region and on the same slice.
     pub fn new(scenario: &Scenario, query: &str, params: LatticeParams) -> Result<LatticePlanner> {
         let q = scenario.queries.iter().find(|q| q.name == query).ok_or_else(|| {
             let names: Vec<&str> = scenario.queries.iter().map(|q| q.name.as_str()).collect();
@@ -144,7 +145,8 @@ impl LatticePlanner {
         let field = format!("queries[{query}]");
         let (start, goal) = (*scenario.pose(&q.start)?, *scenario.pose(&q.goal)?);
         let (sc, mut gc) = (start.coords(), goal.coords());
-        let axes: Vec<Coord> = Coord::ALL.into_iter().filter(|c| !q.fixed.contains(c)).collect();
+        let moves = scenario.robot.mobility.coords();
+        let axes: Vec<Coord> = moves.iter().copied().filter(|c| !q.fixed.contains(c)).collect();
         if axes.is_empty() {
             return Err(Error::new(format!("{field}.fixed"), "every coordinate is fixed: nothing is left to plan over"));
         }
@@ -162,7 +164,10 @@ impl LatticePlanner {
                 return Err(Error::new(format!("{field}.goal"), format!("goal pose \"{}\" is not on the start's slice: {}", q.goal, differ.join(", "))));
             }
         }
-        for c in &q.fixed {
+        // the fixed coordinates, and those the robot does not move along (a point mass's angles;
+        // a planar platform's z, and φ and θ, which leave its turn Rz(σ) as it is at θ = 0), are
+        // the start's
+        for c in Coord::ALL.into_iter().filter(|c| q.fixed.contains(c) || !moves.contains(c)) {
             gc[c.index()] = sc[c.index()];
         }
         let ranges: Vec<[f64; 2]> = axes.iter().map(|&c| q.region.iter().find(|(r, _)| *r == c).map_or_else(|| default_range(scenario, c, &sc), |(_, r)| *r)).collect();

@@ -326,7 +326,7 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
 
     let readout = move || {
         if let (Some(q), Ok(s)) = (shown_config.get(), parsed.get().0.as_ref()) {
-            return Some(s.coords().iter().zip(&q).map(|(c, v)| format!("{} {}", s.coord_name(*c), fmt_num(*v))).collect::<Vec<_>>().join(" · "));
+            return Some(s.coords().iter().filter_map(|c| q.get(c.index()).map(|v| format!("{} {}", s.coord_name(*c), fmt_num(*v)))).collect::<Vec<_>>().join(" · "));
         }
         let pose = shown_pose.get()?;
         let c = pose.coords();
