@@ -135,6 +135,8 @@ pub(crate) fn load_polys(local: &Local, load: &Load, law: Option<&TimeLaw>) -> L
     let Some(dynamics) = &load.dynamics else {
         return LoadPolys { rows: std::array::from_fn(|j| if j < 3 { w.scale(w0[j]) } else { w2.scale(w0[j]) }), inertial: None, scale: None };
     };
+    // a point mass balances forces only: its moment rows stay zero, unexpanded
+    let moments = load.rows().iter().any(|&r| r >= 3);
     // r̃ = (x_c − c)·w: from the wrench point to the centre of mass (P̂ cancels)
     let (com, at) = (times_const(&local.rotation, &dynamics.com), point_offset(local, &load.wrench));
     let r: [Bern; 3] = [0, 1, 2].map(|i| com[i].sub(&at[i]));
@@ -145,20 +147,23 @@ pub(crate) fn load_polys(local: &Local, load: &Load, law: Option<&TimeLaw>) -> L
     let statics: [Bern; 6] = std::array::from_fn(|j| {
         if j < 3 {
             w.scale(w0[j] + weight[j])
-        } else {
+        } else if moments {
             w2.scale(w0[j]).add(&static_moment[j - 3].mul(w))
+        } else {
+            Bern::constant(0.0)
         }
     });
     let Some(law) = law else { return LoadPolys { rows: statics, inertial: None, scale: None } };
-    let inertial = inertial_rows(local, dynamics, &com, &r, law);
+    let inertial = inertial_rows(local, dynamics, &com, &r, law, moments);
     // everything over w⁴: the static rows times w⁴
     let w4 = w2.mul(&w2);
     LoadPolys { rows: statics.each_ref().map(|p| p.mul(&w4)), inertial: Some(inertial), scale: Some(w4) }
 }
 
 /// The d'Alembert rows over w⁴ (D_w-scaled): force −m Ã·w², moment
-/// −m (r̃ × Ã)·w² − (M̂ I_b M̂ᵀ α̃)·w − g² Ω̂ × (M̂ I_b M̂ᵀ Ω̂); `com` is M̂ c_b.
-fn inertial_rows(local: &Local, d: &Dynamics, com: &[Bern; 3], r: &[Bern; 3], law: &TimeLaw) -> [Bern; 6] {
+/// −m (r̃ × Ã)·w² − (M̂ I_b M̂ᵀ α̃)·w − g² Ω̂ × (M̂ I_b M̂ᵀ Ω̂) (zero without `moments`); `com` is
+/// M̂ c_b.
+fn inertial_rows(local: &Local, d: &Dynamics, com: &[Bern; 3], r: &[Bern; 3], law: &TimeLaw, moments: bool) -> [Bern; 6] {
     let w = &local.weight;
     let dw = w.derivative();
     let ddw = dw.derivative();
@@ -172,6 +177,10 @@ fn inertial_rows(local: &Local, d: &Dynamics, com: &[Bern; 3], r: &[Bern; 3], la
         let second = x2.mul(w).sub(&x[i].mul(&ddw)); // X̂''w − X̂w''
         gdg.mul(&first).mul(w).add(&gg.mul(&second.mul(w).sub(&dw.mul(&first).scale(2.0))))
     });
+    let w2 = w.mul(w);
+    if !moments {
+        return std::array::from_fn(|j| if j < 3 { accel[j].mul(&w2).scale(-d.mass) } else { Bern::constant(0.0) });
+    }
     // Ω̂ = axial vector of the skew part of M̂'M̂ᵀ
     let m = &local.rotation;
     let dm: [[Bern; 3]; 3] = m.each_ref().map(|row| row.each_ref().map(Bern::derivative));
@@ -189,7 +198,6 @@ fn inertial_rows(local: &Local, d: &Dynamics, com: &[Bern; 3], r: &[Bern; 3], la
     };
     let i_alpha = inertia_times(&alpha);
     let gyro = cross(&omega, &inertia_times(&omega));
-    let w2 = w.mul(w);
     let r_x_a = cross(r, &accel);
     std::array::from_fn(|j| {
         if j < 3 {

@@ -65,6 +65,8 @@ pub struct TensionPolys {
     columns: Vec<(usize, Bern, Bern, Option<Bern>)>,
     /// P_i = ‖s̃_i‖² per cable.
     len2: Vec<Bern>,
+    /// Whether the wrench set is its nominal wrench alone (E⁻¹ = 0, so β_i = 0).
+    single: bool,
 }
 
 impl TensionPolys {
@@ -118,7 +120,7 @@ impl TensionPolys {
             columns.push((i, a, b, inertial));
         }
         let len2 = local.len2();
-        TensionPolys { span, delta: delta.unwrap_or_else(|| Bern::constant(0.0)), columns, len2, local }
+        TensionPolys { span, delta: delta.unwrap_or_else(|| Bern::constant(0.0)), columns, len2, local, single: wrench.is_single() }
     }
 }
 
@@ -174,6 +176,17 @@ impl CableTension {
             }
         };
         match self.side {
+            // a single wrench (β = 0): √P a > k ≥ 0 iff a > 0 and P a² > k² (for k = 0, a > 0);
+            // √P a < K iff a < 0 or K² > P a²
+            TensionSide::Lower if t.single && self.bound == 0.0 => all_of!(tol; h(a.clone()) => GT),
+            TensionSide::Lower if t.single => {
+                let k = scaled_bound();
+                all_of!(tol; h(a.clone()) => GT, h(p.mul(&a.mul(&a)).sub(&k.mul(&k))) => GT)
+            }
+            TensionSide::Upper if t.single => {
+                let kk = scaled_bound();
+                any_of!(all_of!(tol; h(a.clone()) => LT), all_of!(tol; h(kk.mul(&kk).sub(&p.mul(&a.mul(&a)))) => GT))
+            }
             // √P (a − √β) > k with k ≥ 0: a > √β, then square.
             TensionSide::Lower if self.bound == 0.0 => all_of!(tol; h(a.clone()) => GT, h(a2_minus_b()) => GT),
             TensionSide::Lower => {
