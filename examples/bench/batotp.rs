@@ -1011,10 +1011,10 @@ pub fn run_batotp() {
         d.mean
     );
     println!();
-    println!("| planner | duration, rest to rest | the limits hold | compute time |");
+    println!("| planner | duration, rest to rest | where the limits are enforced | compute time |");
     println!("|---|---:|---|---:|");
     println!(
-        "| batotp (`Release/batest`; {compiler}, -O3) | {:.3} s printed; its time law (forward integration) {:.3} s | at its {} s integration steps | {} without file I/O (input interpolation {}, integration {}), {} with it; the process {} wall (medians of {RUNS} runs) |",
+        "| batotp (`Release/batest`; {compiler}, -O3) | {:.3} s printed; its time law (forward integration) {:.3} s | at its {} s integration steps (its output, below, leaves them) | {} without file I/O (input interpolation {}, integration {}), {} with it; the process {} wall (medians of {RUNS} runs) |",
         last.duration,
         last.integrated,
         num(c.integ_res),
@@ -1029,7 +1029,7 @@ pub fn run_batotp() {
             Ok((r, t)) => {
                 let certified = r.duration.map_or("not certified".to_string(), |x| format!("{x:.3} s certified"));
                 println!(
-                    "| cablenav (`plan::timing::fastest`, what `cablenav time` runs), {cells} cells{} | {certified} (the grid's optimum {:.3} s; {} cells, {} rounds) | everywhere along the path | {} (median of {RUNS} runs, both cores) |",
+                    "| cablenav (`plan::timing::fastest`, what `cablenav time` runs), {cells} cells{} | {certified} (the grid's optimum {:.3} s; {} cells, {} rounds) | everywhere along the path (certified) | {} (median of {RUNS} runs, both cores) |",
                     if *cells == TimingOptions::default().cells { " (the default)" } else { "" },
                     r.uncertified_duration,
                     r.cells,
@@ -1177,6 +1177,7 @@ pub fn run_batotp() {
         worst_min.1,
         worst_min.0
     );
+    println!();
     let relative = |r: &TimingReport| r.duration.map(|x| 100.0 * (x / last.integrated - 1.0));
     let said: Vec<String> = timed
         .iter()
