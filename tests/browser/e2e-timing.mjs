@@ -226,5 +226,25 @@ await test('"Give the platform a mass" on the 7-cable preset: format 4, and a ty
   return `1 kg held from t = ${light.feasible[0][0].toFixed(4)} (wrench feasibility), 2 kg nowhere, both as the CLI says`;
 });
 
+await test('a point mass (Laval\'s CSPR, batotp\'s case): its fastest safe timing on the page equals `cablenav time`', async () => {
+  await page.goto(`${base}/#preset=laval-cspr3dof`, { waitUntil: 'load' });
+  await page.waitForSelector('section[data-testid="result"][data-origin="laval-cspr3dof"] svg[data-testid="strip"]', { timeout: TIMEOUT });
+  await openTab(page, 'intervals');
+  await page.waitForSelector('[data-testid="fastest-run"]', { timeout: TIMEOUT });
+  await page.click('[data-testid="fastest-run"]');
+  await page.waitForSelector('[data-testid="fastest"][data-trajectory="batotp-path"]', { timeout: 4 * TIMEOUT });
+  const cli = cliJson(root, ['time', 'static/scenarios/laval-cspr3dof.json', '--trajectory', 'batotp-path']);
+  const duration = Number(await page.getAttribute('[data-testid="fastest"]', 'data-duration'));
+  if (!(cli.duration > 0) || Math.abs(duration - cli.duration) > 1e-9 * cli.duration) throw new Error(`page ${duration} s, CLI ${cli.duration} s`);
+  const rows = await page.$$eval('table[data-testid="fastest-binding"] tbody tr', (trs) => trs.map((tr) => tr.lastElementChild.textContent));
+  if (rows.join('|') !== cli.binding.map((b) => b.constraint).join('|')) throw new Error(`binding: page ${rows}, CLI ${cli.binding.map((b) => b.constraint)}`);
+  // the speed and the three cables' tensions
+  const panels = await page.$$eval('[data-testid="chart-fastest"] [data-testid="fastest-panel"] path', (ps) => ps.length);
+  if (panels !== 1 + 3) throw new Error(`${panels} lines`);
+  await page.screenshot({ path: join(artifacts, 'timing-point-mass.png'), fullPage: true });
+  problems.assertNone();
+  return `${duration.toFixed(4)} s certified (CLI ${cli.duration.toFixed(4)} s), ${rows.length} binding stretches`;
+});
+
 await close();
 finish();

@@ -28,6 +28,7 @@ pub fn label(id: &str) -> &str {
         "thesis-fig4-6-vertical" => "Thesis Fig. 4.6a: vertical",
         "thesis-fig4-6-horizontal" => "Thesis Fig. 4.6b: horizontal",
         "thesis-fig4-7-circle" => "Thesis Fig. 4.7: 1 m circle",
+        "laval-cspr3dof" => "Laval CSPR: point mass, 3 cables (batotp's case)",
         "bmarm-x4-2" => "4-DoF arm, multi-link",
         other => other,
     }
@@ -49,8 +50,8 @@ mod tests {
         assert_eq!(find("cdpr7-box"), Some(1));
         assert_eq!(find("nope"), None);
         assert_eq!(ids.last(), Some(&"bmarm-x4-2"), "the multi-link robots last");
-        // the seven presets of the page, each with its own label
-        for id in ["cdpr7", "cdpr7-box", "cdpr7-tree", "robocrane", "robocrane-timed", "blank", "bmarm-x4-2"] {
+        // the page's own presets, each with its own label
+        for id in ["cdpr7", "cdpr7-box", "cdpr7-tree", "robocrane", "robocrane-timed", "laval-cspr3dof", "blank", "bmarm-x4-2"] {
             assert!(find(id).is_some(), "{id}");
             assert_ne!(label(id), id);
         }

@@ -35,7 +35,7 @@ use cablenav::Scenario;
 use exports::Exports;
 use glam::DVec3;
 use leptos::prelude::*;
-use path::{is_chain, joint_overlay, joint_path, scenario_of, PathSignals};
+use path::{is_chain, is_planar, joint_overlay, joint_path, scenario_of, PathSignals};
 use playback::Scrubber;
 use stage::DragBar;
 
@@ -80,6 +80,13 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
     });
     let selected = RwSignal::new(None::<usize>);
     let constraint = RwSignal::new(Constraint::View);
+    // a planar robot moves in the plane z = 0: its points are dragged in the xy plane unless the
+    // user picks otherwise
+    Effect::new(move |_| {
+        if is_planar(&parsed.get()) && constraint.get_untracked() == Constraint::View {
+            constraint.set(Constraint::Plane(2));
+        }
+    });
     let update_ms = RwSignal::new(None::<f64>);
     let drag_active = RwSignal::new(false);
     let nudge_step = RwSignal::new(0.05f64);

@@ -106,6 +106,12 @@ pub fn is_chain(parsed: &Parsed) -> bool {
     scenario_of(parsed).is_some_and(|s| s.robot.chain.is_some())
 }
 
+/// Whether the scenario parsed is a planar robot's (format 5 `robot.mobility`), which moves in
+/// the plane z = 0.
+pub fn is_planar(parsed: &Parsed) -> bool {
+    scenario_of(parsed).is_some_and(|s| s.robot.mobility == cablenav::model::Mobility::Planar)
+}
+
 /// A multi-link robot's path `index` (clamped to its paths), if it has any.
 pub fn joint_path(s: &Scenario, index: usize) -> Option<cablenav::verify::Along<'_>> {
     let all = cablenav::verify::all_along(s);
