@@ -118,3 +118,33 @@ fn the_lattice_planner_finds_a_path_that_verifies_exactly() {
         }
     }
 }
+
+#[test]
+fn slices_over_their_own_coordinates_classify_as_the_per_pose_checks() {
+    use cablenav::verify::slice::{slice, Class};
+    for (s, axes, range) in [
+        (point_mass(), [Coord::X, Coord::Y], [[0.1, 3.9], [0.1, 3.9]]),
+        (planar(), [Coord::X, Coord::Sigma], [[0.2, 2.8], [-1.5, 1.5]]),
+    ] {
+        let res = 24;
+        let map = slice(&s, "a", axes, res, range).unwrap();
+        let conds = for_scenario(&s);
+        let base = s.pose("a").unwrap().coords();
+        let (mut feasible, mut other) = (0, 0);
+        for j in 0..res {
+            for i in 0..res {
+                let mut c = base;
+                c[axes[0].index()] = range[0][0] + (range[0][1] - range[0][0]) * (i as f64 + 0.5) / res as f64;
+                c[axes[1].index()] = range[1][0] + (range[1][1] - range[1][0]) * (j as f64 + 0.5) / res as f64;
+                let cables = cables_at(&s.robot, &Pose::from_coords(c));
+                let bad = conds.iter().any(|cond| cond.check(&cables).violated);
+                let class = map.classes[j * res + i];
+                assert_eq!(class == Class::Feasible, !bad, "{} cell ({i}, {j}) at {c:?}: {class:?}", s.name);
+                if bad { other += 1 } else { feasible += 1 }
+            }
+        }
+        assert!(feasible > 0 && other > 0, "{}: {feasible} feasible, {other} not", s.name);
+    }
+    // a point mass has no θ to slice along
+    assert_eq!(point_mass().coord("--axes", "theta").unwrap_err().field, "--axes");
+}
