@@ -471,7 +471,7 @@ fn random_case_of(rng: &mut Rng, m: usize) -> Case {
         let low = rng.int(0, 2);
         (0..m)
             .map(|k| {
-                let angle = 2.0 * std::f64::consts::PI * (k as f64 + rng.range(-0.2, 0.2)) / m as f64;
+                let angle = ring_angle(rng, k, m);
                 let below = k < low;
                 let base = v3(b * angle.cos(), b * angle.sin(), if below { 4.0 } else { 0.0 });
                 // alternate twists, so that the cables resist turning about z both ways
@@ -510,6 +510,11 @@ fn random_case_of(rng: &mut Rng, m: usize) -> Case {
     Case { mobility: Mobility::Spatial, cables, tension, mass, com: rng.in_box(0.1), inertia, gravity, wrench, winch, path: Path::Slerp(traj), duration: rng.range(0.5, 2.5), h: H, eps: 1e-7 }
 }
 
+/// The angle of anchor `k` of `m` around a ring, jittered by a fifth of the spacing.
+fn ring_angle(rng: &mut Rng, k: usize, m: usize) -> f64 {
+    2.0 * std::f64::consts::PI * (k as f64 + rng.range(-0.2, 0.2)) / m as f64
+}
+
 /// A random point mass (3 to 8 cables meeting at it: hanging from a ring at z = 0, up to two
 /// pulling from below), with mass, a random load and a random timed path (its orientation
 /// immaterial: the identity throughout).
@@ -519,7 +524,7 @@ fn random_point_case(rng: &mut Rng) -> Case {
     let low = if m > 3 { rng.int(0, 2) } else { 0 };
     let cables = (0..m)
         .map(|k| {
-            let angle = 2.0 * std::f64::consts::PI * (k as f64 + rng.range(-0.2, 0.2)) / m as f64;
+            let angle = ring_angle(rng, k, m);
             let z = if k < low { 4.0 } else { rng.range(-0.2, 0.2) };
             (v3(b * angle.cos(), b * angle.sin(), z), v3(0.0, 0.0, 0.0))
         })
@@ -553,7 +558,7 @@ fn random_planar_case(rng: &mut Rng) -> Case {
     let (b, a) = (rng.range(1.5, 2.5), rng.range(0.3, 0.6));
     let cables = (0..m)
         .map(|k| {
-            let angle = 2.0 * std::f64::consts::PI * (k as f64 + rng.range(-0.2, 0.2)) / m as f64;
+            let angle = ring_angle(rng, k, m);
             let twist = if k % 2 == 0 { 0.6 } else { -0.6 };
             let on = v3(a * (angle + twist).cos() + rng.range(-0.05, 0.05), a * (angle + twist).sin() + rng.range(-0.05, 0.05), 0.0);
             (v3(b * angle.cos(), b * angle.sin() - 0.5 * b, 0.0), on)

@@ -37,6 +37,7 @@
 //! use the XML toolkit of `xml.rs` (elements, numbers, the cable set, errors with the line) and
 //! write the scenario with the types of `out.rs`.
 
+mod joint;
 mod links;
 mod out;
 mod platform;

@@ -12,6 +12,7 @@ use serde::Serialize;
 use std::collections::BTreeMap;
 
 use super::out::{OutCable, OutCableBounds, OutDynamics, OutRobot, Properties};
+use super::joint::place;
 use super::trajectories::{splines, OutSpline};
 use super::xml::{cable_set, child, child_numbers, children, document, line, numbers_n, properties};
 use super::Import;
@@ -53,34 +54,6 @@ fn reduced(joint: &str) -> Option<String> {
             &joint[7..]
         )),
         _ => None,
-    }
-}
-
-/// The number of coordinates (q) of a platform joint.
-pub(super) fn coordinates(mobility: Mobility) -> usize {
-    match mobility {
-        Mobility::Spatial => 6,
-        Mobility::Planar | Mobility::Point => 3,
-    }
-}
-
-/// Where joint coordinates `q` put the platform: its position (`origin` plus the joint's
-/// translation) and its XYZ Euler angles in radians (none for a point mass).
-pub(super) fn place(mobility: Mobility, origin: [f64; 3], q: &[f64]) -> ([f64; 3], Option<[f64; 3]>) {
-    match mobility {
-        Mobility::Spatial => ([origin[0] + q[0], origin[1] + q[1], origin[2] + q[2]], Some([q[3], q[4], q[5]])),
-        Mobility::Planar => ([origin[0] + q[0], origin[1] + q[1], origin[2]], Some([0.0, 0.0, q[2]])),
-        Mobility::Point => ([origin[0] + q[0], origin[1] + q[1], origin[2] + q[2]], None),
-    }
-}
-
-/// A joint rate (`q_dot`, `q_ddot`) split into its linear part, a 3-vector, and its angular
-/// part.
-pub(super) fn split_rate(mobility: Mobility, v: &[f64]) -> ([f64; 3], &[f64]) {
-    match mobility {
-        Mobility::Spatial => ([v[0], v[1], v[2]], &v[3..]),
-        Mobility::Planar => ([v[0], v[1], 0.0], &v[2..]),
-        Mobility::Point => ([v[0], v[1], v[2]], &[]),
     }
 }
 
@@ -323,8 +296,8 @@ fn platform(xml: &str) -> Result<Platform> {
         ));
     };
     let q = match joint.attribute("q_initial") {
-        Some(text) => numbers_n(FILE, joint, "q_initial", text, coordinates(mobility))?,
-        None => vec![0.0; coordinates(mobility)],
+        Some(text) => numbers_n(FILE, joint, "q_initial", text, mobility.dof())?,
+        None => vec![0.0; mobility.dof()],
     };
     let (parent_location, parent_num) = match child(*link, "parent") {
         None => ([0.0; 3], 0.0),
@@ -442,14 +415,4 @@ mod tests {
         assert!(super::super::links::is_multi_link(arm));
     }
 
-    /// CASPR's coordinates: PLANAR_XY's q = x y θ (θ about z), T_XYZ's q = x y z.
-    #[test]
-    fn coordinates_place_the_platform() {
-        let o = [1.0, 2.0, 0.0];
-        assert_eq!(place(Mobility::Planar, o, &[0.5, 0.25, 0.3]), ([1.5, 2.25, 0.0], Some([0.0, 0.0, 0.3])));
-        assert_eq!(place(Mobility::Point, o, &[0.5, 0.25, 0.3]), ([1.5, 2.25, 0.3], None));
-        assert_eq!(place(Mobility::Spatial, o, &[0.5, 0.25, 0.3, 0.1, 0.2, 0.3]), ([1.5, 2.25, 0.3], Some([0.1, 0.2, 0.3])));
-        assert_eq!(split_rate(Mobility::Planar, &[1.0, 2.0, 3.0]), ([1.0, 2.0, 0.0], &[3.0][..]));
-        assert_eq!(split_rate(Mobility::Point, &[1.0, 2.0, 3.0]), ([1.0, 2.0, 3.0], &[][..]));
-    }
 }

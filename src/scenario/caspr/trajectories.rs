@@ -15,7 +15,7 @@
 
 use serde::Serialize;
 
-use super::platform::{coordinates, place, split_rate};
+use super::joint::{place, split_rate};
 use super::xml::{child, children, document, line, numbers_n};
 use crate::error::{Error, Result};
 use crate::model::Mobility;
@@ -95,7 +95,7 @@ fn trajectory(node: roxmltree::Node, id: &str, spline: &'static str, mobility: M
                 .ok_or_else(|| Error::new(FILE, format!("{}: point {j} of \"{id}\" needs a finite time attribute", line(p))))?;
             time = if absolute { given } else { time + given };
         }
-        let n = coordinates(mobility);
+        let n = mobility.dof();
         let read = |tag: &str| -> Result<Vec<f64>> {
             match child(p, tag) {
                 Some(c) => numbers_n(FILE, c, &format!("<{tag}>"), c.text().unwrap_or_default(), n),
