@@ -538,7 +538,7 @@ FIRST_LOAD=$(node tests/browser/first-load.mjs "$TMP/page" | grep '^ok ' | sed -
   echo "## Page weight"
   echo
   echo "The page as \`scripts/build-page.sh\` builds it (the \`page\` profile: opt-level z, fat LTO,"
-  echo "one codegen unit, the core at opt-level \"s\"; Leptos' erase_components; wasm-opt -Oz), gzip -9:"
+  echo "one codegen unit, the core at opt-level \"z\"; Leptos' erase_components; wasm-opt -Oz), gzip -9:"
   echo
   echo "    ${WEIGHT#page weight: }"
   echo
