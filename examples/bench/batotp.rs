@@ -45,8 +45,9 @@
 //! positions 0.02 s apart, as the file says) into a timed quintic spline through knots (format 4),
 //! `batotp-output`, each knot with the velocity and acceleration of the natural cubic spline
 //! through the positions — the interpolation batotp itself uses for the tensions it writes, so the
-//! quintic through those knots is that cubic spline exactly — and verifies it exactly (where and
-//! which constraints it leaves between its grid points), and point-wise at its knots (cablenav's
+//! quintic through those knots is that cubic spline exactly — and verifies it exactly (where it
+//! leaves the limits between its grid points, each stretch named by what cablenav's per-pose check
+//! finds violated just inside its start), and point-wise at its knots (cablenav's
 //! per-pose check, and the tensions computed here independently, against the ones batotp writes),
 //! and samples it 100 times per step for how far past each limit it goes.
 //!
@@ -833,20 +834,6 @@ fn median(mut v: Vec<f64>) -> f64 {
 // ---------------------------------------------------------------------------------------------
 // The comparison
 
-/// Sections in seconds of a verification, readably: "[a, b] s (constraint)".
-fn stretches(r: &VerifyReport, duration: f64) -> Vec<(f64, f64, String)> {
-    let Some(sec) = &r.seconds else { return vec![] };
-    sec.infeasible
-        .iter()
-        .map(|&[a, b]| {
-            // the constraint of the boundary entering the stretch, else of the one leaving it
-            let near = |s: f64| r.boundaries.iter().min_by(|x, y| (x.t * duration - s).abs().total_cmp(&(y.t * duration - s).abs()));
-            let what = near(a).filter(|x| (x.t * duration - a).abs() < 1e-6).or_else(|| near(b)).map_or(String::new(), |x| x.constraint.clone());
-            (a, b, what)
-        })
-        .collect()
-}
-
 fn ms(s: f64) -> String {
     if s < 0.1 {
         format!("{:.1} ms", s * 1000.0)
@@ -877,17 +864,49 @@ fn cablenav_timing(json: &str, cells: usize) -> Timed {
     Ok((last.expect("runs"), median(times)))
 }
 
-/// cablenav's verification of batotp's output: exact (and its time), and the per-pose check at
-/// every knot.
-fn cablenav_verify(json: &str, ks: &[Knot]) -> Result<(VerifyReport, f64, Vec<PoseReport>), String> {
+/// An infeasible stretch of batotp's output: [start, end] in seconds and the conditions cablenav's
+/// per-pose check finds violated just inside its start.
+struct Stretch {
+    start: f64,
+    end: f64,
+    violated: Vec<String>,
+}
+
+/// cablenav's verification of batotp's output.
+struct Verified {
+    /// The exact verification.
+    report: VerifyReport,
+    /// Its time (s).
+    seconds: f64,
+    /// The per-pose check at every knot.
+    checks: Vec<PoseReport>,
+    /// The infeasible stretches, named.
+    stretches: Vec<Stretch>,
+}
+
+/// cablenav's verification of batotp's output: exact (and its time), the per-pose check at every
+/// knot, and each infeasible stretch named by the conditions the check finds violated just inside
+/// its start (a boundary the verifier could not certify has no label of its own: it is reported
+/// as a few nanoseconds of `uncertain`).
+fn cablenav_verify(json: &str, ks: &[Knot]) -> Result<Verified, String> {
     let s = with_output(json, ks).map_err(|e| format!("batotp's output as a trajectory: {e}"))?;
     let traj = s.trajectories.iter().find(|t| t.name == OUTPUT_NAME).ok_or("no output trajectory")?;
     let started = Instant::now();
-    let verified = verify_trajectory(&s, traj).map_err(|e| format!("verifying batotp's output: {e}"))?;
+    let report = verify_trajectory(&s, traj).map_err(|e| format!("verifying batotp's output: {e}"))?;
     let seconds = started.elapsed().as_secs_f64();
     let n = ks.len();
-    let checks = (0..n).map(|k| check_along(&s, traj, k as f64 / (n - 1) as f64).map_err(|e| format!("checking knot {k}: {e}"))).collect::<Result<Vec<_>, _>>()?;
-    Ok((verified, seconds, checks))
+    let check = |t: f64| check_along(&s, traj, t).map_err(|e| format!("checking at t = {t}: {e}"));
+    let checks = (0..n).map(|k| check(k as f64 / (n - 1) as f64)).collect::<Result<Vec<_>, _>>()?;
+    let duration = ks[n - 1].time;
+    let infeasible = report.seconds.as_deref().map_or(&[][..], |sec| &sec.infeasible[..]);
+    let stretches = infeasible
+        .iter()
+        .map(|&[start, end]| {
+            let inside = start + (1e-6f64).min(0.5 * (end - start));
+            Ok(Stretch { start, end, violated: check(inside / duration)?.violated })
+        })
+        .collect::<Result<Vec<_>, String>>()?;
+    Ok(Verified { report, seconds, checks, stretches })
 }
 
 /// Distinct strings, in order of first appearance.
@@ -1114,7 +1133,7 @@ pub fn run_batotp() {
         );
     }
     match &verified {
-        Ok((v, secs, checks)) => {
+        Ok(Verified { report: v, seconds: secs, checks, stretches }) => {
             let bad = checks.iter().filter(|r| !r.feasible).count();
             let own_bad = own.iter().filter(|a| limits(c).iter().any(|l| (l.excess)(a, c) > 0.0)).count();
             let labels = distinct(checks.iter().flat_map(|r| r.violated.iter().map(String::as_str)));
@@ -1123,38 +1142,59 @@ pub fn run_batotp() {
                 if labels.is_empty() { String::new() } else { format!(": {}", labels.join(", ")) }
             );
             let sec = v.seconds.as_deref();
-            let stretch = stretches(v, out_duration);
-            let total: f64 = stretch.iter().map(|(a, b, _)| b - a).sum();
+            let total: f64 = stretches.iter().map(|x| x.end - x.start).sum();
             let uncertain: f64 = sec.map_or(0.0, |s| s.uncertain.iter().map(|[a, b]| b - a).sum());
+            let widest = sec.map_or(0.0, |s| s.uncertain.iter().map(|[a, b]| b - a).fold(0.0, f64::max));
             println!(
-                "* Exact verification (`verify::verify_trajectory`, {}): {} infeasible stretches, {:.3} s of the {:.2} s (sampled here: {:.2} s), {} uncertain ({:.1e} s in all){}.",
+                "* Exact verification (`verify::verify_trajectory`, {}): {} infeasible stretches, {:.3} s of the {:.2} s (sampled here: {:.2} s){}{}.",
                 ms(*secs),
-                stretch.len(),
+                stretches.len(),
                 total,
                 out_duration,
                 sampled_past,
-                v.uncertain.len(),
-                uncertain,
+                if v.uncertain.is_empty() { String::new() } else { format!("; {} uncertain, each at most {widest:.0e} s wide ({uncertain:.0e} s in all): boundaries between feasible and infeasible that it could not certify", v.uncertain.len()) },
                 sec.and_then(|s| s.min_duration).map_or(String::new(), |m| format!("; the least uniform time scale that holds everywhere makes it {m:.3} s"))
             );
+            // the check's labels against the computation here, just inside each stretch's start
+            let named = stretches
+                .iter()
+                .filter(|x| {
+                    let t = x.start + (1e-6f64).min(0.5 * (x.end - x.start));
+                    let k = ((t / output.step) as usize).min(n - 2);
+                    let q = at(&between(&ks, k, (t - ks[k].time) / output.step));
+                    x.violated.iter().all(|what| {
+                        let cable = |j: usize| what.starts_with(&format!("cable {} ", j + 1));
+                        (0..3).any(|j| {
+                            cable(j)
+                                && ((what.ends_with("tension upper bound") && q.tensions[j] > c.tension[1])
+                                    || (what.ends_with("tension lower bound") && q.tensions[j] < c.tension[0])
+                                    || (what.ends_with("acceleration") && q.accelerations[j].abs() > c.cable_acceleration)
+                                    || (what.ends_with("speed") && q.speeds[j].abs() > c.cable_speed))
+                        }) || (what == "platform speed" && q.speed > c.speed)
+                    }) && !x.violated.is_empty()
+                })
+                .count();
+            println!("* Each stretch named by what cablenav's check finds violated 1 µs inside its start (the computation here agrees at {named} of {}):", stretches.len());
             println!();
             let mut kinds: Vec<(&str, usize, f64)> = Vec::new();
-            for (a, b, what) in &stretch {
-                match kinds.iter_mut().find(|k| k.0 == what) {
-                    Some(k) => {
-                        k.1 += 1;
-                        k.2 += b - a;
+            for x in stretches {
+                for what in &x.violated {
+                    match kinds.iter_mut().find(|k| k.0 == what) {
+                        Some(k) => {
+                            k.1 += 1;
+                            k.2 += x.end - x.start;
+                        }
+                        None => kinds.push((what, 1, x.end - x.start)),
                     }
-                    None => kinds.push((what, 1, b - a)),
                 }
             }
-            if !stretch.is_empty() {
-                println!("| constraint left (at the stretch's start) | stretches | seconds in all | longest stretches (s) |");
+            if !stretches.is_empty() {
+                println!("| violated at the stretch's start | stretches | their seconds in all | longest (s) |");
                 println!("|---|---:|---:|---|");
                 for (what, k, total) in &kinds {
-                    let mut mine: Vec<&(f64, f64, String)> = stretch.iter().filter(|x| x.2 == *what).collect();
-                    mine.sort_by(|x, y| (y.1 - y.0).total_cmp(&(x.1 - x.0)));
-                    let first: Vec<String> = mine.iter().take(3).map(|(a, b, _)| format!("[{a:.3}, {b:.3}]")).collect();
+                    let mut mine: Vec<&Stretch> = stretches.iter().filter(|x| x.violated.iter().any(|w| w == what)).collect();
+                    mine.sort_by(|x, y| (y.end - y.start).total_cmp(&(x.end - x.start)));
+                    let first: Vec<String> = mine.iter().take(3).map(|x| format!("[{:.3}, {:.3}]", x.start, x.end)).collect();
                     println!("| {what} | {k} | {total:.3} | {} |", first.join(", "));
                 }
                 println!();
