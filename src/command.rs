@@ -9,7 +9,7 @@
 use crate::error::{Error, Result};
 use crate::model::Coord;
 use crate::lattice::{Lattice, LatticeReport, LatticeSpec};
-use crate::model::Trajectory;
+use crate::model::{JointPath, Trajectory};
 use crate::plan::atlas::{PlanParams, PlanReport};
 use crate::plan::lattice::{LatticeParams, LatticePlanReport};
 use crate::plan::timing::{self, TimingOptions};
@@ -139,8 +139,9 @@ pub enum Output {
     Plan(PlanReport, Option<Trajectory>, Option<String>),
     /// Of [`Request::Lattice`].
     Lattice(LatticeReport),
-    /// Of [`Request::Plan`] with the lattice planner, and its smoothed trajectory.
-    LatticePlan(LatticePlanReport, Option<Trajectory>),
+    /// Of [`Request::Plan`] with the lattice planner, and its smoothed trajectory (a platform
+    /// robot's) or its path through configurations (a multi-link robot's).
+    LatticePlan(LatticePlanReport, Option<Trajectory>, Option<JointPath>),
     /// Of [`Request::Plan`] with several queries: one [`Output::Plan`] or [`Output::LatticePlan`]
     /// per query, in order.
     Plans(Vec<Output>),
@@ -217,8 +218,11 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
             });
             Output::Lattice(report.ok_or_else(|| Error::new("lattice", "the lattice stopped before its end"))?)
         }
-        Request::Plan { .. } if scenario.robot.chain.is_some() => {
-            return Err(Error::new("plan", "planning for multi-link robots is not available yet (docs/multilink.md); `lattice --axes …` shows the connected regions"));
+        Request::Plan { planner: PlannerKind::Atlas, .. } if scenario.robot.chain.is_some() => {
+            return Err(Error::new(
+                "plan",
+                "the atlas planner (--planner atlas, the default) is for platform robots; plan a multi-link robot's queries with --planner lattice (docs/multilink.md)",
+            ));
         }
         Request::Plan { queries, params, planner, lattice, atlas } => {
             let option = |e: Error| match e.field.as_str() {
@@ -238,7 +242,7 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
                 .enumerate()
                 .map(|(i, result)| match result.details {
                     Details::Atlas(r) => Output::Plan(r, result.trajectory, if i == last { saved.take() } else { None }),
-                    Details::Lattice(r) => Output::LatticePlan(r, result.trajectory),
+                    Details::Lattice(r) => Output::LatticePlan(r, result.trajectory, result.joint_path),
                 })
                 .collect();
             if outputs.len() == 1 {
@@ -285,7 +289,7 @@ impl Output {
             Output::Slice(r) => to_json(r),
             Output::Plan(r, ..) => to_json(r),
             Output::Lattice(r) => to_json(r),
-            Output::LatticePlan(r, _) => to_json(r),
+            Output::LatticePlan(r, ..) => to_json(r),
             Output::Plans(outputs) => {
                 // each report as its own type serialises it (a round trip through
                 // `serde_json::Value` would sort the fields where `preserve_order` is off)
@@ -299,7 +303,7 @@ impl Output {
                     .iter()
                     .filter_map(|o| match o {
                         Output::Plan(r, ..) => Some(Each::Atlas(r)),
-                        Output::LatticePlan(r, _) => Some(Each::Lattice(r)),
+                        Output::LatticePlan(r, ..) => Some(Each::Lattice(r)),
                         _ => None,
                     })
                     .collect();
@@ -322,16 +326,26 @@ impl Output {
             Output::Slice(r) => slice_text(r),
             Output::Plan(r, ..) => plan_text(r),
             Output::Lattice(r) => lattice_text(r),
-            Output::LatticePlan(r, _) => lattice_plan_text(r),
+            Output::LatticePlan(r, ..) => lattice_plan_text(r),
             Output::Plans(outputs) => outputs.iter().map(Output::text).collect::<Vec<_>>().join("\n"),
         }
     }
 
     /// The planned motion of a plan (the atlas' path as line + slerp pieces, the lattice
-    /// planner's smoothed trajectory), for `--out`; `None` for other commands or without a path.
+    /// planner's smoothed trajectory), for `--out`; `None` for other commands or without a path
+    /// (or for a multi-link robot's, [`Output::joint_path`]).
     pub fn trajectory(&self) -> Option<&Trajectory> {
         match self {
-            Output::Plan(_, t, _) | Output::LatticePlan(_, t) => t.as_ref(),
+            Output::Plan(_, t, _) | Output::LatticePlan(_, t, _) => t.as_ref(),
+            _ => None,
+        }
+    }
+
+    /// The lattice planner's path through configurations of a plan for a multi-link robot, for
+    /// `--out` (`scenario::with_joint_path`); `None` otherwise.
+    pub fn joint_path(&self) -> Option<&JointPath> {
+        match self {
+            Output::LatticePlan(_, _, p) => p.as_ref(),
             _ => None,
         }
     }
@@ -554,7 +568,12 @@ fn lattice_plan_text(r: &LatticePlanReport) -> String {
         out += &format!("  A* polyline: {} points, length {:.6}; {} waypoints\n", r.polyline.len(), r.polyline_length, r.waypoints.len());
         out += &format!("  smoothed: {} piece(s) ({} single polyline edges) after {} repair(s)\n", r.pieces, r.polyline_pieces, r.repairs);
         for (i, c) in r.waypoints.iter().enumerate() {
-            out += &format!("  {i:5}  p = [{:.6}, {:.6}, {:.6}]  (φ, θ, σ) = ({:.6}, {:.6}, {:.6})\n", c[0], c[1], c[2], c[3], c[4], c[5]);
+            if r.joint_coordinates.is_empty() && c.len() == 6 {
+                out += &format!("  {i:5}  p = [{:.6}, {:.6}, {:.6}]  (φ, θ, σ) = ({:.6}, {:.6}, {:.6})\n", c[0], c[1], c[2], c[3], c[4], c[5]);
+            } else {
+                let named: Vec<String> = r.joint_coordinates.iter().zip(c).map(|(n, x)| format!("{n} = {x:.6}")).collect();
+                out += &format!("  {i:5}  {}\n", named.join(", "));
+            }
         }
     }
     if let Some(v) = &r.verification {

@@ -11,7 +11,7 @@ pub mod lattice;
 pub mod timing;
 
 use crate::error::{Error, Result};
-use crate::model::{Orientation, Pose, Segment, Trajectory, Translation};
+use crate::model::{JointPath, Orientation, Pose, Segment, Trajectory, Translation};
 use crate::scenario::Scenario;
 use atlas::{AtlasPlanner, PlanParams, PlanReport};
 use lattice::{LatticeParams, LatticePlanReport, LatticePlanner};
@@ -22,9 +22,11 @@ use serde::Serialize;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum PlannerKind {
-    /// Henderson atlas + A* on the wrench-feasible C-space (6-cable robots with a wrench set).
+    /// Henderson atlas + A* on the wrench-feasible C-space (6-cable platform robots with a wrench
+    /// set).
     Atlas,
-    /// Ray lattice + A* + Bézier smoothing, verified exactly (any robot).
+    /// Ray lattice + A* + Bézier smoothing, verified exactly (any robot; a multi-link robot's
+    /// result is a path through configurations).
     Lattice,
 }
 
@@ -195,8 +197,11 @@ pub struct PlanResult {
     /// How it ended.
     pub status: PlanStatus,
     /// The planned motion as a scenario trajectory (the atlas' path as line + slerp pieces, the
-    /// lattice's smoothed pieces), when there is one.
+    /// lattice's smoothed pieces), when there is one (a platform robot's).
     pub trajectory: Option<Trajectory>,
+    /// A multi-link robot's planned motion: a path through configurations (the lattice
+    /// planner's), when there is one.
+    pub joint_path: Option<JointPath>,
     /// The planner's report.
     pub details: Details,
 }
@@ -261,7 +266,7 @@ impl PathPlanner for AtlasPathPlanner {
             })
             .collect();
         let trajectory = (o.status == PlanStatus::Found).then(|| Trajectory::piecewise(format!("{}-atlas", self.query), pieces)).flatten();
-        Some(PlanResult { status: o.status, trajectory, details: Details::Atlas(o.report(&self.query, seconds)) })
+        Some(PlanResult { status: o.status, trajectory, joint_path: None, details: Details::Atlas(o.report(&self.query, seconds)) })
     }
 
     fn as_atlas(&self) -> Option<&AtlasPlanner> {
@@ -300,13 +305,19 @@ impl PathPlanner for LatticePlanner {
 
     fn result(&self, seconds: f64) -> Option<PlanResult> {
         let report = self.report(seconds)?;
-        let trajectory = if report.status == PlanStatus::NoPath { None } else { self.trajectory().cloned() };
-        Some(PlanResult { status: report.status, trajectory, details: Details::Lattice(report) })
+        let planned = report.status != PlanStatus::NoPath;
+        let trajectory = if planned { self.trajectory().cloned() } else { None };
+        let joint_path = if planned { self.joint_path().cloned() } else { None };
+        Some(PlanResult { status: report.status, trajectory, joint_path, details: Details::Lattice(report) })
     }
 }
 
-/// The planner `options.kind` for query `query` of `scenario`, ready to step.
+/// The planner `options.kind` for query `query` of `scenario`, ready to step. A multi-link robot
+/// is planned by the lattice planner only (the atlas planner's charts are of platform poses).
 pub fn planner(scenario: &Scenario, query: &str, options: &PlannerOptions) -> Result<Box<dyn PathPlanner>> {
+    if options.kind == PlannerKind::Atlas && scenario.robot.chain.is_some() {
+        return Err(Error::new("planner", "the atlas planner is for platform robots; a multi-link robot is planned by the lattice planner"));
+    }
     Ok(match options.kind {
         PlannerKind::Atlas => atlas_path_planner(AtlasPlanner::new(scenario, query, options.atlas)?, query),
         PlannerKind::Lattice => Box::new(LatticePlanner::new(scenario, query, options.lattice)?),

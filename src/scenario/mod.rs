@@ -13,16 +13,17 @@ use crate::shape::Obstacle;
 pub use json::{FORMAT, FORMAT_3, FORMAT_4, FORMAT_5};
 pub use validate::STANDARD_GRAVITY;
 
-/// A planning query between two named poses, optionally on a slice with some coordinates fixed.
+/// A planning query between two named poses (a multi-link robot's: configurations), optionally
+/// on a slice with some coordinates fixed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Query {
     /// Its name.
     pub name: String,
-    /// Name of the start pose.
+    /// Name of the start pose (configuration).
     pub start: String,
-    /// Name of the goal pose.
+    /// Name of the goal pose (configuration).
     pub goal: String,
-    /// Coordinates held at the start pose's values.
+    /// Coordinates held at the start's values.
     pub fixed: Vec<Coord>,
     /// The box a lattice planner searches, per free coordinate (`region` in the file); free
     /// coordinates not listed get a default range (docs/lattice.md).
@@ -277,6 +278,45 @@ pub fn with_trajectory(text: &str, traj: &Trajectory) -> Result<(String, String)
     match value.get_mut("trajectories").and_then(|v| v.as_array_mut()) {
         Some(list) => list.push(trajectory_json(&t)),
         None => value["trajectories"] = serde_json::json!([trajectory_json(&t)]),
+    }
+    let out = serde_json::to_string_pretty(&value).map_err(|e| Error::new("output", e.to_string()))?;
+    Ok((out, name))
+}
+
+/// The text of a multi-link robot's scenario `text` with `path` appended to its trajectories
+/// under its name, or the name with ` 2`, ` 3`, … added if that is taken, and each configuration
+/// it passes through added to `configurations` as `NAME-0`, `NAME-1`, … (NAME the name used; a
+/// configuration name taken gets ` 2`, … likewise). Returns the new text (pretty-printed) and the
+/// name used. The text must be a valid scenario of a multi-link robot.
+pub fn with_joint_path(text: &str, path: &crate::model::JointPath) -> Result<(String, String)> {
+    let scenario = Scenario::from_json(text)?;
+    let chain = scenario.robot.chain.as_ref().ok_or_else(|| Error::new("trajectories", "a path through configurations is for a multi-link robot"))?;
+    let names: Vec<&str> = chain.coords().map(|(_, _, c)| c.name.as_str()).collect();
+    let mut value: serde_json::Value = serde_json::from_str(text).map_err(|e| Error::new("", format!("malformed JSON: {e}")))?;
+    let free = |taken: &dyn Fn(&str) -> bool, base: &str| {
+        let mut name = base.to_string();
+        let mut k = 2;
+        while taken(&name) {
+            name = format!("{base} {k}");
+            k += 1;
+        }
+        name
+    };
+    let name = free(&|n| scenario.joint_paths.iter().any(|p| p.name == n), &path.name);
+    let mut through = Vec::with_capacity(path.through.len());
+    if !value.get("configurations").is_some_and(|c| c.is_object()) {
+        value["configurations"] = serde_json::json!({});
+    }
+    for (i, q) in path.through.iter().enumerate() {
+        let config = free(&|n| scenario.configs.iter().any(|(c, _)| c == n), &format!("{name}-{i}"));
+        let coords: serde_json::Map<String, serde_json::Value> = names.iter().zip(q).map(|(n, x)| (n.to_string(), serde_json::json!(x))).collect();
+        value["configurations"][config.as_str()] = serde_json::Value::Object(coords);
+        through.push(config);
+    }
+    let entry = serde_json::json!({"name": name, "through": through});
+    match value.get_mut("trajectories").and_then(|v| v.as_array_mut()) {
+        Some(list) => list.push(entry),
+        None => value["trajectories"] = serde_json::json!([entry]),
     }
     let out = serde_json::to_string_pretty(&value).map_err(|e| Error::new("output", e.to_string()))?;
     Ok((out, name))

@@ -1,11 +1,10 @@
-//! A* over the lattice's points and the special points (edge cost: the pose-metric length along
-//! the ray; heuristic: the pose-metric distance to the goal), through the seam of an angle axis
+//! A* over the lattice's points and the special points (edge cost: the metric length along the
+//! ray; heuristic: the metric distance to the goal, `space.rs`), through the seam of an angle axis
 //! over a whole turn at cost 0; the path found is unwrapped across that seam.
 
 use super::graph::Key;
 use super::smooth::{initial_runs, turning_points};
-use super::{metric, six, LatticePlanner, Stage};
-use crate::model::Pose;
+use super::{LatticePlanner, Stage};
 use crate::plan::PlanStatus;
 use std::cmp::Ordering;
 
@@ -43,7 +42,7 @@ impl Ord for Open {
 
 impl LatticePlanner {
     fn heuristic(&self, v: usize) -> f64 {
-        metric(&Pose::from_coords(self.coords_of(v)), &self.goal, self.params.rotation_length)
+        self.metric(&self.coords_of(v), &self.goal)
     }
 
     pub(super) fn start_search(&mut self) {
@@ -61,7 +60,7 @@ impl LatticePlanner {
         if v < self.points() {
             let spec = &self.lattice.spec;
             let idx = spec.point_indices(v);
-            let here = Pose::from_coords(six(&spec.coords(&idx)));
+            let here = spec.coords(&idx);
             for a in 0..spec.axes.len() {
                 let r = spec.ray_index(a, &idx);
                 let ray = &self.lattice.rays[r];
@@ -71,7 +70,7 @@ impl LatticePlanner {
                         let mut n = idx.clone();
                         n[a] = j;
                         let w = spec.point_index(&n);
-                        out.push((w, metric(&here, &Pose::from_coords(six(&spec.coords(&n))), self.params.rotation_length)));
+                        out.push((w, self.metric(&here, &spec.coords(&n))));
                     }
                 }
             }
@@ -97,7 +96,7 @@ impl LatticePlanner {
             let Key::Grid(i) = keys[a] else { continue };
             let last = spec.steps[a] - 1;
             if i == 0 || i == last {
-                let mut twin = c;
+                let mut twin = c.clone();
                 twin[spec.axes[a].index()] = spec.value(a, last - i);
                 out.extend(self.specials.iter().position(|s| *s == twin).map(|j| self.points() + j));
             }
@@ -144,19 +143,19 @@ impl LatticePlanner {
     /// axis: a hop to the seam twin (the same pose) is dropped and the points after it keep going
     /// past the range's end (φ = π + 0.1 rather than −π + 0.1), so that every edge and every
     /// halving of it runs the short way along its ray.
-    fn unwrapped(&self, path: &[usize]) -> Vec<[f64; 6]> {
-        let mut shift = [0.0; 6];
-        let mut out: Vec<[f64; 6]> = Vec::with_capacity(path.len());
+    fn unwrapped(&self, path: &[usize]) -> Vec<Vec<f64>> {
+        let mut shift = vec![0.0; self.start.len()];
+        let mut out: Vec<Vec<f64>> = Vec::with_capacity(path.len());
         for (k, &w) in path.iter().enumerate() {
             let c = self.coords_of(w);
             if k > 0 && self.seam_twins(path[k - 1]).contains(&w) {
                 let before = self.coords_of(path[k - 1]);
-                for i in 0..6 {
-                    shift[i] += before[i] - c[i];
+                for (s, (b, x)) in shift.iter_mut().zip(before.iter().zip(&c)) {
+                    *s += b - x;
                 }
                 continue;
             }
-            out.push(std::array::from_fn(|i| c[i] + shift[i]));
+            out.push(c.iter().zip(&shift).map(|(x, s)| x + s).collect());
         }
         out
     }

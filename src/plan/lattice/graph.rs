@@ -3,13 +3,8 @@
 //! goal are joined to the lattice through their own rays and by exactly verified segments to the
 //! corners of their grid cell.
 
-use super::{metric, six, LatticePlanner};
+use super::LatticePlanner;
 use crate::lattice::Ray;
-use crate::model::pose::wrap_angle;
-use crate::model::{Coord, Pose};
-use crate::plan::edge_trajectory;
-use crate::verify::verify_trajectory;
-use std::f64::consts::PI;
 
 /// One grid axis key of a point: on the grid (its index) or off it (its value).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -30,22 +25,22 @@ impl LatticePlanner {
         self.lattice.spec.point_count() as usize
     }
 
-    pub(super) fn coords_of(&self, v: usize) -> [f64; 6] {
+    pub(super) fn coords_of(&self, v: usize) -> Vec<f64> {
         let n = self.points();
         if v < n {
-            six(&self.lattice.spec.coords(&self.lattice.spec.point_indices(v)))
+            self.lattice.spec.coords(&self.lattice.spec.point_indices(v))
         } else {
-            self.specials[v - n]
+            self.specials[v - n].clone()
         }
     }
 
-    pub(super) fn keys(&self, c: &[f64; 6]) -> Vec<Key> {
+    pub(super) fn keys(&self, c: &[f64]) -> Vec<Key> {
         let spec = &self.lattice.spec;
         (0..spec.axes.len()).map(|a| spec.grid_index(a, c[spec.axes[a].index()]).map_or(Key::Off(c[spec.axes[a].index()]), Key::Grid)).collect()
     }
 
     /// The vertex for `c`: its grid point if every key is on the grid, else a new special point.
-    fn vertex(&mut self, c: [f64; 6]) -> usize {
+    fn vertex(&mut self, c: Vec<f64>) -> usize {
         let keys = self.keys(&c);
         if keys.iter().all(|k| matches!(k, Key::Grid(_))) {
             let idx: Vec<usize> = keys.iter().map(|k| if let Key::Grid(i) = k { *i } else { 0 }).collect();
@@ -63,7 +58,7 @@ impl LatticePlanner {
         if a == b {
             return;
         }
-        let cost = metric(&Pose::from_coords(self.coords_of(a)), &Pose::from_coords(self.coords_of(b)), self.params.rotation_length);
+        let cost = self.metric(&self.coords_of(a), &self.coords_of(b));
         self.extra.entry(a).or_default().push((b, cost));
         self.extra.entry(b).or_default().push((a, cost));
     }
@@ -72,16 +67,17 @@ impl LatticePlanner {
     /// cell corners still to verify, as (special vertex, corner vertex).
     pub(super) fn join_rays(&mut self) -> Vec<(usize, usize)> {
         let k = self.lattice.spec.axes.len();
-        let ends = [slice_coords(&self.start, &six(&self.lattice.spec.fixed), &self.lattice.spec.axes), slice_coords(&self.goal, &six(&self.lattice.spec.fixed), &self.lattice.spec.axes)];
-        let ids = [self.vertex(ends[0]), self.vertex(ends[1])];
+        let (fixed, axes) = (&self.lattice.spec.fixed, &self.lattice.spec.axes);
+        let ends = [self.space.end_coords(&self.start, fixed, axes), self.space.end_coords(&self.goal, fixed, axes)];
+        let ids = [self.vertex(ends[0].clone()), self.vertex(ends[1].clone())];
         self.ends = ids;
         let mut segments = vec![];
-        for (e, &c) in ends.iter().enumerate() {
+        for (e, c) in ends.iter().enumerate() {
             let v = ids[e];
             if v < self.points() {
                 continue; // a grid point: on the lattice already
             }
-            let keys = self.keys(&c);
+            let keys = self.keys(c);
             for a in 0..k {
                 let off: Vec<usize> = (0..k).filter(|&b| b != a && matches!(keys[b], Key::Off(_))).collect();
                 if off.is_empty() {
@@ -90,7 +86,7 @@ impl LatticePlanner {
                     continue;
                 }
                 // c's own ray along a
-                let feasible = self.lattice.cast(&c, a).feasible;
+                let feasible = self.lattice.cast(c, a).feasible;
                 self.end_rays.push(EndRay { axis: a, feasible });
                 let ray_no = self.end_rays.len() - 1;
                 let mut on_ray: Vec<usize> = vec![v];
@@ -98,11 +94,11 @@ impl LatticePlanner {
                     // it crosses the lattice rays along `off[0]` at a's grid values
                     let b = off[0];
                     for i in 0..self.lattice.spec.steps[a] {
-                        let mut x = c;
+                        let mut x = c.clone();
                         x[self.lattice.spec.axes[a].index()] = self.lattice.spec.value(a, i);
+                        let wk = self.keys(&x);
                         let w = self.vertex(x);
                         on_ray.push(w);
-                        let wk = self.keys(&x);
                         self.join_on_lattice_ray(w, b, &wk);
                     }
                 }
@@ -171,37 +167,15 @@ impl LatticePlanner {
         }
     }
 
-    /// Verifies the straight segment (line + slerp) from `v` to grid point `w` exactly; joins them if
-    /// it is feasible throughout.
+    /// Verifies the straight segment (line + slerp; a path through the two configurations) from
+    /// `v` to grid point `w` exactly; joins them if it is feasible throughout.
     pub(super) fn try_segment(&mut self, v: usize, w: usize) {
         self.segments[1] += 1;
-        let (a, b) = (Pose::from_coords(self.coords_of(v)), Pose::from_coords(self.coords_of(w)));
-        let traj = edge_trajectory(0, &a, &b);
-        if let Ok(r) = verify_trajectory(self.lattice.scenario(), &traj) {
+        if let Some(r) = self.space.verify_segment(self.lattice.scenario(), &self.coords_of(v), &self.coords_of(w)) {
             if r.infeasible.is_empty() && r.uncertain.is_empty() {
                 self.segments[0] += 1;
                 self.add_edge(v, w);
             }
         }
-    }
-}
-
-/// The coordinates of `pose` with every coordinate not in `axes` taken from `fixed` (the
-/// lattice's slice) and the axes' values from the pose — in whichever of its two tilt-and-torsion
-/// triples, (φ, θ, σ) or (φ + π, −θ, σ), agrees with the slice.
-fn slice_coords(pose: &Pose, fixed: &[f64; 6], axes: &[Coord]) -> [f64; 6] {
-    {
-        let c = pose.coords();
-        let alt = [c[0], c[1], c[2], wrap_angle(c[3] + PI), -c[4], c[5]];
-        let fits = |x: &[f64; 6]| Coord::ALL.iter().filter(|k| !axes.contains(k)).all(|k| {
-            let d = x[k.index()] - fixed[k.index()];
-            (if k.is_angle() { wrap_angle(d) } else { d }).abs() <= 1e-9
-        });
-        let pick = if fits(&c) || !fits(&alt) { c } else { alt };
-        let mut out = *fixed;
-        for a in axes {
-            out[a.index()] = pick[a.index()];
-        }
-        out
     }
 }

@@ -1,11 +1,12 @@
 //! The thesis' smoothing and its repair: the A* waypoints as the control points of Bézier pieces,
 //! each verified exactly; an infeasible piece's control polygon is split at the waypoint nearest
-//! the infeasible section, down to single polyline edges, which are halved along their ray.
+//! the infeasible section, down to single polyline edges, which are halved along their ray. For a
+//! multi-link robot a piece is the path through its waypoints (`space.rs`), split the same way to
+//! find the leg at fault, which is reported rather than halved.
 
+use super::space::{bezier_segment, bezier_trajectory};
 use super::{LatticePlanner, Stage};
-use crate::model::{Orientation, Pose, Segment, Trajectory, Translation};
-use crate::verify::verify_trajectory;
-use nalgebra::{UnitQuaternion, Vector3};
+use crate::model::{JointPath, Segment, Trajectory};
 
 /// Most control points of one Bézier piece (the scenario format's degree limit, 10, plus one).
 const MAX_CONTROL: usize = 11;
@@ -13,7 +14,7 @@ const MAX_CONTROL: usize = 11;
 /// A run of waypoints smoothed into one Bézier piece.
 #[derive(Debug, Clone)]
 pub(super) struct Run {
-    pub(super) points: Vec<[f64; 6]>,
+    pub(super) points: Vec<Vec<f64>>,
     /// How often this run's edge was halved along its ray.
     pub(super) halvings: u32,
     /// Verified feasible.
@@ -29,8 +30,7 @@ impl LatticePlanner {
             self.stage = Stage::Smooth { next: k + 1 };
             return;
         }
-        let traj = run_trajectory(&run.points, "piece");
-        let report = verify_trajectory(self.lattice.scenario(), &traj).ok();
+        let report = self.space.verify_run(self.lattice.scenario(), &run.points);
         let bad: Option<f64> = match &report {
             Some(r) if r.infeasible.is_empty() && r.uncertain.is_empty() => None,
             Some(r) => r.infeasible.iter().chain(&r.uncertain).map(|iv| 0.5 * (iv[0] + iv[1])).next().or(Some(0.5)),
@@ -53,14 +53,14 @@ impl LatticePlanner {
             return;
         }
         // a single edge: halve it where it runs along one coordinate (its slerp then approaches the ray)
-        let (a, b) = (run.points[0], run.points[1]);
-        let differing = (0..6).filter(|&i| a[i] != b[i]).count();
-        if differing == 1 && run.halvings < self.params.max_halvings {
-            let mid: [f64; 6] = std::array::from_fn(|i| 0.5 * (a[i] + b[i]));
+        let (a, b) = (run.points[0].clone(), run.points[1].clone());
+        let differing = a.iter().zip(&b).filter(|(x, y)| x != y).count();
+        if self.space.halves() && differing == 1 && run.halvings < self.params.max_halvings {
+            let mid: Vec<f64> = a.iter().zip(&b).map(|(x, y)| 0.5 * (x + y)).collect();
             let h = run.halvings + 1;
             self.runs.splice(
                 k..=k,
-                [Run { points: vec![a, mid], halvings: h, ok: false, failed: false }, Run { points: vec![mid, b], halvings: h, ok: false, failed: false }],
+                [Run { points: vec![a, mid.clone()], halvings: h, ok: false, failed: false }, Run { points: vec![mid, b], halvings: h, ok: false, failed: false }],
             );
             self.repairs += 1;
             return;
@@ -69,20 +69,41 @@ impl LatticePlanner {
         self.stage = Stage::Smooth { next: k + 1 };
     }
 
+    /// A platform robot's result: the pieces as one trajectory.
     pub(super) fn assemble(&self) -> Trajectory {
-        let pieces: Vec<Segment> = self.runs.iter().map(|r| run_segment(&r.points)).collect();
-        Trajectory::piecewise(format!("{}-lattice", self.query), pieces).unwrap_or_else(|| run_trajectory(&[self.start.coords(), self.start.coords()], "empty"))
+        let pieces: Vec<Segment> = self.runs.iter().map(|r| bezier_segment(&r.points)).collect();
+        Trajectory::piecewise(format!("{}-lattice", self.query), pieces).unwrap_or_else(|| {
+            let start = crate::model::Pose::from_coords(super::six(&self.start)).coords().to_vec();
+            bezier_trajectory(&[start.clone(), start], "empty")
+        })
+    }
+
+    /// A multi-link robot's result: the path through every run's waypoints (consecutive runs
+    /// share one), called `QUERY-lattice`.
+    pub(super) fn assemble_path(&self) -> JointPath {
+        let mut through: Vec<Vec<f64>> = Vec::new();
+        for r in &self.runs {
+            let skip = usize::from(!through.is_empty());
+            through.extend(r.points.iter().skip(skip).cloned());
+        }
+        if through.is_empty() {
+            through.push(self.start.clone());
+        }
+        if through.len() == 1 {
+            through.push(through[0].clone());
+        }
+        JointPath { name: format!("{}-lattice", self.query), through }
     }
 }
 
 /// The polyline without points inside straight runs (where the path goes on along the same single
 /// coordinate in the same direction).
-pub(super) fn turning_points(path: &[[f64; 6]]) -> Vec<[f64; 6]> {
-    let dir = |a: &[f64; 6], b: &[f64; 6]| {
-        let d: Vec<usize> = (0..6).filter(|&i| a[i] != b[i]).collect();
+pub(super) fn turning_points(path: &[Vec<f64>]) -> Vec<Vec<f64>> {
+    let dir = |a: &[f64], b: &[f64]| {
+        let d: Vec<usize> = (0..a.len()).filter(|&i| a[i] != b[i]).collect();
         (d.len() == 1).then(|| (d[0], (b[d[0]] - a[d[0]]).signum() as i8))
     };
-    let mut out: Vec<[f64; 6]> = Vec::with_capacity(path.len());
+    let mut out: Vec<Vec<f64>> = Vec::with_capacity(path.len());
     for (i, p) in path.iter().enumerate() {
         if i > 0 && i + 1 < path.len() {
             let (before, after) = (dir(&path[i - 1], p), dir(p, &path[i + 1]));
@@ -90,17 +111,17 @@ pub(super) fn turning_points(path: &[[f64; 6]]) -> Vec<[f64; 6]> {
                 continue;
             }
         }
-        out.push(*p);
+        out.push(p.clone());
     }
     out
 }
 
 /// The thesis' smoothing: one Bézier curve with every waypoint as a control point — in runs of at
 /// most [`MAX_CONTROL`] points (the format's degree limit), consecutive runs sharing a waypoint.
-pub(super) fn initial_runs(waypoints: &[[f64; 6]]) -> Vec<Run> {
+pub(super) fn initial_runs(waypoints: &[Vec<f64>]) -> Vec<Run> {
     let n = waypoints.len();
     if n < 2 {
-        return vec![Run { points: vec![waypoints[0], waypoints[0]], halvings: 0, ok: false, failed: false }];
+        return vec![Run { points: vec![waypoints[0].clone(), waypoints[0].clone()], halvings: 0, ok: false, failed: false }];
     }
     let chunks = (n - 1).div_ceil(MAX_CONTROL - 1);
     let per = (n - 1).div_ceil(chunks);
@@ -112,21 +133,4 @@ pub(super) fn initial_runs(waypoints: &[[f64; 6]]) -> Vec<Run> {
         i = j;
     }
     runs
-}
-
-/// The piece of a run: Bézier translation through its points' positions as control points (a line
-/// for two), slerp between its end rotations (the short way).
-fn run_segment(points: &[[f64; 6]]) -> Segment {
-    let poses: Vec<Pose> = points.iter().map(|&c| Pose::from_coords(c)).collect();
-    let (first, last) = (poses[0], poses[poses.len() - 1]);
-    let positions: Vec<Vector3<f64>> = poses.iter().map(|p| p.position).collect();
-    let translation = if positions.len() == 2 { Translation::Line(positions[0], positions[1]) } else { Translation::Bezier(positions) };
-    let qe = if first.rotation.quaternion().dot(last.rotation.quaternion()) < 0.0 { UnitQuaternion::new_unchecked(-last.rotation.into_inner()) } else { last.rotation };
-    Segment { translation, orientation: Orientation::Slerp(first.rotation, qe) }
-}
-
-/// The run through `points` as a trajectory of one piece called `name`.
-fn run_trajectory(points: &[[f64; 6]], name: &str) -> Trajectory {
-    let seg = run_segment(points);
-    Trajectory::single(name, seg.translation, seg.orientation)
 }

@@ -14,7 +14,8 @@ use crate::scenario::json::{Ordered, RawCable, RawLink, RawScenario, RawTrajecto
 
 /// The multi-link sections (format 3): the chain and each cable's link go into `robot`; returns
 /// the named configurations. A platform robot must not use them, and a multi-link robot is
-/// configured by configurations only (no poses, trajectories, queries or wrench set yet).
+/// configured by configurations only (no poses or wrench set; its trajectories pass through
+/// configurations and its queries join two, `queries.rs`).
 pub(super) fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clearance, warnings: &mut Vec<String>) -> Result<Vec<(String, Vec<f64>)>> {
     let Some(links) = &raw.robot.links else {
         if let Some(k) = raw.trajectories.iter().position(|t| t.through.is_some()) {
@@ -35,13 +36,13 @@ pub(super) fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clear
     for (cable, link) in robot.cables.iter_mut().zip(cable_links(&raw.robot.cables, &chain)?) {
         cable.link = link;
     }
-    for (field, given) in [("poses", !raw.poses.0.is_empty()), ("queries", !raw.queries.is_empty()), ("wrench", raw.wrench.is_some())] {
+    for (field, given) in [("poses", !raw.poses.0.is_empty()), ("wrench", raw.wrench.is_some())] {
         if given {
             return Err(Error::new(
                 field,
                 "not supported for multi-link robots yet: they are configured by named joint configurations \
-                 (`configurations`, paths through them in `trajectories`), and their wrench condition is \
-                 joint-space wrench closure, always checked",
+                 (`configurations`, paths through them in `trajectories`, queries between them in `queries`), \
+                 and their wrench condition is joint-space wrench closure, always checked",
             ));
         }
     }

@@ -64,7 +64,11 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
     if robot.chain.is_some() {
         let joint_paths = chains::joint_paths(&raw.trajectories, &configs)?;
         let obstacles = obstacles::obstacles(&raw.obstacles)?;
-        return Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses: Vec::new(), written_angles: Vec::new(), trajectories: Vec::new(), queries: Vec::new(), wrench: None, configs, joint_paths, warnings });
+        let queries = match &robot.chain {
+            Some(chain) => queries::joint_queries(&raw.queries, &configs, chain)?,
+            None => Vec::new(),
+        };
+        return Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses: Vec::new(), written_angles: Vec::new(), trajectories: Vec::new(), queries, wrench: None, configs, joint_paths, warnings });
     }
     let obstacles = obstacles::obstacles(&raw.obstacles)?;
     // a point mass has no orientation to give

@@ -1,25 +1,50 @@
-//! The planning queries: a start and a goal pose by name, the coordinates held fixed and the
-//! region a lattice planner searches.
+//! The planning queries: a start and a goal by name (a platform robot's poses, a multi-link
+//! robot's configurations), the coordinates held fixed and the region a lattice planner searches.
 
 use super::{find_pose, known_poses, num, unique_name};
 use crate::error::{Error, Result};
-use crate::model::{Coord, Pose};
+use crate::model::{Chain, Coord, Pose};
 use crate::scenario::json::{Fixed, RawQuery};
 use crate::scenario::Query;
 
-/// The queries, named uniquely, their poses known and their coordinates valid.
+/// A platform robot's queries, named uniquely, their poses known and their coordinates valid.
 pub(super) fn queries(raw: &[RawQuery], poses: &[(String, Pose)]) -> Result<Vec<Query>> {
+    let known = |field: &str, name: &str| match find_pose(poses, name) {
+        Some(_) => Ok(()),
+        None => Err(Error::new(field, format!("unknown pose \"{name}\"; {}", known_poses(poses)))),
+    };
+    checked(raw, &known, &coordinate)
+}
+
+/// A multi-link robot's queries (format 3): `start` and `goal` name configurations, `fixed` and
+/// `region` the robot's joint coordinates.
+pub(super) fn joint_queries(raw: &[RawQuery], configs: &[(String, Vec<f64>)], chain: &Chain) -> Result<Vec<Query>> {
+    let known = |field: &str, name: &str| {
+        if configs.iter().any(|(n, _)| n == name) {
+            return Ok(());
+        }
+        let names: Vec<&str> = configs.iter().map(|(n, _)| n.as_str()).collect();
+        let list = if names.is_empty() { "the scenario has no configurations".to_owned() } else { format!("known configurations: {}", names.join(", ")) };
+        Err(Error::new(field, format!("no configuration named \"{name}\"; {list}")))
+    };
+    let joint = |field: &str, name: &str| {
+        chain.coord_index(name).map(|index| Coord::Joint { index: index as u8, angle: chain.is_angle(index) }).ok_or_else(|| {
+            let names: Vec<&str> = chain.coords().map(|(_, _, c)| c.name.as_str()).collect();
+            Error::new(field, format!("\"{name}\" is not a coordinate of this robot; its coordinates: {}", names.join(", ")))
+        })
+    };
+    checked(raw, &known, &joint)
+}
+
+/// The queries, named uniquely, `start` and `goal` accepted by `known` (its error names the field
+/// it is given), the coordinates of `fixed` and `region` resolved by `coordinate` (likewise).
+fn checked(raw: &[RawQuery], known: &dyn Fn(&str, &str) -> Result<()>, coordinate: &dyn Fn(&str, &str) -> Result<Coord>) -> Result<Vec<Query>> {
     let mut out: Vec<Query> = Vec::with_capacity(raw.len());
     for (k, q) in raw.iter().enumerate() {
         let path = format!("queries[{k}]");
         unique_name(&path, &q.name, "query", "queries", out.iter().map(|o| o.name.as_str()))?;
         for (field, name) in [("start", &q.start), ("goal", &q.goal)] {
-            if find_pose(poses, name).is_none() {
-                return Err(Error::new(
-                    format!("{path}.{field}"),
-                    format!("unknown pose \"{name}\"; {}", known_poses(poses)),
-                ));
-            }
+            known(&format!("{path}.{field}"), name)?;
         }
         let mut fixed = Vec::with_capacity(q.fixed.len());
         for (i, s) in q.fixed.iter().enumerate() {
