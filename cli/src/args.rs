@@ -178,12 +178,13 @@ pub enum Command {
     /// A feasible path for a query of the scenario. --planner atlas (default; 6 cables with a
     /// wrench set): Henderson atlas + A*, docs/planner.md, found / no_path / budget, the path
     /// re-verified edge by edge. --planner lattice (any robot): ray lattice + A* + Bézier
-    /// smoothing, verified exactly and repaired, docs/lattice.md
+    /// smoothing, verified exactly and repaired, docs/lattice.md; for a multi-link robot over its
+    /// joint coordinates, a path through configurations verified exactly, docs/multilink.md
     #[command(after_help = EXIT_CODES)]
     Plan {
         #[arg(value_name = "SCENARIO", help = SCENARIO_HELP)]
         scenario: String,
-        /// The query (start and goal poses) to plan; repeat it to plan several in order, one report
+        /// The query (start and goal poses or configurations) to plan; repeat it to plan several in order, one report
         /// each (later queries on the same slice reuse the atlas of the earlier ones)
         #[arg(long, value_name = "NAME", required = true)]
         query: Vec<String>,
@@ -193,8 +194,9 @@ pub enum Command {
         /// Lattice planner: grid values per free coordinate [default: 7]
         #[arg(long, value_name = "N")]
         steps: Option<usize>,
-        /// Write the scenario with the planned trajectory added (as QUERY-lattice or QUERY-atlas)
-        /// to FILE, so that `cablenav verify FILE --trajectory NAME` checks it
+        /// Write the scenario with the planned trajectory added (as QUERY-lattice or QUERY-atlas; a
+        /// multi-link robot's through new configurations QUERY-lattice-0, -1, …) to FILE, so that
+        /// `cablenav verify FILE --trajectory NAME` checks it
         #[arg(long, value_name = "FILE")]
         out: Option<String>,
         /// Atlas planner: chart budget (it stops with `budget` after this many charts)

@@ -120,8 +120,12 @@ where
         }
     }
     if let Some(file) = &invocation.out {
-        let traj = output.trajectory().ok_or_else(|| cablenav::Error::new("--out", "no trajectory was planned: nothing to write"))?;
-        let (text, name) = cablenav::scenario::with_trajectory(&read(path)?, traj)?;
+        // a multi-link robot's path goes in as a trajectory through new configurations
+        let (text, name) = match (output.joint_path(), output.trajectory()) {
+            (Some(p), _) => cablenav::scenario::with_joint_path(&read(path)?, p)?,
+            (None, Some(traj)) => cablenav::scenario::with_trajectory(&read(path)?, traj)?,
+            (None, None) => return Err(cablenav::Error::new("--out", "no trajectory was planned: nothing to write").into()),
+        };
         write(file, text.as_bytes())?;
         if !invocation.json {
             printed += &format!("\n  wrote {file} with the trajectory \"{name}\" (check it: cablenav verify {file} --trajectory {name})\n");
