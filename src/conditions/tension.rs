@@ -116,7 +116,8 @@ impl TensionPolys {
                 _ => dot(&local.load.rows),
             };
             let inertial = local.load.inertial.as_ref().map(dot);
-            let b = local.load.scaled_square(quadratic_form(&g, &wrench.ellipsoid_inv, rows));
+            // β = 0 for a single wrench: not expanded (the single wrench's conditions never read it)
+            let b = if wrench.is_single() { Bern::constant(0.0) } else { local.load.scaled_square(quadratic_form(&g, &wrench.ellipsoid_inv, rows)) };
             columns.push((i, a, b, inertial));
         }
         let len2 = local.len2();
