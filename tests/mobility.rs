@@ -148,3 +148,25 @@ fn slices_over_their_own_coordinates_classify_as_the_per_pose_checks() {
     // a point mass has no θ to slice along
     assert_eq!(point_mass().coord("--axes", "theta").unwrap_err().field, "--axes");
 }
+
+#[test]
+fn a_three_cable_point_mass_has_its_tensions_enveloped_as_the_statics_give_them() {
+    // Laval's CSPR (batotp's case): at rest along its path the tensions are unique, J f = m g
+    let s = Scenario::from_json(include_str!("../static/scenarios/laval-cspr3dof.json")).unwrap();
+    let traj = s.trajectory(Some("batotp-path")).unwrap();
+    let env = cablenav::verify::tension_envelope(&s, traj, 40).unwrap();
+    let g = s.robot.dynamics.as_ref().unwrap().gravity;
+    for (k, &t) in env.t.iter().enumerate() {
+        let p = traj.pose_at(t).position;
+        // columns: unit vectors from the anchors to the point; tensions pull it back
+        let j = nalgebra::Matrix3::from_columns(&s.robot.cables.iter().map(|c| (p - c.base).normalize()).collect::<Vec<_>>());
+        let f = j.lu().solve(&g).expect("not singular along the path");
+        let (lo, hi) = (env.tension_min[k].as_ref().unwrap(), env.tension_max[k].as_ref().unwrap());
+        for i in 0..3 {
+            assert!((lo[i] - f[i]).abs() < 1e-9 * (1.0 + f[i].abs()) && lo[i] == hi[i], "t = {t}, cable {}: {} vs {}", i + 1, lo[i], f[i]);
+        }
+    }
+    // with more cables than degrees of freedom the tensions are not unique, and the error says so
+    let e = cablenav::verify::tension_envelope(&point_mass(), &cablenav::model::Trajectory::single("x".to_string(), cablenav::model::Translation::Line(nalgebra::Vector3::new(1.0, 1.0, 1.0), nalgebra::Vector3::new(2.0, 2.0, 1.0)), cablenav::model::Orientation::Slerp(nalgebra::UnitQuaternion::identity(), nalgebra::UnitQuaternion::identity())), 10).unwrap_err();
+    assert!(e.reason.contains("degrees of freedom (3 here)"), "{e}");
+}

@@ -208,16 +208,17 @@ fn states_of(s: &Scenario, cables: &PoseCables, wrench: Option<crate::report::Wr
 
 /// Each cable's tension range over the wrench set at the given `(t, pose)` samples (e.g. a
 /// planned path's poses), as [`super::tension_envelope`] gives it along a trajectory; `name`
-/// labels the path. Six cables only (with more the tensions are not unique): an error says so.
+/// labels the path. As many cables as degrees of freedom only (six on a spatial platform, three
+/// on a point mass or a planar one; with more the tensions are not unique): an error says so.
 pub fn tension_at(s: &Scenario, name: &str, samples: &[(f64, Pose)]) -> Result<crate::report::TensionEnvelope> {
     if s.load().is_none() {
         return Err(Error::new("wrench", "the scenario has no wrench section and no platform dynamics: no tensions to compute"));
     }
-    let m = s.robot.cables.len();
-    if m != 6 {
+    let (m, n) = (s.robot.cables.len(), s.robot.mobility.dof());
+    if m != n {
         return Err(Error::new(
             "wrench",
-            format!("each cable's tension range is defined for six cables; with {m} the tensions balancing a wrench are not unique (check gives the wrench set's margin instead)"),
+            format!("each cable's tension range is defined for as many cables as degrees of freedom ({n} here); with {m} the tensions balancing a wrench are not unique (check gives the wrench set's margin instead)"),
         ));
     }
     if samples.len() > MAX_SAMPLES {
