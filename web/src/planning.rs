@@ -3,6 +3,10 @@
 //! progress and the path, so typing, scrolling and orbiting stay smooth. The worker stays for the
 //! next run and keeps the atlas planner's atlas, which answers later queries on the same slice
 //! (new start and goal poses included); Cancel terminates the worker, and its atlas with it.
+//! A multi-link robot's queries are planned by the lattice planner too: its path through
+//! configurations comes back written into the scenario (as `cablenav plan --out` writes it,
+//! verified exactly in the worker), which one click adds to the edited scenario, where the strip
+//! and the 3-D view show it like any path.
 
 use crate::state::{PlannedMotion, Parsed, Planned, Settings, Shared, PLANNERS};
 use crate::palette::Rgba;
@@ -65,6 +69,8 @@ struct Ui {
     detail: RwSignal<String>,
     planned: RwSignal<Option<Shared<Planned>>>,
     growing: RwSignal<Option<WireAtlas>>,
+    /// A multi-link robot's planned path: the scenario with it added, and its name there.
+    chain_path: RwSignal<Option<(String, String)>>,
 }
 
 /// Applies a worker's reply for query `query` to the page.
@@ -85,6 +91,9 @@ fn apply(reply: Reply, query: &str, ui: Ui) {
                 let polyline = polyline.iter().map(pose_from_wire).collect();
                 let motion = trajectory.and_then(|t| motion(*t));
                 ui.planned.set(Some(Shared::new(Planned { query: query.to_string(), start, goal, poses, polyline, motion, atlas })));
+            } else if let Some(t) = trajectory {
+                // a multi-link robot's path through configurations: offered to add to the scenario
+                ui.chain_path.set(Some((t.scenario, t.name)));
             }
             ui.state.set(RunState::Done(status));
         }
@@ -117,14 +126,22 @@ fn motion(t: crate::worker::protocol::PlannedTrajectory) -> Option<PlannedMotion
 
 /// The planning controls.
 #[component]
-pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSignal<Option<Shared<Planned>>>, settings: RwSignal<Settings>, growing: RwSignal<Option<WireAtlas>>) -> impl IntoView {
+pub fn Planning(
+    parsed: Memo<Parsed>,
+    source: RwSignal<String>,
+    planned: RwSignal<Option<Shared<Planned>>>,
+    settings: RwSignal<Settings>,
+    growing: RwSignal<Option<WireAtlas>>,
+    trajectory: RwSignal<usize>,
+    origin: RwSignal<&'static str>,
+) -> impl IntoView {
     let query = RwSignal::new(String::new());
     // the planner is one of the page's settings (kept in the address)
     let planner_id = Memo::new(move |_| settings.with(|s| s.planner));
     let budget = RwSignal::new(20_000usize);
     // the atlas planner's angles as plain coordinates, paper 1's way (`--identify-angles false`)
     let paper = RwSignal::new(false);
-    let ui = Ui { state: RwSignal::new(RunState::Idle), progress: RwSignal::new(0.0), detail: RwSignal::new(String::new()), planned, growing };
+    let ui = Ui { state: RwSignal::new(RunState::Idle), progress: RwSignal::new(0.0), detail: RwSignal::new(String::new()), planned, growing, chain_path: RwSignal::new(None) };
     let worker = Rc::new(Resident::new());
     // each run has a generation: replies of older runs are ignored
     let generation = Rc::new(std::cell::Cell::new(0u32));
@@ -137,6 +154,7 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
         gen1.set(gen1.get() + 1);
         worker1.forget();
         growing.set(None);
+        ui.chain_path.set(None);
         ui.state.set(RunState::Idle);
         ui.progress.set(0.0);
         ui.detail.set(String::new());
@@ -163,6 +181,7 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
             planned.set(None);
         }
         growing.set(None);
+        ui.chain_path.set(None);
         gen2.set(gen2.get() + 1);
         let this = gen2.get();
         let gen = gen2.clone();
@@ -189,6 +208,14 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
         ui.detail.set("Cancelled: the planner's worker was stopped.".into());
     };
     let running = move || ui.state.get() == RunState::Running;
+    // a multi-link robot's planned path added to the scenario (an edit, undoable) and selected
+    let add_path = move |_| {
+        let Some((text, _)) = ui.chain_path.get_untracked() else { return };
+        let index = parsed.with_untracked(|p| p.0.as_ref().as_ref().map_or(0, |s| s.joint_paths.len()));
+        source.set(text);
+        origin.set("edited");
+        trajectory.set(index);
+    };
     let lattice = move || planner_id.get() == LATTICE;
 
     view! {
@@ -240,13 +267,11 @@ pub fn Planning(parsed: Memo<Parsed>, source: RwSignal<String>, planned: RwSigna
             <button data-testid="plan-run" on:click=start disabled=move || running() || queries().is_empty()>"Plan"</button>
             <button data-testid="plan-cancel" on:click=cancel disabled=move || !running()>"Cancel"</button>
             <progress data-testid="plan-progress" max="1" prop:value=move || ui.progress.get() aria-label="planning progress"></progress>
+            {move || ui.chain_path.get().map(|(_, name)| view! { <button data-testid="plan-add-path" on:click=add_path>{format!("Add “{name}” to the scenario")}</button> })}
         </div>
         <p class="plan-status" data-testid="plan-status" data-state=move || ui.state.get().name().to_string() aria-live="polite">
             {move || match ui.state.get() {
                 RunState::Failed(e) => format!("The planner refused: {e}"),
-                RunState::Idle if parsed.get().0.as_ref().as_ref().is_ok_and(|s| s.robot.chain.is_some()) => {
-                    "Planning for multi-link robots is not available yet (queries are platform poses); verify paths through configurations in the strip.".into()
-                }
                 RunState::Idle if queries().is_empty() => "This scenario has no planning query.".into(),
                 _ => ui.detail.get(),
             }}

@@ -374,7 +374,7 @@ pub fn Workbench(page: PageState, embed: bool) -> impl IntoView {
                 <fastest::FastestTiming parsed source trajectory=selected_trajectory />
             </TabPanel>
             <TabPanel of=Tab::Planning open=tab>
-                <Planning parsed source planned settings growing />
+                <Planning parsed source planned settings growing trajectory origin />
             </TabPanel>
             <TabPanel of=Tab::Clearances open=tab wide=true>
                 <h2>"Clearances along the path"</h2>

@@ -108,7 +108,7 @@ pub fn finished(r: &PlanResult) -> Finished {
         (Details::Atlas(o), Some(_)) => (o.path.iter().map(path_pose).collect(), vec![]),
         (Details::Lattice(l), Some(traj)) => (
             (0..=PATH_SAMPLES).map(|k| traj.pose_at(k as f64 / PATH_SAMPLES as f64)).collect(),
-            l.polyline.iter().map(|&c| Pose::from_coords(c)).collect(),
+            l.polyline.iter().map(|c| Pose::from_coords(std::array::from_fn(|i| c.get(i).copied().unwrap_or(0.0)))).collect(),
         ),
     };
     Finished { status: r.status.name(), summary: summary(r), path, polyline }
@@ -252,9 +252,10 @@ fn plan(json: &str, query: &str, id: &str, [max_charts, steps]: [usize; 2], iden
     let r = p.result((now() - started) / 1000.0).ok_or("the planner ended without a result")?;
     KEPT.set(Some((options, p)));
     let f = finished(&r);
-    let trajectory = match &r.trajectory {
-        Some(t) => Some(Box::new(planned_trajectory(json, t)?)),
-        None => None,
+    let trajectory = match (&r.trajectory, &r.joint_path) {
+        (Some(t), _) => Some(Box::new(planned_trajectory(json, t)?)),
+        (None, Some(p)) => Some(Box::new(planned_path(json, p)?)),
+        (None, None) => None,
     };
     let atlas = match &r.details {
         Details::Atlas(report) => WireAtlas::of(&report.atlas_charts),
@@ -277,6 +278,17 @@ pub fn planned_trajectory(json: &str, t: &cablenav::model::Trajectory) -> Result
     let (text, name) = cablenav::scenario::with_trajectory(json, t).map_err(|e| e.to_string())?;
     let s = scenario(&text)?;
     let index = s.trajectories.iter().position(|x| x.name == name).ok_or("the planned trajectory is missing from the written scenario")?;
+    let report = crate::logic::verify(&s, index).map(|r| WireReport::from(&r));
+    Ok(PlannedTrajectory { scenario: text, name, report })
+}
+
+/// A multi-link robot's planned path as [`planned_trajectory`] has a platform's: the scenario
+/// with the path through new configurations added (as `cablenav plan --out` writes it) and its
+/// exact verification there.
+pub fn planned_path(json: &str, p: &cablenav::model::JointPath) -> Result<PlannedTrajectory, String> {
+    let (text, name) = cablenav::scenario::with_joint_path(json, p).map_err(|e| e.to_string())?;
+    let s = scenario(&text)?;
+    let index = s.joint_paths.iter().position(|x| x.name == name).ok_or("the planned path is missing from the written scenario")?;
     let report = crate::logic::verify(&s, index).map(|r| WireReport::from(&r));
     Ok(PlannedTrajectory { scenario: text, name, report })
 }
@@ -434,6 +446,33 @@ mod tests {
         let s = Scenario::from_json(json).unwrap();
         let end = |w: &[u64; 7], name: &str| (super::super::protocol::pose_from_wire(w).position - s.pose(name).unwrap().position).norm();
         assert!(end(&path[0], "box-left") < 1e-12 && end(path.last().unwrap(), "box-right") < 1e-12);
+    }
+
+    #[test]
+    fn a_multi_link_plan_job_sends_the_path_through_configurations() {
+        // the thesis' arm with a query in its upper region (as tests/joint_plan.rs has it)
+        let mut v: serde_json::Value = serde_json::from_str(PRESETS[find("bmarm-x4-2").unwrap()].json).unwrap();
+        let (g, t) = (-std::f64::consts::PI / 12.0, std::f64::consts::PI / 12.0);
+        v["configurations"]["ul"] = serde_json::json!({"alpha": -0.1, "beta": 0.75, "gamma": g, "theta": t});
+        v["configurations"]["lr"] = serde_json::json!({"alpha": 0.59, "beta": 0.22, "gamma": g, "theta": t});
+        v["queries"] = serde_json::json!([{"name": "around", "start": "ul", "goal": "lr", "fixed": ["gamma", "theta"]}]);
+        let json = v.to_string();
+        let mut replies = vec![];
+        run(Job::Plan { scenario: json.clone(), query: "around".into(), planner: "ray-lattice".into(), max_charts: 1, steps: 7, identify_angles: true }, &mut |r| replies.push(r), clock);
+        let Some(Reply::Planned { status, summary, path, trajectory, .. }) = replies.last() else { panic!("{replies:?}") };
+        assert_eq!(status, "found", "{summary}");
+        assert!(path.is_empty(), "no platform poses");
+        let planned = trajectory.as_ref().expect("the path written into the scenario");
+        assert_eq!(planned.name, "around-lattice");
+        let written = Scenario::from_json(&planned.scenario).unwrap();
+        let k = written.joint_paths.iter().position(|p| p.name == planned.name).unwrap();
+        assert_eq!(planned.report.as_ref().unwrap().report().feasible, [[0.0, 1.0]]);
+        assert_eq!(crate::logic::verify(&written, k).unwrap(), planned.report.as_ref().unwrap().report());
+        // the atlas planner refuses a multi-link robot, saying which planner does plan it
+        replies.clear();
+        run(Job::Plan { scenario: json, query: "around".into(), planner: "continuation".into(), max_charts: 1, steps: 7, identify_angles: true }, &mut |r| replies.push(r), clock);
+        let Some(Reply::Failed { error }) = replies.last() else { panic!("{replies:?}") };
+        assert!(error.contains("lattice planner"), "{error}");
     }
 
     #[test]
