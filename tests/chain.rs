@@ -92,10 +92,16 @@ fn v3(rng: &mut Rng, r: f64) -> [f64; 3] {
 /// obstacle sometimes; and a random configuration `q`.
 fn random_chain(rng: &mut Rng) -> (Value, Vec<f64>) {
     let n = rng.int(1, 3);
+    random_chain_of(rng, n, &["spherical", "revolute", "prismatic", "free", "universal", "planar", "spatial"], &|rng, _| rng.int(3, 7))
+}
+
+/// A random chain of `n` links with joints drawn from `kinds`, as many cables as `cables` says
+/// for its degrees of freedom, and a random configuration ([`random_chain`]).
+fn random_chain_of(rng: &mut Rng, n: usize, kinds: &[&str], cables: &dyn Fn(&mut Rng, usize) -> usize) -> (Value, Vec<f64>) {
     let mut links = Vec::new();
     let mut q = Vec::new();
     for k in 0..n {
-        let kind = ["spherical", "revolute", "prismatic", "free", "universal", "planar", "spatial"][rng.int(0, 6)];
+        let kind = kinds[rng.int(0, kinds.len() - 1)];
         let names: Vec<String> = match kind {
             "spherical" => ["a", "b", "c"].iter().map(|x| format!("{x}{k}")).collect(),
             "free" => ["x", "y", "z", "phi", "theta", "sigma"].iter().map(|x| format!("{x}{k}")).collect(),
@@ -134,7 +140,7 @@ fn random_chain(rng: &mut Rng) -> (Value, Vec<f64>) {
         }
         links.push(link);
     }
-    let m = rng.int(3, 7);
+    let m = cables(rng, q.len());
     let cables: Vec<Value> = (0..m)
         .map(|i| {
             let t = 2.0 * PI * (i as f64 + rng.range(-0.3, 0.3)) / m as f64;
@@ -228,6 +234,72 @@ fn random_chain_closure_matches_the_length_jacobian() {
         if reference { closed += 1 } else { open += 1 }
     }
     assert!(judged > 300 && closed > 20 && open > 20, "{judged} judged: {closed} with closure, {open} without");
+}
+
+/// The length Jacobian's closure margin at `q` ([`closure_margin`] of the columns ∂L_k/∂q by
+/// central differences), or `None` within the differences' error of the boundary.
+fn closure_by_lengths(s: &Scenario, q: &[f64]) -> Option<bool> {
+    let (n, m) = (q.len(), s.robot.cables.len());
+    let lengths = |q: &[f64]| cables_at_config(&s.robot, q).cables.iter().map(|(a, x)| (x - a).norm()).collect::<Vec<f64>>();
+    let h = 1e-6;
+    let mut jac = DMatrix::zeros(n, m);
+    for i in 0..n {
+        let (mut up, mut down) = (q.to_vec(), q.to_vec());
+        up[i] += h;
+        down[i] -= h;
+        let (lu, ld) = (lengths(&up), lengths(&down));
+        for k in 0..m {
+            jac[(i, k)] = (lu[k] - ld[k]) / (2.0 * h);
+        }
+    }
+    let sv = jac.clone().svd(false, false).singular_values;
+    let t = closure_margin(&jac);
+    (t.abs() >= 1e-5 && sv.min() >= 1e-4 * sv.max()).then_some(t > 0.0)
+}
+
+/// Chains past the facets' reach (C(m, n − 1) > 252 sets of columns: 4 to 12 joint coordinates,
+/// 11 to 20 cables): joint-space closure by the linear programs' certificates, along random joint
+/// rays against the length Jacobian's closure at dense samples.
+#[test]
+fn closure_beyond_the_facets_agrees_with_the_length_jacobian_along_rays() {
+    let mut rng = Rng::new(71);
+    let rays_wanted = if cfg!(target_arch = "wasm32") { 14 } else { 40 };
+    let (mut rays, mut judged, mut closed, mut open, mut mixed, mut uncertain) = (0, 0, 0, 0, 0, 0.0);
+    while rays < rays_wanted {
+        let links = rng.int(2, 3);
+        let cables = |rng: &mut Rng, dof: usize| {
+            let least = (dof + 1..).find(|&m| cablenav::query::wrench::binomial(m, dof - 1) > 252).unwrap();
+            least + rng.int(0, 3)
+        };
+        let (value, q) = random_chain_of(&mut rng, links, &["spherical", "free", "universal", "spatial"], &cables);
+        let s = Scenario::from_json(&value.to_string()).unwrap_or_else(|e| panic!("{e}\n{value}"));
+        let closure = for_scenario(&s).into_iter().find(|c| c.label() == "wrench closure").expect("closure is checked");
+        let chain = s.robot.chain.as_ref().unwrap();
+        let i = rng.int(0, chain.dof() - 1);
+        let coord = Coord::Joint { index: i as u8, angle: chain.is_angle(i) };
+        let width = if coord.is_angle() { rng.range(0.3, 2.0) } else { rng.range(0.1, 0.6) };
+        let lo = q[i] - rng.range(0.0, width);
+        let sec = ray_sections(&s, std::slice::from_ref(&closure), &q, coord, lo, lo + width);
+        rays += 1;
+        mixed += usize::from(!sec.feasible.is_empty() && !sec.infeasible.is_empty());
+        uncertain += sec.uncertain.iter().map(|u| u[1] - u[0]).sum::<f64>() / width;
+        let margin = 1e-6 * width;
+        for k in 0..=100 {
+            let v = lo + width * k as f64 / 100.0;
+            let mut at = q.clone();
+            at[i] = v;
+            let Some(reference) = closure_by_lengths(&s, &at) else { continue };
+            let claim = if inside(&sec.feasible, v, margin) { true } else if inside(&sec.infeasible, v, margin) { false } else { continue };
+            assert_eq!(claim, reference, "ray {rays} at {v}: reported {claim}, the length Jacobian says {reference}\n{value}\nq = {q:?}");
+            // and the per-configuration check (the linear program) agrees
+            assert_eq!(!closure.check(&cables_at_config(&s.robot, &at)).violated, reference, "check at {v}\n{value}");
+            judged += 1;
+            if reference { closed += 1 } else { open += 1 }
+        }
+    }
+    assert!(judged > rays_wanted * 40 && closed > rays_wanted * 3 && open > rays_wanted * 3 && mixed * 14 >= rays_wanted, "{judged} samples judged: {closed} with closure, {open} without; {mixed} rays with both");
+    // undecided only near boundaries: a few percent of the rays' length at most
+    assert!(uncertain <= 0.05 * rays_wanted as f64, "{uncertain} rays' worth undecided of {rays_wanted}");
 }
 
 #[test]

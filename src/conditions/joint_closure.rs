@@ -18,7 +18,10 @@
 //! and zero to the other joints. The cable's length divides every entry of its column and is
 //! dropped (a positive factor per column). Along a motion every row is a polynomial over a power
 //! of w (the same power along the row), so the facet test of [`super::closure`] applies with n
-//! rows: facets of n − 1 columns, d_k = det [J_S | j_k].
+//! rows: facets of n − 1 columns, d_k = det [J_S | j_k]. Past [`MAX_FACETS`] facets (C(m, n − 1):
+//! a 24-DoF neck with 76 cables has ~10²⁰) the linear programs' certificates decide it instead
+//! ([`closure_violation`], [`closure_by_lp`] per configuration): their cost grows polynomially
+//! with the joints and the cables.
 
 use std::rc::Rc;
 
@@ -29,7 +32,9 @@ use super::{Condition, Kind, PoseCheck, Sweep};
 use crate::model::{Chain, Joint};
 use crate::poly::{Bern, Partition, Truth};
 use crate::query::cables::PoseCables;
-use crate::query::wrench::{positively_spans, subsets};
+use super::wrench_lp::closure_violation;
+use crate::query::wrench::{binomial, closure_by_lp, positively_spans, subsets};
+use crate::scenario::validate::MAX_FACETS;
 use nalgebra::{DMatrix, Vector3};
 
 /// Joint-space wrench closure of a multi-link robot.
@@ -126,6 +131,16 @@ impl JointClosure {
         j
     }
 
+    /// Per link, the rows of its own and its descendants' joint coordinates (only the cables
+    /// pulling that subtree reach them).
+    fn subtree_rows(&self) -> Vec<Vec<usize>> {
+        let links = &self.chain.links;
+        let first: Vec<usize> = links.iter().scan(0, |row, l| { let at = *row; *row += l.joint.dof(); Some(at) }).collect();
+        (0..links.len())
+            .map(|l| (0..links.len()).filter(|&k| self.chain.descends(k, l)).flat_map(|k| first[k]..first[k] + links[k].joint.dof()).collect())
+            .collect()
+    }
+
     /// The structure numerators along the sweep's motion: rows[row][cable].
     fn numerators(&self, sweep: &Sweep) -> Vec<Vec<Bern>> {
         let n = self.chain.dof();
@@ -177,6 +192,11 @@ impl Condition for JointClosure {
         if m <= n {
             return Partition::constant(Truth::True); // m ≤ n cables never positively span ℝⁿ
         }
+        if binomial(m, n - 1) > MAX_FACETS {
+            // too many facets to enumerate: the linear programs' certificates, failures looked
+            // for within each link's subtree as well
+            return closure_violation(rows, tol, &self.subtree_rows());
+        }
         let facets = subsets(m, n - 1).into_iter().map(|s| {
             let minors = minors(&rows, &s);
             (0..m).filter(|k| !s.contains(k)).map(|k| det_with(&minors, &rows.iter().map(|r| &r[k]).collect::<Vec<_>>())).collect()
@@ -185,6 +205,9 @@ impl Condition for JointClosure {
     }
 
     fn check(&self, at: &PoseCables) -> PoseCheck {
-        PoseCheck { violated: !positively_spans(&self.matrix(at)), distance: None }
+        let j = self.matrix(at);
+        let (n, m) = j.shape();
+        let spans = if m > n && binomial(m, n - 1) > MAX_FACETS { closure_by_lp(&j) } else { positively_spans(&j) };
+        PoseCheck { violated: !spans, distance: None }
     }
 }

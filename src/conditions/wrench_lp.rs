@@ -103,8 +103,13 @@ impl Piece {
             Some(q) => local.weight.mul(q),
             None => local.weight.clone(),
         };
-        let len2 = local
-            .len2()
+        Piece::new(n, rows, w, local.len2())
+    }
+
+    /// The system N φ = load on all of [0, 1]: N's rows `n`, the load rows, their factor W and
+    /// the cables' squared lengths P_k (with their derivatives taken here).
+    fn new(n: Vec<Vec<Bern>>, load: Vec<Bern>, w: Bern, len2: Vec<Bern>) -> Piece {
+        let len2 = len2
             .into_iter()
             .map(|p| {
                 let d = p.derivative();
@@ -112,7 +117,7 @@ impl Piece {
                 [p, d, dd]
             })
             .collect();
-        Piece { len2, n, load: rows, w, width: 1.0 }
+        Piece { len2, n, load, w, width: 1.0 }
     }
 
     fn halves(&self) -> (Piece, Piece) {
@@ -177,8 +182,9 @@ fn least(p: &Bern) -> f64 {
 }
 
 impl WrenchFeasibilityLp {
-    /// Feasible (True), infeasible (False) or undecided on the piece.
-    fn decide(&self, piece: &Piece) -> Truth {
+    /// Feasible (True), infeasible (False) or undecided on the piece; for closure, `blocks` are
+    /// sets of rows to look for a failure within as well ([`closure_violation`]).
+    fn decide(&self, piece: &Piece, blocks: &[Vec<usize>]) -> Truth {
         let w = Iv::of(&piece.w);
         if !(w.lo > 0.0 && w.hi.is_finite()) {
             return Truth::Unknown;
@@ -192,7 +198,9 @@ impl WrenchFeasibilityLp {
         let b = DVector::from_fn(n, |r, _| piece.load[r].eval(0.5).0);
         match static_margin_of(&j, &b, &self.bounds) {
             Some((t, f)) if t > 0.0 => self.feasible(piece, &inv, &nc, &f, w),
-            _ if self.closure => match enclosing_direction(&j) {
+            // a row of N that is zero throughout: rank below n, no closure
+            _ if self.closure && piece.n.iter().any(|row| row.iter().all(structurally_zero)) => Truth::False,
+            _ if self.closure => match enclosing_direction(&j).or_else(|| block_direction(piece, &j, blocks)) {
                 Some(y) => self.infeasible(piece, &inv, &y, w),
                 None => Truth::Unknown,
             },
@@ -303,9 +311,18 @@ impl WrenchFeasibilityLp {
         }
     }
 
+    /// Where the condition fails along the motion of `piece` (on all of [0, 1]), to the boundary
+    /// tolerance `tol`.
+    fn violation_of(&self, piece: Piece, tol: f64, blocks: &[Vec<usize>]) -> Partition {
+        let mut pieces = Vec::new();
+        let mut budget = MAX_NODES;
+        self.bisect(piece, (0.0, 1.0), tol, blocks, &mut budget, &mut pieces);
+        Partition::from_pieces(pieces).not()
+    }
+
     /// Bisection of `piece` = [a, b]: pieces of `out` as (end, feasible?).
-    fn bisect(&self, piece: Piece, (a, b): (f64, f64), tol: f64, budget: &mut usize, out: &mut Vec<(f64, Truth)>) {
-        let truth = self.decide(&piece);
+    fn bisect(&self, piece: Piece, (a, b): (f64, f64), tol: f64, blocks: &[Vec<usize>], budget: &mut usize, out: &mut Vec<(f64, Truth)>) {
+        let truth = self.decide(&piece, blocks);
         // a quarter of the tolerance: two undecided neighbours merged stay narrower than it
         if truth != Truth::Unknown || b - a <= 0.25 * tol || *budget == 0 {
             out.push((b, truth));
@@ -314,9 +331,47 @@ impl WrenchFeasibilityLp {
         *budget -= 1;
         let (left, right) = piece.halves();
         let mid = 0.5 * (a + b);
-        self.bisect(left, (a, mid), tol, budget, out);
-        self.bisect(right, (mid, b), tol, budget, out);
+        self.bisect(left, (a, mid), tol, blocks, budget, out);
+        self.bisect(right, (mid, b), tol, blocks, budget, out);
     }
+}
+
+/// A polynomial that is exactly zero (every coefficient 0, no error): an entry of N that no
+/// cable's force reaches (a joint the cable's link does not descend from).
+fn structurally_zero(p: &Bern) -> bool {
+    p.err == 0.0 && p.c.iter().all(|c| *c == 0.0)
+}
+
+/// A direction y supported on one of `blocks` (sets of rows) with every column that reaches
+/// those rows strictly on its negative side at the middle, and zero elsewhere: the columns that
+/// do not reach them are exactly zero there ([`structurally_zero`]), so y·n_k ≡ 0 for them and
+/// J f = 0 still has no solution f ≥ 1 (a link whose own cables cannot span its joints, where the
+/// whole matrix has no strictly enclosing direction).
+fn block_direction(piece: &Piece, j: &DMatrix<f64>, blocks: &[Vec<usize>]) -> Option<DVector<f64>> {
+    blocks.iter().find_map(|rows| {
+        let cols: Vec<usize> = (0..j.ncols()).filter(|&k| rows.iter().any(|&r| !structurally_zero(&piece.n[r][k]))).collect();
+        let sub = DMatrix::from_fn(rows.len(), cols.len(), |r, c| j[(rows[r], cols[c])]);
+        let y = enclosing_direction(&sub)?;
+        let mut full = DVector::zeros(j.nrows());
+        for (r, &row) in rows.iter().enumerate() {
+            full[row] = y[r];
+        }
+        Some(full)
+    })
+}
+
+/// Where the columns of the n × m matrix of polynomials `rows` (on λ ∈ [0, 1]) do not positively
+/// span ℝⁿ, by the closure program's certificates: the zero load balanced by tensions in [1, ∞)
+/// (a strictly positive null vector, with rank n), or a direction with every column strictly on
+/// its negative side. Positive factors of a row or a column do not change positive spanning, so
+/// the rows may be any positive multiples of the structure matrix's (a multi-link robot's joint
+/// rows, whose columns are not divided by the cables' lengths). For any n and m: no facets.
+/// `blocks` are sets of rows within which closure may fail on its own (a multi-link robot's
+/// subtrees: the joints of a link and its descendants, which only the cables pulling them reach).
+pub(crate) fn closure_violation(rows: Vec<Vec<Bern>>, tol: f64, blocks: &[Vec<usize>]) -> Partition {
+    let (n, m) = (rows.len(), rows.first().map_or(0, Vec::len));
+    let lp = WrenchFeasibilityLp::closure(&Load { wrench: crate::model::Wrench::zero(), dynamics: None, mobility: crate::model::Mobility::Spatial }, m);
+    lp.violation_of(Piece::new(rows, vec![Bern::constant(0.0); n], Bern::constant(1.0), vec![Bern::constant(1.0); m]), tol, blocks)
 }
 
 impl Condition for WrenchFeasibilityLp {
@@ -329,10 +384,7 @@ impl Condition for WrenchFeasibilityLp {
     }
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
-        let mut pieces = Vec::new();
-        let mut budget = MAX_NODES;
-        self.bisect(Piece::of(sweep, &self.load), (0.0, 1.0), sweep.tol, &mut budget, &mut pieces);
-        Partition::from_pieces(pieces).not()
+        self.violation_of(Piece::of(sweep, &self.load), sweep.tol, &[])
     }
 
     fn check(&self, at: &PoseCables) -> PoseCheck {
