@@ -15,13 +15,16 @@
 // - the α–β ray lattice at fig312 with 10 steps (Fig. 3.12) built in the workers equals
 //   `cablenav lattice` ray by ray (2 components), drawn in 3-D too; the planning tab says that
 //   the preset has no planning query (a multi-link robot's queries are planned by the lattice
-//   planner: web/src/worker/jobs.rs tests the worker's side).
+//   planner); a query added to the arm (as tests/joint_plan.rs adds it) is planned on the page
+//   with the lattice planner in a worker, its path through configurations added to the scenario,
+//   and the strip shows it as `cablenav verify` does on what `cablenav plan --out` wrote.
 // Screenshots in tests/browser/artifacts/. Ends with "N passed, M failed"; exits 1 on failure.
 
+import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { begin, cliJson, cliSections, cliVerify, openTab, stripSections, watchProblems } from './harness.mjs';
 
-const { root, artifacts, test, finish, base, browser, close } = await begin(import.meta.url, { watchdogMinutes: 8, scratch: 'cablenav-multilink-' });
+const { root, artifacts, scratch, test, finish, base, browser, close } = await begin(import.meta.url, { watchdogMinutes: 8, scratch: 'cablenav-multilink-' });
 const TIMEOUT = 60_000;
 const ARM = 'static/multilink/bmarm-x4-2.json';
 
@@ -105,7 +108,7 @@ await test('the α–β slice map at fig312 (Fig. 3.12) agrees with `cablenav sl
   return `${m[1]}×${m[1]} cells, ${m[2]} % feasible, ${m[3]} component(s), as the CLI`;
 });
 
-await test('Fig. 3.12 on the page: the α–β ray lattice at fig312 with 10 steps equals `cablenav lattice`; planning says it is not available', async () => {
+await test('Fig. 3.12 on the page: the α–β ray lattice at fig312 with 10 steps equals `cablenav lattice`; the planning tab says the preset has no query', async () => {
   const q = String(Math.PI / 4);
   await openTab(page, 'lattice');
   await page.selectOption('select[data-testid="lattice-pose"]', 'fig312');
@@ -146,6 +149,40 @@ await test('Fig. 3.12 on the page: the α–β ray lattice at fig312 with 10 ste
   // the preset has no queries (tests/joint_plan.rs adds some): the tab says so, and plans none
   if (!text.includes('This scenario has no planning query.')) throw new Error(`planning tab: ${text.slice(0, 200)}`);
   return `${cli.rays.length} rays, ${cli.components} components, ${cli.feasible_points} feasible grid points, as the CLI`;
+});
+
+await test('a query of the arm planned with the lattice planner in a worker: the path through configurations, added to the scenario, has the strip of `cablenav verify` on what `cablenav plan --out` wrote', async () => {
+  // the preset with two configurations of its upper region and a query between them, as
+  // tests/joint_plan.rs has it (the straight path leaves wrench closure)
+  const arm = JSON.parse(readFileSync(join(root, ARM), 'utf8'));
+  const [g, th] = [-Math.PI / 12, Math.PI / 12];
+  arm.configurations.ul = { alpha: -0.1, beta: 0.75, gamma: g, theta: th };
+  arm.configurations.lr = { alpha: 0.59, beta: 0.22, gamma: g, theta: th };
+  arm.queries = [{ name: 'around', start: 'ul', goal: 'lr', fixed: ['gamma', 'theta'] }];
+  const text = JSON.stringify(arm, null, 2);
+  const file = join(scratch, 'arm-queries.json');
+  writeFileSync(file, text);
+  const out = join(scratch, 'arm-planned.json');
+  const cli = cliJson(root, ['plan', file, '--query', 'around', '--planner', 'lattice', '--out', out]);
+  if (cli.status !== 'found') throw new Error(`the CLI: ${cli.status}`);
+  const want = cliSections(cliVerify(root, out, 'around-lattice'));
+  await page.setInputFiles('[data-testid="import-json"]', { name: 'arm-queries.json', mimeType: 'application/json', buffer: Buffer.from(text) });
+  await openTab(page, 'planning');
+  await page.selectOption('select[data-testid="planner"]', 'ray-lattice');
+  await page.click('[data-testid="plan-run"]');
+  await page.waitForFunction(() => !['running', 'idle'].includes(document.querySelector('[data-testid="plan-status"]').dataset.state), null, { timeout: TIMEOUT, polling: 100 });
+  const state = await page.getAttribute('[data-testid="plan-status"]', 'data-state');
+  const status = (await page.textContent('[data-testid="plan-status"]')).trim();
+  if (state !== 'found') throw new Error(`the page: ${state} "${status}"`);
+  await page.click('[data-testid="plan-add-path"]');
+  let got = [];
+  for (let i = 0; i < 100; i++) {
+    got = await stripSections(page);
+    if (JSON.stringify(got) === JSON.stringify(want)) break;
+    await page.waitForTimeout(100);
+  }
+  if (JSON.stringify(got) !== JSON.stringify(want)) throw new Error(`strip ${JSON.stringify(got)}\n  CLI ${JSON.stringify(want)}`);
+  return `${status.slice(0, 80)}…; strip ${JSON.stringify(got)} as the CLI`;
 });
 
 await test('no console errors, page errors or failed requests', async () => {
