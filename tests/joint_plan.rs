@@ -210,3 +210,31 @@ fn bounded_stepping_reaches_the_same_path() {
     assert!(steps > 14, "one ray per unit at least: {steps}");
     assert_eq!(stepped.joint_path, whole.joint_path);
 }
+
+/// An independent check of the gap's extent: the point-wise grid (each configuration checked by
+/// the conditions on their own, no rays) over all four joint coordinates — 17 × 81 × 11 × 25
+/// values of α, β, γ, θ over their joints' ranges (γ's widened to −π/12), β fine enough (spacing
+/// 0.02) to sample inside the cables 2–3 gap — puts `below` and `above` in different components:
+/// the gap separates them over the whole range of α, γ and θ, not only in the Fig. 3.12
+/// cross-section. (So do 25 × 81 × 11 × 25, 17 × 121 × 11 × 25 and 17 × 81 × 16 × 37; a grid
+/// coarse in α, γ, θ — 9 × 161 × 6 × 13 — joins them, its steps along those axes jumping the
+/// tilted gap. A point-wise grid assumes its neighbours joined: its separation is evidence, not a
+/// proof; the lattice planner's `no_path` above is certified at its own resolution.)
+#[test]
+fn a_four_dimensional_point_grid_separates_below_from_above() {
+    use cablenav::lattice::{point_grid, LatticeSpec};
+    let s = arm();
+    let axes: Vec<Coord> = (0..4).map(|k| s.coord_at(k)).collect();
+    let ranges = vec![[-0.7854, 0.7854], [-0.8, 0.8], [-PI / 12.0, 0.1745], [-PI / 4.0, PI / 4.0]];
+    let spec = LatticeSpec::new(axes, ranges, vec![17, 81, 11, 25], s.config("below").unwrap()).unwrap();
+    let grid = point_grid(&s, &spec);
+    let at = |name: &str| {
+        let q = s.config(name).unwrap();
+        let idx: Vec<usize> = (0..4).map(|a| ((q[a] - spec.ranges[a][0]) / spec.spacing(a)).round() as usize).collect();
+        let c = spec.coords(&idx);
+        assert!(c.iter().zip(&q).all(|(x, y)| (x - y).abs() < 1e-9), "{name} is a grid point: {c:?} vs {q:?}");
+        grid.component[spec.point_index(&idx)].unwrap_or_else(|| panic!("{name} is feasible"))
+    };
+    let (below, above) = (at("below"), at("above"));
+    assert_ne!(below, above, "{} components", grid.components);
+}
