@@ -653,7 +653,7 @@ fn dynamic_sections_match_an_independent_reference_on_random_robots() {
 #[test]
 fn point_mass_and_planar_sections_match_the_reference() {
     let mut rng = Rng::new(41);
-    let n = if cfg!(target_arch = "wasm32") { 12 } else { env_usize("CABLENAV_DYNAMICS_CASES", 240) };
+    let n = if cfg!(target_arch = "wasm32") { 60 } else { env_usize("CABLENAV_DYNAMICS_CASES", 240) };
     let cases: Vec<Case> = (0..n).map(|k| random_case_of_kind(&mut rng, 1 + k % 2)).collect();
     #[cfg(not(target_arch = "wasm32"))]
     let results = support::on_two_threads(cases.len(), &|k| run_case(k, &cases[k]));
