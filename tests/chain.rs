@@ -207,20 +207,8 @@ fn random_chain_closure_matches_the_length_jacobian() {
     for _ in 0..400 {
         let (value, q) = random_chain(&mut rng);
         let s = Scenario::from_json(&value.to_string()).unwrap_or_else(|e| panic!("{e}\n{value}"));
-        let chain = s.robot.chain.as_ref().unwrap();
-        let (n, m) = (chain.dof(), s.robot.cables.len());
-        let lengths = |q: &[f64]| cables_at_config(&s.robot, q).cables.iter().map(|(a, x)| (x - a).norm()).collect::<Vec<f64>>();
-        let h = 1e-6;
-        let mut jac = DMatrix::zeros(n, m);
-        for i in 0..n {
-            let (mut up, mut down) = (q.clone(), q.clone());
-            up[i] += h;
-            down[i] -= h;
-            let (lu, ld) = (lengths(&up), lengths(&down));
-            for k in 0..m {
-                jac[(i, k)] = (lu[k] - ld[k]) / (2.0 * h);
-            }
-        }
+        let (n, m) = (q.len(), s.robot.cables.len());
+        let jac = length_jacobian(&s, &q);
         let sv = jac.clone().svd(false, false).singular_values;
         let t = closure_margin(&jac);
         if t.abs() < 1e-5 || (n <= m && sv.min() < 1e-4 * sv.max()) {
@@ -236,9 +224,8 @@ fn random_chain_closure_matches_the_length_jacobian() {
     assert!(judged > 300 && closed > 20 && open > 20, "{judged} judged: {closed} with closure, {open} without");
 }
 
-/// The length Jacobian's closure margin at `q` ([`closure_margin`] of the columns ∂L_k/∂q by
-/// central differences), or `None` within the differences' error of the boundary.
-fn closure_by_lengths(s: &Scenario, q: &[f64]) -> Option<bool> {
+/// The cables' length Jacobian ∂L_k/∂q_i at `q` by central differences.
+fn length_jacobian(s: &Scenario, q: &[f64]) -> DMatrix<f64> {
     let (n, m) = (q.len(), s.robot.cables.len());
     let lengths = |q: &[f64]| cables_at_config(&s.robot, q).cables.iter().map(|(a, x)| (x - a).norm()).collect::<Vec<f64>>();
     let h = 1e-6;
@@ -252,6 +239,13 @@ fn closure_by_lengths(s: &Scenario, q: &[f64]) -> Option<bool> {
             jac[(i, k)] = (lu[k] - ld[k]) / (2.0 * h);
         }
     }
+    jac
+}
+
+/// The length Jacobian's closure at `q` ([`closure_margin`] of its columns), or `None` within the
+/// differences' error of the boundary.
+fn closure_by_lengths(s: &Scenario, q: &[f64]) -> Option<bool> {
+    let jac = length_jacobian(s, q);
     let sv = jac.clone().svd(false, false).singular_values;
     let t = closure_margin(&jac);
     (t.abs() >= 1e-5 && sv.min() >= 1e-4 * sv.max()).then_some(t > 0.0)

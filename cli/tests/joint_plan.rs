@@ -4,12 +4,11 @@
 //! `cablenav verify`; no path across the cables 2–3 gap; the atlas planner refused naming
 //! `--planner lattice`. The core's side is `tests/joint_plan.rs`.
 
-use cablenav::Error;
-use cablenav_cli::{run, CliError};
 use serde_json::{json, Value};
-use std::cell::RefCell;
-use std::collections::HashMap;
+use support::Files;
 use std::f64::consts::PI;
+
+mod support;
 
 const ARM: &str = include_str!("../../static/multilink/bmarm-x4-2.json");
 
@@ -25,31 +24,9 @@ fn arm() -> String {
     v.to_string()
 }
 
-/// The CLI over an in-memory file system: the arm, and whatever `--out` wrote.
-struct Files(RefCell<HashMap<String, String>>);
-
-impl Files {
-    fn new() -> Files {
-        Files(RefCell::new(HashMap::from([("arm.json".to_string(), arm())])))
-    }
-
-    fn cli(&self, args: &[&str]) -> Result<String, CliError> {
-        let read = |p: &str| self.0.borrow().get(p).cloned().ok_or_else(|| Error::new(p, "no such file"));
-        let write = |p: &str, bytes: &[u8]| {
-            self.0.borrow_mut().insert(p.to_string(), String::from_utf8_lossy(bytes).into_owned());
-            Ok(())
-        };
-        run(args.iter().copied(), &read, &write, &|_| Ok(vec![]), &mut |_| {})
-    }
-
-    fn json(&self, args: &[&str]) -> Value {
-        serde_json::from_str(&self.cli(args).unwrap_or_else(|e| panic!("{args:?}: {e}"))).unwrap()
-    }
-}
-
 #[test]
 fn plan_writes_a_path_through_configurations_that_verify_checks() {
-    let files = Files::new();
+    let files = Files::new(&[("arm.json", arm())]);
     let v = files.json(&["plan", "arm.json", "--query", "around", "--planner", "lattice", "--out", "planned.json", "--json"]);
     assert_eq!(v["status"], "found", "{v}");
     assert_eq!(v["axes"], json!(["alpha", "beta", "gamma", "theta"]));
@@ -76,7 +53,7 @@ fn plan_writes_a_path_through_configurations_that_verify_checks() {
 
 #[test]
 fn no_path_across_the_gap_and_refusals() {
-    let files = Files::new();
+    let files = Files::new(&[("arm.json", arm())]);
     let v = files.json(&["plan", "arm.json", "--query", "gap", "--planner", "lattice", "--json"]);
     assert_eq!(v["status"], "no_path");
     assert!(v["message"].as_str().unwrap().starts_with("no path in the lattice at this resolution (alpha: 7 values"), "{v}");

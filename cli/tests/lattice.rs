@@ -7,11 +7,11 @@
 use cablenav::lattice::{Lattice, LatticeSpec};
 use cablenav::model::{Coord, Pose};
 use cablenav::verify::check_pose;
-use cablenav::{Error, Scenario};
-use cablenav_cli::{run, CliError};
+use cablenav::Scenario;
 use serde_json::{json, Value};
-use std::cell::RefCell;
-use std::collections::HashMap;
+use support::Files;
+
+mod support;
 
 const CDPR7_BOX: &str = include_str!("../../static/scenarios/cdpr7-box.json");
 const CDPR7_TREE: &str = include_str!("../../static/scenarios/cdpr7-tree.json");
@@ -36,30 +36,8 @@ fn wall() -> String {
 }
 
 /// The CLI over an in-memory file system: the presets, the wall, and whatever `--out` wrote.
-struct Files(RefCell<HashMap<String, String>>);
-
-impl Files {
-    fn new() -> Files {
-        let mut m = HashMap::new();
-        m.insert("box.json".to_string(), CDPR7_BOX.to_string());
-        m.insert("tree.json".to_string(), CDPR7_TREE.to_string());
-        m.insert("robocrane.json".to_string(), ROBOCRANE.to_string());
-        m.insert("wall.json".to_string(), wall());
-        Files(RefCell::new(m))
-    }
-
-    fn cli(&self, args: &[&str]) -> Result<String, CliError> {
-        let read = |p: &str| self.0.borrow().get(p).cloned().ok_or_else(|| Error::new(p, "no such file"));
-        let write = |p: &str, bytes: &[u8]| {
-            self.0.borrow_mut().insert(p.to_string(), String::from_utf8_lossy(bytes).into_owned());
-            Ok(())
-        };
-        run(args.iter().copied(), &read, &write, &|_| Ok(vec![]), &mut |_| {})
-    }
-
-    fn json(&self, args: &[&str]) -> Value {
-        serde_json::from_str(&self.cli(args).unwrap_or_else(|e| panic!("{args:?}: {e}"))).unwrap()
-    }
+fn presets() -> Files {
+    Files::new(&[("box.json", CDPR7_BOX.to_string()), ("tree.json", CDPR7_TREE.to_string()), ("robocrane.json", ROBOCRANE.to_string()), ("wall.json", wall())])
 }
 
 /// Fig. 3.10's x–z cross-section: y = 2, identity orientation, `steps` values over x ∈ [0.2, 3.8]
@@ -74,7 +52,7 @@ fn feasible_at(s: &Scenario, c: [f64; 6]) -> bool {
 
 #[test]
 fn rays_equal_the_ray_command_and_dense_sampling() {
-    let files = Files::new();
+    let files = presets();
     let s = Scenario::from_json(CDPR7_TREE).unwrap();
     let l = Lattice::build(&s, fig310(7));
     let mut with_poses: Value = serde_json::from_str(CDPR7_TREE).unwrap();
@@ -114,7 +92,7 @@ fn rays_equal_the_ray_command_and_dense_sampling() {
 
 #[test]
 fn lattice_command_prints_rays_and_components() {
-    let files = Files::new();
+    let files = presets();
     let v = files.json(&["lattice", "box.json", "--pose", "fig310", "--axes", "x,z", "--range", "0.2", "3.8", "0.3", "3.7", "--steps", "7", "--json"]);
     let rays = v["rays"].as_array().unwrap();
     assert_eq!(rays.len(), 14);
@@ -128,7 +106,7 @@ fn lattice_command_prints_rays_and_components() {
 
 #[test]
 fn bad_lattice_requests_name_the_field() {
-    let files = Files::new();
+    let files = presets();
     let base = ["lattice", "box.json", "--pose", "fig310"];
     let cases: [(&[&str], &str, &str); 9] = [
         (&["--axes", "x,z", "--range", "0.2", "3.8", "0.3", "3.7", "--steps", "0"], "--steps", "2 to"),
@@ -176,7 +154,7 @@ fn plans_around_the_tree_verified_on_all_of_0_1() {
 
 /// Plans `query` of `file` with the lattice planner; the result verifies on all of [0, 1].
 fn plans_verified_on_all_of_0_1(file: &str, query: &str, start: &str, goal: &str) {
-    let files = Files::new();
+    let files = presets();
     {
         // the straight motion between the two poses is infeasible: the planner has work to do
         let mut v: Value = serde_json::from_str(&files.0.borrow()[file]).unwrap();
@@ -204,7 +182,7 @@ fn plans_verified_on_all_of_0_1(file: &str, query: &str, start: &str, goal: &str
 
 #[test]
 fn plans_robocrane_q1_q2_with_its_wrench_set() {
-    let files = Files::new();
+    let files = presets();
     let (plan, verified) = plan_and_verify(&files, "robocrane.json", "q1-q2", &[]);
     assert_eq!(plan["status"], "found", "{plan}");
     assert_eq!(verified["feasible"], json!([[0.0, 1.0]]), "{verified}");
@@ -214,7 +192,7 @@ fn plans_robocrane_q1_q2_with_its_wrench_set() {
 
 #[test]
 fn a_wall_gives_no_path_with_the_resolution() {
-    let files = Files::new();
+    let files = presets();
     let v = files.json(&["plan", "wall.json", "--query", "across", "--planner", "lattice", "--steps", "9", "--json"]);
     assert_eq!(v["status"], "no_path");
     let m = v["message"].as_str().unwrap();
@@ -237,7 +215,7 @@ fn a_wall_gives_no_path_with_the_resolution() {
 /// with other parameters, or not an atlas, is refused naming `--atlas` and the file.
 #[test]
 fn plan_saves_and_loads_the_atlas() {
-    let files = Files::new();
+    let files = presets();
     let first = files.json(&["plan", "robocrane.json", "--query", "q1-q2", "--atlas", "crane.atlas", "--json"]);
     assert_eq!(first["reused_charts"], 0);
     let saved = files.0.borrow().get("crane.atlas").cloned().expect("the atlas file is written");
