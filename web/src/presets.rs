@@ -28,7 +28,7 @@ pub fn label(id: &str) -> &str {
         "thesis-fig4-6-vertical" => "Thesis Fig. 4.6a: vertical",
         "thesis-fig4-6-horizontal" => "Thesis Fig. 4.6b: horizontal",
         "thesis-fig4-7-circle" => "Thesis Fig. 4.7: 1 m circle",
-        "laval-cspr3dof" => "Laval CSPR: point mass, 3 cables (batotp's case)",
+        "laval-cspr3dof" => "Laval CSPR, point mass",
         "bmarm-x4-2" => "4-DoF arm, multi-link",
         other => other,
     }
