@@ -223,9 +223,13 @@ export interface LatticePlanReport {
   components: number;
   segments: [number, number];
   expanded: number;
-  polyline: Coords[];
+  /** A platform's poses (x, y, z, phi, theta, sigma), or a multi-link robot's joint coordinates in the order of `joint_coordinates`. */
+  polyline: (Coords | number[])[];
   polyline_length: number;
-  waypoints: Coords[];
+  /** As `polyline`. */
+  waypoints: (Coords | number[])[];
+  /** A multi-link robot's joint coordinates by name, in configuration order (absent for a platform robot). */
+  joint_coordinates?: string[];
   pieces: number;
   polyline_pieces: number;
   repairs: number;
