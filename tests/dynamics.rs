@@ -510,6 +510,14 @@ fn random_case_of(rng: &mut Rng, m: usize) -> Case {
     Case { mobility: Mobility::Spatial, cables, tension, mass, com: rng.in_box(0.1), inertia, gravity, wrench, winch, path: Path::Slerp(traj), duration: rng.range(0.5, 2.5), h: H, eps: 1e-7 }
 }
 
+/// A random six-cable case (its mass, load, winch limits, path and duration) recast as a robot
+/// moving as `mobility` on `cables`, and its weight (mass × 10).
+fn recast(rng: &mut Rng, mobility: Mobility, cables: Vec<(V3, V3)>) -> (Case, f64) {
+    let case = random_case_of(rng, 6);
+    let weight = case.mass * 10.0;
+    (Case { mobility, cables, ..case }, weight)
+}
+
 /// The angle of anchor `k` of `m` around a ring, jittered by a fifth of the spacing.
 fn ring_angle(rng: &mut Rng, k: usize, m: usize) -> f64 {
     2.0 * std::f64::consts::PI * (k as f64 + rng.range(-0.2, 0.2)) / m as f64
@@ -529,10 +537,7 @@ fn random_point_case(rng: &mut Rng) -> Case {
             (v3(b * angle.cos(), b * angle.sin(), z), v3(0.0, 0.0, 0.0))
         })
         .collect();
-    let mut case = random_case_of(rng, 6);
-    let weight = case.mass * 10.0;
-    case.mobility = Mobility::Point;
-    case.cables = cables;
+    let (mut case, weight) = recast(rng, Mobility::Point, cables);
     case.com = v3(0.0, 0.0, 0.0);
     case.inertia = Matrix3::zeros();
     // a point mass's few cables share its weight: tighter bounds than a platform's, so that
@@ -564,10 +569,7 @@ fn random_planar_case(rng: &mut Rng) -> Case {
             (v3(b * angle.cos(), b * angle.sin() - 0.5 * b, 0.0), on)
         })
         .collect();
-    let mut case = random_case_of(rng, 6);
-    let weight = case.mass * 10.0;
-    case.mobility = Mobility::Planar;
-    case.cables = cables;
+    let (mut case, weight) = recast(rng, Mobility::Planar, cables);
     case.gravity = v3(0.0, 10.0, 0.0);
     case.com = v3(rng.range(-0.1, 0.1), rng.range(-0.1, 0.1), 0.0);
     case.tension = (if rng.chance(0.5) { 0.0 } else { 0.05 * weight }, weight * rng.range(0.6, 2.0));
