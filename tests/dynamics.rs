@@ -630,20 +630,27 @@ fn run_case(k: usize, case: &Case) -> (usize, Vec<String>, usize, bool) {
     (compared, bad, checked, !r.feasible.is_empty() && !r.infeasible.is_empty())
 }
 
-#[test]
-fn dynamic_sections_match_an_independent_reference_on_random_robots() {
-    let mut rng = Rng::new(22);
-    let cases: Vec<Case> = (0..env_usize("CABLENAV_DYNAMICS_CASES", CASES)).map(|_| random_case(&mut rng)).collect();
+/// [`run_case`] on every case (on two threads natively), asserting that no sample contradicts the
+/// reference; the per-case results in order.
+fn run_cases(cases: &[Case]) -> Vec<(usize, Vec<String>, usize, bool)> {
     #[cfg(not(target_arch = "wasm32"))]
     let results = support::on_two_threads(cases.len(), &|k| run_case(k, &cases[k]));
     #[cfg(target_arch = "wasm32")]
     let results: Vec<_> = cases.iter().enumerate().map(|(k, c)| run_case(k, c)).collect();
     let failures: Vec<&String> = results.iter().flat_map(|r| &r.1).collect();
+    assert!(failures.is_empty(), "{} contradictions, first: {}", failures.len(), failures[0]);
+    results
+}
+
+#[test]
+fn dynamic_sections_match_an_independent_reference_on_random_robots() {
+    let mut rng = Rng::new(22);
+    let cases: Vec<Case> = (0..env_usize("CABLENAV_DYNAMICS_CASES", CASES)).map(|_| random_case(&mut rng)).collect();
+    let results = run_cases(&cases);
     let compared: usize = results.iter().map(|r| r.0).sum();
     let boundaries: usize = results.iter().map(|r| r.2).sum();
     let mixed = results.iter().filter(|r| r.3).count();
     let n = cases.len();
-    assert!(failures.is_empty(), "{} contradictions, first: {}", failures.len(), failures[0]);
     assert!(mixed * 5 >= n, "only {mixed} of {n} trajectories have both kinds of section");
     let samples = env_usize("CABLENAV_DYNAMICS_SAMPLES", SAMPLES);
     assert!(boundaries >= n / 12 && compared > n * samples / 2, "{boundaries} boundaries, {compared} samples");
@@ -657,12 +664,7 @@ fn point_mass_and_planar_sections_match_the_reference() {
     let mut rng = Rng::new(41);
     let n = if cfg!(target_arch = "wasm32") { 60 } else { env_usize("CABLENAV_DYNAMICS_CASES", 240) };
     let cases: Vec<Case> = (0..n).map(|k| random_case_of_kind(&mut rng, 1 + k % 2)).collect();
-    #[cfg(not(target_arch = "wasm32"))]
-    let results = support::on_two_threads(cases.len(), &|k| run_case(k, &cases[k]));
-    #[cfg(target_arch = "wasm32")]
-    let results: Vec<_> = cases.iter().enumerate().map(|(k, c)| run_case(k, c)).collect();
-    let failures: Vec<&String> = results.iter().flat_map(|r| &r.1).collect();
-    assert!(failures.is_empty(), "{} contradictions, first: {}", failures.len(), failures[0]);
+    let results = run_cases(&cases);
     let compared: usize = results.iter().map(|r| r.0).sum();
     let boundaries: usize = results.iter().map(|r| r.2).sum();
     let mixed = results.iter().filter(|r| r.3).count();
@@ -693,12 +695,7 @@ fn many_cables_by_linear_programs_match_the_reference() {
             case
         })
         .collect();
-    #[cfg(not(target_arch = "wasm32"))]
-    let results = support::on_two_threads(cases.len(), &|k| run_case(k, &cases[k]));
-    #[cfg(target_arch = "wasm32")]
-    let results: Vec<_> = cases.iter().enumerate().map(|(k, c)| run_case(k, c)).collect();
-    let failures: Vec<&String> = results.iter().flat_map(|r| &r.1).collect();
-    assert!(failures.is_empty(), "{} contradictions, first: {}", failures.len(), failures[0]);
+    let results = run_cases(&cases);
     let mixed = results.iter().filter(|r| r.3).count();
     let boundaries: usize = results.iter().map(|r| r.2).sum();
     assert!(mixed * 5 >= n && boundaries * 12 >= n, "{mixed} of {n} trajectories with both kinds of section, {boundaries} boundaries checked");
