@@ -121,10 +121,17 @@ pub fn fastest_reporting(s: &Scenario, traj: &Trajectory, options: TimingOptions
     // the limits at both ends of every cell, as half-planes in (u, x_start)
     let mut steps = Vec::with_capacity(cells.len());
     let mut jets = Vec::with_capacity(cells.len());
+    // a cell's end is the next one's start: the limits there are computed once
+    let mut end: Option<(usize, f64, Vec<HalfPlane>, Jet)> = None;
     for c in &cells {
-        let (step, jet) = step_of(&limits, &rates, c)?;
-        steps.push(step);
-        jets.push(jet);
+        let start = match end.take() {
+            Some((motion, lam, planes, jet)) if motion == c.motion && lam == c.a => (planes, jet),
+            _ => limits_at(&limits, &rates, c.motion, c.a)?,
+        };
+        let at_end = limits_at(&limits, &rates, c.motion, c.b)?;
+        steps.push(step_from(c, &start.0, &at_end.0));
+        jets.push(start.1);
+        end = Some((c.motion, c.b, at_end.0, at_end.1));
     }
     let first = reach::fastest(&mut steps, |law| duration(&cells, law)).map_err(|f| failure(&limits, &cells, &jets, &steps, f, &t_of))?;
     let uncertified = duration(&cells, &first);
@@ -217,19 +224,31 @@ pub fn fastest_reporting(s: &Scenario, traj: &Trajectory, options: TimingOptions
     Ok((report, timed))
 }
 
-/// A cell's limits at both its ends as half-planes in (u, x_start) (the end's with
-/// x_end = x + 2Δu substituted), and the jet at its start.
+/// A cell's limits at both its ends as half-planes in (u, x_start) ([`step_from`]), and the
+/// jet at its start.
 fn step_of(limits: &Limits, rates: &[Rates], c: &Cell) -> Result<(Step, Jet)> {
-    let r = &rates[c.motion];
-    let t_of = |lam: f64| r.motion().param.value(lam);
-    let (start, end) = (r.jet(c.a), r.jet(c.b));
-    let delta = c.b - c.a;
+    let (start, jet) = limits_at(limits, rates, c.motion, c.a)?;
+    let (end, _) = limits_at(limits, rates, c.motion, c.b)?;
+    Ok((step_from(c, &start, &end), jet))
+}
+
+/// The limits at λ = `lam` of motion `motion`, and the jet there.
+fn limits_at(limits: &Limits, rates: &[Rates], motion: usize, lam: f64) -> Result<(Vec<HalfPlane>, Jet)> {
+    let r = &rates[motion];
+    let jet = r.jet(lam);
     let mut planes = Vec::new();
-    limits.at(&start, t_of(c.a), &mut planes)?;
-    let mut at_end = Vec::new();
-    limits.at(&end, t_of(c.b), &mut at_end)?;
-    planes.extend(at_end.into_iter().map(|h| HalfPlane { a: h.a + 2.0 * delta * h.b, ..h }));
-    Ok((Step { planes, delta, factor: c.factor, stop: c.stop, caps: (f64::INFINITY, f64::INFINITY) }, start))
+    limits.at(&jet, r.motion().param.value(lam), &mut planes)?;
+    Ok((planes, jet))
+}
+
+/// A cell's step from the half-planes at its `start` and its `end` (those with
+/// x_end = x + 2Δu substituted).
+fn step_from(c: &Cell, start: &[HalfPlane], end: &[HalfPlane]) -> Step {
+    let delta = c.b - c.a;
+    let mut planes = Vec::with_capacity(start.len() + end.len());
+    planes.extend_from_slice(start);
+    planes.extend(end.iter().map(|h| HalfPlane { a: h.a + 2.0 * delta * h.b, ..*h }));
+    Step { planes, delta, factor: c.factor, stop: c.stop, caps: (f64::INFINITY, f64::INFINITY) }
 }
 
 /// Seconds a cell takes: λ̇² linear in λ from x₀ to x₁ over Δ gives 2Δ/(√x₀ + √x₁).

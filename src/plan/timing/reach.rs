@@ -25,46 +25,57 @@ pub struct Step {
     pub caps: (f64, f64),
 }
 
-/// A convex polygon in (u, x), counter-clockwise.
-#[derive(Debug, Clone)]
-struct Polygon(Vec<[f64; 2]>);
+/// A convex polygon in (u, x), counter-clockwise, with the buffer its clipping writes into (the
+/// passes clip thousands of times: no allocation per clip).
+#[derive(Debug, Clone, Default)]
+struct Polygon {
+    points: Vec<[f64; 2]>,
+    scratch: Vec<[f64; 2]>,
+}
 
 impl Polygon {
-    fn rect(u: f64, x: f64) -> Polygon {
-        Polygon(vec![[-u, 0.0], [u, 0.0], [u, x], [-u, x]])
+    /// Becomes the rectangle [−u, u] × [0, x].
+    fn set_rect(&mut self, u: f64, x: f64) {
+        self.points.clear();
+        self.points.extend([[-u, 0.0], [u, 0.0], [u, x], [-u, x]]);
     }
 
-    /// The part with a·u + b·x ≤ c (Sutherland–Hodgman against one half-plane).
-    fn clip(&self, a: f64, b: f64, c: f64) -> Polygon {
+    /// Keeps the part with a·u + b·x ≤ c (Sutherland–Hodgman against one half-plane).
+    fn clip(&mut self, a: f64, b: f64, c: f64) {
         let value = |p: &[f64; 2]| a * p[0] + b * p[1] - c;
-        let n = self.0.len();
-        let mut out = Vec::with_capacity(n + 1);
+        let n = self.points.len();
+        self.scratch.clear();
         for k in 0..n {
-            let (p, q) = (self.0[k], self.0[(k + 1) % n]);
+            let (p, q) = (self.points[k], self.points[(k + 1) % n]);
             let (vp, vq) = (value(&p), value(&q));
             if vp <= 0.0 {
-                out.push(p);
+                self.scratch.push(p);
             }
             if (vp < 0.0 && vq > 0.0) || (vp > 0.0 && vq < 0.0) {
                 let s = vp / (vp - vq);
-                out.push([p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])]);
+                self.scratch.push([p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])]);
             }
         }
-        Polygon(out)
+        std::mem::swap(&mut self.points, &mut self.scratch);
     }
 
-    fn clip_all(self, planes: &[HalfPlane]) -> Polygon {
-        planes.iter().fold(self, |p, h| if p.0.is_empty() { p } else { p.clip(h.a, h.b, h.c) })
+    fn clip_all(&mut self, planes: &[HalfPlane]) {
+        for h in planes {
+            if self.points.is_empty() {
+                return;
+            }
+            self.clip(h.a, h.b, h.c);
+        }
     }
 
     /// The least and greatest x.
     fn x_range(&self) -> Option<(f64, f64)> {
-        let xs = self.0.iter().map(|p| p[1]);
-        (!self.0.is_empty()).then(|| (xs.clone().fold(f64::INFINITY, f64::min), xs.fold(f64::NEG_INFINITY, f64::max)))
+        let xs = self.points.iter().map(|p| p[1]);
+        (!self.points.is_empty()).then(|| (xs.clone().fold(f64::INFINITY, f64::min), xs.fold(f64::NEG_INFINITY, f64::max)))
     }
 
     fn extent(&self) -> f64 {
-        self.0.iter().map(|p| p[0].abs().max(p[1].abs())).fold(0.0, f64::max)
+        self.points.iter().map(|p| p[0].abs().max(p[1].abs())).fold(0.0, f64::max)
     }
 }
 
@@ -86,8 +97,9 @@ struct Range {
 
 /// The [`Range`] of `step` for an end state in [lo, hi] and x ≤ `cap`: its half-planes and that
 /// strip, clipped first inside a huge box to learn the set's extent, then again inside a box just
-/// around it, so that the vertices carry no rounding from the huge one. `Err(())` when unbounded.
-fn start_range(step: &Step, lo: f64, hi: f64, cap: f64) -> Result<Option<Range>, ()> {
+/// around it, so that the vertices carry no rounding from the huge one (`polygons`: the two,
+/// reused). `Err(())` when unbounded.
+fn start_range(step: &Step, lo: f64, hi: f64, cap: f64, polygons: (&mut Polygon, &mut Polygon)) -> Result<Option<Range>, ()> {
     if lo == hi {
         // a stop (or an end state pinned to one value): u = (lo − x)/(2Δ), each half-plane a
         // bound on x alone — a strip of width zero would leave the clipping only rounding
@@ -107,22 +119,29 @@ fn start_range(step: &Step, lo: f64, hi: f64, cap: f64) -> Result<Option<Range>,
         }
         return Ok((x_lo <= x_hi).then_some(Range { lo: x_lo, hi: x_hi, peak: x_hi }));
     }
-    let clip = |p: Polygon| p.clip(2.0 * step.delta, 1.0, hi).clip(-2.0 * step.delta, -1.0, -lo).clip(0.0, 1.0, cap).clip_all(&step.planes);
-    let first = clip(Polygon::rect(UNBOUNDED, UNBOUNDED));
-    if first.0.is_empty() {
+    let clip = |p: &mut Polygon, half: f64| {
+        p.set_rect(half, half);
+        p.clip(2.0 * step.delta, 1.0, hi);
+        p.clip(-2.0 * step.delta, -1.0, -lo);
+        p.clip(0.0, 1.0, cap);
+        p.clip_all(&step.planes);
+    };
+    let (first, tight) = polygons;
+    clip(first, UNBOUNDED);
+    if first.points.is_empty() {
         return Ok(None);
     }
     let e = first.extent();
     if e >= 0.5 * UNBOUNDED {
         return Err(());
     }
-    let tight = clip(Polygon::rect(2.0 * e + 1e-300, 2.0 * e + 1e-300));
-    let set = if tight.0.is_empty() { first } else { tight };
+    clip(tight, 2.0 * e + 1e-300);
+    let set = if tight.points.is_empty() { &*first } else { &*tight };
     let Some((x_lo, x_hi)) = set.x_range() else { return Ok(None) };
     let end = |p: &[f64; 2]| p[1] + 2.0 * step.delta * p[0];
-    let best = set.0.iter().map(end).fold(f64::NEG_INFINITY, f64::max);
+    let best = set.points.iter().map(end).fold(f64::NEG_INFINITY, f64::max);
     let slack = 1e-12 * (best.abs() + e);
-    let peak = set.0.iter().filter(|p| end(p) >= best - slack).map(|p| p[1]).fold(x_lo, f64::max);
+    let peak = set.points.iter().filter(|p| end(p) >= best - slack).map(|p| p[1]).fold(x_lo, f64::max);
     Ok(Some(Range { lo: x_lo, hi: x_hi, peak }))
 }
 
@@ -152,12 +171,13 @@ pub fn greedy(steps: &[Step]) -> Result<Law, Failure> {
     let mut controllable = vec![(0.0, 0.0); n];
     let mut peaks = vec![0.0; n];
     let mut next = (0.0, 0.0); // the end: at rest
+    let (mut first, mut tight) = (Polygon::default(), Polygon::default());
     for i in (0..n).rev() {
         let s = &steps[i];
         // the end state x + 2Δu within next / factor (0 at a stop) and the end cap
         let (lo, mut hi) = if s.stop { (0.0, 0.0) } else { (next.0 / s.factor, next.1 / s.factor) };
         hi = hi.min(s.caps.1);
-        let Some(range) = start_range(s, lo, hi, s.caps.0).map_err(|()| Failure::Unbounded(i))? else { return Err(Failure::Stuck(i)) };
+        let Some(range) = start_range(s, lo, hi, s.caps.0, (&mut first, &mut tight)).map_err(|()| Failure::Unbounded(i))? else { return Err(Failure::Stuck(i)) };
         controllable[i] = (range.lo.max(0.0), range.hi.max(0.0));
         peaks[i] = range.peak.max(0.0);
         next = controllable[i];
