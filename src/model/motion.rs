@@ -175,9 +175,16 @@ pub(crate) fn ramp_about(axis: &nalgebra::Vector3<f64>, h: f64) -> QuatPoly {
     [vec![1.0], vec![0.0, h * axis.x], vec![0.0, h * axis.y], vec![0.0, h * axis.z]]
 }
 
-/// Rotation numerator M̂ and weight w = |N|² of a quaternion polynomial.
+/// Rotation numerator M̂ and weight w = |N|² of a quaternion polynomial. Terms that vanish
+/// exactly in all four components are dropped first: a slerp that does not turn (Q1 = Q0, as
+/// along every translation) has a constant N, so w and M̂ are constants and the positions keep
+/// the translation's own degree rather than four more.
 fn rotation_of(n: &QuatPoly) -> ([[Bern; 3]; 3], Bern) {
-    let [s, x, y, z] = [0, 1, 2, 3].map(|k| Bern::from_monomial(&n[k]));
+    let mut len = n.iter().map(Vec::len).max().unwrap_or(0);
+    while len > 1 && n.iter().all(|c| c.get(len - 1).is_none_or(|&v| v == 0.0)) {
+        len -= 1;
+    }
+    let [s, x, y, z] = [0, 1, 2, 3].map(|k| Bern::from_monomial(&n[k][..len.min(n[k].len())]));
     let (ss, xx, yy, zz) = (s.mul(&s), x.mul(&x), y.mul(&y), z.mul(&z));
     let (xy, xz, yz) = (x.mul(&y), x.mul(&z), y.mul(&z));
     let (sx, sy, sz) = (s.mul(&x), s.mul(&y), s.mul(&z));

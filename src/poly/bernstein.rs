@@ -129,6 +129,13 @@ impl Bern {
     }
 
     fn combine(&self, other: &Bern, sign: f64) -> Bern {
+        // an exact zero adds nothing: no rounding, and no degree
+        if other.is_exact_zero() {
+            return self.clone();
+        }
+        if self.is_exact_zero() {
+            return other.scale(sign);
+        }
         let (m, k) = (self.degree(), other.degree());
         let n = m.max(k);
         // Both operands at degree n, the lower one elevated straight into the output buffer.
@@ -165,8 +172,12 @@ impl Bern {
         self.combine(other, -1.0)
     }
 
-    /// self · k for a constant k (taken as exact).
+    /// self · k for a constant k (taken as exact). Times an exact 0 it is the constant 0, of
+    /// degree 0 (a product with a vanishing term, w' of a constant weight, raises no degree).
     pub fn scale(&self, k: f64) -> Bern {
+        if k == 0.0 {
+            return Bern::constant(0.0);
+        }
         let mut c = self.c.clone();
         c.iter_mut().for_each(|x| *x *= k);
         Bern { err: self.err * k.abs() + U * max_abs(&c), c }
@@ -243,6 +254,9 @@ impl Bern {
     }
 
     fn scale_with_err(&self, k: f64, k_err: f64) -> Bern {
+        if k_err == 0.0 && k == 0.0 {
+            return Bern::constant(0.0);
+        }
         let mut r = self.scale(k);
         r.err += k_err * (self.max_abs() + self.err);
         r
@@ -284,14 +298,33 @@ impl Bern {
         (Bern { c: left, err }, Bern { c: right, err })
     }
 
-    /// The polynomial on [a, b] ⊆ [0, 1], re-parametrised to [0, 1].
+    /// The polynomial on [a, b] ⊆ [0, 1], re-parametrised to [0, 1]: the left part of a split at
+    /// b, then the right part of that at a/b, each de Casteljau's scheme in place (each adds the
+    /// rounding bound of [`Bern::split`]).
     pub fn restrict(&self, a: f64, b: f64) -> Bern {
-        let upto_b = if b < 1.0 { self.split(b).0 } else { self.clone() };
-        if a > 0.0 {
-            upto_b.split(a / b).1
-        } else {
-            upto_b
+        let n = self.degree();
+        let mut out = self.clone();
+        let c: &mut [f64] = &mut out.c;
+        if b < 1.0 {
+            out.err += (2 * n + 2) as f64 * U * max_abs(c);
+            // after level j, c[k] (k ≥ j) holds the level-j point k − j; c[j] is the left half's j-th
+            for j in 1..=n {
+                for k in (j..=n).rev() {
+                    c[k] = c[k - 1] * (1.0 - b) + c[k] * b;
+                }
+            }
         }
+        if a > 0.0 {
+            let x = a / b;
+            out.err += (2 * n + 2) as f64 * U * max_abs(c);
+            // after level j, c[k] (k ≤ n − j) holds the level-j point k; c[n − j] is the right half's
+            for j in 1..=n {
+                for k in 0..=(n - j) {
+                    c[k] = c[k] * (1.0 - x) + c[k + 1] * x;
+                }
+            }
+        }
+        out
     }
 
     /// The derivative dp/dx, of degree n − 1: n·(c_{k+1} − c_k). Each coefficient carries twice
