@@ -73,7 +73,8 @@ impl FacetPolys {
         let w2 = w.mul(w);
         let e_inv = &load.wrench.ellipsoid_inv;
         let single = load.wrench.is_single();
-        let (load_rows, inertial) = (&local.load.rows, local.load.inertial.as_ref());
+        let inertial = local.inertial();
+        let (load_rows, inertial) = (&local.load.rows, inertial.as_ref());
         let m = local.cables.len();
         let facets = subsets(m, dim - 1)
             .into_iter()

@@ -21,18 +21,43 @@ use crate::model::{Dynamics, Load};
 use crate::poly::Bern;
 
 /// The load along a motion: D_w ℓ · w^q, row by row, and w^q (`None` when q = 0). Along a timed
-/// motion the inertial rows are kept apart, for a duration of one second: a trajectory run in T
-/// seconds has the rows `rows + inertial / T²` (velocities scale with 1/T, accelerations with
-/// 1/T²), so one expansion serves every timing.
+/// motion the inertial rows are kept apart, and apart from the time law ([`Inertial`]): a
+/// trajectory run in T seconds has the rows `rows + inertial(law) / T²` (velocities scale with
+/// 1/T, accelerations with 1/T²), so one expansion serves every timing and every law.
 #[derive(Debug, Clone)]
 pub(crate) struct LoadPolys {
     /// Rows 0–2: force · w · w^q; rows 3–5: moment · w² · w^q — the wrench set's nominal wrench
     /// and the weight.
     pub(crate) rows: [Bern; 6],
-    /// The d'Alembert rows at a duration of one second (same scaling), along a timed motion.
-    pub(crate) inertial: Option<[Bern; 6]>,
+    /// The d'Alembert rows, along a timed motion.
+    pub(crate) inertial: Option<Inertial>,
     /// w^q, the positive factor the rows carry (`None` for 1).
     pub(crate) scale: Option<Bern>,
+}
+
+/// The d'Alembert rows (same scaling as [`LoadPolys::rows`]) as a time law makes them: linear in
+/// its λ̈ = g·g' and its λ̇² = g², so kept as the rows per unit of each. Under a re-parametrisation
+/// λ = a + hλ' (a part of the motion) they are h and h² times those per unit of the part's own
+/// λ̈' and λ̇'² ([`Inertial::part`]).
+#[derive(Debug, Clone)]
+pub(crate) struct Inertial {
+    /// Per unit g·g'.
+    pub(crate) accel: [Bern; 6],
+    /// Per unit g².
+    pub(crate) square: [Bern; 6],
+}
+
+impl Inertial {
+    /// The rows under `law`: g·g'·accel + g²·square.
+    pub(crate) fn under(&self, law: &TimeLaw) -> [Bern; 6] {
+        std::array::from_fn(|j| law.accel.mul(&self.accel[j]).add(&law.square.mul(&self.square[j])))
+    }
+
+    /// The rows on [a, b] ⊆ [0, 1] in the same parameter (values kept).
+    fn restrict(&self, a: f64, b: f64) -> Inertial {
+        let r = |rows: &[Bern; 6]| rows.each_ref().map(|p| p.restrict(a, b));
+        Inertial { accel: r(&self.accel), square: r(&self.square) }
+    }
 }
 
 impl LoadPolys {
@@ -48,8 +73,15 @@ impl LoadPolys {
     /// The rows restricted to [a, b] ⊆ [0, 1].
     pub(crate) fn restrict(&self, a: f64, b: f64) -> LoadPolys {
         let r = |rows: &[Bern; 6]| rows.each_ref().map(|p| p.restrict(a, b));
-        LoadPolys { rows: r(&self.rows), inertial: self.inertial.as_ref().map(r), scale: self.scale.as_ref().map(|p| p.restrict(a, b)) }
+        LoadPolys { rows: r(&self.rows), inertial: self.inertial.as_ref().map(|i| i.restrict(a, b)), scale: self.scale.as_ref().map(|p| p.restrict(a, b)) }
     }
+}
+
+/// Scales a polynomial per unit of the whole motion's λ̈ (`power` 1) or λ̇² (`power` 2) restricted
+/// to a part of width h to one per unit of the part's own: h or h² times it (λ = a + hλ' gives
+/// λ̈ = h·λ̈' and λ̇² = h²·λ̇'²).
+pub(crate) fn per_part_unit(p: &Bern, (a, b): (f64, f64), power: i32) -> Bern {
+    p.restrict(a, b).scale((b - a).powi(power))
 }
 
 /// 1/T² for a motion run in `duration` seconds (0 at rest, `None`).
@@ -126,9 +158,9 @@ fn mat_vec(m: &[[Bern; 3]; 3], v: &[Bern; 3]) -> [Bern; 3] {
     [0, 1, 2].map(|i| m[i][0].mul(&v[0]).add(&m[i][1].mul(&v[1])).add(&m[i][2].mul(&v[2])))
 }
 
-/// The load along the motion of `local` (expanded on all of [0, 1] of the motion whose λ runs in
-/// time as `law` for a duration of one second; `None` at rest).
-pub(crate) fn load_polys(local: &Local, load: &Load, law: Option<&TimeLaw>) -> LoadPolys {
+/// The load along the motion of `local` (expanded on all of [0, 1]), with the inertial rows when
+/// the motion is `timed`.
+pub(crate) fn load_polys(local: &Local, load: &Load, timed: bool) -> LoadPolys {
     let w = &local.weight;
     let w2 = w.mul(w);
     let w0 = &load.wrench.nominal;
@@ -153,58 +185,65 @@ pub(crate) fn load_polys(local: &Local, load: &Load, law: Option<&TimeLaw>) -> L
             Bern::constant(0.0)
         }
     });
-    let Some(law) = law else { return LoadPolys { rows: statics, inertial: None, scale: None } };
-    let inertial = inertial_rows(local, dynamics, &com, &r, law, moments);
+    if !timed {
+        return LoadPolys { rows: statics, inertial: None, scale: None };
+    }
+    let inertial = inertial_rows(local, dynamics, &com, &r, moments);
     // everything over w⁴: the static rows times w⁴
     let w4 = w2.mul(&w2);
     LoadPolys { rows: statics.each_ref().map(|p| p.mul(&w4)), inertial: Some(inertial), scale: Some(w4) }
 }
 
-/// The d'Alembert rows over w⁴ (D_w-scaled): force −m Ã·w², moment
-/// −m (r̃ × Ã)·w² − (M̂ I_b M̂ᵀ α̃)·w − g² Ω̂ × (M̂ I_b M̂ᵀ Ω̂) (zero without `moments`); `com` is
-/// M̂ c_b.
-fn inertial_rows(local: &Local, d: &Dynamics, com: &[Bern; 3], r: &[Bern; 3], law: &TimeLaw, moments: bool) -> [Bern; 6] {
+/// The d'Alembert rows over w⁴ (D_w-scaled), per unit g·g' and per unit g²: force −m Ã·w²,
+/// moment −m (r̃ × Ã)·w² − (M̂ I_b M̂ᵀ α̃)·w − g² Ω̂ × (M̂ I_b M̂ᵀ Ω̂) (zero without `moments`);
+/// `com` is M̂ c_b. Ã and α̃ are linear in (g·g', g²): Ã = g g'·(X̂'w − X̂w')w + g²·((X̂''w −
+/// X̂w'')w − 2w'(X̂'w − X̂w')), α̃ = g g'·Ω̂w + g²·(Ω̂'w − 2Ω̂w').
+fn inertial_rows(local: &Local, d: &Dynamics, com: &[Bern; 3], r: &[Bern; 3], moments: bool) -> Inertial {
     let w = &local.weight;
     let dw = w.derivative();
     let ddw = dw.derivative();
-    let (gg, gdg) = (&law.square, &law.accel);
-    // centre of mass numerator X̂ = P̂ + M̂ c_b
-    let x: [Bern; 3] = [0, 1, 2].map(|i| local.position[i].add(&com[i]));
-    let accel: [Bern; 3] = [0, 1, 2].map(|i| {
-        let x1 = x[i].derivative();
-        let x2 = x1.derivative();
-        let first = x1.mul(w).sub(&x[i].mul(&dw)); // X̂'w − X̂w'
-        let second = x2.mul(w).sub(&x[i].mul(&ddw)); // X̂''w − X̂w''
-        gdg.mul(&first).mul(w).add(&gg.mul(&second.mul(w).sub(&dw.mul(&first).scale(2.0))))
-    });
     let w2 = w.mul(w);
+    // centre of mass numerator X̂ = P̂ + M̂ c_b; its acceleration's two parts
+    let x: [Bern; 3] = [0, 1, 2].map(|i| local.position[i].add(&com[i]));
+    let parts: [[Bern; 2]; 3] = x.each_ref().map(|x| {
+        let x1 = x.derivative();
+        let x2 = x1.derivative();
+        let first = x1.mul(w).sub(&x.mul(&dw)); // X̂'w − X̂w'
+        let second = x2.mul(w).sub(&x.mul(&ddw)); // X̂''w − X̂w''
+        [first.mul(w), second.mul(w).sub(&dw.mul(&first).scale(2.0))]
+    });
+    let accel: [[Bern; 3]; 2] = [0, 1].map(|k| parts.each_ref().map(|p| p[k].clone()));
+    let force = |a: &[Bern; 3], j: usize| a[j].mul(&w2).scale(-d.mass);
     if !moments {
-        return std::array::from_fn(|j| if j < 3 { accel[j].mul(&w2).scale(-d.mass) } else { Bern::constant(0.0) });
+        let rows = |a: &[Bern; 3]| std::array::from_fn(|j| if j < 3 { force(a, j) } else { Bern::constant(0.0) });
+        return Inertial { accel: rows(&accel[0]), square: rows(&accel[1]) };
     }
     // Ω̂ = axial vector of the skew part of M̂'M̂ᵀ
     let m = &local.rotation;
     let dm: [[Bern; 3]; 3] = m.each_ref().map(|row| row.each_ref().map(Bern::derivative));
     let a = |i: usize, j: usize| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&dm[i][k].mul(&m[j][k])));
     let omega: [Bern; 3] = [a(2, 1).sub(&a(1, 2)).scale(0.5), a(0, 2).sub(&a(2, 0)).scale(0.5), a(1, 0).sub(&a(0, 1)).scale(0.5)];
-    let alpha: [Bern; 3] = [0, 1, 2].map(|i| {
-        let d_om = omega[i].derivative();
-        gdg.mul(&omega[i]).mul(w).add(&gg.mul(&d_om.mul(w).sub(&omega[i].mul(&dw).scale(2.0))))
-    });
+    let alpha: [[Bern; 3]; 2] = [omega.each_ref().map(|o| o.mul(w)), omega.each_ref().map(|o| o.derivative().mul(w).sub(&o.mul(&dw).scale(2.0)))];
     // M̂ I_b M̂ᵀ v for a polynomial vector v
     let inertia_times = |v: &[Bern; 3]| {
         let body: [Bern; 3] = [0, 1, 2].map(|i| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&m[k][i].mul(&v[k]))));
         let ib: [Bern; 3] = [0, 1, 2].map(|i| Bern::linear_combination(&[(&body[0], d.inertia[(i, 0)]), (&body[1], d.inertia[(i, 1)]), (&body[2], d.inertia[(i, 2)])]));
         mat_vec(m, &ib)
     };
-    let i_alpha = inertia_times(&alpha);
     let gyro = cross(&omega, &inertia_times(&omega));
-    let r_x_a = cross(r, &accel);
-    std::array::from_fn(|j| {
-        if j < 3 {
-            accel[j].mul(&w2).scale(-d.mass)
-        } else {
-            let k = j - 3;
-            r_x_a[k].mul(&w2).scale(-d.mass).sub(&i_alpha[k].mul(w)).sub(&gyro[k].mul(gg))
-        }
-    })
+    let rows = |part: usize| -> [Bern; 6] {
+        let (acc, i_alpha) = (&accel[part], inertia_times(&alpha[part]));
+        let r_x_a = cross(r, acc);
+        std::array::from_fn(|j| {
+            if j < 3 {
+                force(acc, j)
+            } else {
+                let k = j - 3;
+                let moment = r_x_a[k].mul(&w2).scale(-d.mass).sub(&i_alpha[k].mul(w));
+                // the gyroscopic moment goes with g²
+                if part == 1 { moment.sub(&gyro[k]) } else { moment }
+            }
+        })
+    };
+    Inertial { accel: rows(0), square: rows(1) }
 }

@@ -35,7 +35,7 @@ pub use closure::{FacetPolys, WrenchClosure, WrenchFeasibility};
 pub use joint_closure::JointClosure;
 pub use tension::{CableTension, TensionPolys, TensionSide};
 pub use speed::PlatformSpeed;
-pub use winch::{Rate, WinchLimit};
+pub use winch::{Rate, WinchLimit, WinchPolys};
 pub use wrench_lp::WrenchFeasibilityLp;
 
 use std::rc::Rc;
@@ -77,6 +77,8 @@ pub struct Sweep {
     pub tension: Option<Rc<TensionPolys>>,
     /// The facet polynomials of robots with more than six cables, built likewise.
     pub facets: Option<Rc<FacetPolys>>,
+    /// The winch limits' polynomials, built likewise.
+    pub winch: WinchPolys,
     /// Ordered, disjoint λ-intervals where other conditions are already certainly violated (set
     /// by the caller, kept clear of their ends by a margin): a condition may leave itself
     /// undecided (`Unknown`) there, without pruning or exact work, since its answer cannot change
@@ -118,13 +120,47 @@ impl Sweep {
             let tube = Tube::new(cable.base, &tip, w);
             cables.push(SweptCable { base: cable.base, s, tube });
         }
-        Sweep { alg: Alg::new(w), cables, tol, links: links.to_vec(), tension: None, facets: None, settled: Vec::new(), duration: None, law: None }
+        Sweep { alg: Alg::new(w), cables, tol, links: links.to_vec(), tension: None, facets: None, winch: WinchPolys::default(), settled: Vec::new(), duration: None, law: None }
     }
 
     /// The platform's motion (the first link's for a multi-link robot): the weight and the
     /// parameter every link shares.
     pub fn motion(&self) -> &Motion {
         &self.links[0]
+    }
+
+    /// The sweep along the part [a, b] ⊆ [0, 1] of a trajectory's motion (re-parametrised to
+    /// [0, 1], with the same tolerance and duration), run by `law` there (for one second; `None`:
+    /// its uniform law). What the conditions prepared in this sweep ([`Condition::prepare`]) is
+    /// restricted to the part rather than expanded again — the timing certifies hundreds of
+    /// short parts of one motion. Nothing already settled carries over.
+    pub fn part(&self, (a, b): (f64, f64), law: Option<TimeLaw>) -> Sweep {
+        let links: Vec<Motion> = self.links.iter().map(|m| m.part(a, b)).collect();
+        let w = &links[0].weight;
+        let cables = self
+            .cables
+            .iter()
+            .map(|c| {
+                let s: HVec = c.s.each_ref().map(|h| algebra::H { p: h.p.restrict(a, b), k: h.k });
+                let tip: [Bern; 3] = [0, 1, 2].map(|i| Bern::linear_combination(&[(&s[i].p, 1.0), (w, c.base[i])]));
+                SweptCable { base: c.base, tube: Tube::new(c.base, &tip, w), s }
+            })
+            .collect();
+        let mut part = Sweep {
+            alg: Alg::new(w),
+            cables,
+            tol: self.tol,
+            links,
+            tension: None,
+            facets: None,
+            winch: self.winch.part((a, b)),
+            settled: Vec::new(),
+            duration: self.duration,
+            law,
+        };
+        let law = reference_law(&part);
+        part.tension = self.tension.as_ref().map(|t| Rc::new(t.part((a, b), law.as_ref())));
+        part
     }
 }
 
@@ -142,6 +178,8 @@ pub(crate) struct Local {
     pub(crate) cables: Vec<(Vector3<f64>, [Bern; 3])>,
     /// The wrench the cables balance ([`load`]).
     pub(crate) load: LoadPolys,
+    /// How λ runs in time for a duration of one second, along a timed motion.
+    pub(crate) law: Option<TimeLaw>,
 }
 
 impl Local {
@@ -155,10 +193,17 @@ impl Local {
             weight: m.weight.clone(),
             cables: sweep.cables.iter().map(|c| (c.base, [c.s[0].p.clone(), c.s[1].p.clone(), c.s[2].p.clone()])).collect(),
             load: LoadPolys { rows: std::array::from_fn(|_| Bern::constant(0.0)), inertial: None, scale: None },
+            law: reference_law(sweep),
         };
-        // timed: the inertial rows for one second, scaled to the sweep's duration when used
-        local.load = load_polys(&local, load, reference_law(sweep).as_ref());
+        // timed: the inertial rows, scaled to the sweep's duration when used
+        local.load = load_polys(&local, load, local.law.is_some());
         local
+    }
+
+    /// The inertial rows under the motion's law for one second (a duration T divides them by
+    /// T²), along a timed motion.
+    pub(crate) fn inertial(&self) -> Option<[Bern; 6]> {
+        Some(self.load.inertial.as_ref()?.under(self.law.as_ref()?))
     }
 
     /// P_i = ‖s̃_i‖² per cable (the squared cable lengths times w²).
@@ -174,6 +219,7 @@ impl Local {
             weight: r(&self.weight),
             cables: self.cables.iter().map(|(base, s)| (*base, s.each_ref().map(r))).collect(),
             load: self.load.restrict(a, b),
+            law: self.law.as_ref().map(|l| TimeLaw { square: r(&l.square), accel: r(&l.accel) }),
         }
     }
 }
@@ -286,6 +332,11 @@ pub trait Condition {
 
     /// The set of λ ∈ [0, 1] where the condition is violated along the sweep's motion.
     fn violation(&self, sweep: &mut Sweep) -> Partition;
+
+    /// Builds into `sweep` the polynomials the condition keeps there, so that parts of it
+    /// ([`Sweep::part`]) restrict them instead of expanding them again. Most conditions keep
+    /// nothing that a part could restrict: the default does nothing.
+    fn prepare(&self, _sweep: &mut Sweep) {}
 
     /// How much exact work [`Condition::violation`] takes: the verifier evaluates the cheaper
     /// conditions first, so that the costlier ones may leave the parts of the motion already

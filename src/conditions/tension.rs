@@ -15,10 +15,11 @@
 //! conditions without square roots. Singular poses (Δ = 0) violate both bounds of every cable
 //! whose adjugate row does not vanish there; they always lie inside a violated interval.
 
+use std::borrow::Cow;
 use std::rc::Rc;
 
 use super::algebra::H;
-use super::load::{inverse_square, with_inertia};
+use super::load::{inverse_square, per_part_unit, with_inertia, TimeLaw};
 use super::primitives::{all_of, any_of, GT, LT};
 use super::structure::{minors, quadratic_form, row_weight, structure_numerators};
 use super::{Condition, Kind, Local, PoseCheck, Sweep};
@@ -50,19 +51,46 @@ pub struct CableTension {
     pub load: Rc<Load>,
 }
 
+/// One cable's polynomials in [`TensionPolys`].
+#[derive(Debug, Clone)]
+struct Column {
+    cable: usize,
+    /// α_i's static part; with a load over w^q (inertia) it carries the factor w^q.
+    alpha: Bern,
+    /// β_i (with the factor w^2q).
+    beta: Bern,
+    /// α_i's inertial part per unit g·g' and per unit g² ([`super::load::Inertial`]), along a
+    /// timed motion.
+    split: Option<(Bern, Bern)>,
+    /// α_i's inertial part under the motion's law for one second: a motion run in T seconds has
+    /// α_i = alpha + inertial/T².
+    inertial: Option<Bern>,
+}
+
+impl Column {
+    /// The inertial part under `law` from the split one.
+    fn under(split: &Option<(Bern, Bern)>, law: Option<&TimeLaw>) -> Option<Bern> {
+        let ((accel, square), law) = (split.as_ref()?, law?);
+        Some(law.accel.mul(accel).add(&law.square.mul(square)))
+    }
+}
+
 /// The polynomials the tension conditions of one motion share, on one λ-interval.
 #[derive(Debug, Clone)]
 pub struct TensionPolys {
     /// The λ-interval [c, d] they are expanded on (λ = c + (d − c)·x).
     span: (f64, f64),
-    /// The motion's polynomials there.
-    local: Local,
+    /// The motion's polynomials there, to re-expand refined pieces from; `None` for those of a
+    /// part of a sweep ([`TensionPolys::part`]), which re-expand from the part's sweep.
+    local: Option<Local>,
+    /// The motion's weight w there.
+    weight: Bern,
+    /// w^q, the positive factor the load carries (`None` for 1).
+    scale: Option<Bern>,
     /// Δ = det Ñ.
     delta: Bern,
-    /// (i, α_i, β_i, α_i's inertial part for one second) for the cables expanded here (all
-    /// on a whole motion, one on a refined piece); with a load over w^q (inertia), α_i carries the
-    /// factor w^q and β_i its square. A motion run in T seconds has α_i + inertial/T².
-    columns: Vec<(usize, Bern, Bern, Option<Bern>)>,
+    /// The cables expanded here (all on a whole motion, one on a refined piece).
+    columns: Vec<Column>,
     /// P_i = ‖s̃_i‖² per cable.
     len2: Vec<Bern>,
     /// Whether the wrench set is its nominal wrench alone (E⁻¹ = 0, so β_i = 0).
@@ -77,16 +105,47 @@ impl TensionPolys {
         TensionPolys::on(Local::of(sweep, load), (0.0, 1.0), load, &all)
     }
 
+    /// The polynomials on the part [a, b] of the motion they were expanded on (all of it),
+    /// re-parametrised to [0, 1] and run by `law` there (for one second): restricted, not
+    /// expanded again — the part's λ̈' and λ̇'² weigh the inertial parts by h and h² (h = b − a).
+    pub fn part(&self, (a, b): (f64, f64), law: Option<&TimeLaw>) -> TensionPolys {
+        debug_assert_eq!(self.span, (0.0, 1.0));
+        let r = |p: &Bern| p.restrict(a, b);
+        let columns = self
+            .columns
+            .iter()
+            .map(|c| {
+                let split = c.split.as_ref().map(|(accel, square)| (per_part_unit(accel, (a, b), 1), per_part_unit(square, (a, b), 2)));
+                let inertial = Column::under(&split, law);
+                Column { cable: c.cable, alpha: r(&c.alpha), beta: r(&c.beta), split, inertial }
+            })
+            .collect();
+        TensionPolys {
+            span: (0.0, 1.0),
+            local: None,
+            weight: r(&self.weight),
+            scale: self.scale.as_ref().map(r),
+            delta: r(&self.delta),
+            columns,
+            len2: self.len2.iter().map(r).collect(),
+            single: self.single,
+        }
+    }
+
     /// α_i (for a motion run in T seconds, `inv_t2` = 1/T², 0 at rest) and β_i of cable i, if
     /// expanded here.
     fn column(&self, i: usize, inv_t2: f64) -> Option<(Bern, &Bern)> {
-        self.columns.iter().find(|c| c.0 == i).map(|c| (with_inertia(&c.1, c.3.as_ref(), inv_t2), &c.2))
+        self.columns.iter().find(|c| c.cable == i).map(|c| (with_inertia(&c.alpha, c.inertial.as_ref(), inv_t2), &c.beta))
     }
 
-    /// Cable i's polynomials (and Δ) re-expanded on [c, d] ⊆ [0, 1].
-    fn refined(&self, (c, d): (f64, f64), load: &Load, i: usize) -> TensionPolys {
+    /// Cable i's polynomials (and Δ) re-expanded on [c, d] ⊆ [0, 1] of `sweep`'s motion.
+    fn refined(&self, (c, d): (f64, f64), load: &Load, i: usize, sweep: &Sweep) -> TensionPolys {
         let (c0, d0) = self.span;
-        let local = self.local.restrict((c - c0) / (d0 - c0), (d - c0) / (d0 - c0));
+        let whole = match &self.local {
+            Some(local) => Cow::Borrowed(local),
+            None => Cow::Owned(Local::of(sweep, load)),
+        };
+        let local = whole.restrict((c - c0) / (d0 - c0), (d - c0) / (d0 - c0));
         TensionPolys::on(local, (c, d), load, &[i])
     }
 
@@ -110,18 +169,28 @@ impl TensionPolys {
             let g: Vec<Bern> = cofactors.iter().zip(rows).map(|(c, &row)| c.mul(row_weight(row, w, &w2))).collect();
             // α = Σ C_j (D_w ℓ)_j w^q
             let dot = |load_rows: &[Bern; 6]| (0..dim).fold(Bern::constant(0.0), |acc, j| acc.add(&cofactors[j].mul(&load_rows[rows[j]])));
-            let a = match (&local.load.scale, load.dynamics.is_some()) {
+            let alpha = match (&local.load.scale, load.dynamics.is_some()) {
                 // a constant load: α = Σ g_j w0_j
                 (None, false) => Bern::linear_combination(&(0..dim).map(|j| (&g[j], wrench.nominal[rows[j]])).collect::<Vec<_>>()),
                 _ => dot(&local.load.rows),
             };
-            let inertial = local.load.inertial.as_ref().map(dot);
+            let split = local.load.inertial.as_ref().map(|r| (dot(&r.accel), dot(&r.square)));
+            let inertial = Column::under(&split, local.law.as_ref());
             // β = 0 for a single wrench: not expanded (the single wrench's conditions never read it)
-            let b = if wrench.is_single() { Bern::constant(0.0) } else { local.load.scaled_square(quadratic_form(&g, &wrench.ellipsoid_inv, rows)) };
-            columns.push((i, a, b, inertial));
+            let beta = if wrench.is_single() { Bern::constant(0.0) } else { local.load.scaled_square(quadratic_form(&g, &wrench.ellipsoid_inv, rows)) };
+            columns.push(Column { cable: i, alpha, beta, split, inertial });
         }
         let len2 = local.len2();
-        TensionPolys { span, delta: delta.unwrap_or_else(|| Bern::constant(0.0)), columns, len2, local, single: wrench.is_single() }
+        TensionPolys {
+            span,
+            weight: local.weight.clone(),
+            scale: local.load.scale.clone(),
+            delta: delta.unwrap_or_else(|| Bern::constant(0.0)),
+            columns,
+            len2,
+            local: Some(local),
+            single: wrench.is_single(),
+        }
     }
 }
 
@@ -170,8 +239,8 @@ impl CableTension {
         let a2_minus_b = || a.mul(&a).sub(beta);
         // f·w·|Δ|(·w^q): the bound with the denominators of ρ, Δ (and the load) cleared.
         let scaled_bound = || {
-            let k = t.local.weight.mul(&abs_delta).scale(self.bound);
-            match &t.local.load.scale {
+            let k = t.weight.mul(&abs_delta).scale(self.bound);
+            match &t.scale {
                 Some(q) => k.mul(q),
                 None => k,
             }
@@ -218,6 +287,20 @@ impl CableTension {
     }
 }
 
+impl CableTension {
+    /// The sweep's shared polynomials, built by the first condition that needs them.
+    fn polys(&self, sweep: &mut Sweep) -> Rc<TensionPolys> {
+        match &sweep.tension {
+            Some(p) => Rc::clone(p),
+            None => {
+                let p = Rc::new(TensionPolys::new(sweep, &self.load));
+                sweep.tension = Some(Rc::clone(&p));
+                p
+            }
+        }
+    }
+}
+
 impl Condition for CableTension {
     fn kind(&self) -> Kind {
         Kind::Tension
@@ -235,16 +318,13 @@ impl Condition for CableTension {
         vec![self.cable]
     }
 
+    fn prepare(&self, sweep: &mut Sweep) {
+        self.polys(sweep);
+    }
+
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let tol = sweep.tol;
-        let polys = match &sweep.tension {
-            Some(p) => Rc::clone(p),
-            None => {
-                let p = Rc::new(TensionPolys::new(sweep, &self.load));
-                sweep.tension = Some(Rc::clone(&p));
-                p
-            }
-        };
+        let polys = self.polys(sweep);
         let inv_t2 = inverse_square(sweep.duration);
         let mut out = self.violated_on(&polys, inv_t2, tol);
         // Undecided pieces wider than tol: re-expand the motion around each and decide again,
@@ -261,7 +341,7 @@ impl Condition for CableTension {
             }
             for (a, b) in wide {
                 let span = ((a - (b - a)).max(0.0), (b + (b - a)).min(1.0));
-                let local = polys.refined(span, &self.load, self.cable);
+                let local = polys.refined(span, &self.load, self.cable, sweep);
                 let inner = self.violated_on(&local, inv_t2, tol / (span.1 - span.0));
                 out = out.splice((a, b), &inner, span);
             }

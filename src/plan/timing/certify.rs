@@ -24,21 +24,48 @@ pub enum Verdict {
     Undecided(Vec<String>),
 }
 
+/// Chunks of consecutive cells each core takes at a time: enough to balance the cores (cells near
+/// a spline's knots take far longer than others), few enough that each motion's polynomials are
+/// prepared only a few times.
+const CHUNKS: usize = 16;
+
 /// The verdict on each of `cells` (indices `which`) run with `law` (x at each cell's start and
-/// end), on every core natively.
+/// end), on every core natively: in chunks of consecutive cells, each preparing the conditions'
+/// polynomials once along each motion it meets and restricting them to each cell
+/// ([`Sweep::part`]).
 pub fn verdicts(s: &Scenario, cells: &[Cell], rates: &[Rates], law: &[(f64, f64)], which: &[usize]) -> Vec<Verdict> {
-    crate::parallel::map_with(which.len(), || speed_conditions(s), |conditions, k| {
-        let i = which[k];
-        verdict(s, conditions, &cells[i], &rates[cells[i].motion], law[i])
-    })
+    let size = which.len().div_ceil(CHUNKS).max(1);
+    let chunks: Vec<&[usize]> = which.chunks(size).collect();
+    let per_chunk = crate::parallel::map_with(chunks.len(), || speed_conditions(s), |conditions, k| {
+        let mut wholes: Vec<(usize, Sweep)> = Vec::new();
+        chunks[k]
+            .iter()
+            .map(|&i| {
+                let motion = cells[i].motion;
+                if !wholes.iter().any(|(m, _)| *m == motion) {
+                    wholes.push((motion, prepared(s, conditions, &rates[motion])));
+                }
+                let whole = &wholes.iter().find(|(m, _)| *m == motion).expect("prepared above").1;
+                verdict(conditions, whole, &cells[i], law[i])
+            })
+            .collect::<Vec<_>>()
+    });
+    per_chunk.into_iter().flatten().collect()
 }
 
-fn verdict(s: &Scenario, conditions: &[Box<dyn Condition>], cell: &Cell, rates: &Rates, (x0, x1): (f64, f64)) -> Verdict {
-    let part = rates.motion().part(cell.a, cell.b);
-    let width2 = (cell.b - cell.a).powi(2);
-    let mut sweep = Sweep::new(&s.robot, &part, CELL_TOL);
+/// The sweep along a whole motion, timed, with every condition's polynomials built.
+fn prepared(s: &Scenario, conditions: &[Box<dyn Condition>], rates: &Rates) -> Sweep {
+    let mut sweep = Sweep::new(&s.robot, rates.motion(), CELL_TOL);
     sweep.duration = Some(1.0);
-    sweep.law = Some(TimeLaw::from_square(Bern::from_bernstein(vec![x0 / width2, x1 / width2])));
+    for c in conditions {
+        c.prepare(&mut sweep);
+    }
+    sweep
+}
+
+fn verdict(conditions: &[Box<dyn Condition>], whole: &Sweep, cell: &Cell, (x0, x1): (f64, f64)) -> Verdict {
+    let width2 = (cell.b - cell.a).powi(2);
+    let mut sweep = whole.part((cell.a, cell.b), Some(TimeLaw::from_square(Bern::from_bernstein(vec![x0 / width2, x1 / width2]))));
     let (mut failed, mut open) = (Vec::new(), Vec::new());
     for c in conditions {
         let v = c.violation(&mut sweep);
