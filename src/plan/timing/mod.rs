@@ -2,10 +2,14 @@
 //! bounds (with the wrench set), the winch limits and the platform's speed limit, certified along
 //! the whole path by the exact verifier rather than at grid points only.
 //!
-//! 1. The trajectory's motions are cut into cells ([`path`]); at each cell's ends the limits are
-//!    half-planes in (λ̈, λ̇²) ([`limits`]), tightened by a small margin.
+//! 1. The trajectory's motions are cut into cells ([`path`]); at each cell's ends and its middle
+//!    the limits are half-planes in (λ̈, λ̇²) ([`limits`]), tightened by a small margin. (The
+//!    middle's keep the law from bulging past a limit between the ends where the limit curves,
+//!    a cruise at a speed limit along a bend: without them a tenth of the cells of batotp's
+//!    path failed the certification at first, and each round of slowing down re-verifies
+//!    hundreds of cells.)
 //! 2. Reachability analysis finds the fastest law on that grid, λ̈ constant per cell
-//!    ([`reach`]): the uncertified optimum, which meets the limits at the grid points only.
+//!    ([`reach`]): the uncertified optimum, which meets the limits at those points only.
 //! 3. Each cell of the law is verified exactly ([`certify`]); where a limit is left between grid
 //!    points (or cannot be decided) the cell is halved (once), then its speed capped lower, and
 //!    the law recomputed, until every cell is certified (or the rounds run out: then the report
@@ -118,7 +122,7 @@ pub fn fastest_reporting(s: &Scenario, traj: &Trajectory, options: TimingOptions
     let limits = Limits::new(s, options.margin)?;
     let (mut cells, rates) = path::grid(Motion::trajectory(traj), options.cells, CORNER);
     let t_of = |c: &Cell, lam: f64| rates[c.motion].motion().param.value(lam);
-    // the limits at both ends of every cell, as half-planes in (u, x_start)
+    // the limits at both ends and the middle of every cell, as half-planes in (u, x_start)
     let mut steps = Vec::with_capacity(cells.len());
     let mut jets = Vec::with_capacity(cells.len());
     // a cell's end is the next one's start: the limits there are computed once
@@ -128,8 +132,9 @@ pub fn fastest_reporting(s: &Scenario, traj: &Trajectory, options: TimingOptions
             Some((motion, lam, planes, jet)) if motion == c.motion && lam == c.a => (planes, jet),
             _ => limits_at(&limits, &rates, c.motion, c.a)?,
         };
+        let (middle, _) = limits_at(&limits, &rates, c.motion, 0.5 * (c.a + c.b))?;
         let at_end = limits_at(&limits, &rates, c.motion, c.b)?;
-        steps.push(step_from(c, &start.0, &at_end.0));
+        steps.push(step_from(c, &start.0, &middle, &at_end.0));
         jets.push(start.1);
         end = Some((c.motion, c.b, at_end.0, at_end.1));
     }
@@ -224,12 +229,13 @@ pub fn fastest_reporting(s: &Scenario, traj: &Trajectory, options: TimingOptions
     Ok((report, timed))
 }
 
-/// A cell's limits at both its ends as half-planes in (u, x_start) ([`step_from`]), and the
-/// jet at its start.
+/// A cell's limits at both its ends and its middle as half-planes in (u, x_start)
+/// ([`step_from`]), and the jet at its start.
 fn step_of(limits: &Limits, rates: &[Rates], c: &Cell) -> Result<(Step, Jet)> {
     let (start, jet) = limits_at(limits, rates, c.motion, c.a)?;
+    let (middle, _) = limits_at(limits, rates, c.motion, 0.5 * (c.a + c.b))?;
     let (end, _) = limits_at(limits, rates, c.motion, c.b)?;
-    Ok((step_from(c, &start, &end), jet))
+    Ok((step_from(c, &start, &middle, &end), jet))
 }
 
 /// The limits at λ = `lam` of motion `motion`, and the jet there.
@@ -241,12 +247,13 @@ fn limits_at(limits: &Limits, rates: &[Rates], motion: usize, lam: f64) -> Resul
     Ok((planes, jet))
 }
 
-/// A cell's step from the half-planes at its `start` and its `end` (those with
-/// x_end = x + 2Δu substituted).
-fn step_from(c: &Cell, start: &[HalfPlane], end: &[HalfPlane]) -> Step {
+/// A cell's step from the half-planes at its `start`, its `middle` and its `end`, the latter two
+/// with x = x_start + Δu and x_start + 2Δu substituted (λ̇² is linear along the cell).
+fn step_from(c: &Cell, start: &[HalfPlane], middle: &[HalfPlane], end: &[HalfPlane]) -> Step {
     let delta = c.b - c.a;
-    let mut planes = Vec::with_capacity(start.len() + end.len());
+    let mut planes = Vec::with_capacity(start.len() + middle.len() + end.len());
     planes.extend_from_slice(start);
+    planes.extend(middle.iter().map(|h| HalfPlane { a: h.a + delta * h.b, ..*h }));
     planes.extend(end.iter().map(|h| HalfPlane { a: h.a + 2.0 * delta * h.b, ..*h }));
     Step { planes, delta, factor: c.factor, stop: c.stop, caps: (f64::INFINITY, f64::INFINITY) }
 }

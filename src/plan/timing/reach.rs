@@ -119,24 +119,38 @@ fn start_range(step: &Step, lo: f64, hi: f64, cap: f64, polygons: (&mut Polygon,
         }
         return Ok((x_lo <= x_hi).then_some(Range { lo: x_lo, hi: x_hi, peak: x_hi }));
     }
-    let clip = |p: &mut Polygon, half: f64| {
-        p.set_rect(half, half);
+    let clip = |p: &mut Polygon, (half_u, half_x): (f64, f64)| {
+        p.set_rect(half_u, half_x);
         p.clip(2.0 * step.delta, 1.0, hi);
         p.clip(-2.0 * step.delta, -1.0, -lo);
         p.clip(0.0, 1.0, cap);
         p.clip_all(&step.planes);
     };
     let (first, tight) = polygons;
-    clip(first, UNBOUNDED);
-    if first.points.is_empty() {
-        return Ok(None);
-    }
-    let e = first.extent();
-    if e >= 0.5 * UNBOUNDED {
-        return Err(());
-    }
-    clip(tight, 2.0 * e + 1e-300);
-    let set = if tight.points.is_empty() { &*first } else { &*tight };
+    // a box around the set when the speed limits bound x (x ≤ x_max gives |u| ≤ (|lo| + |hi| +
+    // x_max)/2Δ through the strip): one clip inside twice that box; else a first clip inside a
+    // huge box finds the extent
+    let x_max = step.planes.iter().filter(|h| h.a == 0.0 && h.b > 0.0).map(|h| h.c / h.b).fold(cap, f64::min);
+    let u_max = (lo.abs() + hi.abs() + x_max) / (2.0 * step.delta);
+    let set = if x_max >= 0.0 && x_max < 0.5 * UNBOUNDED && u_max < 0.5 * UNBOUNDED {
+        clip(tight, (2.0 * u_max + 1e-300, 2.0 * x_max + 1e-300));
+        if tight.points.is_empty() {
+            return Ok(None);
+        }
+        &*tight
+    } else {
+        clip(first, (UNBOUNDED, UNBOUNDED));
+        if first.points.is_empty() {
+            return Ok(None);
+        }
+        let e = first.extent();
+        if e >= 0.5 * UNBOUNDED {
+            return Err(());
+        }
+        clip(tight, (2.0 * e + 1e-300, 2.0 * e + 1e-300));
+        if tight.points.is_empty() { &*first } else { &*tight }
+    };
+    let e = set.extent();
     let Some((x_lo, x_hi)) = set.x_range() else { return Ok(None) };
     let end = |p: &[f64; 2]| p[1] + 2.0 * step.delta * p[0];
     let best = set.points.iter().map(end).fold(f64::NEG_INFINITY, f64::max);
