@@ -1060,7 +1060,14 @@ pub fn run_batotp() {
         }
     }
     println!();
-    if let Some((_, Ok((r, _)))) = timed.first() {
+    if let Some((_, Ok((r, t)))) = timed.first() {
+        // the two targets on the default grid, from this run
+        let verdict = |ok: bool| if ok { "**met**" } else { "**not met**" };
+        if let Some(d) = r.duration {
+            let over = d / last.duration - 1.0;
+            println!("Targets, default grid, this run: the certified duration within 1 % of batotp's printed {:.3} s or shorter — {:+.2} %, {}; the compute time no slower than batotp's — {} against {} without file I/O, {}.", last.duration, 100.0 * over, verdict(over <= 0.01), ms(*t), ms(med(&|r| r.total)), verdict(*t <= med(&|r| r.total)));
+            println!();
+        }
         println!("cablenav's law (default grid) is bound by: {}.", distinct(r.binding.iter().map(|b| b.constraint.as_str())).join("; "));
         println!();
     }
