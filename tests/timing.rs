@@ -119,3 +119,60 @@ fn bad_input_is_named() {
     let e = field(time(&s, "pause", TimingOptions::default()));
     assert!(e.reason.contains("stands still") && e.reason.contains("repeated points"), "{e}");
 }
+
+/// `Sweep::part` restricts what the conditions prepared along a whole motion (the tension
+/// columns apart from the time law, the winch factors) to a cell run by its own law: on random
+/// cells and laws of the timed presets (a spatial platform turning along slerps, a point mass
+/// along cubic pieces), every speed-dependent condition must find what it finds on the cell's
+/// sweep expanded afresh — no sample certainly violated by one and certainly not by the other.
+#[test]
+fn a_sweep_part_decides_as_a_fresh_expansion() {
+    use cablenav::conditions::{for_scenario, Kind, Sweep, TimeLaw};
+    use cablenav::model::Motion;
+    use cablenav::poly::{Bern, Partition, Truth};
+    let at = |p: &Partition, x: f64| p.intervals().into_iter().find(|&(a, b, _)| a <= x && x <= b).map(|(_, _, t)| t);
+    let mut seed = 7u64;
+    let mut rand = move || {
+        seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let (mut violated, mut held) = (0, 0);
+    for text in [TIMED, include_str!("../static/scenarios/laval-cspr3dof.json")] {
+        let s = Scenario::from_json(text).unwrap();
+        let conditions: Vec<_> = for_scenario(&s).into_iter().filter(|c| matches!(c.kind(), Kind::Tension | Kind::Winch)).collect();
+        for traj in &s.trajectories {
+            for motion in Motion::trajectory(traj).iter().take(4) {
+                let mut whole = Sweep::new(&s.robot, motion, 1e-9);
+                whole.duration = Some(1.0);
+                for c in &conditions {
+                    c.prepare(&mut whole);
+                }
+                for _ in 0..6 {
+                    let a = 0.9 * rand();
+                    let b = a + (1.0 - a) * (0.02 + 0.5 * rand());
+                    let scale = 10f64.powf(7.0 * rand() - 1.0) * (b - a).powi(2);
+                    let law = TimeLaw::from_square(Bern::from_bernstein(vec![scale * rand(), scale * rand()]));
+                    let mut part = whole.part((a, b), Some(law.clone()));
+                    let mut fresh = Sweep::new(&s.robot, &motion.part(a, b), 1e-9);
+                    (fresh.duration, fresh.law) = (Some(1.0), Some(law));
+                    for c in &conditions {
+                        let (p, f) = (c.violation(&mut part), c.violation(&mut fresh));
+                        for k in 0..=200 {
+                            let x = k as f64 / 200.0;
+                            match (at(&p, x), at(&f, x)) {
+                                (Some(Truth::True), Some(Truth::False)) | (Some(Truth::False), Some(Truth::True)) => {
+                                    panic!("{} on {} [{a}, {b}] at {x}: the part and the fresh sweep disagree", c.label(), traj.name)
+                                }
+                                (Some(Truth::True), _) => violated += 1,
+                                (Some(Truth::False), _) => held += 1,
+                                _ => {}
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    // the laws range over seven decades: both answers occur
+    assert!(violated > 1000 && held > 1000, "violated {violated}, held {held}");
+}
