@@ -24,18 +24,15 @@ use std::f64::consts::PI;
 const ARM: &str = include_str!("../static/multilink/bmarm-x4-2.json");
 
 /// The preset with the configurations `ul` and `lr` and the queries `around` (ul → lr, all free),
-/// `around-2d` (the same in the α–β cross-section), `gap` (below → above, all free) and `gap-2d`.
+/// `around-2d` (the same in the α–β cross-section), `gap` (below → above, all free) and `gap-2d`
+/// of `tests/data/bmarm-queries.json` (which the command line's tests merge in too).
 fn arm_json() -> Value {
     let mut v: Value = serde_json::from_str(ARM).unwrap();
-    let (g, t) = (-PI / 12.0, PI / 12.0);
-    v["configurations"]["ul"] = json!({"alpha": -0.1, "beta": 0.75, "gamma": g, "theta": t});
-    v["configurations"]["lr"] = json!({"alpha": 0.59, "beta": 0.22, "gamma": g, "theta": t});
-    v["queries"] = json!([
-        {"name": "around", "start": "ul", "goal": "lr"},
-        {"name": "around-2d", "start": "ul", "goal": "lr", "fixed": ["gamma", "theta"]},
-        {"name": "gap", "start": "below", "goal": "above"},
-        {"name": "gap-2d", "start": "below", "goal": "above", "fixed": ["gamma", "theta"], "region": {"alpha": [-0.7854, 0.7854]}}
-    ]);
+    let extra: Value = serde_json::from_str(include_str!("data/bmarm-queries.json")).unwrap();
+    for (name, config) in extra["configurations"].as_object().unwrap() {
+        v["configurations"][name] = config.clone();
+    }
+    v["queries"] = extra["queries"].clone();
     v
 }
 

@@ -6,7 +6,6 @@
 
 use serde_json::{json, Value};
 use support::Files;
-use std::f64::consts::PI;
 
 mod support;
 
@@ -14,13 +13,15 @@ const ARM: &str = include_str!("../../static/multilink/bmarm-x4-2.json");
 
 /// The preset with two configurations of its upper region, `ul` and `lr`, whose straight path
 /// leaves wrench closure, and the queries `around` (ul → lr) and `gap` (below → above), all four
-/// joint coordinates free.
+/// joint coordinates free (with their α–β cross-sections `around-2d` and `gap-2d`): those of
+/// `tests/data/bmarm-queries.json`, which the core's tests use too.
 fn arm() -> String {
     let mut v: Value = serde_json::from_str(ARM).unwrap();
-    let (g, t) = (-PI / 12.0, PI / 12.0);
-    v["configurations"]["ul"] = json!({"alpha": -0.1, "beta": 0.75, "gamma": g, "theta": t});
-    v["configurations"]["lr"] = json!({"alpha": 0.59, "beta": 0.22, "gamma": g, "theta": t});
-    v["queries"] = json!([{"name": "around", "start": "ul", "goal": "lr"}, {"name": "gap", "start": "below", "goal": "above"}]);
+    let extra: Value = serde_json::from_str(include_str!("../../tests/data/bmarm-queries.json")).unwrap();
+    for (name, config) in extra["configurations"].as_object().unwrap() {
+        v["configurations"][name] = config.clone();
+    }
+    v["queries"] = extra["queries"].clone();
     v.to_string()
 }
 
@@ -65,5 +66,5 @@ fn no_path_across_the_gap_and_refusals() {
     assert!(e.to_string().contains("--planner lattice"), "{e}");
     let e = files.cli(&["plan", "arm.json", "--query", "nowhere", "--planner", "lattice"]).unwrap_err();
     assert_eq!(e.field(), "query");
-    assert!(e.to_string().contains("known queries: around, gap"), "{e}");
+    assert!(e.to_string().contains("known queries: around, around-2d, gap, gap-2d"), "{e}");
 }
