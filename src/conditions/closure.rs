@@ -73,8 +73,7 @@ impl FacetPolys {
         let w2 = w.mul(w);
         let e_inv = &load.wrench.ellipsoid_inv;
         let single = load.wrench.is_single();
-        let inertial = local.inertial();
-        let (load_rows, inertial) = (&local.load.rows, inertial.as_ref());
+        let (load_rows, inertial) = (&local.load.rows, local.inertial());
         let m = local.cables.len();
         let facets = subsets(m, dim - 1)
             .into_iter()

@@ -223,16 +223,20 @@ fn inertial_rows(local: &Local, d: &Dynamics, com: &[Bern; 3], r: &[Bern; 3], mo
     let dm: [[Bern; 3]; 3] = m.each_ref().map(|row| row.each_ref().map(Bern::derivative));
     let a = |i: usize, j: usize| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&dm[i][k].mul(&m[j][k])));
     let omega: [Bern; 3] = [a(2, 1).sub(&a(1, 2)).scale(0.5), a(0, 2).sub(&a(2, 0)).scale(0.5), a(1, 0).sub(&a(0, 1)).scale(0.5)];
-    let alpha: [[Bern; 3]; 2] = [omega.each_ref().map(|o| o.mul(w)), omega.each_ref().map(|o| o.derivative().mul(w).sub(&o.mul(&dw).scale(2.0)))];
+    // α̃ per unit g²
+    let alpha_square: [Bern; 3] = omega.each_ref().map(|o| o.derivative().mul(w).sub(&o.mul(&dw).scale(2.0)));
     // M̂ I_b M̂ᵀ v for a polynomial vector v
     let inertia_times = |v: &[Bern; 3]| {
         let body: [Bern; 3] = [0, 1, 2].map(|i| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&m[k][i].mul(&v[k]))));
         let ib: [Bern; 3] = [0, 1, 2].map(|i| Bern::linear_combination(&[(&body[0], d.inertia[(i, 0)]), (&body[1], d.inertia[(i, 1)]), (&body[2], d.inertia[(i, 2)])]));
         mat_vec(m, &ib)
     };
-    let gyro = cross(&omega, &inertia_times(&omega));
+    let i_omega = inertia_times(&omega);
+    let gyro = cross(&omega, &i_omega);
+    // per unit g g', α̃ = Ω̂w: its image under the inertia is that of Ω̂ times w
+    let i_alpha = [i_omega.each_ref().map(|p| p.mul(w)), inertia_times(&alpha_square)];
     let rows = |part: usize| -> [Bern; 6] {
-        let (acc, i_alpha) = (&accel[part], inertia_times(&alpha[part]));
+        let (acc, i_alpha) = (&accel[part], &i_alpha[part]);
         let r_x_a = cross(r, acc);
         std::array::from_fn(|j| {
             if j < 3 {

@@ -38,6 +38,7 @@ pub use speed::PlatformSpeed;
 pub use winch::{Rate, WinchLimit, WinchPolys};
 pub use wrench_lp::WrenchFeasibilityLp;
 
+use std::cell::OnceCell;
 use std::rc::Rc;
 
 use crate::model::{Bounds, Load, Motion, Robot};
@@ -159,7 +160,7 @@ impl Sweep {
             law,
         };
         let law = reference_law(&part);
-        part.tension = self.tension.as_ref().map(|t| Rc::new(t.part((a, b), law.as_ref())));
+        part.tension = self.tension.as_ref().and_then(|t| t.part((a, b), law.as_ref())).map(Rc::new);
         part
     }
 }
@@ -180,6 +181,8 @@ pub(crate) struct Local {
     pub(crate) load: LoadPolys,
     /// How λ runs in time for a duration of one second, along a timed motion.
     pub(crate) law: Option<TimeLaw>,
+    /// The inertial rows under `law`, built by the first condition that needs them.
+    inertial: OnceCell<Option<[Bern; 6]>>,
 }
 
 impl Local {
@@ -194,6 +197,7 @@ impl Local {
             cables: sweep.cables.iter().map(|c| (c.base, [c.s[0].p.clone(), c.s[1].p.clone(), c.s[2].p.clone()])).collect(),
             load: LoadPolys { rows: std::array::from_fn(|_| Bern::constant(0.0)), inertial: None, scale: None },
             law: reference_law(sweep),
+            inertial: OnceCell::new(),
         };
         // timed: the inertial rows, scaled to the sweep's duration when used
         local.load = load_polys(&local, load, local.law.is_some());
@@ -202,8 +206,8 @@ impl Local {
 
     /// The inertial rows under the motion's law for one second (a duration T divides them by
     /// T²), along a timed motion.
-    pub(crate) fn inertial(&self) -> Option<[Bern; 6]> {
-        Some(self.load.inertial.as_ref()?.under(self.law.as_ref()?))
+    pub(crate) fn inertial(&self) -> Option<&[Bern; 6]> {
+        self.inertial.get_or_init(|| Some(self.load.inertial.as_ref()?.under(self.law.as_ref()?))).as_ref()
     }
 
     /// P_i = ‖s̃_i‖² per cable (the squared cable lengths times w²).
@@ -220,6 +224,8 @@ impl Local {
             cables: self.cables.iter().map(|(base, s)| (*base, s.each_ref().map(r))).collect(),
             load: self.load.restrict(a, b),
             law: self.law.as_ref().map(|l| TimeLaw { square: r(&l.square), accel: r(&l.accel) }),
+            // the rows under the law, restricted if they were built
+            inertial: self.inertial.get().map(|rows| OnceCell::from(rows.as_ref().map(|rows| rows.each_ref().map(r)))).unwrap_or_default(),
         }
     }
 }

@@ -99,17 +99,26 @@ pub struct TensionPolys {
 
 impl TensionPolys {
     /// The shared polynomials of `sweep` (whose robot has as many cables as `load` has wrench
-    /// components: 6, or 3 for a point mass or a planar platform) under `load`.
-    pub fn new(sweep: &Sweep, load: &Load) -> TensionPolys {
+    /// components: 6, or 3 for a point mass or a planar platform) under `load`; with `split`, the
+    /// inertial parts kept apart from the time law too, for parts of the sweep ([`Self::part`]).
+    pub fn new(sweep: &Sweep, load: &Load, split: bool) -> TensionPolys {
         let all: Vec<usize> = (0..load.rows().len()).collect();
-        TensionPolys::on(Local::of(sweep, load), (0.0, 1.0), load, &all)
+        TensionPolys::on(Local::of(sweep, load), (0.0, 1.0), load, &all, split)
+    }
+
+    /// Whether they keep the inertial parts apart from the time law (or have none).
+    pub fn is_split(&self) -> bool {
+        self.columns.iter().all(|c| c.inertial.is_none() || c.split.is_some())
     }
 
     /// The polynomials on the part [a, b] of the motion they were expanded on (all of it),
     /// re-parametrised to [0, 1] and run by `law` there (for one second): restricted, not
     /// expanded again — the part's λ̈' and λ̇'² weigh the inertial parts by h and h² (h = b − a).
-    pub fn part(&self, (a, b): (f64, f64), law: Option<&TimeLaw>) -> TensionPolys {
-        debug_assert_eq!(self.span, (0.0, 1.0));
+    /// `None` when the inertial parts were not kept apart from the law ([`Self::is_split`]).
+    pub fn part(&self, (a, b): (f64, f64), law: Option<&TimeLaw>) -> Option<TensionPolys> {
+        if !self.is_split() || self.span != (0.0, 1.0) {
+            return None;
+        }
         let r = |p: &Bern| p.restrict(a, b);
         let columns = self
             .columns
@@ -120,7 +129,7 @@ impl TensionPolys {
                 Column { cable: c.cable, alpha: r(&c.alpha), beta: r(&c.beta), split, inertial }
             })
             .collect();
-        TensionPolys {
+        Some(TensionPolys {
             span: (0.0, 1.0),
             local: None,
             weight: r(&self.weight),
@@ -129,7 +138,7 @@ impl TensionPolys {
             columns,
             len2: self.len2.iter().map(r).collect(),
             single: self.single,
-        }
+        })
     }
 
     /// α_i (for a motion run in T seconds, `inv_t2` = 1/T², 0 at rest) and β_i of cable i, if
@@ -146,10 +155,10 @@ impl TensionPolys {
             None => Cow::Owned(Local::of(sweep, load)),
         };
         let local = whole.restrict((c - c0) / (d0 - c0), (d - c0) / (d0 - c0));
-        TensionPolys::on(local, (c, d), load, &[i])
+        TensionPolys::on(local, (c, d), load, &[i], false)
     }
 
-    fn on(local: Local, span: (f64, f64), load: &Load, cables: &[usize]) -> TensionPolys {
+    fn on(local: Local, span: (f64, f64), load: &Load, cables: &[usize], split: bool) -> TensionPolys {
         let wrench = &load.wrench;
         let w = &local.weight;
         let rows = load.rows();
@@ -174,8 +183,14 @@ impl TensionPolys {
                 (None, false) => Bern::linear_combination(&(0..dim).map(|j| (&g[j], wrench.nominal[rows[j]])).collect::<Vec<_>>()),
                 _ => dot(&local.load.rows),
             };
-            let split = local.load.inertial.as_ref().map(|r| (dot(&r.accel), dot(&r.square)));
-            let inertial = Column::under(&split, local.law.as_ref());
+            // apart from the law (for parts) or under it: one dot product fewer
+            let (split, inertial) = if split {
+                let split = local.load.inertial.as_ref().map(|r| (dot(&r.accel), dot(&r.square)));
+                let inertial = Column::under(&split, local.law.as_ref());
+                (split, inertial)
+            } else {
+                (None, local.inertial().map(dot))
+            };
             // β = 0 for a single wrench: not expanded (the single wrench's conditions never read it)
             let beta = if wrench.is_single() { Bern::constant(0.0) } else { local.load.scaled_square(quadratic_form(&g, &wrench.ellipsoid_inv, rows)) };
             columns.push(Column { cable: i, alpha, beta, split, inertial });
@@ -288,12 +303,13 @@ impl CableTension {
 }
 
 impl CableTension {
-    /// The sweep's shared polynomials, built by the first condition that needs them.
-    fn polys(&self, sweep: &mut Sweep) -> Rc<TensionPolys> {
+    /// The sweep's shared polynomials, built by the first condition that needs them (again with
+    /// the inertial parts apart from the law when `split` asks for them and they are not).
+    fn polys(&self, sweep: &mut Sweep, split: bool) -> Rc<TensionPolys> {
         match &sweep.tension {
-            Some(p) => Rc::clone(p),
-            None => {
-                let p = Rc::new(TensionPolys::new(sweep, &self.load));
+            Some(p) if !split || p.is_split() => Rc::clone(p),
+            _ => {
+                let p = Rc::new(TensionPolys::new(sweep, &self.load, split));
                 sweep.tension = Some(Rc::clone(&p));
                 p
             }
@@ -319,12 +335,12 @@ impl Condition for CableTension {
     }
 
     fn prepare(&self, sweep: &mut Sweep) {
-        self.polys(sweep);
+        self.polys(sweep, true);
     }
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let tol = sweep.tol;
-        let polys = self.polys(sweep);
+        let polys = self.polys(sweep, false);
         let inv_t2 = inverse_square(sweep.duration);
         let mut out = self.violated_on(&polys, inv_t2, tol);
         // Undecided pieces wider than tol: re-expand the motion around each and decide again,

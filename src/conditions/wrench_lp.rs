@@ -98,7 +98,7 @@ impl Piece {
         let n = structure_numerators(&local, &load.wrench, load.rows());
         let k = inverse_square(sweep.duration);
         let inertial = local.inertial();
-        let rows = load.rows().iter().map(|&j| with_inertia(&local.load.rows[j], inertial.as_ref().map(|r| &r[j]), k)).collect();
+        let rows = load.rows().iter().map(|&j| with_inertia(&local.load.rows[j], inertial.map(|r| &r[j]), k)).collect();
         let w = match &local.load.scale {
             Some(q) => local.weight.mul(q),
             None => local.weight.clone(),
