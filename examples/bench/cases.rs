@@ -210,8 +210,10 @@ pub fn run_all(platform: &str, filter: &str, now: &dyn Fn() -> f64, out: &mut dy
         out,
     );
     record(measure(now, filter, "crane/q1-q2/exact", &mut || exact(&crane, &crane_q12)), out);
+    record(measure(now, filter, "crane/q1-q2/pointwise-0.01", &mut || pointwise(&crane, &crane_q12, 0.01)), out);
     record(measure(now, filter, "crane/q1-q2/pointwise-0.001", &mut || pointwise(&crane, &crane_q12, 0.001)), out);
     record(measure(now, filter, "crane/tilt/exact", &mut || exact(&crane, &crane_tilt)), out);
+    record(measure(now, filter, "crane/tilt/pointwise-0.01", &mut || pointwise(&crane, &crane_tilt, 0.01)), out);
     record(measure(now, filter, "crane/tilt/pointwise-0.001", &mut || pointwise(&crane, &crane_tilt, 0.001)), out);
     // A timed trajectory with mass (docs/dynamics.md): the exact verification includes the search
     // of the least time scale; the point-wise baseline checks weight, inertia and winch limits at
