@@ -13,7 +13,7 @@ use crate::model::{JointPath, Trajectory};
 use crate::plan::atlas::{PlanParams, PlanReport};
 use crate::plan::lattice::{LatticeParams, LatticePlanReport};
 use crate::plan::timing::{self, TimingOptions};
-use crate::plan::{self, Details, PlanStatus, PlannerKind, PlannerOptions};
+use crate::plan::{self, Details, PlanStatus, PlannerKind, PlannerNaming, PlannerOptions};
 use crate::report::{PoseReport, RayReport, Side, TensionEnvelope, TimingReport, VerifyReport};
 use crate::verify::slice::{default_range, slice_counted, Class, SliceMap};
 use crate::verify::{along, check_along, check_config, check_pose, ray, tension_envelope, verify_all_counted, verify_along, verify_pointwise_along};
@@ -112,6 +112,8 @@ pub enum Request {
         /// An atlas file's text to start the atlas planner from (empty: none yet), whose atlas at
         /// the end then comes back in the output ([`Output::atlas_file`]); `None` keeps none.
         atlas: Option<String>,
+        /// How the caller's users choose the planners, for the refusals that name them.
+        naming: PlannerNaming,
     },
 }
 
@@ -218,13 +220,13 @@ pub fn run(scenario: &Scenario, request: &Request, progress: &mut dyn FnMut(Prog
             });
             Output::Lattice(report.ok_or_else(|| Error::new("lattice", "the lattice stopped before its end"))?)
         }
-        Request::Plan { planner: PlannerKind::Atlas, .. } if scenario.robot.chain.is_some() => {
+        Request::Plan { planner: PlannerKind::Atlas, naming, .. } if scenario.robot.chain.is_some() => {
             return Err(Error::new(
                 "plan",
-                "the atlas planner (--planner atlas, the default) is for platform robots; plan a multi-link robot's queries with --planner lattice (docs/multilink.md)",
+                format!("the atlas planner ({}, the default) is for platform robots; plan a multi-link robot's queries with {} (docs/multilink.md)", naming.atlas, naming.lattice),
             ));
         }
-        Request::Plan { queries, params, planner, lattice, atlas } => {
+        Request::Plan { queries, params, planner, lattice, atlas, .. } => {
             let option = |e: Error| match e.field.as_str() {
                 "radius" | "min_radius" | "heuristic_weight" | "epsilon" | "max_charts" => Error::new(format!("--{}", e.field.replace('_', "-")), e.reason),
                 _ => e,

@@ -3,9 +3,12 @@
 
 use cablenav::command::Request;
 use cablenav::plan::atlas::PlanParams;
-use cablenav::plan::{atlas_params, lattice_params, AtlasOptions, PlannerKind};
+use cablenav::plan::{atlas_params, lattice_params, AtlasOptions, PlannerKind, PlannerNaming};
 use clap::{Parser, Subcommand};
 use clap_complete::Shell;
+
+/// How the command line's users choose the planners.
+const NAMING: PlannerNaming = PlannerNaming { atlas: "--planner atlas", lattice: "--planner lattice" };
 
 /// The exit codes, as `cablenav --help` documents them.
 pub const EXIT_CODES: &str = "\
@@ -312,9 +315,9 @@ impl Command {
             }
             Command::Plan { scenario, query, planner, steps, out, max_charts, radius, min_radius, heuristic_weight, epsilon, identify_angles, atlas: atlas_file, json } => {
                 let planner = PlannerKind::parse(&planner)?;
-                let lattice = lattice_params(planner, steps, "--planner lattice")?;
+                let lattice = lattice_params(planner, steps, NAMING.lattice)?;
                 let atlas = AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon, identify_angles };
-                let params = atlas_params(planner, &atlas, "--planner atlas")?;
+                let params = atlas_params(planner, &atlas, NAMING.atlas)?;
                 if out.is_some() && query.len() > 1 {
                     return Err(cablenav::Error::new("--out", format!("writes one planned trajectory: give one --query, not {}", query.len())));
                 }
@@ -323,7 +326,7 @@ impl Command {
                 }
                 // the file's text is read by `run`, which also writes the atlas back
                 let atlas = atlas_file.as_ref().map(|_| String::new());
-                Ok(Invocation { scenario, request: Request::Plan { queries: query, params, planner, lattice, atlas }, json, png: None, out, atlas: atlas_file })
+                Ok(Invocation { scenario, request: Request::Plan { queries: query, params, planner, lattice, atlas, naming: NAMING }, json, png: None, out, atlas: atlas_file })
             }
             Command::Completions { .. } => Err(cablenav::Error::new("completions", "reads no scenario")),
             Command::Import { .. } => Err(cablenav::Error::new("import", "reads a CASPR model, not a scenario")),

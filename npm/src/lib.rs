@@ -7,9 +7,12 @@
 //! The TypeScript interfaces of the reports are declared below and returned by name.
 
 use cablenav::command::{self, Request};
-use cablenav::plan::{atlas_params, lattice_params, AtlasOptions, PlannerKind};
+use cablenav::plan::{atlas_params, lattice_params, AtlasOptions, PlannerKind, PlannerNaming};
 use cablenav::{Error, Scenario};
 use wasm_bindgen::prelude::*;
+
+/// How npm's users choose the planners.
+const NAMING: PlannerNaming = PlannerNaming { atlas: "the \"atlas\" planner", lattice: "the \"lattice\" planner" };
 
 #[wasm_bindgen(typescript_custom_section)]
 const TS_TYPES: &str = r#"
@@ -446,12 +449,12 @@ pub fn plan(
     let options = AtlasOptions { max_charts, radius, min_radius, heuristic_weight, epsilon, identify_angles };
     let kept = atlas.clone();
     let request = PlannerKind::parse(planner.as_deref().unwrap_or("atlas")).and_then(|planner| {
-        let lattice = lattice_params(planner, steps, "the \"lattice\" planner")?;
-        let params = atlas_params(planner, &options, "the \"atlas\" planner")?;
+        let lattice = lattice_params(planner, steps, NAMING.lattice)?;
+        let params = atlas_params(planner, &options, NAMING.atlas)?;
         if kept.is_some() && planner != PlannerKind::Atlas {
-            return Err(Error::new("atlas", "is an option of the \"atlas\" planner"));
+            return Err(Error::new("atlas", format!("is an option of {}", NAMING.atlas)));
         }
-        Ok(Request::Plan { queries, params, planner, lattice, atlas: kept })
+        Ok(Request::Plan { queries, params, planner, lattice, atlas: kept, naming: NAMING })
     });
     let output = run_request(scenario, request, None)?;
     let mut reports = js_sys::JSON::parse(&output.json())?;

@@ -183,6 +183,8 @@ test('multi-link robots: joint coordinates by name, equal to the CLI', () => {
   assert.equal(ours.components, 2);
   close(cablenav.verify(arm, 'across the gap'), cli('verify', path, '--trajectory', 'across the gap'));
   assert.throws(() => cablenav.ray(arm, 'fig312', 'x', 0, 1), (e) => e.field === 'vary' && /alpha, beta, gamma, theta/.test(e.message));
+  // the atlas planner (the default) refuses a chain, naming the lattice planner in npm's words
+  assert.throws(() => cablenav.plan(arm, 'any'), (e) => e.field === 'plan' && /the "lattice" planner/.test(e.message) && !/--planner/.test(e.message));
 });
 
 test('errors are ScenarioErrors naming the field', () => {

@@ -8,11 +8,14 @@
 //! parameter) in `.field`.
 
 use cablenav::command::{self, Request};
-use cablenav::plan::{atlas_params, lattice_params, AtlasOptions, PlannerKind};
+use cablenav::plan::{atlas_params, lattice_params, AtlasOptions, PlannerKind, PlannerNaming};
 use cablenav::{Error, Scenario};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
+
+/// How Python's users choose the planners.
+const NAMING: PlannerNaming = PlannerNaming { atlas: "planner=\"atlas\"", lattice: "planner=\"lattice\"" };
 
 pyo3::create_exception!(
     cablenav,
@@ -329,12 +332,12 @@ fn plan(
     // a file that cannot be read is one not made yet: the atlas starts afresh
     let kept = atlas.as_ref().map(|file| std::fs::read_to_string(file).unwrap_or_default());
     let request = PlannerKind::parse(planner).and_then(|planner| {
-        let lattice = lattice_params(planner, steps, "planner=\"lattice\"")?;
-        let params = atlas_params(planner, &options, "planner=\"atlas\"")?;
+        let lattice = lattice_params(planner, steps, NAMING.lattice)?;
+        let params = atlas_params(planner, &options, NAMING.atlas)?;
         if kept.is_some() && planner != PlannerKind::Atlas {
-            return Err(Error::new("atlas", "is an option of planner=\"atlas\""));
+            return Err(Error::new("atlas", format!("is an option of {}", NAMING.atlas)));
         }
-        Ok(Request::Plan { queries, params, planner, lattice, atlas: kept })
+        Ok(Request::Plan { queries, params, planner, lattice, atlas: kept, naming: NAMING })
     });
     let output = run_request(py, scenario, request, None)?;
     if let (Some(file), Some(text)) = (&atlas, output.atlas_file()) {

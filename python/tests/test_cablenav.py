@@ -141,6 +141,10 @@ def test_multi_link_robots_equal_the_cli(cli):
     with pytest.raises(cablenav.ScenarioError) as e:
         cablenav.ray(arm, "fig312", "x", (0, 1))
     assert e.value.field == "vary" and "alpha, beta, gamma, theta" in str(e.value)
+    # the atlas planner (the default) refuses a chain, naming the lattice planner in Python's words
+    with pytest.raises(cablenav.ScenarioError) as e:
+        cablenav.plan(arm, "any")
+    assert e.value.field == "plan" and 'planner="lattice"' in str(e.value) and "--planner" not in str(e.value), str(e.value)
 
 
 def test_errors_carry_the_field():

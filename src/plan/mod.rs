@@ -103,6 +103,17 @@ impl AtlasOptions {
     }
 }
 
+/// How a front end's users choose each planner, for the messages that name them:
+/// `--planner lattice` on the command line, `planner="lattice"` in Python, `the "lattice"
+/// planner` in npm.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PlannerNaming {
+    /// The atlas planner's.
+    pub atlas: &'static str,
+    /// The lattice planner's.
+    pub lattice: &'static str,
+}
+
 /// The lattice planner's parameters for a plan request that may give `steps`, the grid values
 /// per free coordinate ([`LatticeParams::default`]'s 7 when `None`): an option of the lattice
 /// planner only. With another planner, `steps` is an error at `--steps` (the Python and npm
