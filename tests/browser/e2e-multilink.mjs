@@ -16,7 +16,8 @@
 //   `cablenav lattice` ray by ray (2 components), drawn in 3-D too; the planning tab says that
 //   the preset has no planning query (a multi-link robot's queries are planned by the lattice
 //   planner); a query added to the arm (as tests/joint_plan.rs adds it) is planned on the page
-//   with the lattice planner in a worker, its path through configurations added to the scenario,
+//   with the lattice planner (selected for a multi-link robot, the atlas planner disabled) in a
+//   worker, its path through configurations added to the scenario,
 //   and the strip shows it as `cablenav verify` does on what `cablenav plan --out` wrote.
 // Screenshots in tests/browser/artifacts/. Ends with "N passed, M failed"; exits 1 on failure.
 
@@ -168,7 +169,9 @@ await test('a query of the arm planned with the lattice planner in a worker: the
   const want = cliSections(cliVerify(root, out, 'around-lattice'));
   await page.setInputFiles('[data-testid="import-json"]', { name: 'arm-queries.json', mimeType: 'application/json', buffer: Buffer.from(text) });
   await openTab(page, 'planning');
-  await page.selectOption('select[data-testid="planner"]', 'ray-lattice');
+  // the lattice planner is the one a multi-link robot is planned with: selected, the atlas disabled
+  const planner = await page.$eval('select[data-testid="planner"]', (s) => ({ value: s.value, atlas: s.querySelector('option[value="continuation"]').disabled }));
+  if (planner.value !== 'ray-lattice' || !planner.atlas) throw new Error(`planner select for the arm: ${JSON.stringify(planner)}`);
   await page.click('[data-testid="plan-run"]');
   await page.waitForFunction(() => !['running', 'idle'].includes(document.querySelector('[data-testid="plan-status"]').dataset.state), null, { timeout: TIMEOUT, polling: 100 });
   const state = await page.getAttribute('[data-testid="plan-status"]', 'data-state');

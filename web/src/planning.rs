@@ -147,10 +147,16 @@ pub fn Planning(
     let generation = Rc::new(std::cell::Cell::new(0u32));
 
     let queries = move || parsed.get().0.as_ref().as_ref().map(|s| s.queries.iter().map(|q| q.name.clone()).collect::<Vec<_>>()).unwrap_or_default();
-    // a new scenario stops any run and selects its first query
+    // a multi-link robot: only the lattice planner plans it (the atlas planner refuses it)
+    let chain = move || parsed.with(|p| p.0.as_ref().as_ref().is_ok_and(|s| s.robot.chain.is_some()));
+    // a new scenario stops any run and selects its first query (and, for a multi-link robot, the
+    // lattice planner)
     let (worker1, gen1) = (worker.clone(), generation.clone());
     Effect::new(move |_| {
         query.set(queries().into_iter().next().unwrap_or_default());
+        if chain() && planner_id.get_untracked() != LATTICE {
+            settings.update(|s| s.planner = LATTICE);
+        }
         gen1.set(gen1.get() + 1);
         worker1.forget();
         growing.set(None);
@@ -229,7 +235,9 @@ pub fn Planning(
                         settings.update(|s| s.planner = id)
                     }
                 }>
-                    {PLANNERS.map(|(id, label, ok)| view! { <option value=id disabled=!ok selected=move || planner_id.get() == id>{label}</option> })}
+                    {PLANNERS.map(|(id, label, ok)| view! {
+                        <option value=id disabled=move || !ok || (chain() && id != LATTICE) selected=move || planner_id.get() == id>{label}</option>
+                    })}
                 </select>
             </label>
             <label>
