@@ -42,11 +42,11 @@ pub fn verdicts(s: &Scenario, cells: &[Cell], rates: &[Rates], law: &[(f64, f64)
             .iter()
             .map(|&i| {
                 let motion = cells[i].motion;
-                if !wholes.iter().any(|(m, _)| *m == motion) {
+                let k = wholes.iter().position(|(m, _)| *m == motion).unwrap_or_else(|| {
                     wholes.push((motion, prepared(s, conditions, &rates[motion])));
-                }
-                let whole = &wholes.iter().find(|(m, _)| *m == motion).expect("prepared above").1;
-                verdict(conditions, whole, &cells[i], law[i])
+                    wholes.len() - 1
+                });
+                verdict(conditions, &wholes[k].1, &cells[i], law[i])
             })
             .collect::<Vec<_>>()
     });

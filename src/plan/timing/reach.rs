@@ -96,9 +96,10 @@ struct Range {
 }
 
 /// The [`Range`] of `step` for an end state in [lo, hi] and x ≤ `cap`: its half-planes and that
-/// strip, clipped first inside a huge box to learn the set's extent, then again inside a box just
-/// around it, so that the vertices carry no rounding from the huge one (`polygons`: the two,
-/// reused). `Err(())` when unbounded.
+/// strip, clipped inside a box just around the set, so that the vertices carry no rounding from a
+/// huge one — a box the speed limits give where they bound x, else one found by clipping first
+/// inside a huge box to learn the set's extent (`polygons`: the two, reused). `Err(())` when
+/// unbounded.
 fn start_range(step: &Step, lo: f64, hi: f64, cap: f64, polygons: (&mut Polygon, &mut Polygon)) -> Result<Option<Range>, ()> {
     if lo == hi {
         // a stop (or an end state pinned to one value): u = (lo − x)/(2Δ), each half-plane a
