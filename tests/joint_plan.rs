@@ -23,17 +23,14 @@ use std::f64::consts::PI;
 
 const ARM: &str = include_str!("../static/multilink/bmarm-x4-2.json");
 
+#[path = "shared/arm_queries.rs"]
+mod arm_queries;
+
 /// The preset with the configurations `ul` and `lr` and the queries `around` (ul → lr, all free),
 /// `around-2d` (the same in the α–β cross-section), `gap` (below → above, all free) and `gap-2d`
-/// of `tests/data/bmarm-queries.json` (which the command line's tests merge in too).
+/// of `tests/data/bmarm-queries.json` ([`arm_queries`], which the command line's tests use too).
 fn arm_json() -> Value {
-    let mut v: Value = serde_json::from_str(ARM).unwrap();
-    let extra: Value = serde_json::from_str(include_str!("data/bmarm-queries.json")).unwrap();
-    for (name, config) in extra["configurations"].as_object().unwrap() {
-        v["configurations"][name] = config.clone();
-    }
-    v["queries"] = extra["queries"].clone();
-    v
+    arm_queries::with_queries(ARM)
 }
 
 fn arm() -> Scenario {

@@ -8,21 +8,17 @@ use serde_json::{json, Value};
 use support::Files;
 
 mod support;
+#[path = "../../tests/shared/arm_queries.rs"]
+mod arm_queries;
 
 const ARM: &str = include_str!("../../static/multilink/bmarm-x4-2.json");
 
 /// The preset with two configurations of its upper region, `ul` and `lr`, whose straight path
 /// leaves wrench closure, and the queries `around` (ul → lr) and `gap` (below → above), all four
 /// joint coordinates free (with their α–β cross-sections `around-2d` and `gap-2d`): those of
-/// `tests/data/bmarm-queries.json`, which the core's tests use too.
+/// `tests/data/bmarm-queries.json` ([`arm_queries`], which the core's tests use too).
 fn arm() -> String {
-    let mut v: Value = serde_json::from_str(ARM).unwrap();
-    let extra: Value = serde_json::from_str(include_str!("../../tests/data/bmarm-queries.json")).unwrap();
-    for (name, config) in extra["configurations"].as_object().unwrap() {
-        v["configurations"][name] = config.clone();
-    }
-    v["queries"] = extra["queries"].clone();
-    v.to_string()
+    arm_queries::with_queries(ARM).to_string()
 }
 
 #[test]
