@@ -275,20 +275,23 @@ fn plan(json: &str, query: &str, id: &str, [max_charts, steps]: [usize; 2], iden
 /// it) and the exact verification of that trajectory there, read back from the written text as
 /// `cablenav verify` reads it.
 pub fn planned_trajectory(json: &str, t: &cablenav::model::Trajectory) -> Result<PlannedTrajectory, String> {
-    let (text, name) = cablenav::scenario::with_trajectory(json, t).map_err(|e| e.to_string())?;
-    let s = scenario(&text)?;
-    let index = s.trajectories.iter().position(|x| x.name == name).ok_or("the planned trajectory is missing from the written scenario")?;
-    let report = crate::logic::verify(&s, index).map(|r| WireReport::from(&r));
-    Ok(PlannedTrajectory { scenario: text, name, report })
+    let written = cablenav::scenario::with_trajectory(json, t).map_err(|e| e.to_string())?;
+    verified_in(written, "the planned trajectory", |s, name| s.trajectories.iter().position(|x| x.name == name))
 }
 
 /// A multi-link robot's planned path as [`planned_trajectory`] has a platform's: the scenario
 /// with the path through new configurations added (as `cablenav plan --out` writes it) and its
 /// exact verification there.
 pub fn planned_path(json: &str, p: &cablenav::model::JointPath) -> Result<PlannedTrajectory, String> {
-    let (text, name) = cablenav::scenario::with_joint_path(json, p).map_err(|e| e.to_string())?;
+    let written = cablenav::scenario::with_joint_path(json, p).map_err(|e| e.to_string())?;
+    verified_in(written, "the planned path", |s, name| s.joint_paths.iter().position(|x| x.name == name))
+}
+
+/// The written scenario `text` and the exact verification of its motion `name` (`what`, for the
+/// error), found at the index `index` gives.
+fn verified_in((text, name): (String, String), what: &str, index: impl Fn(&Scenario, &str) -> Option<usize>) -> Result<PlannedTrajectory, String> {
     let s = scenario(&text)?;
-    let index = s.joint_paths.iter().position(|x| x.name == name).ok_or("the planned path is missing from the written scenario")?;
+    let index = index(&s, &name).ok_or_else(|| format!("{what} is missing from the written scenario"))?;
     let report = crate::logic::verify(&s, index).map(|r| WireReport::from(&r));
     Ok(PlannedTrajectory { scenario: text, name, report })
 }
