@@ -55,8 +55,7 @@ impl Inertial {
 
     /// The rows on [a, b] ⊆ [0, 1] in the same parameter (values kept).
     fn restrict(&self, a: f64, b: f64) -> Inertial {
-        let r = |rows: &[Bern; 6]| rows.each_ref().map(|p| p.restrict(a, b));
-        Inertial { accel: r(&self.accel), square: r(&self.square) }
+        Inertial { accel: restrict_rows(&self.accel, a, b), square: restrict_rows(&self.square, a, b) }
     }
 }
 
@@ -72,9 +71,13 @@ impl LoadPolys {
 
     /// The rows restricted to [a, b] ⊆ [0, 1].
     pub(crate) fn restrict(&self, a: f64, b: f64) -> LoadPolys {
-        let r = |rows: &[Bern; 6]| rows.each_ref().map(|p| p.restrict(a, b));
-        LoadPolys { rows: r(&self.rows), inertial: self.inertial.as_ref().map(|i| i.restrict(a, b)), scale: self.scale.as_ref().map(|p| p.restrict(a, b)) }
+        LoadPolys { rows: restrict_rows(&self.rows, a, b), inertial: self.inertial.as_ref().map(|i| i.restrict(a, b)), scale: self.scale.as_ref().map(|p| p.restrict(a, b)) }
     }
+}
+
+/// Six rows restricted to [a, b] ⊆ [0, 1].
+fn restrict_rows(rows: &[Bern; 6], a: f64, b: f64) -> [Bern; 6] {
+    rows.each_ref().map(|p| p.restrict(a, b))
 }
 
 /// Scales a polynomial per unit of the whole motion's λ̈ (`power` 1) or λ̇² (`power` 2) restricted

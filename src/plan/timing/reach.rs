@@ -133,7 +133,7 @@ fn start_range(step: &Step, lo: f64, hi: f64, cap: f64, polygons: (&mut Polygon,
     // huge box finds the extent
     let x_max = step.planes.iter().filter(|h| h.a == 0.0 && h.b > 0.0).map(|h| h.c / h.b).fold(cap, f64::min);
     let u_max = (lo.abs() + hi.abs() + x_max) / (2.0 * step.delta);
-    let set = if x_max >= 0.0 && x_max < 0.5 * UNBOUNDED && u_max < 0.5 * UNBOUNDED {
+    let set = if (0.0..0.5 * UNBOUNDED).contains(&x_max) && u_max < 0.5 * UNBOUNDED {
         clip(tight, (2.0 * u_max + 1e-300, 2.0 * x_max + 1e-300));
         if tight.points.is_empty() {
             return Ok(None);
