@@ -89,6 +89,9 @@ const page = await context.newPage();
 
 await test('page loads and draws the first preset', async () => {
   await page.goto(`${base}/`, { waitUntil: 'load' });
+  // 'load' fires once the HTML and its scripts are in; the app mounts after the wasm has
+  // compiled, so wait for the preset list it renders before reading it
+  await page.waitForSelector('select[data-testid="preset"] option', { state: 'attached', timeout: TIMEOUT });
   const presets = await optionValues(page, 'preset');
   if (presets.length < 3) throw new Error(`only ${presets.length} presets: ${presets}`);
   const r = await checkResult(page, presets[0][0], 0, `${presets[0][0]} #0`);
