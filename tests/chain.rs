@@ -21,6 +21,10 @@ use std::f64::consts::PI;
 mod support;
 use support::reference::Rng;
 
+#[path = "shared/chains.rs"]
+mod chains;
+use chains::{inside, random_chain, random_chain_of};
+
 macro_rules! model {
     ($path:literal) => {
         include_str!(concat!("../../shared/models/caspr/", $path))
@@ -34,6 +38,19 @@ const ARM_CABLES: &str = model!("BMArm/BMArm_cables.xml");
 
 fn import(bodies: &str, cables: &str) -> Value {
     serde_json::from_str(&to_json("arm", bodies, cables).expect("imports").json).expect("JSON")
+}
+
+/// An imported robot without its links' masses (format 3): the thesis' case study asks for wrench
+/// closure and interference only, not for the weights to be held.
+fn massless(mut v: Value) -> Value {
+    v["format"] = json!("cablenav-scenario/3");
+    v["robot"].as_object_mut().unwrap().remove("gravity");
+    for link in v["robot"]["links"].as_array_mut().unwrap() {
+        let link = link.as_object_mut().unwrap();
+        link.remove("mass");
+        link.remove("com");
+    }
+    v
 }
 
 #[test]
@@ -62,11 +79,15 @@ fn bmarm_x4_2_imports_with_its_joints_and_cables() {
     }
     assert_eq!(s.config("initial").unwrap(), vec![0.0; 4]);
     // upright, the two lower-arm cables and the revolute axis lie in one plane: the cables' joint
-    // forces do not positively span ℝ⁴ there; tilted by θ they do
+    // forces do not positively span ℝ⁴ there, nor hold the weights; tilted by θ they do
     let upright = check_config(&s, "initial", &[0.0; 4]);
-    assert_eq!(upright.violated, ["wrench closure"]);
+    assert_eq!(upright.violated, ["static feasibility", "wrench closure"]);
     let tilted = check_config(&s, "tilted", &[0.0, 0.0, 0.0, 0.3]);
     assert!(tilted.feasible, "{:?}", tilted.violated);
+    // its links carry their masses (0.871 kg and 0.3334 kg) under CASPR's gravity, and the
+    // tilted arm holds them (static feasibility)
+    let chain = s.robot.chain.as_ref().unwrap();
+    assert!(chain.links.iter().all(|l| l.mass > 0.0) && chain.gravity == nalgebra::Vector3::new(0.0, 0.0, -9.81));
 }
 
 #[test]
@@ -79,94 +100,6 @@ fn bmarm_imports_and_checks() {
     assert_eq!(q, vec![0.18, 0.0, 0.0, -0.45]);
     let r = check_config(&s, "initial", &q);
     assert_eq!(r.lengths.len(), 6);
-}
-
-/// A random vector in the cube [−r, r]³.
-fn v3(rng: &mut Rng, r: f64) -> [f64; 3] {
-    [rng.range(-r, r), rng.range(-r, r), rng.range(-r, r)]
-}
-
-/// A random chain of 1–3 links (spherical, revolute, prismatic, free, universal, planar or spatial
-/// joints with random axes, each link's parent
-/// any earlier one), 3–7 cables from a ring of base anchors to random links, random clearances, an
-/// obstacle sometimes; and a random configuration `q`.
-fn random_chain(rng: &mut Rng) -> (Value, Vec<f64>) {
-    let n = rng.int(1, 3);
-    random_chain_of(rng, n, &["spherical", "revolute", "prismatic", "free", "universal", "planar", "spatial"], &|rng, _| rng.int(3, 7))
-}
-
-/// A random chain of `n` links with joints drawn from `kinds`, as many cables as `cables` says
-/// for its degrees of freedom, and a random configuration ([`random_chain`]).
-fn random_chain_of(rng: &mut Rng, n: usize, kinds: &[&str], cables: &dyn Fn(&mut Rng, usize) -> usize) -> (Value, Vec<f64>) {
-    let mut links = Vec::new();
-    let mut q = Vec::new();
-    for k in 0..n {
-        let kind = kinds[rng.int(0, kinds.len() - 1)];
-        let names: Vec<String> = match kind {
-            "spherical" => ["a", "b", "c"].iter().map(|x| format!("{x}{k}")).collect(),
-            "free" => ["x", "y", "z", "phi", "theta", "sigma"].iter().map(|x| format!("{x}{k}")).collect(),
-            "spatial" => ["x", "y", "z", "a", "b", "c"].iter().map(|x| format!("{x}{k}")).collect(),
-            "universal" => ["u", "v"].iter().map(|x| format!("{x}{k}")).collect(),
-            "planar" => ["u", "v", "w"].iter().map(|x| format!("{x}{k}")).collect(),
-            _ => vec![format!("q{k}x")],
-        };
-        for i in 0..names.len() {
-            let angle = match kind {
-                "spherical" | "revolute" | "universal" => true,
-                "free" | "spatial" => i >= 3,
-                "planar" => i == 2,
-                _ => false,
-            };
-            q.push(if angle { rng.range(-1.2, 1.2) } else { rng.range(-0.3, 0.3) });
-        }
-        let mut joint = json!({"type": kind, "coordinates": names});
-        if kind == "revolute" || kind == "prismatic" {
-            joint["axis"] = json!(v3(rng, 1.0));
-        }
-        if kind == "universal" {
-            joint["axes"] = json!([v3(rng, 1.0), v3(rng, 1.0)]);
-        }
-        if kind == "planar" {
-            joint["axes"] = json!([v3(rng, 1.0), v3(rng, 1.0), v3(rng, 1.0)]);
-        }
-        let mut link = json!({
-            "name": format!("L{k}"),
-            "location": if k == 0 { [0.0, 0.0, rng.range(0.0, 0.5)] } else { [rng.range(-0.2, 0.2), rng.range(-0.2, 0.2), rng.range(0.3, 0.8)] },
-            "joint": joint,
-            "body": {"from": [0.0, 0.0, 0.0], "to": [rng.range(-0.1, 0.1), rng.range(-0.1, 0.1), rng.range(0.3, 0.8)], "radius": rng.range(0.0, 0.08)},
-        });
-        if k > 0 {
-            link["parent"] = json!(format!("L{}", rng.int(0, k - 1)));
-        }
-        links.push(link);
-    }
-    let m = cables(rng, q.len());
-    let cables: Vec<Value> = (0..m)
-        .map(|i| {
-            let t = 2.0 * PI * (i as f64 + rng.range(-0.3, 0.3)) / m as f64;
-            let r = rng.range(0.8, 1.5);
-            json!({
-                "base": [r * t.cos(), r * t.sin(), rng.range(-0.2, 1.5)],
-                "link": format!("L{}", rng.int(0, n - 1)),
-                "platform": [rng.range(-0.3, 0.3), rng.range(-0.3, 0.3), rng.range(0.0, 0.8)],
-            })
-        })
-        .collect();
-    let mut scenario = json!({
-        "format": "cablenav-scenario/3",
-        "name": "random chain",
-        "robot": {"links": links, "cables": cables, "length": {"min": rng.range(0.0, 0.5), "max": rng.range(1.5, 3.0)}},
-        "clearance": {"cable_cable": rng.range(0.0, 0.1), "cable_link": rng.range(0.0, 0.1), "cable_obstacle": rng.range(0.0, 0.1)},
-    });
-    if rng.chance(0.4) {
-        scenario["obstacles"] = json!([{"type": "sphere", "center": [rng.range(-0.8, 0.8), rng.range(-0.8, 0.8), rng.range(0.0, 1.0)], "radius": rng.range(0.05, 0.3)}]);
-    }
-    (scenario, q)
-}
-
-/// Whether `x` lies in one of `intervals`, at least `margin` inside.
-fn inside(intervals: &[[f64; 2]], x: f64, margin: f64) -> bool {
-    intervals.iter().any(|iv| x > iv[0] + margin && x < iv[1] - margin)
 }
 
 /// The largest t with J f = 0, f ≥ t, Σ f = 1 for the columns of `j` scaled to unit length:
@@ -547,7 +480,7 @@ fn bad_chains_name_the_field() {
 /// The thesis' 4-DoF arm with ε = 0.02 for cable–cable and cable–link clearance, at the Fig. 3.12
 /// configuration γ = −π/12, θ = π/12 (γ is outside CASPR's ±0.1745 limit: a warning).
 fn fig_3_12() -> Scenario {
-    let mut v = import(X4_BODIES, X4_CABLES);
+    let mut v = massless(import(X4_BODIES, X4_CABLES));
     v["name"] = json!("BMArm_X4_2 (thesis §3.5.2)");
     v["clearance"] = json!({"cable_cable": 0.02, "cable_link": 0.02});
     v["configurations"]["fig312"] = json!({"alpha": 0.0, "beta": 0.0, "gamma": -PI / 12.0, "theta": PI / 12.0});

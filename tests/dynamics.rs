@@ -19,12 +19,12 @@ use wasm_bindgen_test::wasm_bindgen_test as test;
 mod support;
 
 use cablenav::model::{Bounds, Mobility};
-use cablenav::query::lp::{maximise, LpResult};
 use cablenav::query::wrench::{tension_ranges_at, wrench_set_margin};
 use cablenav::verify::verify_trajectory;
 use cablenav::Scenario;
 use nalgebra::{DMatrix, DVector, Matrix3, Matrix6, Vector3, Vector6};
 use support::{env_usize, lone_boundaries, reported};
+use support::lp::lp_margin;
 use support::reference::*;
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -283,42 +283,6 @@ impl Case {
         DMatrix::from_fn(rows.len(), rows.len(), |a, b| e_inv[(rows[a], rows[b])])
     }
 
-    /// Largest t with J f = w, f_min + t ≤ f ≤ f_max − t (an LP over g = f − f_min − t ≥ 0,
-    /// t = t⁺ − t⁻, upper slacks, t⁺ capped), and the tensions; None when J f = w has no solution.
-    fn lp_margin(&self, j: &DMatrix<f64>, w: &DVector<f64>) -> Option<(f64, DVector<f64>)> {
-        let (n, m) = j.shape();
-        let (lo, hi) = self.tension;
-        let nvar = m + 2 + m + 1;
-        let mut a = DMatrix::zeros(n + m + 1, nvar);
-        let mut b = DVector::zeros(n + m + 1);
-        for r in 0..n {
-            let row_sum: f64 = (0..m).map(|k| j[(r, k)]).sum();
-            for k in 0..m {
-                a[(r, k)] = j[(r, k)];
-            }
-            a[(r, m)] = row_sum;
-            a[(r, m + 1)] = -row_sum;
-            b[r] = w[r] - lo * row_sum;
-        }
-        for k in 0..m {
-            a[(n + k, k)] = 1.0;
-            a[(n + k, m)] = 2.0;
-            a[(n + k, m + 1)] = -2.0;
-            a[(n + k, m + 2 + k)] = 1.0;
-            b[n + k] = hi - lo;
-        }
-        a[(n + m, m)] = 1.0;
-        a[(n + m, nvar - 1)] = 1.0;
-        b[n + m] = hi;
-        let mut c = DVector::zeros(nvar);
-        c[m] = 1.0;
-        c[m + 1] = -1.0;
-        match maximise(&a, &b, &c) {
-            LpResult::Optimal { x, value } => Some((value, DVector::from_fn(m, |k, _| lo + value + x[k]))),
-            _ => None,
-        }
-    }
-
     /// The largest t such that every wrench of the ellipsoid around `w` is balanced by tensions
     /// within [f_min + t, f_max − t]: the ellipsoid inside the polytope {J f} shrunk by t holds
     /// against each of its facets; a facet's normal n is the dual vector of n − 1 columns (the
@@ -409,7 +373,7 @@ impl Case {
             at.slack = at.slack.min(least / range);
             return at;
         }
-        let Some((margin, f)) = self.lp_margin(&j, &w) else { return At { verdict: Some(false), ..at } };
+        let Some((margin, f)) = lp_margin(&j, &w, self.tension) else { return At { verdict: Some(false), ..at } };
         at.slack = at.slack.min(margin / range);
         if margin < -eps {
             return At { verdict: Some(false), ..at };

@@ -163,8 +163,10 @@ fn import(dir: &str, Model { out, name, trajectories, cable_set }: Model, read: 
     let Some(out) = out else { return Ok(imported.json) };
     write(out, imported.json.as_bytes())?;
     let mut text = format!("wrote {out}: {} ({} cables", scenario.name, scenario.robot.cables.len());
+    let links_mass: f64 = scenario.robot.chain.iter().flat_map(|c| &c.links).map(|l| l.mass).sum();
     text += &match &scenario.robot.dynamics {
         Some(d) => format!(", mass {} kg", d.mass),
+        None if links_mass > 0.0 => format!(", links' mass {links_mass} kg"),
         None => ", massless".to_string(),
     };
     let timed: Vec<&str> = scenario.trajectories.iter().filter(|t| t.knots.is_some()).map(|t| t.name.as_str()).collect();

@@ -1,7 +1,7 @@
 //! Multi-link robots on the command line (issue 11): joint coordinates wherever pose coordinates
 //! go (`check --pose CONFIG`, `ray --vary alpha`, `lattice --axes alpha,beta`), the thesis'
-//! Fig. 3.12 cross-section from the preset, and the commands that do not take a multi-link robot
-//! yet refusing it by name.
+//! Fig. 3.12 cross-section from the preset, an arm imported with its links' masses held by its
+//! cables, and the commands that do not take a multi-link robot yet refusing it by name.
 
 use cablenav::Error;
 use cablenav_cli::{run, CliError};
@@ -111,4 +111,43 @@ fn unknown_coordinates_and_unsupported_commands_say_why() {
     let e = input_error(&["slice", "arm.json", "--pose", "fig312", "--axes", "phi,theta", "--res", "8"]);
     assert_eq!(e.field, "--axes");
     assert!(e.reason.contains("\"phi\" is not a coordinate of this robot"), "{e}");
+}
+
+/// An arm imported from CASPR with its links' masses: the summary says so, and `check` and
+/// `verify` hold its weight as a condition of their own (static feasibility, with its margin).
+#[test]
+fn an_imported_arm_holds_its_weight() {
+    let bodies = include_str!("../../../shared/models/caspr/BMArm/BMArm_bodies.xml");
+    let cables = include_str!("../../../shared/models/caspr/BMArm/BMArm_cables.xml");
+    let imported = std::cell::RefCell::new(String::new());
+    let read = |p: &str| match p {
+        "m/BMArm_bodies.xml" => Ok(bodies.to_string()),
+        "m/BMArm_cables.xml" => Ok(cables.to_string()),
+        "arm.json" => Ok(imported.borrow().clone()),
+        _ => Err(Error::new(p, "no such file")),
+    };
+    let list = |p: &str| if p == "m" { Ok(vec!["BMArm_bodies.xml".to_string(), "BMArm_cables.xml".into()]) } else { Ok(vec![]) };
+    let write = |_: &str, bytes: &[u8]| {
+        *imported.borrow_mut() = String::from_utf8_lossy(bytes).into_owned();
+        Ok(())
+    };
+    let cli = |args: &str| run(args.split(' '), &read, &write, &list, &mut |_| {}).unwrap_or_else(|e| panic!("{args}: {e}"));
+    let printed = cli("import m --out arm.json");
+    assert!(printed.contains("wrote arm.json: BMArm (6 cables, links' mass 1.1123952 kg)"), "{printed}");
+    let check: Value = serde_json::from_str(&cli("check arm.json --pose initial --json")).unwrap();
+    let statics = check["checks"].as_array().unwrap().iter().find(|c| c["constraint"] == "static feasibility").unwrap_or_else(|| panic!("{check}"));
+    assert!(statics["distance"].as_f64().is_some_and(|d| d > 0.0), "{statics}");
+    // CASPR's initial configuration holds the arm; turning the lower arm on to θ = −0.95 loses
+    // the hold once, the condition named at the boundary
+    let mut v: Value = serde_json::from_str(&imported.borrow()).unwrap();
+    v["configurations"]["bent"] = v["configurations"]["initial"].clone();
+    v["configurations"]["bent"]["theta"] = serde_json::json!(-0.95);
+    v["trajectories"] = serde_json::json!([{"name": "bend", "through": ["initial", "bent"]}]);
+    *imported.borrow_mut() = v.to_string();
+    let r: Value = serde_json::from_str(&cli("verify arm.json --trajectory bend --json")).unwrap();
+    let boundaries = r["boundaries"].as_array().unwrap();
+    assert_eq!(boundaries.len(), 1, "{r}");
+    assert_eq!((boundaries[0]["constraint"].as_str(), boundaries[0]["enters"].as_str()), (Some("static feasibility"), Some("infeasible")), "{r}");
+    let t = boundaries[0]["t"].as_f64().unwrap();
+    assert!(t > 0.5 && t < 0.9 && r["uncertain"].as_array().unwrap().is_empty(), "{r}");
 }

@@ -18,6 +18,8 @@ pub mod primitives;
 mod closure;
 pub mod exists;
 mod joint_closure;
+mod joint_forces;
+mod joint_statics;
 mod load;
 mod offset;
 mod speed;
@@ -33,6 +35,7 @@ pub use cable_link::CableLink;
 pub use cable_shape::CableShape;
 pub use closure::{FacetPolys, WrenchClosure, WrenchFeasibility};
 pub use joint_closure::JointClosure;
+pub use joint_statics::JointStatics;
 pub use tension::{CableTension, TensionPolys, TensionSide};
 pub use speed::PlatformSpeed;
 pub use winch::{Rate, WinchLimit, WinchPolys};
@@ -402,7 +405,13 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
                 out.push(Box::new(CableLink { cable: i, link: l, name: link.name.clone(), body: link.body, radius: link.radius, clearance }));
             }
         }
-        out.push(Box::new(JointClosure { chain: Rc::new(chain.clone()), cable_links: robot.cables.iter().map(|c| c.link).collect() }));
+        let chain = Rc::new(chain.clone());
+        let cable_links: Vec<usize> = robot.cables.iter().map(|c| c.link).collect();
+        if chain.is_loaded() {
+            let bounds = robot.cables.iter().map(|c| c.tension).collect();
+            out.push(Box::new(JointStatics { chain: Rc::clone(&chain), cable_links: cable_links.clone(), bounds }));
+        }
+        out.push(Box::new(JointClosure { chain, cable_links }));
     }
     for (rate, limit) in [(Rate::Speed, robot.winch.speed), (Rate::Acceleration, robot.winch.acceleration)] {
         if let Some(limit) = limit {

@@ -374,6 +374,16 @@ pub(crate) fn closure_violation(rows: Vec<Vec<Bern>>, tol: f64, blocks: &[Vec<us
     lp.violation_of(Piece::new(rows, vec![Bern::constant(0.0); n], Bern::constant(1.0), vec![Bern::constant(1.0); m]), tol, blocks)
 }
 
+/// Where tensions strictly within `bounds` cannot balance the load along a motion (λ ∈ [0, 1]),
+/// for the system N φ = load with φ_k = f_k/√P_k: `rows` the n × m matrix N, `load` its n
+/// right-hand sides and `len2` the P_k (positive; the squared lengths times a common positive
+/// factor that N's rows carry too). By the same certificates as the platform's, for any n and m
+/// (a multi-link robot's joint-space statics).
+pub(crate) fn feasibility_violation(rows: Vec<Vec<Bern>>, load: Vec<Bern>, len2: Vec<Bern>, bounds: Vec<Bounds>, tol: f64) -> Partition {
+    let lp = WrenchFeasibilityLp { load: Rc::new(Load { wrench: crate::model::Wrench::zero(), dynamics: None, mobility: crate::model::Mobility::Spatial }), bounds, closure: false };
+    lp.violation_of(Piece::new(rows, load, Bern::constant(1.0), len2), tol, &[])
+}
+
 impl Condition for WrenchFeasibilityLp {
     fn kind(&self) -> Kind {
         Kind::Tension

@@ -196,6 +196,36 @@ pub struct Link {
     pub body: [Vector3<f64>; 2],
     /// … with this radius (≥ 0).
     pub radius: f64,
+    /// Its mass (kg; 0 for a massless link).
+    pub mass: f64,
+    /// Its centre of mass, in the link's frame.
+    pub com: Vector3<f64>,
+}
+
+/// A wrench applied to one link from outside (a payload, a tool's reaction): a force and a
+/// moment in the world frame, the force acting at a point of the link (format 4 `wrench` with
+/// `link`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LinkWrench {
+    /// The link it acts on.
+    pub link: usize,
+    /// Force [fx, fy, fz] and moment [mx, my, mz], world frame.
+    pub nominal: nalgebra::Vector6<f64>,
+    /// The force's point, offset from the link's origin …
+    pub point: Vector3<f64>,
+    /// … in the link's frame (`Platform`) or along the world's axes (`World`).
+    pub frame: super::PointFrame,
+}
+
+impl LinkWrench {
+    /// The force, the moment and the force's world point with the link at `(origin, rotation)`.
+    pub fn at(&self, (o, r): &Frame) -> (Vector3<f64>, Vector3<f64>, Vector3<f64>) {
+        let point = match self.frame {
+            super::PointFrame::Platform => o + r * self.point,
+            super::PointFrame::World => o + self.point,
+        };
+        (self.nominal.fixed_rows::<3>(0).into(), self.nominal.fixed_rows::<3>(3).into(), point)
+    }
 }
 
 /// The links of a multi-link robot, parents before children.
@@ -203,6 +233,10 @@ pub struct Link {
 pub struct Chain {
     /// The links.
     pub links: Vec<Link>,
+    /// Gravity (world frame, m/s²), acting on the links' masses.
+    pub gravity: Vector3<f64>,
+    /// A wrench applied to one link from outside, if any.
+    pub load: Option<LinkWrench>,
 }
 
 /// A link's pose in the world: origin and rotation.
@@ -224,8 +258,18 @@ impl Chain {
                 coords,
                 body: [Vector3::zeros(); 2],
                 radius: 0.0,
+                mass: 0.0,
+                com: Vector3::zeros(),
             }],
+            gravity: Vector3::zeros(),
+            load: None,
         }
+    }
+
+    /// Whether a load acts on the links — a weight (some link's mass under gravity) or a wrench
+    /// from outside: the cables then hold it, and the chain's static feasibility is a condition.
+    pub fn is_loaded(&self) -> bool {
+        self.gravity != Vector3::zeros() && self.links.iter().any(|l| l.mass > 0.0) || self.load.is_some()
     }
 
     /// Total number of coordinates.
@@ -432,7 +476,7 @@ mod tests {
 
     fn link(name: &str, parent: Option<usize>, location: [f64; 3], joint: Joint) -> Link {
         let coords = (0..joint.dof()).map(|k| JointCoord { name: format!("{name}{k}"), range: [-10.0, 10.0] }).collect();
-        Link { name: name.into(), parent, location: Vector3::from(location), joint, coords, body: [Vector3::zeros(); 2], radius: 0.0 }
+        Link { name: name.into(), parent, location: Vector3::from(location), joint, coords, body: [Vector3::zeros(); 2], radius: 0.0, mass: 0.0, com: Vector3::zeros() }
     }
 
     /// A tree with every joint type: free root, spherical and prismatic children, a revolute
@@ -448,6 +492,8 @@ mod tests {
                 link("l", Some(3), [0.0, 0.2, 0.1], Joint::Planar([Vector3::y(), Vector3::z(), Vector3::x()])),
                 link("e", None, [0.4, -0.2, 0.0], Joint::Spatial),
             ],
+            gravity: Vector3::zeros(),
+            load: None,
         }
     }
 

@@ -12,7 +12,7 @@ pub mod turn;
 pub mod via;
 pub mod wrench;
 
-pub use chain::{Chain, Joint, JointCoord, JointPath, Link};
+pub use chain::{Chain, Joint, JointCoord, JointPath, Link, LinkWrench};
 pub use dynamics::{Dynamics, Kinematics, Winch};
 pub use motion::Motion;
 pub use pose::{Coord, Pose};

@@ -79,6 +79,9 @@ pub struct RawWrench {
     /// Also require wrench closure (format 4; the condition is not implied by the wrench set).
     #[serde(default)]
     pub closure: Option<bool>,
+    /// The link of a multi-link robot the wrench acts on (format 4).
+    #[serde(default)]
+    pub link: Option<String>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -105,6 +108,9 @@ pub struct RawRobot {
     /// How the platform moves: "spatial", "point" or "planar" (format 5).
     #[serde(default)]
     pub mobility: Option<String>,
+    /// Gravity on a multi-link robot's links (format 4; a platform's is in `dynamics`).
+    #[serde(default)]
+    pub gravity: Option<Fixed<f64, 3>>,
 }
 
 /// The platform as a rigid body: mass, centre of mass and inertia about it (platform frame),
@@ -146,6 +152,12 @@ pub struct RawLink {
     pub joint: RawJoint,
     #[serde(default)]
     pub body: Option<RawBody>,
+    /// The link's mass (format 4).
+    #[serde(default)]
+    pub mass: Option<f64>,
+    /// Its centre of mass in its frame (format 4; default the joint's origin).
+    #[serde(default)]
+    pub com: Option<Fixed<f64, 3>>,
 }
 
 /// A joint: its type, axis (revolute and prismatic), coordinate names and ranges.

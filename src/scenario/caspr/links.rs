@@ -13,7 +13,10 @@
 //!   rotation about the third axis, theta); a name already taken gets the link number appended
 //!   (`theta3`). `q_min`/`q_max` become the coordinates' ranges, `q_initial`
 //!   the configuration `initial`. The link's body is the segment from its joint to its
-//!   `end_location`, radius 0 (CASPR has no collision geometry).
+//!   `end_location`, radius 0 (CASPR has no collision geometry); its `<mass>` and `com_location`
+//!   become the link's `mass` and `com` (format 4, with CASPR's gravity as `robot.gravity`; a
+//!   mass that is not positive is left out, with a note). The inertia is not read: statics
+//!   needs none.
 //! * cables: as for a platform, each straight from the base (link 0) to one link k, the
 //!   attachment in link k's frame (`attachment_reference="com"` adds k's `com_location`).
 //!
@@ -26,9 +29,9 @@ use std::collections::BTreeMap;
 
 use super::out::{OutBody, OutCable, OutCableBounds, OutJoint, OutLink, OutRobot, Properties};
 use super::xml::{cable_set, child, child_numbers, children, document, line, parse_xml, properties};
-use super::Import;
+use super::{Import, CASPR_GRAVITY};
 use crate::error::{Error, Result};
-use crate::scenario::FORMAT_3;
+use crate::scenario::{FORMAT_3, FORMAT_4};
 
 const BODIES: &str = "bodies";
 
@@ -60,6 +63,8 @@ struct LinkIn {
     initial: Vec<f64>,
     end: [f64; 3],
     com: [f64; 3],
+    /// Its `<mass>`, when given.
+    mass: Option<f64>,
 }
 
 /// The links of the bodies file, in order, each with its joint, coordinates and body.
@@ -138,11 +143,15 @@ fn links(xml: &str) -> Result<Vec<LinkIn>> {
         if parent >= num {
             return Err(Error::new(BODIES, format!("{at}: link {num}'s parent is link {parent}; a parent must come before its child (0 is the base)")));
         }
-        let (end, com) = match child(link, "physical") {
-            Some(ph) => (child_numbers::<3>(BODIES, ph, "end_location")?.unwrap_or([0.0; 3]), child_numbers::<3>(BODIES, ph, "com_location")?.unwrap_or([0.0; 3])),
-            None => ([0.0; 3], [0.0; 3]),
+        let (end, com, mass) = match child(link, "physical") {
+            Some(ph) => (
+                child_numbers::<3>(BODIES, ph, "end_location")?.unwrap_or([0.0; 3]),
+                child_numbers::<3>(BODIES, ph, "com_location")?.unwrap_or([0.0; 3]),
+                child_numbers::<1>(BODIES, ph, "mass")?.map(|[m]| m),
+            ),
+            None => ([0.0; 3], [0.0; 3], None),
         };
-        out.push(LinkIn { name, parent, location, kind, axes, coordinates, range: lo.into_iter().zip(hi).map(|(a, b)| [a, b]).collect(), initial, end, com });
+        out.push(LinkIn { name, parent, location, kind, axes, coordinates, range: lo.into_iter().zip(hi).map(|(a, b)| [a, b]).collect(), initial, end, com, mass });
     }
     Ok(out)
 }
@@ -221,12 +230,18 @@ pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str, set: Optio
     let Properties { diameter, tension, per_cable } = Properties::of(cables.iter().map(|c| c.props).collect(), &mut notes);
     let link_name = |num: usize| links.get(num.wrapping_sub(1)).map(|l| l.name.clone());
     let initial = links.iter().flat_map(|l| l.coordinates.iter().cloned().zip(l.initial.iter().copied())).collect();
+    for l in links.iter().filter(|l| l.mass.is_some_and(|m| !(m > 0.0))) {
+        notes.push(format!("link {:?}'s mass {} is not positive; imported massless", l.name, l.mass.unwrap_or(0.0)));
+    }
+    let mass = |l: &LinkIn| l.mass.filter(|m| *m > 0.0);
+    let weighed = links.iter().any(|l| mass(l).is_some());
     let out = Out {
-        format: FORMAT_3,
+        format: if weighed { FORMAT_4 } else { FORMAT_3 },
         name,
         robot: OutRobot {
             mobility: None,
             dynamics: None,
+            gravity: weighed.then_some(CASPR_GRAVITY),
             links: Some(links
                 .iter()
                 .map(|l| OutLink {
@@ -235,6 +250,8 @@ pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str, set: Optio
                     location: l.location,
                     joint: OutJoint::new(l.kind, &l.axes, l.coordinates.clone(), l.range.clone()),
                     body: OutBody { from: [0.0; 3], to: l.end },
+                    mass: mass(l),
+                    com: mass(l).map(|_| l.com),
                 })
                 .collect()),
             cables: cables

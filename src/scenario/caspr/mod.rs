@@ -13,7 +13,8 @@
 //!   (q = x y z) a point mass ("point") when its cables all end at one point of it. The reduced
 //!   joints `P_XY`/`P_XZ` (a point in a plane, 2 DoF) and `PLANAR_XZ`/`PLANAR_YZ` are refused
 //!   naming the joint (`platform.rs`). Multi-link robots (arms, trees, a lone link on another
-//!   joint) are read by `links.rs` into a `cablenav-scenario/3` scenario.
+//!   joint) are read by `links.rs` into a `cablenav-scenario/3` scenario (`/4` when its links
+//!   have masses).
 //! * cables: the `default_cable_set` (or the only set); every `cable_*` element with two
 //!   attachments, one on link 0 (the base anchor, world frame) and one on link 1 (the platform
 //!   anchor). With `attachment_reference="com"` the platform location is relative to the
@@ -47,6 +48,9 @@ mod xml;
 use super::Scenario;
 use crate::error::{Error, Result};
 use xml::parse_xml;
+
+/// CASPR's gravity: 9.81 m/s² along −z of the base frame.
+const CASPR_GRAVITY: [f64; 3] = [0.0, 0.0, -9.81];
 
 /// An imported model: the scenario JSON and what the user should know about the conversion.
 #[derive(Debug, Clone, PartialEq)]

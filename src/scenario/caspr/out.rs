@@ -61,6 +61,9 @@ pub(super) struct OutRobot {
     /// The platform's mass and inertia (format 4), platform robots only.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) dynamics: Option<OutDynamics>,
+    /// Gravity on the links (format 4), multi-link robots with masses only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) gravity: Option<[f64; 3]>,
 }
 
 /// `robot.dynamics` as written; a point mass has neither centre of mass nor inertia.
@@ -114,6 +117,10 @@ pub(super) struct OutLink {
     pub(super) location: [f64; 3],
     pub(super) joint: OutJoint,
     pub(super) body: OutBody,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) mass: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) com: Option<[f64; 3]>,
 }
 
 /// A link's joint as written.

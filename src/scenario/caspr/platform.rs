@@ -13,6 +13,7 @@ use std::collections::BTreeMap;
 
 use super::out::{OutCable, OutCableBounds, OutDynamics, OutRobot, Properties};
 use super::joint::place;
+use super::CASPR_GRAVITY;
 use super::trajectories::{splines, OutSpline};
 use super::xml::{cable_set, child, child_numbers, children, document, line, numbers_n, properties};
 use super::Import;
@@ -91,6 +92,7 @@ pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str, trajectori
         robot: OutRobot {
             mobility: (platform.mobility != Mobility::Spatial).then_some(platform.mobility.name()),
             dynamics,
+            gravity: None,
             links: None,
             cables: cables
                 .iter()
@@ -126,8 +128,6 @@ struct OutScenario<'a> {
     trajectories: Vec<OutTrajectory>,
 }
 
-/// CASPR's gravity: 9.81 m/s² along −z of the base frame.
-const CASPR_GRAVITY: [f64; 3] = [0.0, 0.0, -9.81];
 
 /// A link's `<physical>` data as read: mass, centre of mass (link frame), inertia and the point it
 /// is given about.

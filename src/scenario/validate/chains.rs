@@ -6,16 +6,16 @@
 use nalgebra::Vector3;
 use std::f64::consts::PI;
 
-use super::{vec3, Fixed, MAX_DOF, MAX_LINKS};
+use super::{needs_format, positive, vec3, Fixed, MAX_DOF, MAX_LINKS, STANDARD_GRAVITY};
 use crate::error::{finite, Error, Result};
-use crate::model::{Chain, Clearance, Joint, JointCoord, JointPath, Link, Robot};
+use crate::model::{Chain, Clearance, Joint, JointCoord, JointPath, Link, LinkWrench, Robot};
 use crate::query::cables::{attached_inside, cables_at_config};
-use crate::scenario::json::{Ordered, RawCable, RawLink, RawScenario, RawTrajectory, FORMAT_3};
+use crate::scenario::json::{Ordered, RawCable, RawLink, RawScenario, RawTrajectory, RawWrench, FORMAT_3};
 
 /// The multi-link sections (format 3): the chain and each cable's link go into `robot`; returns
 /// the named configurations. A platform robot must not use them, and a multi-link robot is
-/// configured by configurations only (no poses or wrench set; its trajectories pass through
-/// configurations and its queries join two, `queries.rs`).
+/// configured by configurations only (no poses; its trajectories pass through configurations and
+/// its queries join two, `queries.rs`); its `wrench` acts on one link.
 pub(super) fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clearance, warnings: &mut Vec<String>) -> Result<Vec<(String, Vec<f64>)>> {
     let Some(links) = &raw.robot.links else {
         if let Some(k) = raw.trajectories.iter().position(|t| t.through.is_some()) {
@@ -27,25 +27,37 @@ pub(super) fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clear
         if !raw.configurations.0.is_empty() {
             return Err(Error::new("configurations", "only multi-link robots (robot.links) have configurations; a platform robot has poses"));
         }
+        if raw.robot.gravity.is_some() {
+            return Err(Error::new("robot.gravity", "only a multi-link robot's gravity is given here; a platform's is `robot.dynamics.gravity`"));
+        }
+        if raw.wrench.as_ref().is_some_and(|w| w.link.is_some()) {
+            return Err(Error::new("wrench.link", "only a multi-link robot's wrench names the link it acts on; a platform's acts on the platform"));
+        }
         return Ok(Vec::new());
     };
     if crate::scenario::json::version(&raw.format).unwrap_or(1) < 3 {
         return Err(Error::new("robot.links", format!("multi-link robots need \"format\": \"{}\"", FORMAT_3)));
     }
-    let chain = chain(links)?;
+    let version = crate::scenario::json::version(&raw.format).unwrap_or(1);
+    let mut chain = chain(links, version)?;
+    chain.gravity = match &raw.robot.gravity {
+        Some(g) => {
+            needs_format(version, 4, "robot.gravity")?;
+            vec3("robot.gravity", g)?
+        }
+        None => Vector3::from(STANDARD_GRAVITY),
+    };
     for (cable, link) in robot.cables.iter_mut().zip(cable_links(&raw.robot.cables, &chain)?) {
         cable.link = link;
     }
-    for (field, given) in [("poses", !raw.poses.0.is_empty()), ("wrench", raw.wrench.is_some())] {
-        if given {
-            return Err(Error::new(
-                field,
-                "not supported for multi-link robots yet: they are configured by named joint configurations \
-                 (`configurations`, paths through them in `trajectories`, queries between them in `queries`), \
-                 and their wrench condition is joint-space wrench closure, always checked",
-            ));
-        }
+    if !raw.poses.0.is_empty() {
+        return Err(Error::new(
+            "poses",
+            "not supported for multi-link robots yet: they are configured by named joint configurations \
+             (`configurations`, paths through them in `trajectories`, queries between them in `queries`)",
+        ));
     }
+    chain.load = raw.wrench.as_ref().map(|w| link_wrench(w, version, &chain)).transpose()?;
     for (i, cable) in robot.cables.iter().enumerate() {
         let link = &chain.links[cable.link];
         let zone = link.radius + clearance.cable_link;
@@ -64,7 +76,32 @@ pub(super) fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clear
 }
 
 /// The links of `raw` as a chain, parents before children (file order otherwise).
-fn chain(raw: &[RawLink]) -> Result<Chain> {
+/// A multi-link robot's `wrench` (format 4): the nominal wrench alone, applied to the link
+/// `link` names at `point` (in that link's frame, or along the world's axes with `point_frame`
+/// "world"). Joint-space closure is always checked, and a set around the nominal wrench is not
+/// supported for a chain yet.
+fn link_wrench(raw: &RawWrench, version: u8, chain: &Chain) -> Result<LinkWrench> {
+    needs_format(version, 4, "wrench")?;
+    let Some(name) = &raw.link else {
+        return Err(Error::new("wrench.link", "a multi-link robot's wrench names the link it acts on"));
+    };
+    let link = chain.links.iter().position(|l| &l.name == name).ok_or_else(|| {
+        let known: Vec<&str> = chain.links.iter().map(|l| l.name.as_str()).collect();
+        Error::new("wrench.link", format!("no link named \"{name}\"; known links: {}", known.join(", ")))
+    })?;
+    for (field, given) in [("wrench.ellipsoid", raw.ellipsoid.is_some()), ("wrench.radius", raw.radius.is_some())] {
+        if given {
+            return Err(Error::new(field, "a set of wrenches on a multi-link robot's link is not supported yet: give the nominal wrench alone"));
+        }
+    }
+    if raw.closure.is_some() {
+        return Err(Error::new("wrench.closure", "a multi-link robot's joint-space wrench closure is always checked"));
+    }
+    let w = super::wrench::wrench(raw, version)?;
+    Ok(LinkWrench { link, nominal: w.nominal, point: w.point, frame: w.frame })
+}
+
+fn chain(raw: &[RawLink], version: u8) -> Result<Chain> {
     if raw.is_empty() {
         return Err(Error::new("robot.links", "a multi-link robot needs at least one link"));
     }
@@ -132,10 +169,22 @@ fn chain(raw: &[RawLink]) -> Result<Chain> {
                 ([vec3(&format!("{path}.body.from"), &b.from)?, vec3(&format!("{path}.body.to"), &b.to)?], r)
             }
         };
+        let mass = match l.mass {
+            Some(m) => {
+                needs_format(version, 4, &format!("{path}.mass"))?;
+                positive(&format!("{path}.mass"), m)?
+            }
+            None => 0.0,
+        };
+        let com = match &l.com {
+            Some(c) if l.mass.is_none() => return Err(Error::new(format!("{path}.com"), format!("a centre of mass {:?} without a mass: give the link's `mass` too", c.0))),
+            Some(c) => vec3(&format!("{path}.com"), c)?,
+            None => Vector3::zeros(),
+        };
         let parent = parent[k].map(|p| order.iter().position(|&o| o == p).unwrap_or(0));
-        links.push(Link { name: l.name.clone(), parent, location, joint, coords, body, radius });
+        links.push(Link { name: l.name.clone(), parent, location, joint, coords, body, radius, mass, com });
     }
-    let chain = Chain { links };
+    let chain = Chain { links, gravity: Vector3::zeros(), load: None };
     if chain.dof() > MAX_DOF {
         return Err(Error::new("robot.links", format!("at most {MAX_DOF} joint coordinates are supported, got {}", chain.dof())));
     }

@@ -195,7 +195,7 @@ pub(super) fn dynamics(raw: &RawScenario, version: u8, mobility: Mobility) -> Re
     let Some(d) = &raw.robot.dynamics else { return Ok(None) };
     needs_format(version, 4, "robot.dynamics")?;
     if raw.robot.links.is_some() {
-        return Err(Error::new("robot.dynamics", "not supported for multi-link robots yet: the platform's dynamics apply to a 6-DoF platform"));
+        return Err(Error::new("robot.dynamics", "a multi-link robot has no platform: give each link's `mass` and `com` (robot.links[k]) and, if not standard, `robot.gravity`"));
     }
     let mass = positive("robot.dynamics.mass", d.mass)?;
     let com = match &d.com {

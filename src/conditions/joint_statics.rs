@@ -1,0 +1,83 @@
+//! Static feasibility of a multi-link robot in joint space (thesis §3.5.2's static workspace):
+//! tensions strictly within their bounds hold the loads on the links, i.e. J f = g with
+//! f_min < f < f_max, J's column k the generalised forces of cable k's unit pull and g those of
+//! the loads — the weights m·g at the centres of mass and the wrench applied to a link from
+//! outside (`wrench` with `link`) — ([`super::joint_forces`]; a cable pulls its link towards the
+//! base anchor, so −J f + g = 0 at the passive joints).
+//!
+//! Per configuration: the largest-margin linear program ([`static_margin_of`]), feasible iff the
+//! margin is positive. Along a motion: with s = ŝ/w the cable vector, row r of J's numerators N
+//! is over w^(p_r) and divided by |s| = √P/w (P = ŝ·ŝ), the loads' row over w^(p_r − 1), so
+//! after multiplying row r by w^(p_r − 1) the system is exactly N φ = G with φ_k = f_k/√P_k —
+//! the form the linear programs' certificates of [`super::wrench_lp`] decide for any number of
+//! joints and cables (the 1/√P_k enclosed by Taylor polynomials with error bounds). Rows that
+//! neither a cable nor a load reaches (a massless link no cable pulls) read 0 = 0 and are left
+//! out; a row a load reaches but no cable fails wherever the load's share there is not zero.
+
+use std::rc::Rc;
+
+use super::joint_forces::{cable_matrix, cable_numerators, load_numerators, load_vector};
+use super::wrench_lp::feasibility_violation;
+use super::{Condition, Kind, PoseCheck, Sweep};
+use crate::model::{Bounds, Chain};
+use crate::poly::{Bern, Partition};
+use crate::query::cables::PoseCables;
+use crate::query::wrench::static_margin_of;
+use nalgebra::{DMatrix, DVector};
+
+/// Joint-space static feasibility of a multi-link robot under its links' weights and the wrench
+/// applied to a link.
+#[derive(Debug, Clone)]
+pub struct JointStatics {
+    /// The links, with their masses, gravity and the wrench applied to a link.
+    pub chain: Rc<Chain>,
+    /// The link each cable pulls.
+    pub cable_links: Vec<usize>,
+    /// Each cable's tension bounds.
+    pub bounds: Vec<Bounds>,
+}
+
+/// An exactly zero polynomial (no force reaches the row).
+fn is_zero(p: &Bern) -> bool {
+    p.err == 0.0 && p.c.iter().all(|c| *c == 0.0)
+}
+
+impl JointStatics {
+    /// The structure matrix (columns: unit pulls) and the loads' generalised forces at one
+    /// configuration, without the rows nothing reaches.
+    pub fn system(&self, at: &PoseCables) -> (DMatrix<f64>, DVector<f64>) {
+        let mut j = cable_matrix(&self.chain, &self.cable_links, at);
+        for (mut column, (a, x)) in j.column_iter_mut().zip(at.cables.iter()) {
+            column /= (x - a).norm();
+        }
+        let g = load_vector(&self.chain, at);
+        let keep: Vec<usize> = (0..j.nrows()).filter(|&r| g[r] != 0.0 || j.row(r).iter().any(|v| *v != 0.0)).collect();
+        (j.select_rows(&keep), g.select_rows(&keep))
+    }
+}
+
+impl Condition for JointStatics {
+    fn kind(&self) -> Kind {
+        Kind::Tension
+    }
+
+    fn label(&self) -> String {
+        "static feasibility".to_string()
+    }
+
+    fn violation(&self, sweep: &mut Sweep) -> Partition {
+        let rows = cable_numerators(&self.chain, &self.cable_links, sweep);
+        let load = load_numerators(&self.chain, sweep);
+        let len2 = sweep.cables.iter().map(|c| c.s[0].p.mul(&c.s[0].p).add(&c.s[1].p.mul(&c.s[1].p)).add(&c.s[2].p.mul(&c.s[2].p))).collect();
+        let (rows, load): (Vec<Vec<Bern>>, Vec<Bern>) = rows.into_iter().zip(load).filter(|(row, g)| !(is_zero(g) && row.iter().all(is_zero))).unzip();
+        feasibility_violation(rows, load, len2, self.bounds.clone(), sweep.tol)
+    }
+
+    fn check(&self, at: &PoseCables) -> PoseCheck {
+        let (j, g) = self.system(at);
+        match static_margin_of(&j, &g, &self.bounds) {
+            Some((margin, _)) => PoseCheck { violated: !(margin > 0.0), distance: Some(margin) },
+            None => PoseCheck { violated: true, distance: None },
+        }
+    }
+}

@@ -1,0 +1,96 @@
+//! Random multi-link robots for the tests: chains of random links, joints and cables as scenario
+//! JSON, with a random configuration. Shared by `tests/chain.rs` and `tests/joint_statics.rs`,
+//! which include this file by path.
+#![allow(dead_code)]
+
+use super::support::reference::Rng;
+use serde_json::{json, Value};
+use std::f64::consts::PI;
+
+/// A random vector in the cube [−r, r]³.
+pub fn v3(rng: &mut Rng, r: f64) -> [f64; 3] {
+    [rng.range(-r, r), rng.range(-r, r), rng.range(-r, r)]
+}
+
+/// A random chain of 1–3 links (spherical, revolute, prismatic, free, universal, planar or spatial
+/// joints with random axes, each link's parent
+/// any earlier one), 3–7 cables from a ring of base anchors to random links, random clearances, an
+/// obstacle sometimes; and a random configuration `q`.
+pub fn random_chain(rng: &mut Rng) -> (Value, Vec<f64>) {
+    let n = rng.int(1, 3);
+    random_chain_of(rng, n, &["spherical", "revolute", "prismatic", "free", "universal", "planar", "spatial"], &|rng, _| rng.int(3, 7))
+}
+
+/// A random chain of `n` links with joints drawn from `kinds`, as many cables as `cables` says
+/// for its degrees of freedom, and a random configuration ([`random_chain`]).
+pub fn random_chain_of(rng: &mut Rng, n: usize, kinds: &[&str], cables: &dyn Fn(&mut Rng, usize) -> usize) -> (Value, Vec<f64>) {
+    let mut links = Vec::new();
+    let mut q = Vec::new();
+    for k in 0..n {
+        let kind = kinds[rng.int(0, kinds.len() - 1)];
+        let names: Vec<String> = match kind {
+            "spherical" => ["a", "b", "c"].iter().map(|x| format!("{x}{k}")).collect(),
+            "free" => ["x", "y", "z", "phi", "theta", "sigma"].iter().map(|x| format!("{x}{k}")).collect(),
+            "spatial" => ["x", "y", "z", "a", "b", "c"].iter().map(|x| format!("{x}{k}")).collect(),
+            "universal" => ["u", "v"].iter().map(|x| format!("{x}{k}")).collect(),
+            "planar" => ["u", "v", "w"].iter().map(|x| format!("{x}{k}")).collect(),
+            _ => vec![format!("q{k}x")],
+        };
+        for i in 0..names.len() {
+            let angle = match kind {
+                "spherical" | "revolute" | "universal" => true,
+                "free" | "spatial" => i >= 3,
+                "planar" => i == 2,
+                _ => false,
+            };
+            q.push(if angle { rng.range(-1.2, 1.2) } else { rng.range(-0.3, 0.3) });
+        }
+        let mut joint = json!({"type": kind, "coordinates": names});
+        if kind == "revolute" || kind == "prismatic" {
+            joint["axis"] = json!(v3(rng, 1.0));
+        }
+        if kind == "universal" {
+            joint["axes"] = json!([v3(rng, 1.0), v3(rng, 1.0)]);
+        }
+        if kind == "planar" {
+            joint["axes"] = json!([v3(rng, 1.0), v3(rng, 1.0), v3(rng, 1.0)]);
+        }
+        let mut link = json!({
+            "name": format!("L{k}"),
+            "location": if k == 0 { [0.0, 0.0, rng.range(0.0, 0.5)] } else { [rng.range(-0.2, 0.2), rng.range(-0.2, 0.2), rng.range(0.3, 0.8)] },
+            "joint": joint,
+            "body": {"from": [0.0, 0.0, 0.0], "to": [rng.range(-0.1, 0.1), rng.range(-0.1, 0.1), rng.range(0.3, 0.8)], "radius": rng.range(0.0, 0.08)},
+        });
+        if k > 0 {
+            link["parent"] = json!(format!("L{}", rng.int(0, k - 1)));
+        }
+        links.push(link);
+    }
+    let m = cables(rng, q.len());
+    let cables: Vec<Value> = (0..m)
+        .map(|i| {
+            let t = 2.0 * PI * (i as f64 + rng.range(-0.3, 0.3)) / m as f64;
+            let r = rng.range(0.8, 1.5);
+            json!({
+                "base": [r * t.cos(), r * t.sin(), rng.range(-0.2, 1.5)],
+                "link": format!("L{}", rng.int(0, n - 1)),
+                "platform": [rng.range(-0.3, 0.3), rng.range(-0.3, 0.3), rng.range(0.0, 0.8)],
+            })
+        })
+        .collect();
+    let mut scenario = json!({
+        "format": "cablenav-scenario/3",
+        "name": "random chain",
+        "robot": {"links": links, "cables": cables, "length": {"min": rng.range(0.0, 0.5), "max": rng.range(1.5, 3.0)}},
+        "clearance": {"cable_cable": rng.range(0.0, 0.1), "cable_link": rng.range(0.0, 0.1), "cable_obstacle": rng.range(0.0, 0.1)},
+    });
+    if rng.chance(0.4) {
+        scenario["obstacles"] = json!([{"type": "sphere", "center": [rng.range(-0.8, 0.8), rng.range(-0.8, 0.8), rng.range(0.0, 1.0)], "radius": rng.range(0.05, 0.3)}]);
+    }
+    (scenario, q)
+}
+
+/// Whether `x` lies in one of `intervals`, at least `margin` inside.
+pub fn inside(intervals: &[[f64; 2]], x: f64, margin: f64) -> bool {
+    intervals.iter().any(|iv| x > iv[0] + margin && x < iv[1] - margin)
+}
