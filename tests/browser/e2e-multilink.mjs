@@ -18,7 +18,9 @@
 //   planner); a query added to the arm (as tests/joint_plan.rs adds it) is planned on the page
 //   with the lattice planner (selected for a multi-link robot, the atlas planner disabled) in a
 //   worker, its path through configurations added to the scenario,
-//   and the strip shows it as `cablenav verify` does on what `cablenav plan --out` wrote.
+//   and the strip shows it as `cablenav verify` does on what `cablenav plan --out` wrote;
+// - the links' masses typed in the editor raise the file to format 4, and the strip gains the
+//   static feasibility boundary `cablenav verify` finds on the page's scenario.
 // Screenshots in tests/browser/artifacts/. Ends with "N passed, M failed"; exits 1 on failure.
 
 import { readFileSync, writeFileSync } from 'node:fs';
@@ -186,6 +188,46 @@ await test('a query of the arm planned with the lattice planner in a worker: the
   }
   if (JSON.stringify(got) !== JSON.stringify(want)) throw new Error(`strip ${JSON.stringify(got)}\n  CLI ${JSON.stringify(want)}`);
   return `${status.slice(0, 80)}…; strip ${JSON.stringify(got)} as the CLI`;
+});
+
+await test('the links\' masses typed in the editor: the format becomes 4, and the strip holds the arm\'s weight as `cablenav verify` does', async () => {
+  const text = readFileSync(join(root, ARM), 'utf8');
+  await page.setInputFiles('[data-testid="import-json"]', { name: 'arm.json', mimeType: 'application/json', buffer: Buffer.from(text) });
+  await page.waitForSelector('svg[data-testid="strip"]', { timeout: TIMEOUT });
+  const source = () => page.$eval('textarea[data-testid="source"]', (t) => t.value);
+  const details = page.locator('[data-testid="scenario-editor"] details').filter({ has: page.locator('summary', { hasText: 'Links and joints' }) }).first();
+  if (!(await details.evaluate((d) => d.open))) await details.locator('summary').first().click();
+  for (const [k, mass] of [[0, '2'], [1, '1']]) {
+    const input = page.locator(`[data-field="robot.links[${k}].mass"]`);
+    await input.click();
+    await input.press('Control+a');
+    await input.pressSequentially(mass);
+  }
+  await page.waitForFunction(() => {
+    const d = JSON.parse(document.querySelector('textarea[data-testid="source"]').value);
+    return d.format === 'cablenav-scenario/4' && d.robot.links[0].mass === 2 && d.robot.links[1].mass === 1;
+  }, null, { timeout: TIMEOUT });
+  const file = join(scratch, 'arm-weighed.json');
+  writeFileSync(file, await source());
+  const cli = cliVerify(root, file, 'across the gap');
+  // 2 kg and 1 kg are more than the cables hold near β = 0.4 (the third boundary, t ≈ 0.80)
+  if (!cli.boundaries.some((b) => b.constraint === 'static feasibility')) throw new Error(`the CLI names no static feasibility boundary: ${JSON.stringify(cli.boundaries)}`);
+  const want = cliSections(cli);
+  let got = [];
+  for (let i = 0; i < 100; i++) {
+    got = await stripSections(page);
+    if (JSON.stringify(got) === JSON.stringify(want)) break;
+    await page.waitForTimeout(100);
+  }
+  if (JSON.stringify(got) !== JSON.stringify(want)) throw new Error(`strip ${JSON.stringify(got)}\n  CLI ${JSON.stringify(want)}`);
+  // with masses, the tension bounds the condition reads are offered in the robot's editor
+  const robot = page.locator('[data-testid="scenario-editor"] details').filter({ has: page.locator('summary', { hasText: 'Robot' }) }).first();
+  if (!(await robot.evaluate((d) => d.open))) await robot.locator('summary').first().click();
+  await page.waitForSelector('legend:has-text("Cable tension bounds")', { timeout: TIMEOUT });
+  const ticks = await page.$$eval('svg[data-testid="strip"] [data-testid="boundary"] title', (ts) => ts.map((t) => t.textContent));
+  if (!ticks.some((t) => t.includes('static feasibility'))) throw new Error(`boundary tooltips ${JSON.stringify(ticks)}`);
+  await page.screenshot({ path: join(artifacts, 'multilink-masses.png'), fullPage: true });
+  return `strip ${JSON.stringify(got.map((s) => s.kind))} as the CLI; boundaries ${cli.boundaries.map((b) => `${b.constraint} at ${b.t.toFixed(4)}`).join(', ')}`;
 });
 
 await test('no console errors, page errors or failed requests', async () => {

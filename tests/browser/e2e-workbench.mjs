@@ -131,7 +131,7 @@ for (const [w, h] of [[1366, 768], [390, 844]]) {
     for (const d of await page.$$('[data-testid="scenario-editor"] details:not([open]) > summary')) await d.click();
     const hint = await page.textContent('[data-testid="robot-hint"]');
     if (/6 to 64|wrench ellipsoid/.test(hint)) throw new Error(`arm: the robot hint is a platform's: ${hint}`);
-    if (await page.$('legend:has-text("Cable tension bounds")')) throw new Error('arm: tension bounds offered, which no condition of a chain reads');
+    if (await page.$('legend:has-text("Cable tension bounds")')) throw new Error('arm: tension bounds offered, which no condition of a massless chain reads');
     await checkCableTable(page, `arm ${w}×${h}`, false);
     problems.assertNone();
     await context.close();

@@ -28,6 +28,12 @@ pub fn is_multi_link(doc: &Value) -> bool {
     matches!(get(doc, &links()), Some(Value::Array(_)))
 }
 
+/// Whether some link of a multi-link robot has a `mass`: its cables then hold the weights, and
+/// their tension bounds apply (static feasibility).
+pub fn has_link_mass(doc: &Value) -> bool {
+    matches!(get(doc, &links()), Some(Value::Array(ls)) if ls.iter().any(|l| l.get("mass").is_some()))
+}
+
 fn links() -> Path {
     Path::of(&["robot", "links"])
 }
@@ -324,12 +330,24 @@ mod tests {
     fn the_arm_is_read_as_links_coordinates_and_configurations() {
         let d = arm();
         assert!(is_multi_link(&d) && !is_multi_link(&test_doc()));
+        assert!(!has_link_mass(&d) && !has_link_mass(&test_doc()));
         assert_eq!(link_names(&d), ["Upper Arm", "Lower Arm"]);
         assert_eq!(all_coordinates(&d).iter().map(|c| c.0.as_str()).collect::<Vec<_>>(), ["alpha", "beta", "gamma", "theta"]);
         assert_eq!(configuration_names(&d), ["above", "below", "fig312", "initial"]);
         assert_eq!(unit("free", 1), "m");
         assert_eq!(unit("free", 4), "rad");
         assert_eq!(unit("prismatic", 0), "m");
+    }
+
+    #[test]
+    fn a_link_mass_raises_the_format_and_the_arm_then_holds_its_weight() {
+        let mut d = arm();
+        set_timed_number(&mut d, &links().i(1).k("mass"), Some(1.0));
+        assert!(has_link_mass(&d));
+        assert_eq!(d["format"], FORMAT_4);
+        let s = valid(&d);
+        assert_eq!(s.robot.chain.as_ref().unwrap().links[1].mass, 1.0);
+        assert!(cablenav::conditions::for_scenario(&s).iter().any(|c| c.label() == "static feasibility"));
     }
 
     #[test]

@@ -1,6 +1,6 @@
 //! A multi-link robot's links (scenario format 3): per link its name, parent, joint (type, axis,
-//! coordinates and their ranges), location and collision body; add and remove links. The edits
-//! themselves are `edit_logic::links`.
+//! coordinates and their ranges), location, mass and centre of mass (format 4) and collision body;
+//! add and remove links. The edits themselves are `edit_logic::links`.
 
 use leptos::prelude::*;
 use serde_json::{json, Value};
@@ -107,6 +107,11 @@ fn LinkItem(ed: Ed, i: usize) -> impl IntoView {
             {axis}
             <Vec3Field ed path=path.k("location") label="Joint location (parent's frame)" unit="m" />
             <fieldset class="coordinates"><legend>"Joint coordinates and their ranges"</legend>{coordinate_rows}</fieldset>
+            <fieldset class="mass">
+                <legend>"Mass: its weight the cables must hold (static feasibility)"</legend>
+                <NumField ed path=path.k("mass") label="Mass (empty: massless)" unit="kg" optional=true timed=true />
+                <Vec3Field ed path=path.k("com") label="Centre of mass (link frame)" unit="m" />
+            </fieldset>
             <fieldset class="body">
                 <legend>"Collision body: a segment with a radius (link frame)"</legend>
                 <Vec3Field ed path=body.k("from") label="from" unit="m" />

@@ -171,7 +171,8 @@ fn PlatformParts(ed: Ed) -> impl IntoView {
 }
 
 /// A multi-link robot's parts (format 3): links, obstacles, configurations, paths. It has no
-/// wrench set or poses (its wrench condition is joint-space wrench closure, always checked).
+/// wrench set or poses (its wrench conditions are joint-space wrench closure, always checked, and
+/// static feasibility once a link has a mass).
 #[component]
 fn MultiLinkParts(ed: Ed) -> impl IntoView {
     view! {
@@ -192,7 +193,8 @@ fn MultiLinkParts(ed: Ed) -> impl IntoView {
             <configs::PathsEditor ed />
         </details>
         <p class="hint" data-testid="multilink-note">
-            "A multi-link robot has no wrench set or poses: its wrench condition is joint-space wrench closure,              always checked; it is posed by configurations (docs/multilink.md)."
+            "A multi-link robot has no wrench set or poses: its wrench conditions are joint-space wrench closure, \
+             always checked, and static feasibility once a link has a mass; it is posed by configurations (docs/multilink.md)."
         </p>
     }
 }

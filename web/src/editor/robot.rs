@@ -17,6 +17,8 @@ pub fn RobotEditor(ed: Ed) -> impl IntoView {
         move || ed.error_at(&cables, false)
     });
     let chain = Memo::new(move |_| ed.read(el::is_multi_link).unwrap_or(false));
+    // a multi-link robot's tensions matter once a link has a mass (static feasibility)
+    let weighed = Memo::new(move |_| ed.read(el::has_link_mass).unwrap_or(false));
     view! {
         <TextField ed path=Path::of(&["name"]) label="Scenario name" />
         // the table scrolls sideways inside the side panel when it is wider (a multi-link robot's
@@ -58,15 +60,16 @@ pub fn RobotEditor(ed: Ed) -> impl IntoView {
         </button>
         <p class="hint" data-testid="robot-hint">{move || if chain.get() {
             "A multi-link robot's cables pull on its links; it is checked for cable–cable, cable–link and cable–obstacle \
-             interference, cable lengths and joint-space wrench closure (docs/multilink.md). Tensions and a wrench set do \
+             interference, cable lengths and joint-space wrench closure, and, once a link has a mass, for static \
+             feasibility: tensions within their bounds holding the links' weights (docs/multilink.md). A wrench set does \
              not apply to it yet."
         } else {
             "A 6-DoF robot needs 6 to 64 cables. A wrench ellipsoid or closure is tested for up to 10; a single wrench and the platform's mass for any number."
         }}</p>
         <div class="bounds">
             <BoundsGroup ed what="length" title="Cable length bounds" unit="m" />
-            // no condition of a multi-link robot reads tension bounds yet: not offered for one
-            {move || (!chain.get()).then(|| view! { <BoundsGroup ed what="tension" title="Cable tension bounds" unit="N" /> })}
+            // a multi-link robot's tension bounds are read once a link has a mass: offered then
+            {move || (!chain.get() || weighed.get()).then(|| view! { <BoundsGroup ed what="tension" title="Cable tension bounds" unit="N" /> })}
             <NumField ed path=Path::of(&["robot", "diameter"]) label="Cable diameter" unit="m" optional=true />
             <NumField ed path=Path::of(&["clearance", "cable_cable"]) label="Clearance cable–cable" unit="m" optional=true />
             <NumField ed path=Path::of(&["clearance", "cable_obstacle"]) label="Clearance cable–obstacle" unit="m" optional=true />
