@@ -70,5 +70,14 @@ END {
   rows("mcdr-fig312/rays-10 mcdr-fig312/points-10 mcdr-fig312/rays-40 mcdr-fig312/points-40 mcdr-path/exact mcdr-path/pointwise-0.01 mcdr-path/pointwise-0.001")
   print ""
   printf "Exact path verification against point-wise sampling in the same run: Δt = 0.01 %s, Δt = 0.001 %s (point-wise / exact, native).\n", r(med["native", "lattice/mcdr-path/pointwise-0.01"], med["native", "lattice/mcdr-path/exact"]), r(med["native", "lattice/mcdr-path/pointwise-0.001"], med["native", "lattice/mcdr-path/exact"])
+  print ""
+  print "The same path with the links' weights held (CASPR's masses of BMArm_X4_2, 0.871 kg and 0.3334 kg,"
+  print "and its gravity; static feasibility by linear programs, docs/multilink.md):"
+  print ""
+  print "| case | native median | wasm median | result |"
+  print "|---|---:|---:|---|"
+  rows("mcdr-weighed/exact mcdr-weighed/pointwise-0.01 mcdr-weighed/pointwise-0.001")
+  print ""
+  printf "Point-wise / exact with the weights, native: Δt = 0.01 %s, Δt = 0.001 %s.\n", r(med["native", "lattice/mcdr-weighed/pointwise-0.01"], med["native", "lattice/mcdr-weighed/exact"]), r(med["native", "lattice/mcdr-weighed/pointwise-0.001"], med["native", "lattice/mcdr-weighed/exact"])
   print "<!-- lattice:end -->"
 }

@@ -17,6 +17,22 @@ const CDPR7_TREE: &str = include_str!("../../static/scenarios/cdpr7-tree.json");
 const CDPR7_BOX: &str = include_str!("../../static/scenarios/cdpr7-box.json");
 const ROBOCRANE: &str = include_str!("../../static/scenarios/robocrane.json");
 const ARM: &str = include_str!("../../static/multilink/bmarm-x4-2.json");
+const X4_BODIES: &str = include_str!("../../../shared/models/caspr/BMArm_X4_2/BMArm_X4_2_bodies.xml");
+const X4_CABLES: &str = include_str!("../../../shared/models/caspr/BMArm_X4_2/BMArm_X4_2_cables.xml");
+
+/// The arm of `ARM` with its links' masses and centres of mass as CASPR's BMArm_X4_2 has them
+/// (format 4, CASPR's gravity): static feasibility is checked too.
+fn weighed_arm() -> Scenario {
+    let mut arm: serde_json::Value = serde_json::from_str(ARM).expect("arm JSON");
+    let caspr: serde_json::Value = serde_json::from_str(&cablenav::scenario::caspr::to_json("arm", X4_BODIES, X4_CABLES).expect("imports").json).expect("JSON");
+    arm["format"] = "cablenav-scenario/4".into();
+    arm["robot"]["gravity"] = caspr["robot"]["gravity"].clone();
+    for (link, theirs) in arm["robot"]["links"].as_array_mut().expect("links").iter_mut().zip(caspr["robot"]["links"].as_array().expect("links")) {
+        link["mass"] = theirs["mass"].clone();
+        link["com"] = theirs["com"].clone();
+    }
+    Scenario::from_json(&arm.to_string()).expect("the weighed arm parses")
+}
 
 /// Timed runs per case (after one untimed run).
 const RUNS: usize = 3;
@@ -92,6 +108,19 @@ pub fn run_lattice(platform: &str, filter: &str, now: &dyn Fn() -> f64, out: &mu
     for dt in [0.01, 0.001] {
         time(platform, now, filter, &format!("lattice/mcdr-path/pointwise-{dt}"), &mut || {
             let r = verify_pointwise_along(&arm, path, dt).expect("sampled");
+            format!("infeasible={:?}", r.infeasible).replace(' ', "")
+        }, out);
+    }
+    // the same path with the links' weights held (static feasibility, by linear programs)
+    let weighed = weighed_arm();
+    let path = along(&weighed, Some("across the gap")).expect("path");
+    time(platform, now, filter, "lattice/mcdr-weighed/exact", &mut || {
+        let r = verify_along(&weighed, path).expect("verified");
+        format!("infeasible={:?};uncertain={:?}", r.infeasible, r.uncertain).replace(' ', "")
+    }, out);
+    for dt in [0.01, 0.001] {
+        time(platform, now, filter, &format!("lattice/mcdr-weighed/pointwise-{dt}"), &mut || {
+            let r = verify_pointwise_along(&weighed, path, dt).expect("sampled");
             format!("infeasible={:?}", r.infeasible).replace(' ', "")
         }, out);
     }

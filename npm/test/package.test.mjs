@@ -187,6 +187,23 @@ test('multi-link robots: joint coordinates by name, equal to the CLI', () => {
   assert.throws(() => cablenav.plan(arm, 'any'), (e) => e.field === 'plan' && /the "lattice" planner/.test(e.message) && !/--planner/.test(e.message));
 });
 
+test('an arm imported with its links\' masses holds its weight as the CLI says', () => {
+  const model = join(root, '..', 'shared', 'models', 'caspr', 'BMArm');
+  const read = (f) => readFileSync(join(model, `BMArm_${f}.xml`), 'utf8');
+  const { scenario } = cablenav.importCaspr('BMArm', read('bodies'), read('cables'));
+  assert.equal(scenario.format, 'cablenav-scenario/4');
+  assert.deepEqual(scenario.robot.links.map((l) => l.mass), [0.9810187, 0.1313765]);
+  scenario.configurations.bent = { ...scenario.configurations.initial, theta: -0.95 };
+  scenario.trajectories = [{ name: 'bend', through: ['initial', 'bent'] }];
+  const file = join(scratch, 'bmarm.json');
+  writeFileSync(file, JSON.stringify(scenario));
+  const ours = cablenav.verify(scenario, 'bend');
+  close(ours, cli('verify', file, '--trajectory', 'bend'));
+  assert.deepEqual(ours.boundaries.map((b) => b.constraint), ['static feasibility']);
+  scenario.robot.links[1].mass = 0;
+  assert.throws(() => cablenav.verify(scenario, 'bend'), (e) => e.name === 'ScenarioError' && e.field === 'robot.links[1].mass');
+});
+
 test('errors are ScenarioErrors naming the field', () => {
   const scenario = JSON.parse(preset('cdpr7.json'));
   const throws = (f, field) => {

@@ -147,6 +147,31 @@ def test_multi_link_robots_equal_the_cli(cli):
     assert e.value.field == "plan" and 'planner="lattice"' in str(e.value) and "--planner" not in str(e.value), str(e.value)
 
 
+def test_an_arm_with_masses_holds_its_weight_as_the_cli_says(cli, tmp_path):
+    # CASPR's BMArm imported with its links' masses (format 4, CASPR's gravity): static
+    # feasibility is checked per configuration and along a path, as the CLI does
+    model = ROOT.parent / "shared" / "models" / "caspr" / "BMArm"
+    arm = cablenav.import_caspr(model)["scenario"]
+    assert arm["format"] == "cablenav-scenario/4" and arm["robot"]["gravity"] == [0.0, 0.0, -9.81]
+    assert [link["mass"] for link in arm["robot"]["links"]] == [0.9810187, 0.1313765]
+    bent = dict(arm["configurations"]["initial"], theta=-0.95)
+    arm["configurations"]["bent"] = bent
+    arm["trajectories"] = [{"name": "bend", "through": ["initial", "bent"]}]
+    path = tmp_path / "arm.json"
+    path.write_text(json.dumps(arm))
+    check = cablenav.check(arm, "initial")
+    assert check == cli("check", path, "--pose", "initial")
+    assert any(c["constraint"] == "static feasibility" and c["distance"] > 0 for c in check["checks"])
+    ours = cablenav.verify(arm, "bend")
+    assert ours == cli("verify", path, "--trajectory", "bend")
+    assert [b["constraint"] for b in ours["boundaries"]] == ["static feasibility"] and not ours["uncertain"]
+    bad = json.loads(json.dumps(arm))
+    bad["robot"]["links"][1]["mass"] = -1
+    with pytest.raises(cablenav.ScenarioError) as e:
+        cablenav.verify(bad, "bend")
+    assert e.value.field == "robot.links[1].mass" and "positive" in e.value.reason
+
+
 def test_errors_carry_the_field():
     scenario = load(ROOT / "static" / "scenarios" / "cdpr7.json")
     bad = json.loads(json.dumps(scenario))
