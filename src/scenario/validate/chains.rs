@@ -35,10 +35,10 @@ pub(super) fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clear
         }
         return Ok(Vec::new());
     };
-    if crate::scenario::json::version(&raw.format).unwrap_or(1) < 3 {
+    let version = crate::scenario::json::version(&raw.format).unwrap_or(1);
+    if version < 3 {
         return Err(Error::new("robot.links", format!("multi-link robots need \"format\": \"{}\"", FORMAT_3)));
     }
-    let version = crate::scenario::json::version(&raw.format).unwrap_or(1);
     let mut chain = chain(links, version)?;
     chain.gravity = match &raw.robot.gravity {
         Some(g) => {
@@ -75,7 +75,6 @@ pub(super) fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clear
     configurations(&raw.configurations, robot, chain, warnings)
 }
 
-/// The links of `raw` as a chain, parents before children (file order otherwise).
 /// A multi-link robot's `wrench` (format 4): the nominal wrench alone, applied to the link
 /// `link` names at `point` (in that link's frame, or along the world's axes with `point_frame`
 /// "world"). Joint-space closure is always checked, and a set around the nominal wrench is not
@@ -101,6 +100,8 @@ fn link_wrench(raw: &RawWrench, version: u8, chain: &Chain) -> Result<LinkWrench
     Ok(LinkWrench { link, nominal: w.nominal, point: w.point, frame: w.frame })
 }
 
+/// The links of `raw` as a chain, parents before children (file order otherwise); their masses
+/// need format `version` ≥ 4.
 fn chain(raw: &[RawLink], version: u8) -> Result<Chain> {
     if raw.is_empty() {
         return Err(Error::new("robot.links", "a multi-link robot needs at least one link"));
