@@ -23,7 +23,7 @@ use support::reference::Rng;
 
 #[path = "shared/chains.rs"]
 mod chains;
-use chains::{inside, random_chain, random_chain_of};
+use chains::{inside, massless, random_chain, random_chain_of};
 
 macro_rules! model {
     ($path:literal) => {
@@ -40,18 +40,6 @@ fn import(bodies: &str, cables: &str) -> Value {
     serde_json::from_str(&to_json("arm", bodies, cables).expect("imports").json).expect("JSON")
 }
 
-/// An imported robot without its links' masses (format 3): the thesis' case study asks for wrench
-/// closure and interference only, not for the weights to be held.
-fn massless(mut v: Value) -> Value {
-    v["format"] = json!("cablenav-scenario/3");
-    v["robot"].as_object_mut().unwrap().remove("gravity");
-    for link in v["robot"]["links"].as_array_mut().unwrap() {
-        let link = link.as_object_mut().unwrap();
-        link.remove("mass");
-        link.remove("com");
-    }
-    v
-}
 
 #[test]
 fn bmarm_x4_2_imports_with_its_joints_and_cables() {
@@ -480,6 +468,8 @@ fn bad_chains_name_the_field() {
 /// The thesis' 4-DoF arm with ε = 0.02 for cable–cable and cable–link clearance, at the Fig. 3.12
 /// configuration γ = −π/12, θ = π/12 (γ is outside CASPR's ±0.1745 limit: a warning).
 fn fig_3_12() -> Scenario {
+    // the thesis' case study asks for wrench closure and interference only, not for the links'
+    // weights to be held
     let mut v = massless(import(X4_BODIES, X4_CABLES));
     v["name"] = json!("BMArm_X4_2 (thesis §3.5.2)");
     v["clearance"] = json!({"cable_cable": 0.02, "cable_link": 0.02});

@@ -41,6 +41,17 @@ const view = 'canvas[data-testid="view3d"]';
 const cables = async () => (await page.getAttribute(view, 'data-cables')).split(' ');
 const interfering = (looks) => looks.flatMap((l, i) => (l === 'interfering' ? [i + 1] : []));
 
+/** Waits (up to 10 s) until the strip shows the sections `want` (the CLI's); returns them. */
+async function stripBecomes(want) {
+  let got = [];
+  for (let i = 0; i < 100; i++) {
+    got = await stripSections(page);
+    if (JSON.stringify(got) === JSON.stringify(want)) return got;
+    await page.waitForTimeout(100);
+  }
+  throw new Error(`strip ${JSON.stringify(got)}\n  CLI ${JSON.stringify(want)}`);
+}
+
 /** Moves the scrubber to t (0…1). */
 async function scrubTo(t) {
   await page.fill('input[data-testid="scrubber"]', String(Math.round(t * 1000)));
@@ -180,13 +191,7 @@ await test('a query of the arm planned with the lattice planner in a worker: the
   const status = (await page.textContent('[data-testid="plan-status"]')).trim();
   if (state !== 'found') throw new Error(`the page: ${state} "${status}"`);
   await page.click('[data-testid="plan-add-path"]');
-  let got = [];
-  for (let i = 0; i < 100; i++) {
-    got = await stripSections(page);
-    if (JSON.stringify(got) === JSON.stringify(want)) break;
-    await page.waitForTimeout(100);
-  }
-  if (JSON.stringify(got) !== JSON.stringify(want)) throw new Error(`strip ${JSON.stringify(got)}\n  CLI ${JSON.stringify(want)}`);
+  const got = await stripBecomes(want);
   return `${status.slice(0, 80)}…; strip ${JSON.stringify(got)} as the CLI`;
 });
 
@@ -212,14 +217,7 @@ await test('the links\' masses typed in the editor: the format becomes 4, and th
   const cli = cliVerify(root, file, 'across the gap');
   // 2 kg and 1 kg are more than the cables hold near β = 0.4 (the third boundary, t ≈ 0.80)
   if (!cli.boundaries.some((b) => b.constraint === 'static feasibility')) throw new Error(`the CLI names no static feasibility boundary: ${JSON.stringify(cli.boundaries)}`);
-  const want = cliSections(cli);
-  let got = [];
-  for (let i = 0; i < 100; i++) {
-    got = await stripSections(page);
-    if (JSON.stringify(got) === JSON.stringify(want)) break;
-    await page.waitForTimeout(100);
-  }
-  if (JSON.stringify(got) !== JSON.stringify(want)) throw new Error(`strip ${JSON.stringify(got)}\n  CLI ${JSON.stringify(want)}`);
+  const got = await stripBecomes(cliSections(cli));
   // with masses, the tension bounds the condition reads are offered in the robot's editor
   const robot = page.locator('[data-testid="scenario-editor"] details').filter({ has: page.locator('summary', { hasText: 'Robot' }) }).first();
   if (!(await robot.evaluate((d) => d.open))) await robot.locator('summary').first().click();

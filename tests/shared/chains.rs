@@ -94,3 +94,16 @@ pub fn random_chain_of(rng: &mut Rng, n: usize, kinds: &[&str], cables: &dyn Fn(
 pub fn inside(intervals: &[[f64; 2]], x: f64, margin: f64) -> bool {
     intervals.iter().any(|iv| x > iv[0] + margin && x < iv[1] - margin)
 }
+
+/// A multi-link scenario without its links' masses, its gravity and its wrench (format 3).
+pub fn massless(mut v: Value) -> Value {
+    v["format"] = json!("cablenav-scenario/3");
+    v["robot"].as_object_mut().unwrap().remove("gravity");
+    v.as_object_mut().unwrap().remove("wrench");
+    for link in v["robot"]["links"].as_array_mut().unwrap() {
+        let link = link.as_object_mut().unwrap();
+        link.remove("mass");
+        link.remove("com");
+    }
+    v
+}
