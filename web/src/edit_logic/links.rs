@@ -207,7 +207,8 @@ fn check_name(new: &str, old: &str, taken: &[String], what: &str) -> Result<(), 
     Ok(())
 }
 
-/// Renames link `i`, and the name in its children's `parent` and its cables' `link`.
+/// Renames link `i`, and the name in its children's `parent`, its cables' `link` and the
+/// `wrench.link` of a wrench applied to it.
 pub fn rename_link(doc: &mut Value, i: usize, new: &str) -> Result<(), String> {
     let names = link_names(doc);
     let old = names.get(i).cloned().ok_or("no such link")?;
@@ -220,8 +221,8 @@ pub fn rename_link(doc: &mut Value, i: usize, new: &str) -> Result<(), String> {
         }
     }
     let cables = Path::of(&["robot", "cables"]);
-    for c in 0..len(doc, &cables) {
-        let link = cables.i(c).k("link");
+    let references = (0..len(doc, &cables)).map(|c| cables.i(c).k("link")).chain([Path::of(&["wrench", "link"])]);
+    for link in references.collect::<Vec<_>>() {
         if get(doc, &link).and_then(Value::as_str) == Some(old.as_str()) {
             set(doc, &link, json!(new));
         }
@@ -337,6 +338,19 @@ mod tests {
         assert_eq!(unit("free", 1), "m");
         assert_eq!(unit("free", 4), "rad");
         assert_eq!(unit("prismatic", 0), "m");
+    }
+
+    #[test]
+    fn renaming_a_link_renames_the_wrench_applied_to_it() {
+        let mut d = arm();
+        set(&mut d, &Path::of(&["format"]), json!(FORMAT_4));
+        set(&mut d, &Path::of(&["wrench"]), json!({"nominal": [0.0, 0.0, -2.0, 0.0, 0.0, 0.0], "link": "Lower Arm", "point": [0.0, 0.0, 0.5]}));
+        rename_link(&mut d, 1, "Forearm").unwrap();
+        assert_eq!(d["wrench"]["link"], "Forearm");
+        rename_link(&mut d, 0, "Shoulder").unwrap();
+        assert_eq!(d["wrench"]["link"], "Forearm");
+        let s = valid(&d);
+        assert_eq!(s.robot.chain.as_ref().unwrap().load.as_ref().map(|w| w.link), Some(1));
     }
 
     #[test]
