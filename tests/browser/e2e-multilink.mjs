@@ -20,7 +20,8 @@
 //   worker, its path through configurations added to the scenario,
 //   and the strip shows it as `cablenav verify` does on what `cablenav plan --out` wrote;
 // - the links' masses typed in the editor raise the file to format 4, and the strip gains the
-//   static feasibility boundary `cablenav verify` finds on the page's scenario.
+//   static feasibility boundary `cablenav verify` finds on the page's scenario; a wrench applied
+//   to the lower arm in the editor moves it as the CLI says.
 // Screenshots in tests/browser/artifacts/. Ends with "N passed, M failed"; exits 1 on failure.
 
 import { readFileSync, writeFileSync } from 'node:fs';
@@ -226,6 +227,28 @@ await test('the links\' masses typed in the editor: the format becomes 4, and th
   if (!ticks.some((t) => t.includes('static feasibility'))) throw new Error(`boundary tooltips ${JSON.stringify(ticks)}`);
   await page.screenshot({ path: join(artifacts, 'multilink-masses.png'), fullPage: true });
   return `strip ${JSON.stringify(got.map((s) => s.kind))} as the CLI; boundaries ${cli.boundaries.map((b) => `${b.constraint} at ${b.t.toFixed(4)}`).join(', ')}`;
+});
+
+await test('a wrench applied to a link in the editor: the strip is `cablenav verify`\'s on the page\'s scenario', async () => {
+  // the arm with the masses typed above; 1 N down on the lower arm by default, then 3 N
+  const details = page.locator('[data-testid="scenario-editor"] details').filter({ has: page.locator('summary', { hasText: 'Wrench on a link' }) }).first();
+  if (!(await details.evaluate((d) => d.open))) await details.locator('summary').first().click();
+  await page.click('[data-testid="add-link-wrench"]');
+  const wrench = () => page.$eval('textarea[data-testid="source"]', (t) => JSON.parse(t.value).wrench);
+  await page.waitForFunction(() => JSON.parse(document.querySelector('textarea[data-testid="source"]').value).wrench?.link === 'Lower Arm', null, { timeout: TIMEOUT });
+  const fz = page.locator('[data-field="wrench.nominal[2]"]');
+  await fz.click();
+  await fz.press('Control+a');
+  await fz.pressSequentially('-3');
+  await page.waitForFunction(() => JSON.parse(document.querySelector('textarea[data-testid="source"]').value).wrench.nominal[2] === -3, null, { timeout: TIMEOUT });
+  const file = join(scratch, 'arm-wrench.json');
+  writeFileSync(file, await page.$eval('textarea[data-testid="source"]', (t) => t.value));
+  const cli = cliVerify(root, file, 'across the gap');
+  // the wrench moves the boundary of the weights alone (t ≈ 0.80) earlier
+  const statics = cli.boundaries.find((b) => b.constraint === 'static feasibility');
+  if (!statics || !(statics.t < 0.79)) throw new Error(`the CLI's static feasibility boundary: ${JSON.stringify(cli.boundaries)}`);
+  const got = await stripBecomes(cliSections(cli));
+  return `wrench ${JSON.stringify(await wrench())}; strip ${JSON.stringify(got.map((s) => s.kind))} as the CLI, static feasibility from t = ${statics.t.toFixed(4)}`;
 });
 
 await test('no console errors, page errors or failed requests', async () => {

@@ -1,4 +1,5 @@
-//! Wrench edits: the ellipsoid as one radius, per-axis radii or a full matrix, and a template.
+//! Wrench edits: the ellipsoid as one radius, per-axis radii or a full matrix, a template, and a
+//! wrench applied to a multi-link robot's link.
 
 use serde_json::{json, Value};
 
@@ -98,6 +99,14 @@ pub fn wrench_template() -> Value {
     json!({"nominal": [0, 0, -1, 0, 0, 0], "radius": 0.1, "point": [0, 0, 0], "point_frame": "platform"})
 }
 
+/// Applies a wrench to a multi-link robot's last link to start from: a force of 1 N along −z at
+/// its joint (format 4: raises the file's format).
+pub fn add_link_wrench(doc: &mut Value) {
+    let Some(last) = super::link_names(doc).pop() else { return };
+    set(doc, &Path::of(&["wrench"]), json!({"nominal": [0, 0, -1, 0, 0, 0], "link": last, "point": [0, 0, 0]}));
+    super::require_format_4(doc);
+}
+
 #[cfg(test)]
 mod tests {
     
@@ -105,6 +114,17 @@ mod tests {
     use super::*;
     use cablenav::Scenario;
     use serde_json::{json, Value};
+
+    #[test]
+    fn a_wrench_applied_to_the_arm_s_last_link_is_read_by_the_core() {
+        let mut d: Value = serde_json::from_str(crate::presets::PRESETS[crate::presets::find("bmarm-x4-2").unwrap()].json).unwrap();
+        add_link_wrench(&mut d);
+        assert_eq!((d["format"].as_str(), d["wrench"]["link"].as_str()), (Some(super::super::FORMAT_4), Some("Lower Arm")));
+        let s = Scenario::from_json(&d.to_string()).unwrap();
+        let load = s.robot.chain.as_ref().unwrap().load.clone().unwrap();
+        assert_eq!((load.link, load.nominal[2]), (1, -1.0));
+        assert!(cablenav::conditions::for_scenario(&s).iter().any(|c| c.label() == "static feasibility"));
+    }
 
     #[test]
     fn wrench_ellipsoid_modes() {

@@ -170,15 +170,19 @@ fn PlatformParts(ed: Ed) -> impl IntoView {
     }
 }
 
-/// A multi-link robot's parts (format 3): links, obstacles, configurations, paths. It has no
-/// wrench set or poses (its wrench conditions are joint-space wrench closure, always checked, and
-/// static feasibility once a link has a mass).
+/// A multi-link robot's parts (format 3): links, a wrench on a link, obstacles, configurations,
+/// paths. It has no poses or wrench set (its wrench conditions are joint-space wrench closure,
+/// always checked, and static feasibility once a link has a mass or carries a wrench).
 #[component]
 fn MultiLinkParts(ed: Ed) -> impl IntoView {
     view! {
         <details open>
             <summary>"Links and joints"</summary>
             <links::LinksEditor ed />
+        </details>
+        <details>
+            <summary>"Wrench on a link"</summary>
+            <wrench::LinkWrenchEditor ed />
         </details>
         <details>
             <summary>"Obstacles"</summary>
@@ -193,8 +197,9 @@ fn MultiLinkParts(ed: Ed) -> impl IntoView {
             <configs::PathsEditor ed />
         </details>
         <p class="hint" data-testid="multilink-note">
-            "A multi-link robot has no wrench set or poses: its wrench conditions are joint-space wrench closure, \
-             always checked, and static feasibility once a link has a mass; it is posed by configurations (docs/multilink.md)."
+            "A multi-link robot has no poses and no wrench set around a nominal wrench: its wrench conditions are \
+             joint-space wrench closure, always checked, and static feasibility once a link has a mass or carries a wrench; \
+             it is posed by configurations (docs/multilink.md)."
         </p>
     }
 }

@@ -17,8 +17,9 @@ pub fn RobotEditor(ed: Ed) -> impl IntoView {
         move || ed.error_at(&cables, false)
     });
     let chain = Memo::new(move |_| ed.read(el::is_multi_link).unwrap_or(false));
-    // a multi-link robot's tensions matter once a link has a mass (static feasibility)
-    let weighed = Memo::new(move |_| ed.read(el::has_link_mass).unwrap_or(false));
+    // a multi-link robot's tensions matter once a link has a mass or carries a wrench (static
+    // feasibility)
+    let weighed = Memo::new(move |_| ed.read(|d| el::has_link_mass(d) || d.get("wrench").is_some()).unwrap_or(false));
     view! {
         <TextField ed path=Path::of(&["name"]) label="Scenario name" />
         // the table scrolls sideways inside the side panel when it is wider (a multi-link robot's
@@ -61,8 +62,8 @@ pub fn RobotEditor(ed: Ed) -> impl IntoView {
         <p class="hint" data-testid="robot-hint">{move || if chain.get() {
             "A multi-link robot's cables pull on its links; it is checked for cable–cable, cable–link and cable–obstacle \
              interference, cable lengths and joint-space wrench closure, and, once a link has a mass, for static \
-             feasibility: tensions within their bounds holding the links' weights (docs/multilink.md). A wrench set does \
-             not apply to it yet."
+             feasibility: tensions within their bounds holding the links' weights and a wrench on a link \
+             (docs/multilink.md). A wrench set around that wrench does not apply to it yet."
         } else {
             "A 6-DoF robot needs 6 to 64 cables. A wrench ellipsoid or closure is tested for up to 10; a single wrench and the platform's mass for any number."
         }}</p>

@@ -1,5 +1,6 @@
 //! The wrench set: nominal wrench, application point and its frame, and the ellipsoid E as one
-//! radius, per-axis radii or the full 6×6 matrix (its positive definiteness is the core's check).
+//! radius, per-axis radii or the full 6×6 matrix (its positive definiteness is the core's check);
+//! and a multi-link robot's wrench on one of its links.
 
 use leptos::prelude::*;
 use serde_json::Value;
@@ -33,27 +34,7 @@ pub fn WrenchEditor(ed: Ed) -> impl IntoView {
                 </button>
             }
         >
-            <fieldset class="wrench-nominal">
-                <legend>"Nominal wrench w₀ (world-parallel axes at the point)"</legend>
-                {COMPONENTS
-                    .iter()
-                    .enumerate()
-                    .map(|(i, (name, unit))| {
-                        view! { <NumField ed path=Path::of(&["wrench", "nominal"]).i(i) label=*name unit=*unit /> }
-                    })
-                    .collect_view()}
-            </fieldset>
-            <Vec3Field ed path=Path::of(&["wrench", "point"]) label="Application point offset" unit="m" />
-            <Choice
-                label="Point frame"
-                options=vec![
-                    ("platform".to_string(), "platform (rotates with it: c = p + R·point)".to_string()),
-                    ("world".to_string(), "world (stays parallel: c = p + point)".to_string()),
-                ]
-                current=Signal::derive(move || ed.text(&Path::of(&["wrench", "point_frame"])).unwrap_or_else(|| "platform".into()))
-                on_pick=Callback::new(move |v: String| ed.edit(|d| { el::set(d, &Path::of(&["wrench", "point_frame"]), Value::String(v)); }))
-                testid="point-frame"
-            />
+            <NominalAndPoint ed body="platform" />
             <Ellipsoid ed />
             <FieldMessage local=RwSignal::new(None) core=section_error />
             <button
@@ -61,6 +42,71 @@ pub fn WrenchEditor(ed: Ed) -> impl IntoView {
                 on:click=move |_| ed.edit(|d| { el::remove(d, &Path::of(&["wrench"])); })
             >
                 "Remove the wrench set"
+            </button>
+        </Show>
+    }
+}
+
+/// The nominal wrench's six components, its point and the point's frame, on the `body` it acts
+/// on ("platform", or "link" for a multi-link robot).
+#[component]
+fn NominalAndPoint(ed: Ed, body: &'static str) -> impl IntoView {
+    view! {
+        <fieldset class="wrench-nominal">
+            <legend>"Nominal wrench w₀ (world-parallel axes at the point)"</legend>
+            {COMPONENTS
+                .iter()
+                .enumerate()
+                .map(|(i, (name, unit))| {
+                    view! { <NumField ed path=Path::of(&["wrench", "nominal"]).i(i) label=*name unit=*unit /> }
+                })
+                .collect_view()}
+        </fieldset>
+        <Vec3Field ed path=Path::of(&["wrench", "point"]) label="Application point offset" unit="m" />
+        <Choice
+            label="Point frame"
+            options=vec![
+                ("platform".to_string(), format!("{body} (rotates with it: c = p + R·point)")),
+                ("world".to_string(), "world (stays parallel: c = p + point)".to_string()),
+            ]
+            current=Signal::derive(move || ed.text(&Path::of(&["wrench", "point_frame"])).unwrap_or_else(|| "platform".into()))
+            on_pick=Callback::new(move |v: String| ed.edit(|d| { el::set(d, &Path::of(&["wrench", "point_frame"]), Value::String(v)); }))
+            testid="point-frame"
+        />
+    }
+}
+
+/// A multi-link robot's wrench: applied to one link (format 4), its nominal value alone, held by
+/// the cables with the links' weights (static feasibility).
+#[component]
+pub fn LinkWrenchEditor(ed: Ed) -> impl IntoView {
+    let present = Memo::new(move |_| ed.read(|d| d.get("wrench").is_some()).unwrap_or(false));
+    let section_error = Signal::derive(move || ed.error_at(&Path::of(&["wrench"]), false));
+    let link = move || {
+        let names = ed.read(el::link_names).unwrap_or_default();
+        let choices = names.into_iter().map(|n| (n.clone(), n)).collect();
+        let current = Signal::derive(move || ed.text(&Path::of(&["wrench", "link"])).unwrap_or_default());
+        let pick = Callback::new(move |v: String| ed.edit(|d| { el::set(d, &Path::of(&["wrench", "link"]), Value::String(v)); }));
+        view! { <Choice label="Link" options=choices current on_pick=pick testid="wrench-link" /> }
+    };
+    view! {
+        <p class="hint">
+            "A wrench applied to one link from outside (a payload, a tool's reaction): the cables must hold it, \
+             with the links' weights, by tensions within their bounds (static feasibility)."
+        </p>
+        <Show
+            when=move || present.get()
+            fallback=move || view! {
+                <button type="button" data-testid="add-link-wrench" on:click=move |_| ed.edit(el::add_link_wrench)>
+                    "Apply a wrench to a link"
+                </button>
+            }
+        >
+            {link}
+            <NominalAndPoint ed body="link" />
+            <FieldMessage local=RwSignal::new(None) core=section_error />
+            <button type="button" on:click=move |_| ed.edit(|d| { el::remove(d, &Path::of(&["wrench"])); })>
+                "Remove the wrench"
             </button>
         </Show>
     }
