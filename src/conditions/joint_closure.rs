@@ -16,7 +16,7 @@
 use std::rc::Rc;
 
 use super::closure::not_spanning;
-use super::joint_forces::{cable_matrix, cable_numerators, subtree_rows};
+use super::joint_forces::{cable_matrix, shared_cable_numerators, subtree_rows};
 use super::structure::{det_with, minors};
 use super::wrench_lp::closure_violation;
 use super::{Condition, Kind, PoseCheck, Sweep};
@@ -46,7 +46,7 @@ impl Condition for JointClosure {
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let tol = sweep.tol;
-        let rows = cable_numerators(&self.chain, &self.cable_links, sweep);
+        let rows = shared_cable_numerators(&self.chain, &self.cable_links, sweep);
         let (n, m) = (rows.len(), sweep.cables.len());
         if m <= n {
             return Partition::constant(Truth::True); // m ≤ n cables never positively span ℝⁿ
@@ -54,7 +54,7 @@ impl Condition for JointClosure {
         if binomial(m, n - 1) > MAX_FACETS {
             // too many facets to enumerate: the linear programs' certificates, failures looked
             // for within each link's subtree as well
-            return closure_violation(rows, tol, &subtree_rows(&self.chain));
+            return closure_violation(rows.as_ref().clone(), tol, &subtree_rows(&self.chain));
         }
         let facets = subsets(m, n - 1).into_iter().map(|s| {
             let minors = minors(&rows, &s);

@@ -25,7 +25,9 @@
 //! root's parent) is a polynomial over w^(a + arm + axis), the same power along the row whatever
 //! the force.
 
-use super::Sweep;
+use std::rc::Rc;
+
+use super::{body_point, Sweep};
 use crate::model::chain::Frame as LinkFrame;
 use crate::model::{Chain, Joint, PointFrame};
 use crate::poly::Bern;
@@ -175,9 +177,20 @@ pub(super) fn load_vector(chain: &Chain, at: &PoseCables) -> DVector<f64> {
     DVector::from_vec(out)
 }
 
+/// [`cable_numerators`] of the sweep, built by the first condition that asks and kept in the
+/// sweep for the others (closure and statics read the same rows).
+pub(super) fn shared_cable_numerators(chain: &Chain, cable_links: &[usize], sweep: &mut Sweep) -> Rc<Vec<Vec<Bern>>> {
+    if let Some(rows) = &sweep.joint_rows {
+        return Rc::clone(rows);
+    }
+    let rows = Rc::new(cable_numerators(chain, cable_links, sweep));
+    sweep.joint_rows = Some(Rc::clone(&rows));
+    rows
+}
+
 /// The cables' structure numerators along the sweep's motion, rows[row][cable]: the entries of
 /// [`cable_matrix`] as polynomials, row r over w^(p_r) (module docs; the cable vector s = ŝ/w).
-pub(super) fn cable_numerators(chain: &Chain, cable_links: &[usize], sweep: &Sweep) -> Vec<Vec<Bern>> {
+fn cable_numerators(chain: &Chain, cable_links: &[usize], sweep: &Sweep) -> Vec<Vec<Bern>> {
     let (n, m) = (chain.dof(), sweep.cables.len());
     let w = &sweep.motion().weight;
     let mut rows = vec![vec![Bern::constant(0.0); m]; n];
@@ -203,10 +216,10 @@ pub(super) fn load_numerators(chain: &Chain, sweep: &Sweep) -> Vec<Bern> {
     // X̂ = P̂ + M̂ c for a point c in link l's frame, or P̂ + w·c along the world's axes
     let point = |l: usize, c: &Vector3<f64>, frame: PointFrame| -> [Bern; 3] {
         let m = &sweep.links[l];
-        [0, 1, 2].map(|i| match frame {
-            PointFrame::Platform => Bern::linear_combination(&[(&m.position[i], 1.0), (&m.rotation[i][0], c[0]), (&m.rotation[i][1], c[1]), (&m.rotation[i][2], c[2])]),
-            PointFrame::World => Bern::linear_combination(&[(&m.position[i], 1.0), (&m.weight, c[i])]),
-        })
+        match frame {
+            PointFrame::Platform => body_point(&m.position, &m.rotation, c),
+            PointFrame::World => [0, 1, 2].map(|i| Bern::linear_combination(&[(&m.position[i], 1.0), (&m.weight, c[i])])),
+        }
     };
     let constant = |v: Vector3<f64>| -> [Bern; 3] { v.map(Bern::constant).into() };
     for (l, link) in chain.links.iter().enumerate().filter(|(_, l)| l.mass > 0.0) {

@@ -16,9 +16,9 @@
 
 use std::rc::Rc;
 
-use super::joint_forces::{cable_matrix, cable_numerators, load_numerators, load_vector};
-use super::wrench_lp::feasibility_violation;
-use super::{Condition, Kind, PoseCheck, Sweep};
+use super::joint_forces::{cable_matrix, load_numerators, load_vector, shared_cable_numerators};
+use super::wrench_lp::{feasibility_violation, structurally_zero};
+use super::{norm2, Condition, Kind, PoseCheck, Sweep};
 use crate::model::{Bounds, Chain};
 use crate::poly::{Bern, Partition};
 use crate::query::cables::PoseCables;
@@ -35,11 +35,6 @@ pub struct JointStatics {
     pub cable_links: Vec<usize>,
     /// Each cable's tension bounds.
     pub bounds: Vec<Bounds>,
-}
-
-/// An exactly zero polynomial (no force reaches the row).
-fn is_zero(p: &Bern) -> bool {
-    p.err == 0.0 && p.c.iter().all(|c| *c == 0.0)
 }
 
 impl JointStatics {
@@ -66,10 +61,12 @@ impl Condition for JointStatics {
     }
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
-        let rows = cable_numerators(&self.chain, &self.cable_links, sweep);
+        let rows = shared_cable_numerators(&self.chain, &self.cable_links, sweep);
         let load = load_numerators(&self.chain, sweep);
-        let len2 = sweep.cables.iter().map(|c| c.s[0].p.mul(&c.s[0].p).add(&c.s[1].p.mul(&c.s[1].p)).add(&c.s[2].p.mul(&c.s[2].p))).collect();
-        let (rows, load): (Vec<Vec<Bern>>, Vec<Bern>) = rows.into_iter().zip(load).filter(|(row, g)| !(is_zero(g) && row.iter().all(is_zero))).unzip();
+        let len2 = sweep.cables.iter().map(|c| norm2([&c.s[0].p, &c.s[1].p, &c.s[2].p])).collect();
+        // rows nothing reaches (0 = 0) left out
+        let (rows, load): (Vec<Vec<Bern>>, Vec<Bern>) =
+            rows.iter().zip(load).filter(|(row, g)| !(structurally_zero(g) && row.iter().all(structurally_zero))).map(|(row, g)| (row.clone(), g)).unzip();
         feasibility_violation(rows, load, len2, self.bounds.clone(), sweep.tol)
     }
 

@@ -81,6 +81,9 @@ pub struct Sweep {
     pub tension: Option<Rc<TensionPolys>>,
     /// The facet polynomials of robots with more than six cables, built likewise.
     pub facets: Option<Rc<FacetPolys>>,
+    /// A multi-link robot's joint-space structure numerators, built by the first of its closure
+    /// and statics conditions that needs them.
+    pub joint_rows: Option<Rc<Vec<Vec<Bern>>>>,
     /// The winch limits' polynomials, built likewise.
     pub winch: WinchPolys,
     /// Ordered, disjoint λ-intervals where other conditions are already certainly violated (set
@@ -119,12 +122,12 @@ impl Sweep {
             let (position, rotation) = &lifted[cable.link];
             let b = cable.platform;
             // X̂ = P̂ + M̂ b (one power of w); s = X̂ − a·w
-            let tip: [Bern; 3] = [0, 1, 2].map(|i| Bern::linear_combination(&[(&position[i], 1.0), (&rotation[i][0], b[0]), (&rotation[i][1], b[1]), (&rotation[i][2], b[2])]));
+            let tip = body_point(position, rotation, &b);
             let s: HVec = [0, 1, 2].map(|i| algebra::H { p: Bern::linear_combination(&[(&tip[i], 1.0), (&w_at[i], -cable.base[i])]), k: 1 });
             let tube = Tube::new(cable.base, &tip, w);
             cables.push(SweptCable { base: cable.base, s, tube });
         }
-        Sweep { alg: Alg::new(w), cables, tol, links: links.to_vec(), tension: None, facets: None, winch: WinchPolys::default(), settled: Vec::new(), duration: None, law: None }
+        Sweep { alg: Alg::new(w), cables, tol, links: links.to_vec(), tension: None, facets: None, joint_rows: None, winch: WinchPolys::default(), settled: Vec::new(), duration: None, law: None }
     }
 
     /// The platform's motion (the first link's for a multi-link robot): the weight and the
@@ -157,6 +160,7 @@ impl Sweep {
             links,
             tension: None,
             facets: None,
+            joint_rows: None,
             winch: self.winch.part((a, b)),
             settled: Vec::new(),
             duration: self.duration,
@@ -166,6 +170,17 @@ impl Sweep {
         part.tension = self.tension.as_ref().and_then(|t| t.part((a, b), law.as_ref())).map(Rc::new);
         part
     }
+}
+
+/// X̂ = P̂ + M̂ b: the point `b` of a body (its frame) along the body's motion, over the motion's
+/// weight as its position P̂ and rotation M̂ are.
+fn body_point(position: &[Bern; 3], rotation: &[[Bern; 3]; 3], b: &Vector3<f64>) -> [Bern; 3] {
+    [0, 1, 2].map(|i| Bern::linear_combination(&[(&position[i], 1.0), (&rotation[i][0], b[0]), (&rotation[i][1], b[1]), (&rotation[i][2], b[2])]))
+}
+
+/// v·v for a vector of polynomials.
+fn norm2(v: [&Bern; 3]) -> Bern {
+    v[0].mul(v[0]).add(&v[1].mul(v[1])).add(&v[2].mul(v[2]))
 }
 
 /// A motion's polynomials on a sub-interval of λ (all of [0, 1] or a piece being refined),
@@ -215,7 +230,7 @@ impl Local {
 
     /// P_i = ‖s̃_i‖² per cable (the squared cable lengths times w²).
     pub(crate) fn len2(&self) -> Vec<Bern> {
-        self.cables.iter().map(|(_, s)| s[0].mul(&s[0]).add(&s[1].mul(&s[1])).add(&s[2].mul(&s[2]))).collect()
+        self.cables.iter().map(|(_, s)| norm2([&s[0], &s[1], &s[2]])).collect()
     }
 
     pub(crate) fn restrict(&self, a: f64, b: f64) -> Local {

@@ -336,9 +336,9 @@ impl WrenchFeasibilityLp {
     }
 }
 
-/// A polynomial that is exactly zero (every coefficient 0, no error): an entry of N that no
-/// cable's force reaches (a joint the cable's link does not descend from).
-fn structurally_zero(p: &Bern) -> bool {
+/// A polynomial that is exactly zero (every coefficient 0, no error): an entry of N, or of the
+/// load, that no force reaches (a joint the cable's or the load's link does not descend from).
+pub(super) fn structurally_zero(p: &Bern) -> bool {
     p.err == 0.0 && p.c.iter().all(|c| *c == 0.0)
 }
 
