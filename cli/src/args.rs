@@ -20,7 +20,7 @@ Exit codes:
   70  internal error: a bug (please report the command and the scenario)
   74  the report could not be written to stdout";
 
-const SCENARIO_HELP: &str = "A cablenav-scenario/1 to /5 JSON file (docs/scenario-format.md)";
+const SCENARIO_HELP: &str = "A cablenav-scenario/1 to /6 JSON file (docs/scenario-format.md)";
 
 /// Exact feasibility of cable-driven parallel robot motions.
 ///

@@ -11,11 +11,16 @@ use crate::query::cables::PoseCables;
 use crate::query::{point_segment_dist2, segment_segment_dist};
 use nalgebra::Vector3;
 
-/// Clearance between one cable and one link's body.
+/// Clearance between one cable (one segment of a routed cable) and one link's body.
 #[derive(Debug, Clone)]
 pub struct CableLink {
-    /// The cable (0-based).
+    /// The cable (0-based), for reports.
     pub cable: usize,
+    /// The segment (index into the sweep's cables and a pose's, [`crate::model::Robot::segments`];
+    /// the cable's own for a robot without routed cables).
+    pub segment: usize,
+    /// How reports name the cable (`cable 3`, or `cable 3 segment 2` when routed).
+    pub cable_name: String,
     /// The link (index into the chain).
     pub link: usize,
     /// The link's name, for reports.
@@ -34,7 +39,7 @@ impl Condition for CableLink {
     }
 
     fn label(&self) -> String {
-        format!("cable {} - link {}", self.cable + 1, self.name)
+        format!("{} - link {}", self.cable_name, self.name)
     }
 
     fn cables(&self) -> Vec<usize> {
@@ -47,19 +52,19 @@ impl Condition for CableLink {
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let m = &sweep.links[self.link];
-        let base = sweep.cables[self.cable].base;
+        let start = sweep.cables[self.segment].start_hat(&m.weight);
         let [b0, b1] = self.body;
         let d = b1 - b0;
-        // r̂ = B̂0 − a·w = P̂ + M̂ b0 − a·w and d̂ = M̂ (b1 − b0), both over w
+        // r̂ = B̂0 − Â = P̂ + M̂ b0 − Â (Â = a·w for a base anchor) and d̂ = M̂ (b1 − b0), both over w
         let row = |i: usize, v: &Vector3<f64>| [(&m.rotation[i][0], v[0]), (&m.rotation[i][1], v[1]), (&m.rotation[i][2], v[2])];
         let r: [Bern; 3] = [0, 1, 2].map(|i| {
             let [x, y, z] = row(i, &b0);
-            Bern::linear_combination(&[(&m.position[i], 1.0), (&m.weight, -base[i]), x, y, z])
+            Bern::linear_combination(&[(&m.position[i], 1.0), (&start[i], -1.0), x, y, z])
         });
         let dir: [Bern; 3] = [0, 1, 2].map(|i| Bern::linear_combination(&row(i, &d)));
         let point = d == Vector3::zeros();
         let c = self.radius + self.clearance;
-        on_undecided(sweep, &[(0.0, 1.0)], &[self.cable], |alg, _, s, tol, (a, b)| {
+        on_undecided(sweep, &[(0.0, 1.0)], &[self.segment], |alg, _, s, tol, (a, b)| {
             let local = |v: &[Bern; 3]| -> HVec { v.each_ref().map(|p| H { p: if (a, b) == (0.0, 1.0) { p.clone() } else { p.restrict(a, b) }, k: 1 }) };
             let r = local(&r);
             if point {
@@ -71,7 +76,7 @@ impl Condition for CableLink {
     }
 
     fn check(&self, cables: &PoseCables) -> PoseCheck {
-        let (a, x) = cables[self.cable];
+        let (a, x) = cables[self.segment];
         let (p, rot) = cables.links[self.link];
         let (b0, b1) = (p + rot * self.body[0], p + rot * self.body[1]);
         let centre = if b0 == b1 { point_segment_dist2(&b0, &a, &(x - a), None).sqrt() } else { segment_segment_dist(&a, &(x - a), &b0, &(b1 - b0)) };

@@ -30,10 +30,15 @@ enum Geom {
     Cone { solid: ConeSolid, half_angle: f64 },
 }
 
-/// Clearance between one cable and one obstacle.
+/// Clearance between one cable (one segment of a routed cable) and one obstacle.
 #[derive(Debug, Clone)]
 pub struct CableShape {
+    /// The cable, for reports.
     cable: usize,
+    /// The segment (index into the sweep's cables and a pose's).
+    segment: usize,
+    /// How reports name the cable.
+    cable_name: String,
     name: String,
     clearance: f64,
     geom: Geom,
@@ -43,6 +48,11 @@ pub struct CableShape {
 impl CableShape {
     /// The condition for cable `cable` (0-based) against `obstacle` with clearance `c`.
     pub fn new(cable: usize, obstacle: &Obstacle, c: f64) -> CableShape {
+        CableShape::of_segment(cable, cable, format!("cable {}", cable + 1), obstacle, c)
+    }
+
+    /// The condition for segment `segment` of cable `cable` (reported as `cable_name`).
+    pub fn of_segment(cable: usize, segment: usize, cable_name: String, obstacle: &Obstacle, c: f64) -> CableShape {
         let (geom, bound) = match &obstacle.shape {
             Shape::Mesh(mesh) => {
                 let faces: Vec<([V; 3], Bound)> = (0..mesh.triangles.len())
@@ -84,7 +94,7 @@ impl CableShape {
                 (Geom::Cone { solid, half_angle: *half_angle }, Bound::Capsule(*apex, base, r))
             }
         };
-        CableShape { cable, name: obstacle.name.clone(), clearance: c, geom, bound }
+        CableShape { cable, segment, cable_name, name: obstacle.name.clone(), clearance: c, geom, bound }
     }
 }
 
@@ -94,7 +104,7 @@ impl Condition for CableShape {
     }
 
     fn label(&self) -> String {
-        format!("cable {} - {}", self.cable + 1, self.name)
+        format!("{} - {}", self.cable_name, self.name)
     }
 
     fn cables(&self) -> Vec<usize> {
@@ -110,8 +120,14 @@ impl Condition for CableShape {
     }
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
-        let cable = &sweep.cables[self.cable];
+        let cable = &sweep.cables[self.segment];
         let undecided = cable.tube.undecided_in(&self.bound, &sweep.settled);
+        if cable.start.is_some() {
+            // a segment between two links: its start moves, which the exact tests below do not
+            // take; only what the pruning clears is certified, the rest is undecided
+            let unknown = Partition::constant(Truth::Unknown);
+            return undecided.iter().fold(Partition::constant(Truth::False), |acc, &(a, b)| acc.splice((a, b), &unknown, (a, b)));
+        }
         let a = cable.base;
         let c = self.clearance;
         // which mesh edges and faces the tube of the whole motion cannot clear
@@ -122,7 +138,7 @@ impl Condition for CableShape {
             }
             _ => Vec::new(),
         };
-        on_undecided(sweep, &undecided, &[self.cable], |alg, w, s, tol, _| {
+        on_undecided(sweep, &undecided, &[self.segment], |alg, w, s, tol, _| {
             let s = s[0];
             match &self.geom {
                 Geom::Mesh { faces, edges } => {
@@ -169,7 +185,7 @@ impl Condition for CableShape {
     }
 
     fn check(&self, cables: &PoseCables) -> PoseCheck {
-        let (a, x) = cables[self.cable];
+        let (a, x) = cables[self.segment];
         let s = x - a;
         let c = self.clearance;
         match &self.geom {

@@ -11,17 +11,18 @@
 //! rows: facets of n − 1 columns, d_k = det [J_S | j_k]. Past [`MAX_FACETS`] facets (C(m, n − 1):
 //! a 24-DoF neck with 76 cables has ~10²⁰) the linear programs' certificates decide it instead
 //! ([`closure_violation`], [`closure_by_lp`] per configuration): their cost grows polynomially
-//! with the joints and the cables.
+//! with the joints and the cables. A routed cable's column is the sum of its segments' pulls, each
+//! divided by its own length (no common factor to drop): the linear programs decide it.
 
 use std::rc::Rc;
 
 use super::closure::not_spanning;
-use super::joint_forces::{cable_matrix, shared_cable_numerators, subtree_rows};
+use super::joint_forces::{cable_matrix, routing, shared_cable_numerators, subtree_rows};
 use super::structure::{det_with, minors};
 use super::wrench_lp::closure_violation;
-use super::{Condition, Kind, PoseCheck, Sweep};
-use crate::model::Chain;
-use crate::poly::{Partition, Truth};
+use super::{norm2, Condition, Kind, PoseCheck, Sweep};
+use crate::model::{CableSegment, Chain};
+use crate::poly::{Bern, Partition, Truth};
 use crate::query::cables::PoseCables;
 use crate::query::wrench::{binomial, closure_by_lp, positively_spans, subsets};
 use crate::scenario::validate::MAX_FACETS;
@@ -31,8 +32,10 @@ use crate::scenario::validate::MAX_FACETS;
 pub struct JointClosure {
     /// The links.
     pub chain: Rc<Chain>,
-    /// The link each cable pulls.
-    pub cable_links: Vec<usize>,
+    /// The cables' segments ([`crate::model::Robot::segments`]; one per cable unless routed).
+    pub segments: Vec<CableSegment>,
+    /// The number of cables.
+    pub cables: usize,
 }
 
 impl Condition for JointClosure {
@@ -46,15 +49,20 @@ impl Condition for JointClosure {
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let tol = sweep.tol;
-        let rows = shared_cable_numerators(&self.chain, &self.cable_links, sweep);
-        let (n, m) = (rows.len(), sweep.cables.len());
+        let rows = shared_cable_numerators(&self.chain, &self.segments, sweep);
+        let (n, m) = (rows.len(), self.cables);
         if m <= n {
             return Partition::constant(Truth::True); // m ≤ n cables never positively span ℝⁿ
+        }
+        if let Some(cable_of) = routing(&self.segments, m) {
+            // a routed cable's column is no polynomial multiple: the linear programs' certificates
+            let len2 = sweep.cables.iter().map(|c| norm2([&c.s[0].p, &c.s[1].p, &c.s[2].p])).collect();
+            return closure_violation(rows.as_ref().clone(), len2, Some(cable_of), tol, &subtree_rows(&self.chain));
         }
         if binomial(m, n - 1) > MAX_FACETS {
             // too many facets to enumerate: the linear programs' certificates, failures looked
             // for within each link's subtree as well
-            return closure_violation(rows.as_ref().clone(), tol, &subtree_rows(&self.chain));
+            return closure_violation(rows.as_ref().clone(), vec![Bern::constant(1.0); m], None, tol, &subtree_rows(&self.chain));
         }
         let facets = subsets(m, n - 1).into_iter().map(|s| {
             let minors = minors(&rows, &s);
@@ -64,7 +72,7 @@ impl Condition for JointClosure {
     }
 
     fn check(&self, at: &PoseCables) -> PoseCheck {
-        let j = cable_matrix(&self.chain, &self.cable_links, at);
+        let j = cable_matrix(&self.chain, &self.segments, self.cables, at);
         let (n, m) = j.shape();
         let spans = if m > n && binomial(m, n - 1) > MAX_FACETS { closure_by_lp(&j) } else { positively_spans(&j) };
         PoseCheck { violated: !spans, distance: None }

@@ -29,7 +29,7 @@ use std::rc::Rc;
 
 use super::{body_point, Sweep};
 use crate::model::chain::Frame as LinkFrame;
-use crate::model::{Chain, Joint, PointFrame};
+use crate::model::{CableSegment, Chain, Joint, PointFrame};
 use crate::poly::Bern;
 use crate::query::cables::PoseCables;
 use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
@@ -149,15 +149,25 @@ fn add_point_force_along(chain: &Chain, sweep: &Sweep, on: usize, f: &[Bern; 3],
 }
 
 /// The cables' structure matrix at one configuration (one row per joint coordinate, one column
-/// per cable): column k the generalised forces of the cable vector s = x − a at its anchor x on
-/// link `cable_links[k]` — the cable's pull, up to its sign and the factor f/|s|.
-pub(super) fn cable_matrix(chain: &Chain, cable_links: &[usize], at: &PoseCables) -> DMatrix<f64> {
-    let mut j = DMatrix::zeros(chain.dof(), at.cables.len());
+/// per cable, `m` cables): column k the generalised forces of cable k's unit pull, up to its
+/// sign — the sum over its segments of the segment vector s = x − a at its end x (on the end's
+/// link) and −s at its start a (on the start's link, if any), each divided by |s|.
+pub(super) fn cable_matrix(chain: &Chain, segments: &[CableSegment], m: usize, at: &PoseCables) -> DMatrix<f64> {
+    let mut j = DMatrix::zeros(chain.dof(), m);
     let mut column = vec![0.0; chain.dof()];
-    for (c, &(a, x)) in at.cables.iter().enumerate() {
+    for (seg, &(a, x)) in segments.iter().zip(at.cables.iter()).filter(|(seg, _)| pulls(seg)) {
         column.iter_mut().for_each(|v| *v = 0.0);
-        add_point_force(chain, &at.links, cable_links[c], &(x - a), &x, &Vector3::zeros(), &mut column);
-        j.column_mut(c).copy_from_slice(&column);
+        let s = x - a;
+        if let Some(l) = seg.to.link {
+            add_point_force(chain, &at.links, l, &s, &x, &Vector3::zeros(), &mut column);
+        }
+        if let Some(l) = seg.from.link {
+            add_point_force(chain, &at.links, l, &-s, &a, &Vector3::zeros(), &mut column);
+        }
+        let len = s.norm();
+        for (entry, v) in j.column_mut(seg.cable).iter_mut().zip(&column) {
+            *entry += v / len;
+        }
     }
     j
 }
@@ -177,30 +187,48 @@ pub(super) fn load_vector(chain: &Chain, at: &PoseCables) -> DVector<f64> {
     DVector::from_vec(out)
 }
 
+/// Whether a segment pulls anything: one between two points of the same link (or of the base)
+/// pulls both ends of one rigid body together, forces that cancel exactly (left out rather than
+/// left to rounding).
+fn pulls(seg: &CableSegment) -> bool {
+    seg.from.link != seg.to.link
+}
+
+/// The cable of each segment when some cable has several (`m` cables), for the linear programs'
+/// grouping of segment columns into cable columns; `None` when each cable is one segment.
+pub(super) fn routing(segments: &[CableSegment], m: usize) -> Option<Vec<usize>> {
+    (segments.len() > m).then(|| segments.iter().map(|s| s.cable).collect())
+}
+
 /// [`cable_numerators`] of the sweep, built by the first condition that asks and kept in the
 /// sweep for the others (closure and statics read the same rows).
-pub(super) fn shared_cable_numerators(chain: &Chain, cable_links: &[usize], sweep: &mut Sweep) -> Rc<Vec<Vec<Bern>>> {
+pub(super) fn shared_cable_numerators(chain: &Chain, segments: &[CableSegment], sweep: &mut Sweep) -> Rc<Vec<Vec<Bern>>> {
     if let Some(rows) = &sweep.joint_rows {
         return Rc::clone(rows);
     }
-    let rows = Rc::new(cable_numerators(chain, cable_links, sweep));
+    let rows = Rc::new(cable_numerators(chain, segments, sweep));
     sweep.joint_rows = Some(Rc::clone(&rows));
     rows
 }
 
-/// The cables' structure numerators along the sweep's motion, rows[row][cable]: the entries of
-/// [`cable_matrix`] as polynomials, row r over w^(p_r) (module docs; the cable vector s = ŝ/w).
-fn cable_numerators(chain: &Chain, cable_links: &[usize], sweep: &Sweep) -> Vec<Vec<Bern>> {
+/// The segments' structure numerators along the sweep's motion, rows[row][segment]: the
+/// generalised forces of ŝ at the end X̂ and of −ŝ at the start Â (module docs; s = ŝ/w), as
+/// [`cable_matrix`] per segment before the division by |s|, row r over w^(p_r). One column per
+/// cable for a robot without routed cables.
+fn cable_numerators(chain: &Chain, segments: &[CableSegment], sweep: &Sweep) -> Vec<Vec<Bern>> {
     let (n, m) = (chain.dof(), sweep.cables.len());
     let w = &sweep.motion().weight;
     let mut rows = vec![vec![Bern::constant(0.0); m]; n];
     let mut column = vec![Bern::constant(0.0); n];
-    for (c, cable) in sweep.cables.iter().enumerate() {
+    for (c, (cable, seg)) in sweep.cables.iter().zip(segments).enumerate().filter(|(_, (_, seg))| pulls(seg)) {
         column.iter_mut().for_each(|v| *v = Bern::constant(0.0));
         let s: [Bern; 3] = cable.s.each_ref().map(|h| h.p.clone());
-        // x̂ = ŝ + a·w
-        let x: [Bern; 3] = [0, 1, 2].map(|i| s[i].add(&w.scale(cable.base[i])));
-        add_point_force_along(chain, sweep, cable_links[c], &s, &x, None, &mut column);
+        if let Some(l) = seg.to.link {
+            add_point_force_along(chain, sweep, l, &s, &cable.tip_hat(w), None, &mut column);
+        }
+        if let Some(l) = seg.from.link {
+            add_point_force_along(chain, sweep, l, &s.each_ref().map(|p| p.scale(-1.0)), &cable.start_hat(w), None, &mut column);
+        }
         for (row, v) in rows.iter_mut().zip(column.iter_mut()) {
             row[c] = std::mem::replace(v, Bern::constant(0.0));
         }

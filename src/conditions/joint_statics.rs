@@ -13,13 +13,15 @@
 //! joints and cables (the 1/√P_k enclosed by Taylor polynomials with error bounds). Rows that
 //! neither a cable nor a load reaches (a massless link no cable pulls) read 0 = 0 and are left
 //! out; a row a load reaches but no cable fails wherever the load's share there is not zero.
+//! A routed cable's column is the sum of its segments' n_s/√P_s, enclosed on each piece of the
+//! motion as the certificates bisect it ([`super::wrench_lp`]).
 
 use std::rc::Rc;
 
-use super::joint_forces::{cable_matrix, load_numerators, load_vector, shared_cable_numerators};
+use super::joint_forces::{cable_matrix, load_numerators, load_vector, routing, shared_cable_numerators};
 use super::wrench_lp::{feasibility_violation, structurally_zero};
 use super::{norm2, Condition, Kind, PoseCheck, Sweep};
-use crate::model::{Bounds, Chain};
+use crate::model::{Bounds, CableSegment, Chain};
 use crate::poly::{Bern, Partition};
 use crate::query::cables::PoseCables;
 use crate::query::wrench::static_margin_of;
@@ -31,8 +33,8 @@ use nalgebra::{DMatrix, DVector};
 pub struct JointStatics {
     /// The links, with their masses, gravity and the wrench applied to a link.
     pub chain: Rc<Chain>,
-    /// The link each cable pulls.
-    pub cable_links: Vec<usize>,
+    /// The cables' segments ([`crate::model::Robot::segments`]; one per cable unless routed).
+    pub segments: Vec<CableSegment>,
     /// Each cable's tension bounds.
     pub bounds: Vec<Bounds>,
 }
@@ -41,10 +43,7 @@ impl JointStatics {
     /// The structure matrix (columns: unit pulls) and the loads' generalised forces at one
     /// configuration, without the rows nothing reaches.
     pub fn system(&self, at: &PoseCables) -> (DMatrix<f64>, DVector<f64>) {
-        let mut j = cable_matrix(&self.chain, &self.cable_links, at);
-        for (mut column, (a, x)) in j.column_iter_mut().zip(at.cables.iter()) {
-            column /= (x - a).norm();
-        }
+        let j = cable_matrix(&self.chain, &self.segments, self.bounds.len(), at);
         let g = load_vector(&self.chain, at);
         let keep: Vec<usize> = (0..j.nrows()).filter(|&r| g[r] != 0.0 || j.row(r).iter().any(|v| *v != 0.0)).collect();
         (j.select_rows(&keep), g.select_rows(&keep))
@@ -61,13 +60,13 @@ impl Condition for JointStatics {
     }
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
-        let rows = shared_cable_numerators(&self.chain, &self.cable_links, sweep);
+        let rows = shared_cable_numerators(&self.chain, &self.segments, sweep);
         let load = load_numerators(&self.chain, sweep);
         let len2 = sweep.cables.iter().map(|c| norm2([&c.s[0].p, &c.s[1].p, &c.s[2].p])).collect();
         // rows nothing reaches (0 = 0) left out
         let (rows, load): (Vec<Vec<Bern>>, Vec<Bern>) =
             rows.iter().zip(load).filter(|(row, g)| !(structurally_zero(g) && row.iter().all(structurally_zero))).map(|(row, g)| (row.clone(), g)).unzip();
-        feasibility_violation(rows, load, len2, self.bounds.clone(), sweep.tol)
+        feasibility_violation(rows, load, len2, self.bounds.clone(), routing(&self.segments, self.bounds.len()), sweep.tol)
     }
 
     fn check(&self, at: &PoseCables) -> PoseCheck {

@@ -20,6 +20,7 @@ pub mod exists;
 mod joint_closure;
 mod joint_forces;
 mod joint_statics;
+mod lipschitz;
 mod load;
 mod offset;
 mod speed;
@@ -44,7 +45,7 @@ pub use wrench_lp::WrenchFeasibilityLp;
 use std::cell::OnceCell;
 use std::rc::Rc;
 
-use crate::model::{Bounds, Load, Motion, Robot};
+use crate::model::{Anchor, Bounds, Load, Motion, Robot};
 use crate::poly::{Bern, Partition, Truth};
 use crate::query::cables::{attached_inside, PoseCables};
 use crate::scenario::Scenario;
@@ -54,15 +55,46 @@ pub use load::TimeLaw;
 use tube::Tube;
 use nalgebra::Vector3;
 
-/// One cable along a motion: the segment base → base + s(λ), with s as a fraction over w.
+/// One cable along a motion: the segment base → base + s(λ), with s as a fraction over w; for a
+/// multi-link robot, one segment of a cable ([`crate::model::Robot::segments`]), whose start may
+/// move with a link too.
 #[derive(Debug, Clone)]
 pub struct SweptCable {
-    /// The base anchor.
+    /// The base anchor (the start, when it is fixed to the base).
     pub base: Vector3<f64>,
+    /// The start Ŝ (over w, as the links' positions) when it moves with a link; `None`: fixed at
+    /// `base`.
+    pub start: Option<[Bern; 3]>,
     /// The cable vector s = p + R b − a (one power of w).
     pub s: HVec,
     /// Balls holding its moving end piece by piece, for pruning.
     pub tube: Tube,
+}
+
+impl SweptCable {
+    /// The segment from the start Ŝ (`None`: fixed at `base`) to the end X̂, over `w`.
+    fn new(base: Vector3<f64>, start: Option<[Bern; 3]>, tip: &[Bern; 3], w: &Bern) -> SweptCable {
+        let w_at = |d: usize| w.elevate(d.max(w.degree()));
+        let (s, tube) = match &start {
+            None => ([0, 1, 2].map(|i| algebra::H { p: Bern::linear_combination(&[(&tip[i], 1.0), (&w_at(tip[i].degree()), -base[i])]), k: 1 }), Tube::new(base, tip, w)),
+            Some(a) => ([0, 1, 2].map(|i| algebra::H { p: tip[i].sub(&a[i]), k: 1 }), Tube::moving(a, tip, w)),
+        };
+        SweptCable { base, start, s, tube }
+    }
+
+    /// Its start Ŝ over `w` (the motion's weight).
+    pub fn start_hat(&self, w: &Bern) -> [Bern; 3] {
+        match &self.start {
+            Some(a) => a.clone(),
+            None => [0, 1, 2].map(|i| w.scale(self.base[i])),
+        }
+    }
+
+    /// Its end X̂ = Ŝ + ŝ over `w`.
+    pub fn tip_hat(&self, w: &Bern) -> [Bern; 3] {
+        let start = self.start_hat(w);
+        [0, 1, 2].map(|i| self.s[i].p.add(&start[i]))
+    }
 }
 
 /// Everything the exact conditions share along one motion.
@@ -116,17 +148,14 @@ impl Sweep {
         let row_degree = |i: usize| links.iter().flat_map(|m| m.rotation[i].iter().chain([&m.position[i]])).map(Bern::degree).fold(w.degree(), usize::max);
         let n = [row_degree(0), row_degree(1), row_degree(2)];
         let lifted: Vec<([Bern; 3], [[Bern; 3]; 3])> = links.iter().map(|m| ([0, 1, 2].map(|i| m.position[i].elevate(n[i])), [0, 1, 2].map(|i| m.rotation[i].each_ref().map(|p| p.elevate(n[i]))))).collect();
-        let w_at = n.map(|d| w.elevate(d));
-        let mut cables = Vec::with_capacity(robot.cables.len());
-        for cable in &robot.cables {
-            let (position, rotation) = &lifted[cable.link];
-            let b = cable.platform;
-            // X̂ = P̂ + M̂ b (one power of w); s = X̂ − a·w
-            let tip = body_point(position, rotation, &b);
-            let s: HVec = [0, 1, 2].map(|i| algebra::H { p: Bern::linear_combination(&[(&tip[i], 1.0), (&w_at[i], -cable.base[i])]), k: 1 });
-            let tube = Tube::new(cable.base, &tip, w);
-            cables.push(SweptCable { base: cable.base, s, tube });
-        }
+        // an anchor's X̂ (one power of w): P̂ + M̂ b on a link, b·w on the base
+        let point = |a: &Anchor| -> [Bern; 3] {
+            match a.link {
+                Some(l) => body_point(&lifted[l].0, &lifted[l].1, &a.point),
+                None => [0, 1, 2].map(|i| w.elevate(n[i]).scale(a.point[i])),
+            }
+        };
+        let cables = robot.segments().iter().map(|seg| SweptCable::new(seg.from.point, seg.from.link.map(|_| point(&seg.from)), &point(&seg.to), w)).collect();
         Sweep { alg: Alg::new(w), cables, tol, links: links.to_vec(), tension: None, facets: None, joint_rows: None, winch: WinchPolys::default(), settled: Vec::new(), duration: None, law: None }
     }
 
@@ -148,9 +177,17 @@ impl Sweep {
             .cables
             .iter()
             .map(|c| {
+                let start = c.start.as_ref().map(|p| p.each_ref().map(|p| p.restrict(a, b)));
                 let s: HVec = c.s.each_ref().map(|h| algebra::H { p: h.p.restrict(a, b), k: h.k });
-                let tip: [Bern; 3] = [0, 1, 2].map(|i| Bern::linear_combination(&[(&s[i].p, 1.0), (w, c.base[i])]));
-                SweptCable { base: c.base, tube: Tube::new(c.base, &tip, w), s }
+                let tip: [Bern; 3] = match &start {
+                    None => [0, 1, 2].map(|i| Bern::linear_combination(&[(&s[i].p, 1.0), (w, c.base[i])])),
+                    Some(st) => [0, 1, 2].map(|i| s[i].p.add(&st[i])),
+                };
+                let tube = match &start {
+                    None => Tube::new(c.base, &tip, w),
+                    Some(st) => Tube::moving(st, &tip, w),
+                };
+                SweptCable { base: c.base, start, tube, s }
             })
             .collect();
         let mut part = Sweep {
@@ -389,22 +426,31 @@ pub trait Condition {
 pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
     let robot = &s.robot;
     let m = robot.cables.len();
+    let segments = robot.segments();
+    // how reports name a segment: its cable, and its number along a routed cable
+    let name = |seg: &crate::model::CableSegment| {
+        if robot.cables[seg.cable].via.is_empty() { format!("cable {}", seg.cable + 1) } else { format!("cable {} segment {}", seg.cable + 1, seg.index + 1) }
+    };
     let mut out: Vec<Box<dyn Condition>> = Vec::new();
     for (i, cable) in robot.cables.iter().enumerate() {
         if cable.length.min > 0.0 || cable.length.max.is_finite() {
-            out.push(Box::new(CableLength { cable: i, bounds: cable.length }));
+            let own = (0..segments.len()).filter(|&k| segments[k].cable == i).collect();
+            out.push(Box::new(CableLength { cable: i, segments: own, bounds: cable.length }));
         }
     }
-    for i in 0..m {
-        for j in (i + 1)..m {
-            if !robot.share_anchor(i, j) {
-                out.push(Box::new(CableCable { i, j, clearance: s.clearance.cable_cable }));
+    for i in 0..segments.len() {
+        for j in (i + 1)..segments.len() {
+            let (a, b) = (&segments[i], &segments[j]);
+            if !Robot::segments_meet(a, b) {
+                let straight = |s: &crate::model::CableSegment| robot.cables[s.cable].via.is_empty();
+                let label = if straight(a) && straight(b) { format!("cables {}-{}", a.cable + 1, b.cable + 1) } else { format!("{} - {}", name(a), name(b)) };
+                out.push(Box::new(CableCable { i, j, cables: [a.cable, b.cable], name: label, clearance: s.clearance.cable_cable }));
             }
         }
     }
     for obstacle in &s.obstacles {
-        for i in 0..m {
-            out.push(Box::new(CableShape::new(i, obstacle, s.clearance.cable_obstacle)));
+        for (k, seg) in segments.iter().enumerate() {
+            out.push(Box::new(CableShape::of_segment(seg.cable, k, name(seg), obstacle, s.clearance.cable_obstacle)));
         }
     }
     if let Some(chain) = &robot.chain {
@@ -413,20 +459,22 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
             if link.radius + clearance <= 0.0 {
                 continue; // no distance is below 0
             }
-            for (i, cable) in robot.cables.iter().enumerate() {
-                if cable.link == l && attached_inside(&cable.platform, &link.body, link.radius + clearance) {
+            for (k, seg) in segments.iter().enumerate() {
+                let attached = [seg.from, seg.to].iter().any(|a| a.link == Some(l) && attached_inside(&a.point, &link.body, link.radius + clearance));
+                if attached {
                     continue; // reported by the scenario's validation: it would hold nowhere
                 }
-                out.push(Box::new(CableLink { cable: i, link: l, name: link.name.clone(), body: link.body, radius: link.radius, clearance }));
+                out.push(Box::new(CableLink { cable: seg.cable, segment: k, cable_name: name(seg), link: l, name: link.name.clone(), body: link.body, radius: link.radius, clearance }));
             }
         }
         let chain = Rc::new(chain.clone());
-        let cable_links: Vec<usize> = robot.cables.iter().map(|c| c.link).collect();
         if chain.is_loaded() {
             let bounds = robot.cables.iter().map(|c| c.tension).collect();
-            out.push(Box::new(JointStatics { chain: Rc::clone(&chain), cable_links: cable_links.clone(), bounds }));
+            out.push(Box::new(JointStatics { chain: Rc::clone(&chain), segments: segments.clone(), bounds }));
         }
-        out.push(Box::new(JointClosure { chain, cable_links }));
+        if chain.closure {
+            out.push(Box::new(JointClosure { chain, segments, cables: m }));
+        }
     }
     for (rate, limit) in [(Rate::Speed, robot.winch.speed), (Rate::Acceleration, robot.winch.acceleration)] {
         if let Some(limit) = limit {

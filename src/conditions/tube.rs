@@ -4,7 +4,8 @@
 //! only where the coarser one cannot decide), a cable's moving end stays in the convex hull of the
 //! rational Bézier control points of that piece (when all weights are positive), hence in a ball
 //! (centre c, radius ρ). Every point a + u·(x − a) of the cable then lies within u·ρ ≤ ρ of the
-//! fixed segment a → c. So if the distance from that segment to another cable's segment, or to a
+//! fixed segment a → c. A segment of a routed cable whose start moves too (anchored on a link)
+//! has a ball (c₀, ρ₀) for its start as well: its points lie within max(ρ₀, ρ) of c₀ → c. So if the distance from that segment to another cable's segment, or to a
 //! ball or capsule around an obstacle, exceeds the clearance plus the radii on every piece, the
 //! condition cannot be violated anywhere and is decided without polynomials.
 
@@ -21,13 +22,13 @@ type V = Vector3<f64>;
 /// Centre and radius.
 type Ball = (V, f64);
 
+/// A cable's segment on one piece: the balls holding its start and its end.
+type Ends = (Ball, Ball);
+
 /// For the balls of a tube and of another (if any) on one piece: how far the fixed segments
 /// through their centres stay beyond the gap, and the radii that margin must exceed.
-type Margin<'a> = dyn Fn(&Ball, Option<&Ball>) -> (f64, f64) + 'a;
+type Margin<'a> = dyn Fn(&Ends, Option<&Ends>) -> (f64, f64) + 'a;
 
-/// For one endpoint case: from the centre and radius of this tube's ball and of the other's, the
-/// distance of the fixed geometry through the centres and the radii it must exceed (beyond the gap).
-type PointMargin<'a> = dyn Fn(&V, f64, &V, f64) -> (f64, f64) + 'a;
 
 /// A simple solid around an obstacle (or part of one), already grown by the clearance.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -66,13 +67,15 @@ pub const DEPTH: usize = 6;
 
 
 
-/// The balls holding a cable's moving end on dyadic pieces of λ (level l: 2^l pieces of width
-/// 2^−l), built on demand and kept: every condition of the cable refines the same pieces, so the
-/// work is shared between them.
+/// The balls holding a cable's moving end (and its start, when that moves too) on dyadic pieces
+/// of λ (level l: 2^l pieces of width 2^−l), built on demand and kept: every condition of the
+/// cable refines the same pieces, so the work is shared between them.
 #[derive(Debug, Clone)]
 pub struct Tube {
-    /// The fixed end (base anchor).
-    pub base: V,
+    /// The start when it is fixed (a base anchor).
+    base: Option<V>,
+    /// The start's balls when it moves.
+    start: Option<RefCell<Pieces>>,
     pieces: RefCell<Pieces>,
 }
 
@@ -94,6 +97,11 @@ struct Pieces {
 /// Slack covering the rounding of the distance computations.
 fn slack(scale: f64) -> f64 {
     1e-9 * (1.0 + scale)
+}
+
+/// The points' largest coordinates in magnitude, summed: the scale of their rounding.
+fn scale(points: &[&V]) -> f64 {
+    points.iter().map(|p| p.abs().max()).sum()
 }
 
 /// Centre and radius of a ball holding X̂/w over the piece whose coefficients are `c` (X̂₀, X̂₁,
@@ -142,6 +150,36 @@ fn push_interval(out: &mut Vec<(f64, f64)>, (a, b): (f64, f64)) {
 }
 
 impl Pieces {
+    /// The root piece of the point X̂/w.
+    fn new(tip: &[Bern; 3], w: &Bern) -> Pieces {
+        let n = tip.iter().map(Bern::degree).max().unwrap_or(0).max(w.degree());
+        let polys = [&tip[0], &tip[1], &tip[2], w].map(|p| if p.degree() == n { Cow::Borrowed(p) } else { Cow::Owned(p.elevate(n)) });
+        let nodes = 2 << DEPTH;
+        let mut coeffs = Vec::with_capacity(nodes * 4 * (n + 1));
+        coeffs.extend(polys.iter().flat_map(|p| p.c.iter().copied()));
+        let errs = polys.map(|p| p.err);
+        let ball = hull_ball(&coeffs, &errs, n + 1);
+        let mut slot = vec![u32::MAX; nodes];
+        slot[1] = 0;
+        let (mut all_errs, mut balls) = (Vec::with_capacity(nodes), Vec::with_capacity(nodes));
+        all_errs.push(errs);
+        balls.push(ball);
+        Pieces { len: n + 1, slot, coeffs, errs: all_errs, balls }
+    }
+
+    /// The ball of dyadic node `k`, building it, its sibling and their missing ancestors.
+    fn ball_of(cell: &RefCell<Pieces>, k: usize) -> Option<Ball> {
+        let slot = cell.borrow().slot[k];
+        if slot != u32::MAX {
+            return cell.borrow().balls[slot as usize];
+        }
+        Pieces::ball_of(cell, k / 2);
+        let mut pieces = cell.borrow_mut();
+        pieces.build_pair(k);
+        let slot = pieces.slot[k] as usize;
+        pieces.balls[slot]
+    }
+
     /// Builds node k and its sibling from their parent, which must exist.
     fn build_pair(&mut self, k: usize) {
         let len = self.len;
@@ -168,33 +206,24 @@ impl Pieces {
 impl Tube {
     /// The tube of the cable from `base` to X̂/w.
     pub fn new(base: V, tip: &[Bern; 3], w: &Bern) -> Tube {
-        let n = tip.iter().map(Bern::degree).max().unwrap_or(0).max(w.degree());
-        let polys = [&tip[0], &tip[1], &tip[2], w].map(|p| if p.degree() == n { Cow::Borrowed(p) } else { Cow::Owned(p.elevate(n)) });
-        let nodes = 2 << DEPTH;
-        let mut coeffs = Vec::with_capacity(nodes * 4 * (n + 1));
-        coeffs.extend(polys.iter().flat_map(|p| p.c.iter().copied()));
-        let errs = polys.map(|p| p.err);
-        let ball = hull_ball(&coeffs, &errs, n + 1);
-        let mut slot = vec![u32::MAX; nodes];
-        slot[1] = 0;
-        let (mut all_errs, mut balls) = (Vec::with_capacity(nodes), Vec::with_capacity(nodes));
-        all_errs.push(errs);
-        balls.push(ball);
-        let pieces = Pieces { len: n + 1, slot, coeffs, errs: all_errs, balls };
-        Tube { base, pieces: RefCell::new(pieces) }
+        Tube { base: Some(base), start: None, pieces: RefCell::new(Pieces::new(tip, w)) }
     }
 
-    /// The ball of dyadic node `k`, building it, its sibling and their missing ancestors.
-    fn ball_of(&self, k: usize) -> Option<Ball> {
-        let slot = self.pieces.borrow().slot[k];
-        if slot != u32::MAX {
-            return self.pieces.borrow().balls[slot as usize];
-        }
-        self.ball_of(k / 2);
-        let mut pieces = self.pieces.borrow_mut();
-        pieces.build_pair(k);
-        let slot = pieces.slot[k] as usize;
-        pieces.balls[slot]
+    /// The tube of a segment whose start Ŝ/w moves too (anchored on a link) and whose end is X̂/w.
+    pub fn moving(start: &[Bern; 3], tip: &[Bern; 3], w: &Bern) -> Tube {
+        Tube { base: None, start: Some(RefCell::new(Pieces::new(start, w))), pieces: RefCell::new(Pieces::new(tip, w)) }
+    }
+
+    /// The balls of the start and the end on dyadic node `k` (`None` where a weight is not
+    /// certainly positive).
+    fn ends_of(&self, k: usize) -> Option<Ends> {
+        let end = Pieces::ball_of(&self.pieces, k)?;
+        let start = match (&self.start, self.base) {
+            (Some(cell), _) => Pieces::ball_of(cell, k)?,
+            (None, Some(base)) => (base, 0.0),
+            (None, None) => return None,
+        };
+        Some((start, end))
     }
 
     /// The λ-intervals (ordered, disjoint, unions of dyadic pieces down to width 2^−DEPTH) where
@@ -214,8 +243,8 @@ impl Tube {
                 push_interval(&mut out, (a, b));
                 continue;
             }
-            let mine = self.ball_of(k);
-            let theirs = other.map(|t| t.ball_of(k));
+            let mine = self.ends_of(k);
+            let theirs = other.map(|t| t.ends_of(k));
             let (m, radii) = match (mine, theirs) {
                 (Some(b), None) => margin(&b, None),
                 (Some(b), Some(Some(c))) => margin(&b, Some(&c)),
@@ -241,34 +270,33 @@ impl Tube {
     /// Where the cable may come within `gap` of the other cable: the λ-intervals the balls could
     /// not clear (empty when the two stay farther apart throughout), or that lie inside `spare`.
     pub fn undecided_near(&self, other: &Tube, gap: f64, spare: &[(f64, f64)]) -> Vec<(f64, f64)> {
-        self.undecided(Some(other), spare, 0, &|(c, r), theirs| {
-            let (d, q) = theirs.expect("a ball of the other tube");
-            let dist = segment_segment_dist(&self.base, &(c - self.base), &other.base, &(d - other.base));
-            (dist - gap - slack(c.abs().max() + d.abs().max()), r + q)
+        self.undecided(Some(other), spare, 0, &|((a, ra), (c, r)), theirs| {
+            let ((b, rb), (d, q)) = theirs.expect("balls of the other tube");
+            let dist = segment_segment_dist(a, &(c - a), b, &(d - b));
+            (dist - gap - slack(scale(&[a, c, b, d])), ra.max(*r) + rb.max(*q))
         })
     }
 
     /// Which endpoint cases of the distance between this cable and `other` (in the order of
     /// [`EndCases`], this cable first) may come within `gap` outside `spare`: each case is a
-    /// point (a base, or a moving end in its ball) against the other cable's segment, so its
+    /// point (a start, or a moving end in its ball) against the other cable's segment, so its
     /// pruning clears it wherever that point stays away, even where the segments come close.
     pub fn ends_near(&self, other: &Tube, gap: f64, spare: &[(f64, f64)]) -> EndCases {
-        let (a, b) = (self.base, other.base);
         // the distance from point p to the segment a → c
         let dist = |p: &V, a: &V, c: &V| point_segment_dist2(p, a, &(c - a), None).sqrt();
-        let case = |margin: &PointMargin| {
-            let undecided = self.undecided(Some(other), spare, 0, &|(c, r), theirs| {
-                let (d, q) = theirs.expect("a ball of the other tube");
-                let (m, radii) = margin(c, *r, d, *q);
-                (m - gap - slack(c.abs().max() + d.abs().max()), radii)
+        let case = |margin: &dyn Fn(&Ends, &Ends) -> (f64, f64)| {
+            let undecided = self.undecided(Some(other), spare, 0, &|mine, theirs| {
+                let theirs = theirs.expect("balls of the other tube");
+                let (m, radii) = margin(mine, theirs);
+                (m - gap - slack(scale(&[&mine.0 .0, &mine.1 .0, &theirs.0 .0, &theirs.1 .0])), radii)
             });
             !subtract(&undecided, spare).0.is_empty()
         };
         [
-            case(&|c, r, _, _| (dist(&b, &a, c), r)),
-            case(&|_, _, d, q| (dist(&a, &b, d), q)),
-            case(&|c, r, d, q| (dist(d, &a, c), r + q)),
-            case(&|c, r, d, q| (dist(c, &b, d), r + q)),
+            case(&|((a, ra), (c, r)), ((b, rb), _)| (dist(b, a, c), rb + ra.max(*r))),
+            case(&|((a, ra), _), ((b, rb), (d, q))| (dist(a, b, d), ra + rb.max(*q))),
+            case(&|((a, ra), (c, r)), (_, (d, q))| (dist(d, a, c), q + ra.max(*r))),
+            case(&|(_, (c, r)), ((b, rb), (d, q))| (dist(c, b, d), r + rb.max(*q))),
         ]
     }
 
@@ -280,17 +308,17 @@ impl Tube {
     /// keep judging from the whole motion on: halving there changes where their exact work runs,
     /// and a grazing pair's uncertain section in tests/slerp.rs then grows past 10⁻⁷.
     pub fn undecided_in(&self, bound: &Bound, spare: &[(f64, f64)]) -> Vec<(f64, f64)> {
-        self.undecided(None, spare, 1, &|(c, r), _| (bound.distance_from(&self.base, &(c - self.base)) - slack(c.abs().max()), *r))
+        self.undecided(None, spare, 1, &|((a, ra), (c, r)), _| (bound.distance_from(a, &(c - a)) - slack(scale(&[a, c])), ra.max(*r)))
     }
 
     /// Where the cable's length may leave [lo, hi]: the λ-intervals the balls could not keep
-    /// inside (the length lies within the ball's radius of the base's distance to its centre), or
-    /// that lie inside `spare`. A bound ≤ 0 below or infinite above never binds.
+    /// inside (the length lies within the balls' radii of the distance between their centres),
+    /// or that lie inside `spare`. A bound ≤ 0 below or infinite above never binds.
     pub fn undecided_length(&self, lo: f64, hi: f64, spare: &[(f64, f64)]) -> Vec<(f64, f64)> {
-        self.undecided(None, spare, 1, &|(c, r), _| {
-            let dist = (c - self.base).norm();
+        self.undecided(None, spare, 1, &|((a, ra), (c, r)), _| {
+            let dist = (c - a).norm();
             let below = if lo > 0.0 { dist - lo } else { f64::INFINITY };
-            (below.min(hi - dist) - slack(c.abs().max() + self.base.abs().max()), *r)
+            (below.min(hi - dist) - slack(scale(&[a, c])), ra + r)
         })
     }
 

@@ -38,6 +38,7 @@
 //! the boundary need pieces of width ~√(margin), not ~margin. The cost per piece is two linear
 //! programs in O(m) variables, O(m) polynomial linear combinations and a few products.
 
+use std::borrow::Cow;
 use std::rc::Rc;
 
 use nalgebra::{DMatrix, DVector};
@@ -90,6 +91,10 @@ struct Piece {
     w: Bern,
     len2: Vec<[Bern; 3]>,
     width: f64,
+    /// For a multi-link robot with routed cables: the cable of each column of `n` (a segment of
+    /// it, `len2` that segment's), the cable's column the sum of its segments' n_s/L_s; `None`:
+    /// one column per cable.
+    cable_of: Option<Rc<Vec<usize>>>,
 }
 
 impl Piece {
@@ -117,7 +122,7 @@ impl Piece {
                 [p, d, dd]
             })
             .collect();
-        Piece { len2, n, load, w, width: 1.0 }
+        Piece { len2, n, load, w, width: 1.0, cable_of: None }
     }
 
     fn halves(&self) -> (Piece, Piece) {
@@ -133,7 +138,8 @@ impl Piece {
         let (wl, wr) = self.w.split(0.5);
         let (pl, pr) = self.len2.iter().map(split_array).unzip();
         let width = 0.5 * self.width;
-        (Piece { n: nl, load: ll, w: wl, len2: pl, width }, Piece { n: nr, load: lr, w: wr, len2: pr, width })
+        let cable_of = self.cable_of.clone();
+        (Piece { n: nl, load: ll, w: wl, len2: pl, width, cable_of: cable_of.clone() }, Piece { n: nr, load: lr, w: wr, len2: pr, width, cable_of })
     }
 }
 
@@ -168,6 +174,30 @@ impl InverseLength {
     }
 }
 
+/// The cables' columns of a robot with routed cables on a piece, from its segments' columns `n`
+/// and inverse lengths `inv` (`cable_of` the cable of each segment, `m` cables): entry (r, k) the
+/// polynomial Σ_s n_rs·s_s over cable k's segments, its error bound grown by Σ_s |n_rs| ε_s; and
+/// per cable the unit inverse length (the columns already are the unit pulls).
+fn grouped<'a>(n: &[Vec<Bern>], inv: &[InverseLength], cable_of: &[usize], m: usize) -> (Cow<'a, Vec<Vec<Bern>>>, Vec<InverseLength>) {
+    let columns = n
+        .iter()
+        .map(|row| {
+            let mut out = vec![Bern::constant(0.0); m];
+            for ((entry, il), &k) in row.iter().zip(inv).zip(cable_of) {
+                if structurally_zero(entry) {
+                    continue;
+                }
+                let mut term = entry.mul(&il.s);
+                term.err += Iv::of(entry).mag() * il.eps;
+                out[k] = out[k].add(&term);
+            }
+            out
+        })
+        .collect();
+    let unit = (0..m).map(|_| InverseLength { s: Bern::from_bernstein(vec![1.0, 1.0]), mid: 1.0, eps: 0.0 }).collect();
+    (Cow::Owned(columns), unit)
+}
+
 /// Σ_k n_k·(c_k,0 (1 − λ) + c_k,1 λ): a row of N against affine polynomials given by their two
 /// Bernstein coefficients, as two linear combinations (no product per cable).
 fn affine_sum(row: &[Bern], c: &[[f64; 2]]) -> Bern {
@@ -190,22 +220,27 @@ impl WrenchFeasibilityLp {
             return Truth::Unknown;
         }
         let Some(inv) = piece.len2.iter().map(|p| InverseLength::of(p, piece.width)).collect::<Option<Vec<_>>>() else { return Truth::Unknown };
-        let (n, m) = (piece.n.len(), inv.len());
+        let (columns, inv) = match &piece.cable_of {
+            None => (Cow::Borrowed(&piece.n), inv),
+            Some(cable_of) => grouped(&piece.n, &inv, cable_of, self.bounds.len()),
+        };
+        let nn: &[Vec<Bern>] = &columns;
+        let (n, m) = (nn.len(), inv.len());
         let wc = piece.w.eval(0.5).0;
-        let nc = DMatrix::from_fn(n, m, |r, k| piece.n[r][k].eval(0.5).0);
+        let nc = DMatrix::from_fn(n, m, |r, k| nn[r][k].eval(0.5).0);
         // the scaled structure matrix at the middle: columns n_k·W/L_k, and the load rows
         let j = DMatrix::from_fn(n, m, |r, k| nc[(r, k)] * wc * inv[k].mid);
         let b = DVector::from_fn(n, |r, _| piece.load[r].eval(0.5).0);
         match static_margin_of(&j, &b, &self.bounds) {
-            Some((t, f)) if t > 0.0 => self.feasible(piece, &inv, &nc, &f, w),
+            Some((t, f)) if t > 0.0 => self.feasible(piece, nn, &inv, &nc, &f, w),
             // a row of N that is zero throughout: rank below n, no closure
-            _ if self.closure && piece.n.iter().any(|row| row.iter().all(structurally_zero)) => Truth::False,
-            _ if self.closure => match enclosing_direction(&j).or_else(|| block_direction(piece, &j, blocks)) {
-                Some(y) => self.infeasible(piece, &inv, &y, w),
+            _ if self.closure && nn.iter().any(|row| row.iter().all(structurally_zero)) => Truth::False,
+            _ if self.closure => match enclosing_direction(&j).or_else(|| block_direction(nn, &j, blocks)) {
+                Some(y) => self.infeasible(piece, nn, &inv, &y, w),
                 None => Truth::Unknown,
             },
             _ => match separating_direction(&j, &b, &self.bounds) {
-                Some((y, _)) => self.infeasible(piece, &inv, &y, w),
+                Some((y, _)) => self.infeasible(piece, nn, &inv, &y, w),
                 None => Truth::Unknown,
             },
         }
@@ -213,8 +248,8 @@ impl WrenchFeasibilityLp {
 
     /// True when the tensions `f` at the middle, carried along the piece to first order and
     /// corrected, stay strictly within the bounds throughout (module docs).
-    fn feasible(&self, piece: &Piece, inv: &[InverseLength], nc: &DMatrix<f64>, f: &[f64], w: Iv) -> Truth {
-        let (n, m) = (piece.n.len(), inv.len());
+    fn feasible(&self, piece: &Piece, nn: &[Vec<Bern>], inv: &[InverseLength], nc: &DMatrix<f64>, f: &[f64], w: Iv) -> Truth {
+        let (n, m) = (nn.len(), inv.len());
         let wc = piece.w.eval(0.5).0;
         // ψ0_k = s_k f_k; P_r = Σ_k n_rk ψ0_k and ρ0 = load − W P, of which only ρ0'(½) is needed
         let psi0: Vec<[f64; 2]> = inv.iter().zip(f).map(|(i, fk)| [i.s.c[0] * fk, i.s.c[1] * fk]).collect();
@@ -225,7 +260,7 @@ impl WrenchFeasibilityLp {
             return Truth::Unknown;
         }
         let slope = DVector::from_fn(n, |r, _| {
-            let p = affine_sum(&piece.n[r], &psi0);
+            let p = affine_sum(&nn[r], &psi0);
             d[r] * (load1(r) - wc1 * p.eval(0.5).0 - wc * p.derivative().eval(0.5).0) / wc
         });
         let dn = DMatrix::from_fn(n, m, |r, k| d[r] * nc[(r, k)]);
@@ -236,15 +271,15 @@ impl WrenchFeasibilityLp {
         let Ok(gamma) = svd.solve(&slope, SLACK * smax) else { return Truth::Unknown };
         let psi: Vec<[f64; 2]> = psi0.iter().zip(gamma.iter()).map(|(p, g)| [p[0] - 0.5 * g, p[1] + 0.5 * g]).collect();
         let residual = (0..n)
-            .map(|r| (d[r] * Iv::of(&piece.load[r].sub(&piece.w.mul(&affine_sum(&piece.n[r], &psi)))).mag()).powi(2))
+            .map(|r| (d[r] * Iv::of(&piece.load[r].sub(&piece.w.mul(&affine_sum(&nn[r], &psi)))).mag()).powi(2))
             .sum::<f64>()
             .sqrt();
         // σ_min(D N(λ)) ≥ σ_min(D N(½)) − ‖D (N(λ) − N(½))‖_F
         let mut drift = 0.0;
         for r in 0..n {
             for k in 0..m {
-                let range = Iv::of(&piece.n[r][k]);
-                let dev = (range.hi - nc[(r, k)]).max(nc[(r, k)] - range.lo) + piece.n[r][k].eval(0.5).1;
+                let range = Iv::of(&nn[r][k]);
+                let dev = (range.hi - nc[(r, k)]).max(nc[(r, k)] - range.lo) + nn[r][k].eval(0.5).1;
                 drift += (d[r] * dev).powi(2);
             }
         }
@@ -270,15 +305,15 @@ impl WrenchFeasibilityLp {
 
     /// False when the direction `y` keeps y·load above the zonotope's support on the whole piece
     /// (module docs).
-    fn infeasible(&self, piece: &Piece, inv: &[InverseLength], y: &DVector<f64>, w: Iv) -> Truth {
-        let (n, m) = (piece.n.len(), inv.len());
+    fn infeasible(&self, piece: &Piece, nn: &[Vec<Bern>], inv: &[InverseLength], y: &DVector<f64>, w: Iv) -> Truth {
+        let (n, m) = (nn.len(), inv.len());
         // max(f_min a_k, f_max a_k) ≤ α_k + β_k a_k on the range of a_k = y·n_k (the chord of a
         // convex function); the support's polynomial part over W is Σ_k s_k (α_k + β_k a_k) =
         // Σ_k α_k s_k + Σ_r y_r Σ_k β_k s_k n_rk, and Σ_k ε_k |α_k + β_k a_k| bounds the rest
         let (mut constant, mut rest) = ([0.0; 2], 0.0);
         let mut weights = Vec::with_capacity(m);
         for (k, il) in inv.iter().enumerate() {
-            let a = Bern::linear_combination(&(0..n).map(|r| (&piece.n[r][k], y[r])).collect::<Vec<_>>());
+            let a = Bern::linear_combination(&(0..n).map(|r| (&nn[r][k], y[r])).collect::<Vec<_>>());
             let range = Iv::of(&a);
             let Bounds { min, max } = self.bounds[k];
             let (alpha, beta) = if range.hi <= 0.0 {
@@ -301,7 +336,7 @@ impl WrenchFeasibilityLp {
         let mut support = Bern::from_bernstein(constant.to_vec());
         for r in 0..n {
             let c: Vec<[f64; 2]> = weights.iter().map(|b| [y[r] * b[0], y[r] * b[1]]).collect();
-            support = support.add(&affine_sum(&piece.n[r], &c));
+            support = support.add(&affine_sum(&nn[r], &c));
         }
         let excess = Bern::linear_combination(&(0..n).map(|r| (&piece.load[r], y[r])).collect::<Vec<_>>()).sub(&piece.w.mul(&support));
         if least(&excess) - w.hi * rest - SLACK * excess.max_abs() > 0.0 {
@@ -347,9 +382,9 @@ pub(super) fn structurally_zero(p: &Bern) -> bool {
 /// do not reach them are exactly zero there ([`structurally_zero`]), so y·n_k ≡ 0 for them and
 /// J f = 0 still has no solution f ≥ 1 (a link whose own cables cannot span its joints, where the
 /// whole matrix has no strictly enclosing direction).
-fn block_direction(piece: &Piece, j: &DMatrix<f64>, blocks: &[Vec<usize>]) -> Option<DVector<f64>> {
+fn block_direction(nn: &[Vec<Bern>], j: &DMatrix<f64>, blocks: &[Vec<usize>]) -> Option<DVector<f64>> {
     blocks.iter().find_map(|rows| {
-        let cols: Vec<usize> = (0..j.ncols()).filter(|&k| rows.iter().any(|&r| !structurally_zero(&piece.n[r][k]))).collect();
+        let cols: Vec<usize> = (0..j.ncols()).filter(|&k| rows.iter().any(|&r| !structurally_zero(&nn[r][k]))).collect();
         let sub = DMatrix::from_fn(rows.len(), cols.len(), |r, c| j[(rows[r], cols[c])]);
         let y = enclosing_direction(&sub)?;
         let mut full = DVector::zeros(j.nrows());
@@ -368,20 +403,29 @@ fn block_direction(piece: &Piece, j: &DMatrix<f64>, blocks: &[Vec<usize>]) -> Op
 /// rows, whose columns are not divided by the cables' lengths). For any n and m: no facets.
 /// `blocks` are sets of rows within which closure may fail on its own (a multi-link robot's
 /// subtrees: the joints of a link and its descendants, which only the cables pulling them reach).
-pub(crate) fn closure_violation(rows: Vec<Vec<Bern>>, tol: f64, blocks: &[Vec<usize>]) -> Partition {
-    let (n, m) = (rows.len(), rows.first().map_or(0, Vec::len));
+/// With routed cables `rows` has a column per segment, `len2` its P_s and `cable_of` its cable,
+/// the cable's column the sum of its segments' n_s/√P_s; without (`cable_of` `None`) each P_k
+/// is a positive factor of its column and may be given as 1.
+pub(crate) fn closure_violation(rows: Vec<Vec<Bern>>, len2: Vec<Bern>, cable_of: Option<Vec<usize>>, tol: f64, blocks: &[Vec<usize>]) -> Partition {
+    let n = rows.len();
+    let m = cable_of.as_ref().map_or(len2.len(), |c| c.iter().max().map_or(0, |k| k + 1));
     let lp = WrenchFeasibilityLp::closure(&Load { wrench: crate::model::Wrench::zero(), dynamics: None, mobility: crate::model::Mobility::Spatial }, m);
-    lp.violation_of(Piece::new(rows, vec![Bern::constant(0.0); n], Bern::constant(1.0), vec![Bern::constant(1.0); m]), tol, blocks)
+    let mut piece = Piece::new(rows, vec![Bern::constant(0.0); n], Bern::constant(1.0), len2);
+    piece.cable_of = cable_of.map(Rc::new);
+    lp.violation_of(piece, tol, blocks)
 }
 
 /// Where tensions strictly within `bounds` cannot balance the load along a motion (λ ∈ [0, 1]),
 /// for the system N φ = load with φ_k = f_k/√P_k: `rows` the n × m matrix N, `load` its n
 /// right-hand sides and `len2` the P_k (positive; the squared lengths times a common positive
-/// factor that N's rows carry too). By the same certificates as the platform's, for any n and m
+/// factor that N's rows carry too). With routed cables N has a column per segment, `cable_of`
+/// its cable, and cable k's column is Σ_s n_s/√P_s over its segments. By the same certificates as the platform's, for any n and m
 /// (a multi-link robot's joint-space statics).
-pub(crate) fn feasibility_violation(rows: Vec<Vec<Bern>>, load: Vec<Bern>, len2: Vec<Bern>, bounds: Vec<Bounds>, tol: f64) -> Partition {
+pub(crate) fn feasibility_violation(rows: Vec<Vec<Bern>>, load: Vec<Bern>, len2: Vec<Bern>, bounds: Vec<Bounds>, cable_of: Option<Vec<usize>>, tol: f64) -> Partition {
     let lp = WrenchFeasibilityLp { load: Rc::new(Load { wrench: crate::model::Wrench::zero(), dynamics: None, mobility: crate::model::Mobility::Spatial }), bounds, closure: false };
-    lp.violation_of(Piece::new(rows, load, Bern::constant(1.0), len2), tol, &[])
+    let mut piece = Piece::new(rows, load, Bern::constant(1.0), len2);
+    piece.cable_of = cable_of.map(Rc::new);
+    lp.violation_of(piece, tol, &[])
 }
 
 impl Condition for WrenchFeasibilityLp {

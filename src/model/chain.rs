@@ -237,6 +237,9 @@ pub struct Chain {
     pub gravity: Vector3<f64>,
     /// A wrench applied to one link from outside, if any.
     pub load: Option<LinkWrench>,
+    /// Whether joint-space wrench closure is a condition (format 6 `robot.closure`; true unless
+    /// the file leaves it out: a loaded arm hanging from its cables holds its weight without it).
+    pub closure: bool,
 }
 
 /// A link's pose in the world: origin and rotation.
@@ -263,6 +266,7 @@ impl Chain {
             }],
             gravity: Vector3::zeros(),
             load: None,
+            closure: true,
         }
     }
 
@@ -494,6 +498,7 @@ mod tests {
             ],
             gravity: Vector3::zeros(),
             load: None,
+            closure: true,
         }
     }
 

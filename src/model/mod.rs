@@ -16,6 +16,6 @@ pub use chain::{Chain, Joint, JointCoord, JointPath, Link, LinkWrench};
 pub use dynamics::{Dynamics, Kinematics, Winch};
 pub use motion::Motion;
 pub use pose::{Coord, Pose};
-pub use robot::{Bounds, Cable, Clearance, Mobility, Robot};
+pub use robot::{Anchor, Bounds, Cable, CableSegment, Clearance, Mobility, Robot};
 pub use trajectory::{Knot, Knots, Orientation, Profile, Segment, Trajectory, Translation};
 pub use wrench::{Load, PointFrame, Wrench};

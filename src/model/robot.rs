@@ -1,6 +1,8 @@
 //! A cable robot: cables, each the segment from a base anchor (world frame) to an anchor on the
 //! platform or on one link of a multi-link chain (in that link's frame), with length and tension
-//! bounds.
+//! bounds. A multi-link robot's cable may start on a link and be routed through anchors on
+//! several links: it is then a chain of straight [`CableSegment`]s, its length their sum, its tension
+//! the same along all of them.
 
 use super::{Chain, Dynamics, Winch};
 use nalgebra::Vector3;
@@ -21,10 +23,11 @@ impl Bounds {
     }
 }
 
-/// One cable: the segment a_i → p + R·b_i, (p, R) the pose of the platform or of its link.
+/// One cable: the segment a_i → p + R·b_i, (p, R) the pose of the platform or of its link; or,
+/// routed, the segments from a_i through each of `via` to b_i.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Cable {
-    /// Base anchor a_i in the world frame.
+    /// Base anchor a_i in the world frame (in the frame of link `from`, when given).
     pub base: Vector3<f64>,
     /// Platform anchor b_i in the platform's (or its link's) frame.
     pub platform: Vector3<f64>,
@@ -34,6 +37,56 @@ pub struct Cable {
     pub length: Bounds,
     /// Allowed cable tension.
     pub tension: Bounds,
+    /// The link the first anchor `base` is fixed to; `None`: the base (the world).
+    pub from: Option<usize>,
+    /// The anchors the cable runs through between `base` and `platform`, in order; empty for a
+    /// straight cable.
+    pub via: Vec<Anchor>,
+}
+
+/// A point a cable is attached to or runs through: fixed to the base (world frame) or to a link
+/// (in its frame).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Anchor {
+    /// The link it is fixed to; `None`: the base.
+    pub link: Option<usize>,
+    /// The point, in that link's frame (the world's for the base).
+    pub point: Vector3<f64>,
+}
+
+/// One straight piece of a cable, between two consecutive anchors.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CableSegment {
+    /// The cable it belongs to (index into the robot's cables).
+    pub cable: usize,
+    /// Its number along the cable (0 from the base anchor).
+    pub index: usize,
+    /// The anchor it starts from.
+    pub from: Anchor,
+    /// The anchor it ends at.
+    pub to: Anchor,
+}
+
+impl Cable {
+    /// A straight cable from the base anchor `base` (world frame) to `platform` on link `link`.
+    pub fn straight(base: Vector3<f64>, platform: Vector3<f64>, link: usize, length: Bounds, tension: Bounds) -> Cable {
+        Cable { base, platform, link, length, tension, from: None, via: Vec::new() }
+    }
+
+    /// Whether the cable is more than one straight segment from the base (routed through
+    /// anchors, or starting on a link).
+    pub fn is_routed(&self) -> bool {
+        self.from.is_some() || !self.via.is_empty()
+    }
+
+    /// Its anchors in order, from `base` to `platform`.
+    pub fn anchors(&self) -> Vec<Anchor> {
+        let mut out = Vec::with_capacity(self.via.len() + 2);
+        out.push(Anchor { link: self.from, point: self.base });
+        out.extend(self.via.iter().copied());
+        out.push(Anchor { link: Some(self.link), point: self.platform });
+        out
+    }
 }
 
 /// How the platform of a platform robot moves, and so which wrench components its cables must
@@ -122,11 +175,33 @@ pub struct Clearance {
 }
 
 impl Robot {
-    /// Whether cables `i` and `j` share an anchor (base or platform): such cables meet there by
-    /// design, so their mutual clearance is not checked.
+    /// Every cable's segments, cable by cable, each in order from its base anchor: one per
+    /// straight cable, so that for a robot without routed cables segment i is cable i.
+    pub fn segments(&self) -> Vec<CableSegment> {
+        let mut out = Vec::with_capacity(self.cables.len());
+        for (cable, c) in self.cables.iter().enumerate() {
+            let anchors = c.anchors();
+            out.extend(anchors.windows(2).enumerate().map(|(index, w)| CableSegment { cable, index, from: w[0], to: w[1] }));
+        }
+        out
+    }
+
+    /// Whether any cable is routed ([`Cable::is_routed`]).
+    pub fn is_routed(&self) -> bool {
+        self.cables.iter().any(Cable::is_routed)
+    }
+
+    /// Whether cables `i` and `j` share an anchor (the same point of the base or of one link):
+    /// they meet there by design, so their mutual clearance is not checked. For straight cables:
+    /// the same base anchor, or the same anchor on the same link.
     pub fn share_anchor(&self, i: usize, j: usize) -> bool {
-        let (a, b) = (&self.cables[i], &self.cables[j]);
-        a.base == b.base || (a.link == b.link && a.platform == b.platform)
+        let b = self.cables[j].anchors();
+        self.cables[i].anchors().iter().any(|p| b.contains(p))
+    }
+
+    /// Whether segments `a` and `b` share an anchor, as [`Robot::share_anchor`] for cables.
+    pub fn segments_meet(a: &CableSegment, b: &CableSegment) -> bool {
+        [a.from, a.to].iter().any(|p| [b.from, b.to].contains(p))
     }
 
     /// (base anchor, platform anchor in the world frame) per cable of a platform robot at `pose`.

@@ -7,17 +7,18 @@ use std::cell::OnceCell;
 
 use super::wrench::{tension_ranges_at, TensionRange};
 use crate::model::chain::Frame;
-use crate::model::{Kinematics, Load, Pose, Robot};
+use crate::model::{Anchor, Kinematics, Load, Pose, Robot};
 use nalgebra::Vector3;
 
 /// The cables at one pose — base anchor and platform anchor in the world frame, indexable as a
-/// slice of pairs — with the pose itself, every link's frame, and the tension ranges, computed at
+/// slice of pairs (for a multi-link robot, the two ends of each segment of each cable) — with the pose itself, every link's frame, and the tension ranges, computed at
 /// most once per pose for all the tension conditions that ask.
 #[derive(Debug, Clone)]
 pub struct PoseCables {
     /// The pose (of the platform, or of a multi-link robot's first link).
     pub pose: Pose,
-    /// (base anchor, platform anchor) per cable.
+    /// (base anchor, platform anchor) per cable; for a multi-link robot (start, end) per segment
+    /// ([`Robot::segments`]), as many as cables when none is routed.
     pub cables: Vec<(Vector3<f64>, Vector3<f64>)>,
     /// Every link's frame (the platform's alone for a platform robot).
     pub links: Vec<Frame>,
@@ -74,17 +75,32 @@ pub fn cables_at_config(robot: &Robot, q: &[f64]) -> PoseCables {
     }
 }
 
-/// The cables of a multi-link `robot` with its links at `links`.
+/// The cables of a multi-link `robot` with its links at `links`: one pair per segment
+/// ([`Robot::segments`]), its two ends in the world frame.
 fn cables_of_chain(robot: &Robot, links: Vec<Frame>) -> PoseCables {
     let (p, r) = links[0];
     let pose = Pose { position: p, rotation: nalgebra::UnitQuaternion::from_matrix(&r) };
+    let world = |a: &Anchor| a.link.map_or(a.point, |l| links[l].0 + links[l].1 * a.point);
     PoseCables {
         pose,
-        cables: robot.cables.iter().map(|c| (c.base, links[c.link].0 + links[c.link].1 * c.platform)).collect(),
+        cables: robot.segments().iter().map(|s| (world(&s.from), world(&s.to))).collect(),
         links,
         kinematics: None,
         tensions: OnceCell::new(),
     }
+}
+
+/// Each cable's length at the pose `at` of `robot`: the sum of its segments' for a routed cable.
+pub fn cable_lengths(robot: &Robot, at: &PoseCables) -> Vec<f64> {
+    let mut out = vec![0.0; robot.cables.len()];
+    if at.cables.len() == out.len() {
+        // one segment per cable
+        return at.cables.iter().map(|(a, x)| (x - a).norm()).collect();
+    }
+    for (seg, (a, x)) in robot.segments().iter().zip(at.iter()) {
+        out[seg.cable] += (x - a).norm();
+    }
+    out
 }
 
 /// Whether the anchor `b` (in its link's frame) lies within distance `r` of the link's body

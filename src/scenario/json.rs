@@ -32,10 +32,13 @@ pub const FORMAT_4: &str = "cablenav-scenario/4";
 /// Format version 5: version 4 plus point-mass and planar robots (`robot.mobility`). A file using
 /// them must declare it.
 pub const FORMAT_5: &str = "cablenav-scenario/5";
+/// Format version 6: version 5 plus routed cables of multi-link robots (cables' `from` and
+/// `via`). A file using them must declare it.
+pub const FORMAT_6: &str = "cablenav-scenario/6";
 
-/// The version number of a format string this reader knows (1 to 5), or `None`.
+/// The version number of a format string this reader knows (1 to 6), or `None`.
 pub fn version(format: &str) -> Option<u8> {
-    [FORMAT, FORMAT_2, FORMAT_3, FORMAT_4, FORMAT_5].iter().position(|f| *f == format).map(|k| k as u8 + 1)
+    [FORMAT, FORMAT_2, FORMAT_3, FORMAT_4, FORMAT_5, FORMAT_6].iter().position(|f| *f == format).map(|k| k as u8 + 1)
 }
 
 /// The whole file.
@@ -111,6 +114,10 @@ pub struct RawRobot {
     /// Gravity on a multi-link robot's links (format 4; a platform's is in `dynamics`).
     #[serde(default)]
     pub gravity: Option<Fixed<f64, 3>>,
+    /// Whether a multi-link robot's joint-space wrench closure is a condition (format 6;
+    /// default true).
+    #[serde(default)]
+    pub closure: Option<bool>,
 }
 
 /// The platform as a rigid body: mass, centre of mass and inertia about it (platform frame),
@@ -205,10 +212,26 @@ pub struct RawCable {
     /// The link the cable pulls (multi-link robots), by name.
     #[serde(default)]
     pub link: Option<String>,
+    /// The link `base` is fixed to (multi-link robots, format 6), by name; absent: the base.
+    #[serde(default)]
+    pub from: Option<String>,
+    /// The anchors a routed cable runs through between `base` and `platform` (format 6).
+    #[serde(default)]
+    pub via: Option<Vec<RawAnchor>>,
     #[serde(default)]
     pub length: Option<RawCableBounds>,
     #[serde(default)]
     pub tension: Option<RawCableBounds>,
+}
+
+/// One anchor a routed cable runs through: a point of a link (its frame), or of the base (world
+/// frame) when `link` is absent.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawAnchor {
+    #[serde(default)]
+    pub link: Option<String>,
+    pub point: Fixed<f64, 3>,
 }
 
 /// Per-cable bounds, overriding the robot-level ones end by end.
@@ -611,11 +634,11 @@ pub fn parse(text: &str) -> Result<RawScenario> {
     let head: FormatOnly = read(text)?;
     match head.format {
         None => {
-            return Err(Error::new("format", format!("missing; this version reads \"{FORMAT}\" to \"{FORMAT_5}\"")));
+            return Err(Error::new("format", format!("missing; this version reads \"{FORMAT}\" to \"{FORMAT_6}\"")));
         }
         Some(serde_json::Value::String(s)) if version(&s).is_some() => {}
         Some(other) => {
-            return Err(Error::new("format", format!("unsupported format {other}; this version reads \"{FORMAT}\" to \"{FORMAT_5}\"")));
+            return Err(Error::new("format", format!("unsupported format {other}; this version reads \"{FORMAT}\" to \"{FORMAT_6}\"")));
         }
     }
     read(text)

@@ -10,7 +10,7 @@ use crate::error::{Error, Result};
 use crate::model::{Clearance, Coord, Pose, Robot, Trajectory, Wrench};
 use crate::shape::Obstacle;
 
-pub use json::{FORMAT, FORMAT_3, FORMAT_4, FORMAT_5};
+pub use json::{FORMAT, FORMAT_3, FORMAT_4, FORMAT_5, FORMAT_6};
 pub use validate::STANDARD_GRAVITY;
 
 /// A planning query between two named poses (a multi-link robot's: configurations), optionally

@@ -15,7 +15,7 @@ pub use slice::{slice, SliceMap};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use crate::conditions::{for_scenario, Condition, Sweep};
 use crate::model::{Bounds, Load};
-use crate::query::cables::{cables_at, cables_at_config, PoseCables};
+use crate::query::cables::{cable_lengths, cables_at, cables_at_config, PoseCables};
 use crate::query::wrench::{closure_holds, static_margin, wrench_set_margin};
 use crate::error::{Error, Result};
 use crate::model::motion::Param;
@@ -484,7 +484,7 @@ fn check_cables(s: &Scenario, name: &str, cables: PoseCables, wrench: Option<Wre
     PoseReport {
         pose: name.to_string(),
         feasible: violated.is_empty(),
-        lengths: cables.iter().map(|(a, x)| (x - a).norm()).collect(),
+        lengths: cable_lengths(&s.robot, &cables),
         checks,
         violated,
         wrench,

@@ -17,21 +17,24 @@
 //!   become the link's `mass` and `com` (format 4, with CASPR's gravity as `robot.gravity`; a
 //!   mass that is not positive is left out, with a note). The inertia is not read: statics
 //!   needs none.
-//! * cables: as for a platform, each straight from the base (link 0) to one link k, the
-//!   attachment in link k's frame (`attachment_reference="com"` adds k's `com_location`).
+//! * cables: each through its attachments in order (link 0 the base, in the world frame; link k
+//!   in its frame, `attachment_reference="com"` adding k's `com_location`): straight from the
+//!   base to one link, or (format 6) from a link and over several: `from`, `via`, `link` and
+//!   `platform` of `docs/scenario-format.md`. A cable listed from a link back to the base is read
+//!   from the base.
 //!
-//! Not supported, with a message: other joint types, cables routed over several links (more than
-//! two attachments), cables between two links.
+//! Not supported, with a message: other joint types; a cable with fewer than two attachments or
+//! all of them on one link.
 
 use roxmltree::Node;
 use serde::Serialize;
 use std::collections::BTreeMap;
 
-use super::out::{OutBody, OutCable, OutCableBounds, OutJoint, OutLink, OutRobot, Properties};
+use super::out::{OutAnchor, OutBody, OutCable, OutCableBounds, OutJoint, OutLink, OutRobot, Properties};
 use super::xml::{cable_set, child, child_numbers, children, document, line, parse_xml, properties};
 use super::{Import, CASPR_GRAVITY};
 use crate::error::{Error, Result};
-use crate::scenario::{FORMAT_3, FORMAT_4};
+use crate::scenario::{FORMAT_3, FORMAT_6};
 
 const BODIES: &str = "bodies";
 
@@ -67,8 +70,9 @@ struct LinkIn {
     mass: Option<f64>,
 }
 
-/// The links of the bodies file, in order, each with its joint, coordinates and body.
-fn links(xml: &str) -> Result<Vec<LinkIn>> {
+/// The links of the bodies file, in order, each with its joint, coordinates and body; what was
+/// changed on the way in `notes`.
+fn links(xml: &str, notes: &mut Vec<String>) -> Result<Vec<LinkIn>> {
     let doc = document(BODIES, xml, "bodies_system")?;
     let root = doc.root_element();
     let links = child(root, "links").ok_or_else(|| Error::new(BODIES, "no <links> element"))?;
@@ -130,7 +134,22 @@ fn links(xml: &str) -> Result<Vec<LinkIn>> {
                 }
             }
         };
-        let (lo, hi, initial) = (read("q_min", -std::f64::consts::PI)?, read("q_max", std::f64::consts::PI)?, read("q_initial", 0.0)?);
+        let (mut lo, mut hi, initial) = (read("q_min", -std::f64::consts::PI)?, read("q_max", std::f64::consts::PI)?, read("q_initial", 0.0)?);
+        // an angle's range wider than one turn becomes [−π, π] if it holds it, else one turn
+        // about its middle: CASPR writes
+        // ±π rounded (±3.1416, ±3.142), a rounding wider than a turn, said nothing of; wider
+        // still (CAREX's −3.416 for −3.1416) with a note
+        for (k, (l, h)) in lo.iter_mut().zip(hi.iter_mut()).enumerate() {
+            let turn = base_names.get(k).is_some_and(|b| ["alpha", "beta", "gamma", "theta"].contains(b));
+            let (pi, width) = (std::f64::consts::PI, *h - *l);
+            if turn && width > 2.0 * pi {
+                let mid = if *l <= -pi && *h >= pi { 0.0 } else { 0.5 * (*l + *h) };
+                if width > 2.0 * pi + 2e-3 {
+                    notes.push(format!("{}: link {num}'s {} range [{l}, {h}] is wider than one turn; imported as [{}, {}]", line(joint), base_names[k], mid - pi, mid + pi));
+                }
+                (*l, *h) = (mid - pi, mid + pi);
+            }
+        }
         let coordinates: Vec<String> = base_names
             .iter()
             .map(|b| if taken.iter().any(|t| t == b) { format!("{b}{num}") } else { (*b).to_string() })
@@ -166,16 +185,24 @@ fn joint_axis(joint: roxmltree::Node, num: usize) -> Result<[f64; 3]> {
     }
 }
 
-/// One cable as read: base anchor, link number, anchor in that link's frame, properties.
+/// One cable as read: its attachments in order, each a link number (0 the base) and a point in
+/// that link's frame (`attachment_reference="com"` already added), the last on a link; its
+/// properties.
 struct CableIn {
-    base: [f64; 3],
-    link: usize,
-    anchor: [f64; 3],
+    attachments: Vec<(usize, [f64; 3])>,
     props: [Option<f64>; 3],
 }
 
-/// The cables of the cable set (`set`, else the default one), each from the base (link 0) to one
-/// link.
+impl CableIn {
+    /// Whether it is more than one straight segment from the base (format 6).
+    fn is_routed(&self) -> bool {
+        self.attachments.len() > 2 || self.attachments[0].0 != 0
+    }
+}
+
+/// The cables of the cable set (`set`, else the default one): each through its attachments in
+/// order, from the base or a link, over any links, to a link (a cable listed from a link to the
+/// base is read backwards, the same cable).
 fn cables(xml: &str, links: &[LinkIn], set: Option<&str>) -> Result<Vec<CableIn>> {
     let doc = document(CABLES, xml, "cables")?;
     let set = cable_set(doc.root_element(), set)?;
@@ -183,29 +210,38 @@ fn cables(xml: &str, links: &[LinkIn], set: Option<&str>) -> Result<Vec<CableIn>
     for cable in set.children().filter(|c| c.is_element() && c.tag_name().name().starts_with("cable_")) {
         let name = cable.attribute("name").map_or_else(|| format!("#{}", out.len() + 1), str::to_owned);
         let at = format!("cable {name:?} ({})", line(cable));
-        let attachments: Vec<Node> = child(cable, "attachments").map(|a| children(a, "attachment").collect()).unwrap_or_default();
-        if attachments.len() != 2 {
-            return Err(Error::new(CABLES, format!("{at}: {} attachments; only straight cables from the base to one link (2 attachments) are supported, not routed ones", attachments.len())));
-        }
-        let mut ends = Vec::with_capacity(2);
-        for a in &attachments {
-            let [link] = child_numbers::<1>(CABLES, *a, "link")?.ok_or_else(|| Error::new(CABLES, format!("{at}: an attachment has no <link>")))?;
-            let loc = child_numbers::<3>(CABLES, *a, "location")?.ok_or_else(|| Error::new(CABLES, format!("{at}: an attachment has no <location>")))?;
-            ends.push((link as usize, loc));
-        }
-        ends.sort_by_key(|e| e.0);
-        let [(0, base), (k, local)] = ends[..] else {
-            return Err(Error::new(CABLES, format!("{at}: needs one attachment on the base (link 0) and one on a link; cables between two links are not supported")));
-        };
-        let Some(link) = links.get(k.wrapping_sub(1)) else {
-            return Err(Error::new(CABLES, format!("{at}: attachment on link {k}; the bodies file has links 1 to {}", links.len())));
-        };
-        let anchor = match cable.attribute("attachment_reference").unwrap_or("joint") {
-            "joint" => local,
-            "com" => [0, 1, 2].map(|i| local[i] + link.com[i]),
+        let com = match cable.attribute("attachment_reference").unwrap_or("joint") {
+            "joint" => false,
+            "com" => true,
             other => return Err(Error::new(CABLES, format!("{at}: attachment_reference {other:?} is not \"joint\" or \"com\""))),
         };
-        out.push(CableIn { base, link: k, anchor, props: properties(cable)? });
+        let mut attachments = Vec::new();
+        for a in child(cable, "attachments").map(|a| children(a, "attachment").collect::<Vec<Node>>()).unwrap_or_default() {
+            let [link] = child_numbers::<1>(CABLES, a, "link")?.ok_or_else(|| Error::new(CABLES, format!("{at}: an attachment has no <link>")))?;
+            let local = child_numbers::<3>(CABLES, a, "location")?.ok_or_else(|| Error::new(CABLES, format!("{at}: an attachment has no <location>")))?;
+            let k = link as usize;
+            // the base has no centre of mass: its attachments are in the world frame either way
+            let point = match k.checked_sub(1) {
+                None => local,
+                Some(i) => {
+                    let Some(l) = links.get(i) else {
+                        return Err(Error::new(CABLES, format!("{at}: attachment on link {k}; the bodies file has links 1 to {}", links.len())));
+                    };
+                    if com { [0, 1, 2].map(|j| local[j] + l.com[j]) } else { local }
+                }
+            };
+            attachments.push((k, point));
+        }
+        if attachments.len() < 2 {
+            return Err(Error::new(CABLES, format!("{at}: {} attachment(s); a cable needs at least two", attachments.len())));
+        }
+        if attachments.iter().all(|a| a.0 == attachments[0].0) {
+            return Err(Error::new(CABLES, format!("{at}: every attachment is on link {}; the cable pulls nothing", attachments[0].0)));
+        }
+        if attachments.last().is_some_and(|a| a.0 == 0) {
+            attachments.reverse();
+        }
+        out.push(CableIn { attachments, props: properties(cable)? });
     }
     if out.is_empty() {
         return Err(Error::new(CABLES, "the cable set has no cables"));
@@ -224,9 +260,9 @@ struct Out<'a> {
 
 /// Converts a CASPR multi-link bodies file and cables file into scenario JSON called `name`.
 pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str, set: Option<&str>) -> Result<Import> {
-    let links = links(bodies_xml)?;
-    let cables = cables(cables_xml, &links, set)?;
     let mut notes = vec!["multi-link robot: clearances are left at 0 (the thesis' case study uses ε = 0.02, clearance.cable_cable and clearance.cable_link); link bodies are segments of radius 0".to_string()];
+    let links = links(bodies_xml, &mut notes)?;
+    let cables = cables(cables_xml, &links, set)?;
     let Properties { diameter, tension, per_cable } = Properties::of(cables.iter().map(|c| c.props).collect(), &mut notes);
     let link_name = |num: usize| links.get(num.wrapping_sub(1)).map(|l| l.name.clone());
     let initial = links.iter().flat_map(|l| l.coordinates.iter().cloned().zip(l.initial.iter().copied())).collect();
@@ -235,13 +271,22 @@ pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str, set: Optio
     }
     let mass = |l: &LinkIn| l.mass.filter(|m| *m > 0.0);
     let weighed = links.iter().any(|l| mass(l).is_some());
+    let routed = cables.iter().any(CableIn::is_routed);
+    if weighed {
+        notes.push(
+            "joint-space wrench closure is left out (robot.closure false): CASPR's arms hang from their cables and hold their weight \
+             (static feasibility, from the links' masses); set robot.closure true to ask for it as well"
+                .to_string(),
+        );
+    }
     let out = Out {
-        format: if weighed { FORMAT_4 } else { FORMAT_3 },
+        format: if routed || weighed { FORMAT_6 } else { FORMAT_3 },
         name,
         robot: OutRobot {
             mobility: None,
             dynamics: None,
             gravity: weighed.then_some(CASPR_GRAVITY),
+            closure: weighed.then_some(false),
             links: Some(links
                 .iter()
                 .map(|l| OutLink {
@@ -256,11 +301,17 @@ pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str, set: Optio
                 .collect()),
             cables: cables
                 .iter()
-                .map(|c| OutCable {
-                    base: c.base,
-                    link: link_name(c.link),
-                    platform: Some(c.anchor),
-                    tension: per_cable.then_some(OutCableBounds { min: c.props[0], max: c.props[1] }),
+                .map(|c| {
+                    let (first, last) = (c.attachments[0], c.attachments[c.attachments.len() - 1]);
+                    let inner = &c.attachments[1..c.attachments.len() - 1];
+                    OutCable {
+                        base: first.1,
+                        from: link_name(first.0),
+                        via: (!inner.is_empty()).then(|| inner.iter().map(|&(k, point)| OutAnchor { link: link_name(k), point }).collect()),
+                        link: link_name(last.0),
+                        platform: Some(last.1),
+                        tension: per_cable.then_some(OutCableBounds { min: c.props[0], max: c.props[1] }),
+                    }
                 })
                 .collect(),
             tension,

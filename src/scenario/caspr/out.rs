@@ -64,6 +64,9 @@ pub(super) struct OutRobot {
     /// Gravity on the links (format 4), multi-link robots with masses only.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) gravity: Option<[f64; 3]>,
+    /// Whether joint-space wrench closure is a condition (format 6), multi-link robots only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) closure: Option<bool>,
 }
 
 /// `robot.dynamics` as written; a point mass has neither centre of mass nor inertia.
@@ -82,12 +85,26 @@ pub(super) struct OutDynamics {
 #[derive(Serialize)]
 pub(super) struct OutCable {
     pub(super) base: [f64; 3],
+    /// The link the base anchor is fixed to (a routed cable's, format 6).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) from: Option<String>,
+    /// The anchors a routed cable runs through (format 6).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) via: Option<Vec<OutAnchor>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) link: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) platform: Option<[f64; 3]>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) tension: Option<OutCableBounds>,
+}
+
+/// An anchor a routed cable runs through, as written: on a link (by name) or the base.
+#[derive(Serialize)]
+pub(super) struct OutAnchor {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) link: Option<String>,
+    pub(super) point: [f64; 3],
 }
 
 /// Robot-level tension bounds as written.

@@ -93,10 +93,13 @@ pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str, trajectori
             mobility: (platform.mobility != Mobility::Spatial).then_some(platform.mobility.name()),
             dynamics,
             gravity: None,
+            closure: None,
             links: None,
             cables: cables
                 .iter()
                 .map(|c| OutCable {
+                    from: None,
+                    via: None,
                     base: c.base,
                     link: None,
                     platform: (!point).then_some(c.platform),

@@ -6,9 +6,9 @@
 use nalgebra::Vector3;
 use std::f64::consts::PI;
 
-use super::{needs_format, positive, vec3, Fixed, MAX_DOF, MAX_LINKS, STANDARD_GRAVITY};
+use super::{needs_format, positive, vec3, Fixed, MAX_DOF, MAX_LINKS, MAX_SEGMENTS, STANDARD_GRAVITY};
 use crate::error::{finite, Error, Result};
-use crate::model::{Chain, Clearance, Joint, JointCoord, JointPath, Link, LinkWrench, Robot};
+use crate::model::{Anchor, Chain, Clearance, Joint, JointCoord, JointPath, Link, LinkWrench, Robot};
 use crate::query::cables::{attached_inside, cables_at_config};
 use crate::scenario::json::{Ordered, RawCable, RawLink, RawScenario, RawTrajectory, RawWrench, FORMAT_3};
 
@@ -21,14 +21,21 @@ pub(super) fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clear
         if let Some(k) = raw.trajectories.iter().position(|t| t.through.is_some()) {
             return Err(Error::new(format!("trajectories[{k}].through"), "only a multi-link robot's trajectories pass through configurations; a platform robot's have translation and orientation"));
         }
-        if let Some(i) = raw.robot.cables.iter().position(|c| c.link.is_some()) {
-            return Err(Error::new(format!("robot.cables[{i}].link"), "only the cables of a multi-link robot (robot.links) name a link"));
+        for (i, c) in raw.robot.cables.iter().enumerate() {
+            for (field, given) in [("link", c.link.is_some()), ("from", c.from.is_some()), ("via", c.via.is_some())] {
+                if given {
+                    return Err(Error::new(format!("robot.cables[{i}].{field}"), "only the cables of a multi-link robot (robot.links) name links or run through anchors"));
+                }
+            }
         }
         if !raw.configurations.0.is_empty() {
             return Err(Error::new("configurations", "only multi-link robots (robot.links) have configurations; a platform robot has poses"));
         }
         if raw.robot.gravity.is_some() {
             return Err(Error::new("robot.gravity", "only a multi-link robot's gravity is given here; a platform's is `robot.dynamics.gravity`"));
+        }
+        if raw.robot.closure.is_some() {
+            return Err(Error::new("robot.closure", "only a multi-link robot's joint-space closure is asked here; a platform's is `wrench.closure`"));
         }
         if raw.wrench.as_ref().is_some_and(|w| w.link.is_some()) {
             return Err(Error::new("wrench.link", "only a multi-link robot's wrench names the link it acts on; a platform's acts on the platform"));
@@ -50,6 +57,11 @@ pub(super) fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clear
     for (cable, link) in robot.cables.iter_mut().zip(cable_links(&raw.robot.cables, &chain)?) {
         cable.link = link;
     }
+    routes(&raw.robot.cables, robot, &chain, version)?;
+    let segments: usize = robot.cables.iter().map(|c| c.via.len() + 1).sum();
+    if segments > MAX_SEGMENTS {
+        return Err(Error::new("robot.cables", format!("at most {MAX_SEGMENTS} segments (pairs of consecutive anchors) are supported, all cables together; got {segments}")));
+    }
     if !raw.poses.0.is_empty() {
         return Err(Error::new(
             "poses",
@@ -58,16 +70,23 @@ pub(super) fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clear
         ));
     }
     chain.load = raw.wrench.as_ref().map(|w| link_wrench(w, version, &chain)).transpose()?;
+    if let Some(closure) = raw.robot.closure {
+        needs_format(version, 6, "robot.closure")?;
+        chain.closure = closure;
+    }
     for (i, cable) in robot.cables.iter().enumerate() {
-        let link = &chain.links[cable.link];
-        let zone = link.radius + clearance.cable_link;
-        if zone > 0.0 && attached_inside(&cable.platform, &link.body, zone) {
-            warnings.push(format!(
-                "robot.cables[{i}]: cable {} is attached within {zone} (radius + clearance) of its own link {}'s body; \
-                 its clearance to that link is not checked",
-                i + 1,
-                link.name
-            ));
+        for anchor in cable.anchors() {
+            let Some(l) = anchor.link else { continue };
+            let link = &chain.links[l];
+            let zone = link.radius + clearance.cable_link;
+            if zone > 0.0 && attached_inside(&anchor.point, &link.body, zone) {
+                warnings.push(format!(
+                    "robot.cables[{i}]: cable {} is attached within {zone} (radius + clearance) of link {}'s body; \
+                     its clearance to that link is not checked",
+                    i + 1,
+                    link.name
+                ));
+            }
         }
     }
     robot.chain = Some(chain);
@@ -94,7 +113,7 @@ fn link_wrench(raw: &RawWrench, version: u8, chain: &Chain) -> Result<LinkWrench
         }
     }
     if raw.closure.is_some() {
-        return Err(Error::new("wrench.closure", "a multi-link robot's joint-space wrench closure is always checked"));
+        return Err(Error::new("wrench.closure", "a multi-link robot's joint-space wrench closure is `robot.closure` (format 6; checked unless false)"));
     }
     let w = super::wrench::wrench(raw, version)?;
     Ok(LinkWrench { link, nominal: w.nominal, point: w.point, frame: w.frame })
@@ -185,7 +204,7 @@ fn chain(raw: &[RawLink], version: u8) -> Result<Chain> {
         let parent = parent[k].map(|p| order.iter().position(|&o| o == p).unwrap_or(0));
         links.push(Link { name: l.name.clone(), parent, location, joint, coords, body, radius, mass, com });
     }
-    let chain = Chain { links, gravity: Vector3::zeros(), load: None };
+    let chain = Chain { links, gravity: Vector3::zeros(), load: None, closure: true };
     if chain.dof() > MAX_DOF {
         return Err(Error::new("robot.links", format!("at most {MAX_DOF} joint coordinates are supported, got {}", chain.dof())));
     }
@@ -306,6 +325,49 @@ fn coordinates(path: &str, l: &RawLink, joint: &Joint, all: &mut Vec<String>) ->
     Ok(out)
 }
 
+/// A link's index by name; an unknown name is an error at `field` listing the known ones.
+fn link_named(chain: &Chain, field: &str, name: &str) -> Result<usize> {
+    chain.links.iter().position(|l| l.name == name).ok_or_else(|| {
+        let known: Vec<&str> = chain.links.iter().map(|l| l.name.as_str()).collect();
+        Error::new(field, format!("no link named \"{name}\"; known links: {}", known.join(", ")))
+    })
+}
+
+/// Routed cables (format 6): each cable's `from` (the link its base anchor is fixed to) and the
+/// anchors it runs through (`via`), into `robot`; two consecutive anchors that are the same point
+/// of the same link (or of the base) would make a segment of no length, an error.
+fn routes(cables: &[RawCable], robot: &mut Robot, chain: &Chain, version: u8) -> Result<()> {
+    for (i, (raw, cable)) in cables.iter().zip(robot.cables.iter_mut()).enumerate() {
+        if let Some(name) = &raw.from {
+            let field = format!("robot.cables[{i}].from");
+            needs_format(version, 6, &field)?;
+            cable.from = Some(link_named(chain, &field, name)?);
+        }
+        if let Some(via) = &raw.via {
+            needs_format(version, 6, &format!("robot.cables[{i}].via"))?;
+            cable.via = via
+                .iter()
+                .enumerate()
+                .map(|(k, a)| {
+                    let field = format!("robot.cables[{i}].via[{k}]");
+                    let link = a.link.as_deref().map(|name| link_named(chain, &format!("{field}.link"), name)).transpose()?;
+                    Ok(Anchor { link, point: vec3(&format!("{field}.point"), &a.point)? })
+                })
+                .collect::<Result<Vec<_>>>()?;
+        }
+        let anchors = cable.anchors();
+        if anchors.iter().all(|a| a.link == anchors[0].link) {
+            let name = anchors[0].link.map_or("the base".to_string(), |l| format!("link {}", chain.links[l].name));
+            return Err(Error::new(format!("robot.cables[{i}]"), format!("every anchor is on {name}: the cable pulls nothing")));
+        }
+        if let Some(k) = anchors.windows(2).position(|w| w[0] == w[1]) {
+            let at = |k: usize| if k == 0 { "base".to_string() } else if k == anchors.len() - 1 { "platform".to_string() } else { format!("via[{}]", k - 1) };
+            return Err(Error::new(format!("robot.cables[{i}].{}", at(k + 1)), format!("the same point of the same link as {}: a segment of no length", at(k))));
+        }
+    }
+    Ok(())
+}
+
 /// Each cable's link, by name (every cable of a multi-link robot names one).
 fn cable_links(cables: &[RawCable], chain: &Chain) -> Result<Vec<usize>> {
     cables
@@ -314,10 +376,7 @@ fn cable_links(cables: &[RawCable], chain: &Chain) -> Result<Vec<usize>> {
         .map(|(i, c)| {
             let field = format!("robot.cables[{i}].link");
             let Some(name) = &c.link else { return Err(Error::new(field, "a cable of a multi-link robot names the link it pulls")) };
-            chain.links.iter().position(|l| &l.name == name).ok_or_else(|| {
-                let known: Vec<&str> = chain.links.iter().map(|l| l.name.as_str()).collect();
-                Error::new(field, format!("no link named \"{name}\"; known links: {}", known.join(", ")))
-            })
+            link_named(chain, &field, name)
         })
         .collect()
 }
@@ -355,9 +414,10 @@ fn configurations(raw: &Ordered<Ordered<f64>>, robot: &Robot, chain: &Chain, war
             }
         }
         let at = cables_at_config(robot, &q);
-        for (i, (a, x)) in at.iter().enumerate() {
+        for ((a, x), segment) in at.iter().zip(robot.segments()) {
             if (x - a).norm() <= 1e-12 * (1.0 + a.norm().max(x.norm())) {
-                return Err(Error::new(path, format!("cable {} has zero length at configuration {name}", i + 1)));
+                let which = if robot.cables[segment.cable].is_routed() { format!(" (its segment {})", segment.index + 1) } else { String::new() };
+                return Err(Error::new(path, format!("cable {}{which} has zero length at configuration {name}", segment.cable + 1)));
             }
         }
         out.push((name.clone(), q));

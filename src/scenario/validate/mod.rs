@@ -16,15 +16,20 @@ mod wrench;
 
 use nalgebra::{Cholesky, Const, SMatrix, Vector3};
 
-use super::json::{Fixed, RawScenario, FORMAT_4, FORMAT_5};
+use super::json::{Fixed, RawScenario, FORMAT_4, FORMAT_5, FORMAT_6};
 use super::Scenario;
 use crate::error::{finite, Error, Result};
 use crate::model::Pose;
 
 /// Fewest cables of a 6-DoF robot (a point-mass or planar robot needs 3).
 pub const MIN_CABLES: usize = 6;
-/// Most cables supported.
+/// Most cables supported on a platform robot.
 pub const MAX_CABLES: usize = 64;
+/// Most cables supported on a multi-link robot (CASPR's 8S_neck has 76).
+pub const MAX_CHAIN_CABLES: usize = 128;
+/// Most segments of a multi-link robot's cables, all cables together (a routed cable has one
+/// per pair of consecutive anchors).
+pub const MAX_SEGMENTS: usize = 1024;
 /// Most obstacles in one scenario.
 pub const MAX_OBSTACLES: usize = 1000;
 /// Most mesh triangles in one scenario, over all obstacles (a box counts 12).
@@ -196,10 +201,14 @@ fn symmetric<const N: usize>(field: &str, m: &Fixed<Fixed<f64, N>, N>) -> Result
     Ok((a + a.transpose()) * 0.5)
 }
 
-/// Refuses a field of format version `least` (4 or 5) in a file of an older version.
+/// Refuses a field of format version `least` (4 to 6) in a file of an older version.
 fn needs_format(version: u8, least: u8, field: &str) -> Result<()> {
     if version < least {
-        let format = if least >= 5 { FORMAT_5 } else { FORMAT_4 };
+        let format = match least {
+            ..=4 => FORMAT_4,
+            5 => FORMAT_5,
+            _ => FORMAT_6,
+        };
         return Err(Error::new(field, format!("needs \"format\": \"{format}\"")));
     }
     Ok(())

@@ -3,7 +3,7 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use super::{needs_format, non_negative, positive, spd, symmetric, vec3, MAX_CABLES, MIN_CABLES, STANDARD_GRAVITY};
+use super::{needs_format, non_negative, positive, spd, symmetric, vec3, MAX_CABLES, MAX_CHAIN_CABLES, MIN_CABLES, STANDARD_GRAVITY};
 use crate::error::{Error, Result};
 use crate::model::{Bounds, Cable, Clearance, Dynamics, Mobility, Robot, Winch};
 use crate::scenario::json::{RawBounds, RawCable, RawCableBounds, RawRobot, RawScenario, RawWinch, ScalarOrList};
@@ -50,7 +50,8 @@ pub(super) fn in_plane(field: &str, v: &Vector3<f64>, mobility: Mobility) -> Res
 }
 
 /// The robot's cables: at least [`MIN_CABLES`] for a spatial platform, three for a point mass or
-/// a planar platform (one for a multi-link robot), at most [`MAX_CABLES`], no two on one link
+/// a planar platform (one for a multi-link robot), at most [`MAX_CABLES`] ([`MAX_CHAIN_CABLES`]
+/// on a multi-link robot), no two on one link
 /// with the same anchors; their bounds and the diameter.
 pub(super) fn robot(raw: &RawRobot, mobility: Mobility) -> Result<Robot> {
     let n = raw.cables.len();
@@ -64,8 +65,10 @@ pub(super) fn robot(raw: &RawRobot, mobility: Mobility) -> Result<Robot> {
         };
         return Err(Error::new("robot.cables", format!("{what} needs at least {least} cable(s), got {n}")));
     }
-    if n > MAX_CABLES {
-        return Err(Error::new("robot.cables", format!("at most {MAX_CABLES} cables are supported, got {n}")));
+    let most = if raw.links.is_some() { MAX_CHAIN_CABLES } else { MAX_CABLES };
+    if n > most {
+        let what = if raw.links.is_some() { "on a multi-link robot" } else { "on a platform robot" };
+        return Err(Error::new("robot.cables", format!("at most {most} cables are supported {what}, got {n}")));
     }
     let mut anchors = Vec::with_capacity(n);
     for (i, c) in raw.cables.iter().enumerate() {
@@ -98,7 +101,7 @@ pub(super) fn robot(raw: &RawRobot, mobility: Mobility) -> Result<Robot> {
         .into_iter()
         .zip(length)
         .zip(tension)
-        .map(|(((base, platform), length), tension)| Cable { base, platform, link: 0, length, tension })
+        .map(|(((base, platform), length), tension)| Cable::straight(base, platform, 0, length, tension))
         .collect();
     Ok(Robot { cables, diameter, chain: None, dynamics: None, winch: Winch { speed: None, acceleration: None }, speed: None, mobility })
 }
