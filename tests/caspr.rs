@@ -193,23 +193,41 @@ fn refusals_name_the_file_and_say_why() {
     assert_eq!(e.field, "robot.cables");
 }
 
-/// Every joint type of CASPR's multi-link library is read: the bodies of the four models that
-/// use them pass, and the import stops at their cables (routed, or between two links: not yet
-/// supported, each named); Spatial_Tree (a spatial end effector and a fixed tree) imports whole;
-/// R_AXIS keeps its axis, normalised.
+/// Every model of CASPR's multi-link library imports, with every joint type it uses and its
+/// cables routed as written (format 6: cables from the base or from a link, over any links, to a
+/// link): links, cables, segments, cables starting on a link and cables routed through anchors
+/// counted from the files; its links' masses with closure left out (`robot.closure` false);
+/// Spatial_Tree (a spatial end effector and a fixed tree) imports whole; R_AXIS keeps its axis,
+/// normalised.
 #[test]
 fn every_joint_type_of_the_library_is_read() {
-    for (name, bodies, cables, joint) in [
-        ("4U_modular_units_arm", model!("4U_modular_units_arm/4U_modular_units_arm_bodies.xml"), model!("4U_modular_units_arm/4U_modular_units_arm_cables.xml"), "U_YZ"),
-        ("SJTUSnake", model!("SJTUSnake/SJTUSnake_bodies.xml"), model!("SJTUSnake/SJTUSnake_cables.xml"), "U_XZ"),
-        ("BioBiped_one_leg", model!("BioBiped_one_leg/BioBiped_one_leg_bodies.xml"), model!("BioBiped_one_leg/BioBiped_one_leg_cables.xml"), "PLANAR_YZ"),
-        ("RoboyLeftArm", model!("RoboyLeftArm/RoboyLeftArm_bodies.xml"), model!("RoboyLeftArm/RoboyLeftArm_cables.xml"), "R_AXIS"),
+    for (name, bodies, cables, joint, [links, cables_n, segments, from_link, via]) in [
+        ("4U_modular_units_arm", model!("4U_modular_units_arm/4U_modular_units_arm_bodies.xml"), model!("4U_modular_units_arm/4U_modular_units_arm_cables.xml"), "U_YZ", [4, 12, 12, 9, 0]),
+        ("SJTUSnake", model!("SJTUSnake/SJTUSnake_bodies.xml"), model!("SJTUSnake/SJTUSnake_cables.xml"), "U_XZ", [12, 36, 432, 0, 33]),
+        ("BioBiped_one_leg", model!("BioBiped_one_leg/BioBiped_one_leg_bodies.xml"), model!("BioBiped_one_leg/BioBiped_one_leg_cables.xml"), "PLANAR_YZ", [4, 9, 9, 9, 0]),
+        ("RoboyLeftArm", model!("RoboyLeftArm/RoboyLeftArm_bodies.xml"), model!("RoboyLeftArm/RoboyLeftArm_cables.xml"), "R_AXIS", [4, 11, 11, 2, 0]),
+        ("8S_neck", model!("8S_neck/8S_neck_bodies.xml"), model!("8S_neck/8S_neck_cables.xml"), "S_EULER_XYZ", [8, 76, 102, 30, 8]),
+        ("CAREX", model!("CAREX/CAREX_bodies.xml"), model!("CAREX/CAREX_cables.xml"), "R_Y", [2, 6, 8, 0, 2]),
     ] {
         assert!(bodies.contains(joint));
-        let e = to_json(name, bodies, cables).expect_err("routed or link-to-link cables");
-        assert_eq!(e.field, "cables", "{name}: {e}");
-        assert!(e.reason.contains("routed") || e.reason.contains("between two links"), "{name}: {e}");
+        let imported = to_json(name, bodies, cables).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(imported.json.contains("cablenav-scenario/6"), "{name}");
+        let s = Scenario::from_json(&imported.json).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let chain = s.robot.chain.as_ref().unwrap();
+        let counted = [
+            chain.links.len(),
+            s.robot.cables.len(),
+            s.robot.segments().len(),
+            s.robot.cables.iter().filter(|c| c.from.is_some()).count(),
+            s.robot.cables.iter().filter(|c| !c.via.is_empty()).count(),
+        ];
+        assert_eq!(counted, [links, cables_n, segments, from_link, via], "{name}: links, cables, segments, from a link, routed");
+        assert!(chain.is_loaded() && !chain.closure, "{name}: weighed, closure left out");
+        assert!(imported.notes.iter().any(|n| n.contains("robot.closure")), "{name}: {:?}", imported.notes);
     }
+    // CAREX's elbow range as written, −3.416 to 3.1416, is wider than a turn: one turn, with a note
+    let carex = to_json("CAREX", model!("CAREX/CAREX_bodies.xml"), model!("CAREX/CAREX_cables.xml")).unwrap();
+    assert!(carex.notes.iter().any(|n| n.contains("-3.416") && n.contains("wider than one turn")), "{:?}", carex.notes);
     let tree = to_json("Spatial_Tree", model!("Spatial_Tree/Spatial_Tree_bodies.xml"), model!("Spatial_Tree/Spatial_Tree_cables.xml")).expect("Spatial_Tree imports");
     let s = Scenario::from_json(&tree.json).expect("and validates");
     let chain = s.robot.chain.as_ref().unwrap();

@@ -22,12 +22,12 @@ use serde_json::{json, Value};
 
 mod support;
 use support::env_usize;
-use support::lp::lp_margin;
+use support::lp::lp_margin_each;
 use support::reference::Rng;
 
 #[path = "shared/chains.rs"]
 mod chains;
-use chains::{random_chain_of, v3};
+use chains::{random_chain_of, routed, v3};
 
 /// Differences' step in the joint coordinates.
 const H: f64 = 1e-6;
@@ -43,7 +43,7 @@ fn statics(s: &Scenario) -> Box<dyn Condition> {
 /// material point at x moving by v_i = ∂o/∂q_i + ω_i × (x − o).
 fn virtual_work(s: &Scenario, q: &[f64]) -> (DMatrix<f64>, DVector<f64>) {
     let chain = s.robot.chain.as_ref().unwrap();
-    let lengths = |q: &[f64]| cables_at_config(&s.robot, q).cables.iter().map(|(a, x)| (x - a).norm()).collect::<Vec<f64>>();
+    let lengths = |q: &[f64]| chains::cable_lengths(s, q);
     // the weights' work m g·c, summed over the links
     let work = |q: &[f64]| chain.frames(q).iter().zip(&chain.links).map(|((p, r), l)| l.mass * chain.gravity.dot(&(p + r * l.com))).sum::<f64>();
     let (n, m) = (q.len(), s.robot.cables.len());
@@ -77,6 +77,13 @@ fn virtual_work(s: &Scenario, q: &[f64]) -> (DMatrix<f64>, DVector<f64>) {
 /// margin within the differences' error of 0, or a rank-deficient gradient (Euler angles at gimbal
 /// lock), is left out.
 fn reference_margin(s: &Scenario, q: &[f64], bounds: (f64, f64)) -> Option<f64> {
+    let m = s.robot.cables.len();
+    reference_margin_each(s, q, &vec![bounds.0; m], &vec![bounds.1; m])
+}
+
+/// [`reference_margin`] with each cable's own tension bounds.
+fn reference_margin_each(s: &Scenario, q: &[f64], lo: &[f64], hi: &[f64]) -> Option<f64> {
+    let top = hi.iter().copied().fold(0.0, f64::max);
     let (j, g) = virtual_work(s, q);
     // rows nothing reaches (0 = 0) dropped, as their equation holds for any tensions
     let keep: Vec<usize> = (0..j.nrows()).filter(|&r| j.row(r).amax() > 1e-9 || g[r].abs() > 1e-9).collect();
@@ -88,8 +95,8 @@ fn reference_margin(s: &Scenario, q: &[f64], bounds: (f64, f64)) -> Option<f64> 
     if sv.min() < 1e-4 * sv.max() {
         return None;
     }
-    match lp_margin(&j, &g, bounds) {
-        Some((t, _)) if t.abs() < 1e-5 * (1.0 + bounds.1) => None,
+    match lp_margin_each(&j, &g, lo, hi) {
+        Some((t, _)) if t.abs() < 1e-5 * (1.0 + top) => None,
         Some((t, _)) => Some(t),
         None => Some(f64::NEG_INFINITY),
     }
@@ -98,10 +105,14 @@ fn reference_margin(s: &Scenario, q: &[f64], bounds: (f64, f64)) -> Option<f64> 
 /// A random chain of 1–3 links with masses (most links), centres of mass, tension bounds,
 /// sometimes a gravity other than the standard one, half the time a wrench on one link; 1 to 4
 /// cables beyond its degrees of freedom.
-fn weighed_chain(rng: &mut Rng, kinds: &[&str]) -> (Value, Vec<f64>, (f64, f64)) {
+fn weighed_chain(rng: &mut Rng, kinds: &[&str], route: bool) -> (Value, Vec<f64>, (f64, f64)) {
     let links = rng.int(1, 3);
     let (mut value, q) = random_chain_of(rng, links, kinds, &|rng, dof| dof + rng.int(1, 4));
-    value["format"] = json!("cablenav-scenario/4");
+    if route {
+        value = routed(rng, value);
+    } else {
+        value["format"] = json!("cablenav-scenario/4");
+    }
     for link in value["robot"]["links"].as_array_mut().unwrap() {
         if rng.chance(0.8) {
             link["mass"] = json!(rng.range(0.2, 3.0));
@@ -134,11 +145,22 @@ const KINDS: [&str; 7] = ["spherical", "revolute", "prismatic", "free", "univers
 /// Per configuration, the condition's verdict and margin against the virtual-work reference.
 #[test]
 fn random_chains_per_configuration_match_virtual_work() {
-    let mut rng = Rng::new(7);
+    per_configuration_matches_virtual_work(7, false);
+}
+
+/// The same with routed cables: a cable's tension does work −f·δL with L the sum of its
+/// segments' lengths, so its pull acts on every link it touches.
+#[test]
+fn routed_chains_per_configuration_match_virtual_work() {
+    per_configuration_matches_virtual_work(9, true);
+}
+
+fn per_configuration_matches_virtual_work(seed: u64, route: bool) {
+    let mut rng = Rng::new(seed);
     let wanted = env_usize("CABLENAV_STATICS_CHAINS", if cfg!(target_arch = "wasm32") { 300 } else { 1500 });
     let (mut judged, mut held, mut failed) = (0, 0, 0);
     for _ in 0..wanted {
-        let (value, q, bounds) = weighed_chain(&mut rng, &KINDS);
+        let (value, q, bounds) = weighed_chain(&mut rng, &KINDS, route);
         let s = Scenario::from_json(&value.to_string()).unwrap_or_else(|e| panic!("{e}\n{value}"));
         let Some(chain) = s.robot.chain.as_ref() else { unreachable!() };
         if !chain.is_loaded() {
@@ -159,11 +181,21 @@ fn random_chains_per_configuration_match_virtual_work() {
 /// Along joint rays: no sample inside a reported section contradicts the reference.
 #[test]
 fn random_chain_rays_agree_with_virtual_work() {
-    let mut rng = Rng::new(19);
+    rays_agree_with_virtual_work(19, false);
+}
+
+/// The same with routed cables.
+#[test]
+fn routed_chain_rays_agree_with_virtual_work() {
+    rays_agree_with_virtual_work(23, true);
+}
+
+fn rays_agree_with_virtual_work(seed: u64, route: bool) {
+    let mut rng = Rng::new(seed);
     let wanted = env_usize("CABLENAV_STATICS_RAYS", if cfg!(target_arch = "wasm32") { 30 } else { 120 });
     let (mut rays, mut judged, mut held, mut failed, mut mixed, mut uncertain) = (0, 0, 0, 0, 0, 0.0);
     while rays < wanted {
-        let (value, q, bounds) = weighed_chain(&mut rng, &KINDS);
+        let (value, q, bounds) = weighed_chain(&mut rng, &KINDS, route);
         let s = Scenario::from_json(&value.to_string()).unwrap_or_else(|e| panic!("{e}\n{value}"));
         let chain = s.robot.chain.as_ref().unwrap();
         if !chain.is_loaded() {
@@ -201,11 +233,21 @@ fn random_chain_rays_agree_with_virtual_work() {
 /// the reference at dense samples.
 #[test]
 fn random_chain_paths_agree_with_virtual_work() {
-    let mut rng = Rng::new(41);
+    paths_agree_with_virtual_work(41, false);
+}
+
+/// The same with routed cables.
+#[test]
+fn routed_chain_paths_agree_with_virtual_work() {
+    paths_agree_with_virtual_work(43, true);
+}
+
+fn paths_agree_with_virtual_work(seed: u64, route: bool) {
+    let mut rng = Rng::new(seed);
     let wanted = env_usize("CABLENAV_STATICS_PATHS", if cfg!(target_arch = "wasm32") { 20 } else { 80 });
     let (mut paths, mut judged, mut held, mut failed) = (0, 0, 0, 0);
     while paths < wanted {
-        let (mut value, q, bounds) = weighed_chain(&mut rng, &["spherical", "revolute", "universal", "prismatic"]);
+        let (mut value, q, bounds) = weighed_chain(&mut rng, &["spherical", "revolute", "universal", "prismatic"], route);
         // only statics (and closure): no clearances, no link radii, no length bounds
         value["clearance"] = json!({"cable_cable": 0.0, "cable_link": 0.0, "cable_obstacle": 0.0});
         for link in value["robot"]["links"].as_array_mut().unwrap() {
@@ -253,7 +295,9 @@ macro_rules! model {
     };
 }
 
-/// CASPR's arms and tree with their links' masses: per configuration (uniformly within the joint
+/// Every model of CASPR's library with its links' masses — the arms and the tree, and the models
+/// with routed cables and cables between links (CAREX, 4U_modular_units_arm, RoboyLeftArm,
+/// BioBiped_one_leg, 8S_neck, SJTUSnake) —: per configuration (uniformly within the joint
 /// ranges) the condition agrees with the virtual-work reference.
 #[test]
 fn caspr_models_statics_match_virtual_work() {
@@ -261,6 +305,13 @@ fn caspr_models_statics_match_virtual_work() {
         ("BMArm", model!("BMArm/BMArm_bodies.xml"), model!("BMArm/BMArm_cables.xml")),
         ("BMArm_X4_2", model!("BMArm_X4_2/BMArm_X4_2_bodies.xml"), model!("BMArm_X4_2/BMArm_X4_2_cables.xml")),
         ("Spatial_Tree", model!("Spatial_Tree/Spatial_Tree_bodies.xml"), model!("Spatial_Tree/Spatial_Tree_cables.xml")),
+        // routed cables, cables between links
+        ("CAREX", model!("CAREX/CAREX_bodies.xml"), model!("CAREX/CAREX_cables.xml")),
+        ("4U_modular_units_arm", model!("4U_modular_units_arm/4U_modular_units_arm_bodies.xml"), model!("4U_modular_units_arm/4U_modular_units_arm_cables.xml")),
+        ("RoboyLeftArm", model!("RoboyLeftArm/RoboyLeftArm_bodies.xml"), model!("RoboyLeftArm/RoboyLeftArm_cables.xml")),
+        ("BioBiped_one_leg", model!("BioBiped_one_leg/BioBiped_one_leg_bodies.xml"), model!("BioBiped_one_leg/BioBiped_one_leg_cables.xml")),
+        ("8S_neck", model!("8S_neck/8S_neck_bodies.xml"), model!("8S_neck/8S_neck_cables.xml")),
+        ("SJTUSnake", model!("SJTUSnake/SJTUSnake_bodies.xml"), model!("SJTUSnake/SJTUSnake_cables.xml")),
     ];
     let per_model = env_usize("CABLENAV_STATICS_CONFIGS", if cfg!(target_arch = "wasm32") { 500 } else { 10_000 });
     let mut rng = Rng::new(3);
@@ -269,8 +320,7 @@ fn caspr_models_statics_match_virtual_work() {
         let s = Scenario::from_json(&imported.json).unwrap();
         let chain = s.robot.chain.as_ref().unwrap();
         assert!(chain.is_loaded(), "{name}: its links' masses are imported");
-        let t = s.robot.cables[0].tension;
-        assert!(s.robot.cables.iter().all(|c| c.tension == t), "{name}: one tension range for all cables");
+        let (lo, hi): (Vec<f64>, Vec<f64>) = s.robot.cables.iter().map(|c| (c.tension.min, c.tension.max)).unzip();
         let condition = statics(&s);
         let (mut judged, mut held) = (0, 0);
         for _ in 0..per_model {
@@ -288,7 +338,7 @@ fn caspr_models_statics_match_virtual_work() {
                     rng.range(lo, hi)
                 })
                 .collect();
-            let Some(reference) = reference_margin(&s, &q, (t.min, t.max)) else { continue };
+            let Some(reference) = reference_margin_each(&s, &q, &lo, &hi) else { continue };
             let check = condition.check(&cables_at_config(&s.robot, &q));
             assert_eq!(!check.violated, reference > 0.0, "{name} at {q:?}: margin {reference} by virtual work, {:?} by the condition", check.distance);
             judged += 1;
@@ -299,12 +349,13 @@ fn caspr_models_statics_match_virtual_work() {
     }
 }
 
-/// The arm imported from CASPR carries its links' masses, centres of mass and CASPR's gravity.
+/// The arm imported from CASPR carries its links' masses, centres of mass and CASPR's gravity,
+/// and is judged on its statics alone (`robot.closure` false, format 6).
 #[test]
 fn caspr_arm_imports_its_masses() {
     let imported = to_json("arm", model!("BMArm/BMArm_bodies.xml"), model!("BMArm/BMArm_cables.xml")).unwrap();
     let v: Value = serde_json::from_str(&imported.json).unwrap();
-    assert_eq!(v["format"], "cablenav-scenario/4");
+    assert_eq!((&v["format"], &v["robot"]["closure"]), (&json!("cablenav-scenario/6"), &json!(false)));
     assert_eq!(v["robot"]["gravity"], json!([0.0, 0.0, -9.81]));
     assert_eq!(v["robot"]["links"][0]["mass"], json!(0.9810187));
     assert_eq!(v["robot"]["links"][1]["com"], json!([1.56661e-07, 0.0801433, -1.28202e-07]));
@@ -319,7 +370,7 @@ fn refused(v: &Value) -> (String, String) {
 #[test]
 fn bad_link_masses_and_wrenches_name_the_field() {
     let mut rng = Rng::new(5);
-    let (base, _, _) = weighed_chain(&mut rng, &["revolute"]);
+    let (base, _, _) = weighed_chain(&mut rng, &["revolute"], false);
     let with = |f: &dyn Fn(&mut Value)| {
         let mut v = base.clone();
         f(&mut v);
@@ -337,7 +388,7 @@ fn bad_link_masses_and_wrenches_name_the_field() {
         (with(&|v| v["wrench"] = json!({"nominal": [0, 0, -1, 0, 0, 0]})), "wrench.link", "names the link"),
         (with(&|v| v["wrench"] = json!({"nominal": [0, 0, -1, 0, 0, 0], "link": "nowhere"})), "wrench.link", "known links: L0"),
         (with(&|v| v["wrench"] = json!({"nominal": [0, 0, -1, 0, 0, 0], "link": "L0", "radius": 1.0})), "wrench.radius", "nominal wrench alone"),
-        (with(&|v| v["wrench"] = json!({"nominal": [0, 0, -1, 0, 0, 0], "link": "L0", "closure": true})), "wrench.closure", "always checked"),
+        (with(&|v| v["wrench"] = json!({"nominal": [0, 0, -1, 0, 0, 0], "link": "L0", "closure": true})), "wrench.closure", "robot.closure"),
         (with(&|v| v["wrench"] = json!({"nominal": [0, 0, -1, 0, 0], "link": "L0"})), "wrench.nominal", ""),
         (
             with(&|v| {

@@ -554,7 +554,7 @@ fn dynamics_winch_and_duration_are_validated() {
 
 #[test]
 fn format_field() {
-    expect(|v| v["format"] = json!("cablenav-scenario/6"), "format", "cablenav-scenario/5");
+    expect(|v| v["format"] = json!("cablenav-scenario/7"), "format", "cablenav-scenario/6");
     expect(|v| v["format"] = json!(1), "format", "cablenav-scenario/1");
     expect(
         |v| {

@@ -151,3 +151,37 @@ fn an_imported_arm_holds_its_weight() {
     let t = boundaries[0]["t"].as_f64().unwrap();
     assert!(t > 0.5 && t < 0.9 && r["uncertain"].as_array().unwrap().is_empty(), "{r}");
 }
+
+/// A model with routed cables (CAREX: two of its six cables run over the upper arm to the
+/// forearm) imports as format 6 with its closure left out, and a ray of its shoulder finds where
+/// it holds its weight, the boundaries named.
+#[test]
+fn a_routed_arm_imports_and_holds_its_weight_in_a_band() {
+    let bodies = include_str!("../../../shared/models/caspr/CAREX/CAREX_bodies.xml");
+    let cables = include_str!("../../../shared/models/caspr/CAREX/CAREX_cables.xml");
+    let imported = std::cell::RefCell::new(String::new());
+    let read = |p: &str| match p {
+        "m/CAREX_bodies.xml" => Ok(bodies.to_string()),
+        "m/CAREX_cables.xml" => Ok(cables.to_string()),
+        "carex.json" => Ok(imported.borrow().clone()),
+        _ => Err(Error::new(p, "no such file")),
+    };
+    let list = |p: &str| if p == "m" { Ok(vec!["CAREX_bodies.xml".to_string(), "CAREX_cables.xml".into()]) } else { Ok(vec![]) };
+    let write = |_: &str, bytes: &[u8]| {
+        *imported.borrow_mut() = String::from_utf8_lossy(bytes).into_owned();
+        Ok(())
+    };
+    let cli = |args: &str| run(args.split(' '), &read, &write, &list, &mut |_| {}).unwrap_or_else(|e| panic!("{args}: {e}"));
+    let printed = cli("import m --out carex.json");
+    assert!(printed.contains("(6 cables, links' mass 5 kg)") && printed.contains("robot.closure false") && printed.contains("wider than one turn"), "{printed}");
+    let v: Value = serde_json::from_str(&imported.borrow()).unwrap();
+    assert_eq!(v["format"], "cablenav-scenario/6");
+    assert_eq!(v["robot"]["cables"][0]["via"][0]["link"], "Upper Arm");
+    let r: Value = serde_json::from_str(&cli("ray carex.json --pose initial --vary alpha --range -0.3 0.3 --json")).unwrap();
+    let feasible = r["feasible"].as_array().unwrap();
+    assert_eq!(feasible.len(), 1, "{r}");
+    let [lo, hi] = [0, 1].map(|k| feasible[0][k].as_f64().unwrap());
+    assert!(lo > 0.0 && lo < hi && hi < 0.1 && r["uncertain"].as_array().unwrap().is_empty(), "{r}");
+    let named: Vec<&str> = r["boundaries"].as_array().unwrap().iter().map(|b| b["constraint"].as_str().unwrap()).collect();
+    assert_eq!(named, ["static feasibility", "static feasibility"], "{r}");
+}

@@ -191,7 +191,8 @@ test('an arm imported with its links\' masses holds its weight as the CLI says',
   const model = join(root, '..', 'shared', 'models', 'caspr', 'BMArm');
   const read = (f) => readFileSync(join(model, `BMArm_${f}.xml`), 'utf8');
   const { scenario } = cablenav.importCaspr('BMArm', read('bodies'), read('cables'));
-  assert.equal(scenario.format, 'cablenav-scenario/4');
+  assert.equal(scenario.format, 'cablenav-scenario/6');
+  assert.equal(scenario.robot.closure, false);
   assert.deepEqual(scenario.robot.links.map((l) => l.mass), [0.9810187, 0.1313765]);
   scenario.configurations.bent = { ...scenario.configurations.initial, theta: -0.95 };
   scenario.trajectories = [{ name: 'bend', through: ['initial', 'bent'] }];

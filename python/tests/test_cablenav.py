@@ -148,11 +148,12 @@ def test_multi_link_robots_equal_the_cli(cli):
 
 
 def test_an_arm_with_masses_holds_its_weight_as_the_cli_says(cli, tmp_path):
-    # CASPR's BMArm imported with its links' masses (format 4, CASPR's gravity): static
-    # feasibility is checked per configuration and along a path, as the CLI does
+    # CASPR's BMArm imported with its links' masses (format 6, CASPR's gravity, closure left
+    # out): static feasibility is checked per configuration and along a path, as the CLI does
     model = ROOT.parent / "shared" / "models" / "caspr" / "BMArm"
     arm = cablenav.import_caspr(model)["scenario"]
-    assert arm["format"] == "cablenav-scenario/4" and arm["robot"]["gravity"] == [0.0, 0.0, -9.81]
+    assert arm["format"] == "cablenav-scenario/6" and arm["robot"]["gravity"] == [0.0, 0.0, -9.81]
+    assert arm["robot"]["closure"] is False
     assert [link["mass"] for link in arm["robot"]["links"]] == [0.9810187, 0.1313765]
     bent = dict(arm["configurations"]["initial"], theta=-0.95)
     arm["configurations"]["bent"] = bent

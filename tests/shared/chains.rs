@@ -95,10 +95,12 @@ pub fn inside(intervals: &[[f64; 2]], x: f64, margin: f64) -> bool {
     intervals.iter().any(|iv| x > iv[0] + margin && x < iv[1] - margin)
 }
 
-/// A multi-link scenario without its links' masses, its gravity and its wrench (format 3).
+/// A multi-link scenario without its links' masses, its gravity and its wrench, closure checked
+/// (format 3).
 pub fn massless(mut v: Value) -> Value {
     v["format"] = json!("cablenav-scenario/3");
     v["robot"].as_object_mut().unwrap().remove("gravity");
+    v["robot"].as_object_mut().unwrap().remove("closure");
     v.as_object_mut().unwrap().remove("wrench");
     for link in v["robot"]["links"].as_array_mut().unwrap() {
         let link = link.as_object_mut().unwrap();
@@ -106,4 +108,71 @@ pub fn massless(mut v: Value) -> Value {
         link.remove("com");
     }
     v
+}
+
+/// A random chain of 1–3 links with 2–5 cables beyond its degrees of freedom, routed at random
+/// ([`routed`]).
+pub fn random_routed_chain(rng: &mut Rng) -> (Value, Vec<f64>) {
+    let n = rng.int(1, 3);
+    let (v, q) = random_chain_of(rng, n, &["spherical", "revolute", "prismatic", "free", "universal", "planar", "spatial"], &|rng, dof| dof + rng.int(2, 5));
+    (routed(rng, v), q)
+}
+
+/// The chain `v` with its cables routed at random (format 6): about half of them start on a
+/// link (`from`, the base anchor then in that link's frame) or run through one to three anchors
+/// (`via`) on random links or, now and then, on the base.
+pub fn routed(rng: &mut Rng, mut v: Value) -> Value {
+    v["format"] = json!("cablenav-scenario/6");
+    // longer cables, thinner links, smaller clearances: a routed cable is longer and passes
+    // more bodies and cables
+    v["robot"]["length"]["max"] = json!(rng.range(2.5, 5.0));
+    for c in ["cable_cable", "cable_link"] {
+        let x = v["clearance"][c].as_f64().unwrap();
+        v["clearance"][c] = json!(x / 4.0);
+    }
+    for link in v["robot"]["links"].as_array_mut().unwrap() {
+        let r = link["body"]["radius"].as_f64().unwrap();
+        link["body"]["radius"] = json!(r / 4.0);
+    }
+    let links = v["robot"]["links"].as_array().unwrap().len();
+    for cable in v["robot"]["cables"].as_array_mut().unwrap() {
+        if rng.chance(0.5) {
+            continue;
+        }
+        if rng.chance(0.4) {
+            cable["from"] = json!(format!("L{}", rng.int(0, links - 1)));
+            cable["base"] = json!([rng.range(-0.3, 0.3), rng.range(-0.3, 0.3), rng.range(0.0, 0.8)]);
+        }
+        let via: Vec<Value> = (0..rng.int(0, 3))
+            .map(|_| {
+                if rng.chance(0.2) {
+                    json!({"point": [rng.range(-1.2, 1.2), rng.range(-1.2, 1.2), rng.range(-0.2, 1.5)]})
+                } else {
+                    json!({"link": format!("L{}", rng.int(0, links - 1)), "point": [rng.range(-0.3, 0.3), rng.range(-0.3, 0.3), rng.range(0.0, 0.8)]})
+                }
+            })
+            .collect();
+        if !via.is_empty() {
+            cable["via"] = json!(via);
+        }
+        // a cable with every anchor on one link pulls nothing (refused): start it on the base
+        let on = |a: &Value| a["link"].as_str().map(str::to_owned);
+        let mut links_of: Vec<Option<String>> = vec![cable["from"].as_str().map(str::to_owned)];
+        links_of.extend(via.iter().map(on));
+        links_of.push(on(cable));
+        if links_of.iter().all(|l| *l == links_of[0]) {
+            cable.as_object_mut().unwrap().remove("from");
+            cable["base"] = json!([rng.range(-1.2, 1.2), rng.range(-1.2, 1.2), rng.range(-0.2, 1.5)]);
+        }
+    }
+    v
+}
+
+/// Each cable's length at configuration `q`, from the links' frames and the cables' anchors
+/// alone (no segment or pose code of the core): the sum of the distances between consecutive
+/// anchors in the world frame.
+pub fn cable_lengths(s: &cablenav::Scenario, q: &[f64]) -> Vec<f64> {
+    let frames = s.robot.chain.as_ref().unwrap().frames(q);
+    let world = |a: &cablenav::model::Anchor| a.link.map_or(a.point, |l| frames[l].0 + frames[l].1 * a.point);
+    s.robot.cables.iter().map(|c| c.anchors().windows(2).map(|w| (world(&w[1]) - world(&w[0])).norm()).sum()).collect()
 }
