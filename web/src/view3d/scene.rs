@@ -156,10 +156,12 @@ impl BackdropKey {
                     reached.extend(link.body.iter().map(|b| dv(&(f.0 + f.1 * b))));
                 }
                 let shown = Shown::Links(frames);
-                reached.extend((0..s.robot.cables.len()).map(|i| dv(&shown.cable_end(s, i))));
+                reached.extend((0..s.robot.cables.len()).flat_map(|i| shown.cable_points(s, i)).map(|p| dv(&p)));
             }
         }
-        BackdropKey { obstacles: s.obstacles.clone(), bases: s.robot.cables.iter().map(|c| dv(&c.base)).collect(), reached }
+        // the anchors fixed to the base (a routed cable's may all be on links)
+        let bases = s.robot.cables.iter().flat_map(|c| c.anchors()).filter(|a| a.link.is_none()).map(|a| dv(&a.point)).collect();
+        BackdropKey { obstacles: s.obstacles.clone(), bases, reached }
     }
 }
 
@@ -215,6 +217,16 @@ impl Shown {
             Shown::Links(f) => f.get(c.link).map_or(c.platform, |(p, r)| p + r * c.platform),
         }
     }
+
+    /// Every anchor of cable `i` of `s` in order (world frame): its base anchor and its end for a
+    /// straight cable, and the anchors between for a routed one.
+    pub fn cable_points(&self, s: &Scenario, i: usize) -> Vec<Vector3<f64>> {
+        let c = &s.robot.cables[i];
+        match self {
+            Shown::Platform(_) => vec![c.base, self.cable_end(s, i)],
+            Shown::Links(f) => c.anchors().iter().map(|a| a.link.and_then(|l| f.get(l)).map_or(a.point, |(p, r)| p + r * a.point)).collect(),
+        }
+    }
 }
 
 /// Everything to draw.
@@ -250,12 +262,18 @@ pub struct SceneInput<'a> {
 /// between centrelines (the cable diameter is informational in the format). Other constraints
 /// (lengths, tensions) have no tube. Cable indices are 0-based.
 pub fn clearance_tubes(s: &Scenario, constraint: &str) -> Vec<(usize, f64)> {
-    let cable = |n: &str| n.trim().parse::<usize>().ok().filter(|&k| k >= 1 && k <= s.robot.cables.len()).map(|k| k - 1);
+    // a cable's number (`3`, or `3 segment 2` for a segment of a routed cable: the whole cable)
+    let cable = |n: &str| n.split_whitespace().next()?.parse::<usize>().ok().filter(|&k| k >= 1 && k <= s.robot.cables.len()).map(|k| k - 1);
     if let Some((a, b)) = constraint.strip_prefix("cables ").and_then(|r| r.split_once('-')) {
         let r = s.clearance.cable_cable / 2.0;
         return [cable(a), cable(b)].into_iter().flatten().map(|i| (i, r)).collect();
     }
     match constraint.strip_prefix("cable ").and_then(|r| r.split_once(" - ")) {
+        // segments of two routed cables (`cable 1 segment 2 - cable 3 segment 1`)
+        Some((i, other)) if other.starts_with("cable ") => {
+            let r = s.clearance.cable_cable / 2.0;
+            [cable(i), other.strip_prefix("cable ").and_then(cable)].into_iter().flatten().map(|i| (i, r)).collect()
+        }
         Some((i, _obstacle)) => cable(i).map(|i| vec![(i, s.clearance.cable_obstacle)]).unwrap_or_default(),
         None => vec![],
     }
@@ -322,10 +340,12 @@ pub fn build(input: &SceneInput, bounds: (DVec3, DVec3)) -> Geometry {
     let (extent, thin) = sizes(bounds);
 
     if let Some(shown) = &input.shown {
-        for (i, c) in s.robot.cables.iter().enumerate() {
+        for i in 0..s.robot.cables.len() {
             let colour = input.cables.get(i).map_or(CABLE, |st| cable_look(st).1);
             let mut t = Tris::default();
-            tessellate::tube(&mut t, dv(&c.base), dv(&shown.cable_end(s, i)), thin, 6);
+            for w in shown.cable_points(s, i).windows(2) {
+                tessellate::tube(&mut t, dv(&w[0]), dv(&w[1]), thin, 6);
+            }
             push_tris(&mut g.solid, &t, colour);
         }
         match shown {
@@ -333,9 +353,9 @@ pub fn build(input: &SceneInput, bounds: (DVec3, DVec3)) -> Geometry {
             Shown::Links(frames) => links(&mut g, s, frames, extent),
         }
         let mut tubes = Tris::default();
-        for &(i, r) in input.tubes {
-            if let Some(c) = s.robot.cables.get(i) {
-                tessellate::tube(&mut tubes, dv(&c.base), dv(&shown.cable_end(s, i)), r, 18);
+        for &(i, r) in input.tubes.iter().filter(|(i, _)| *i < s.robot.cables.len()) {
+            for w in shown.cable_points(s, i).windows(2) {
+                tessellate::tube(&mut tubes, dv(&w[0]), dv(&w[1]), r, 18);
             }
         }
         push_tris(&mut g.translucent, &tubes, TUBE);
@@ -451,6 +471,9 @@ mod tests {
         assert_eq!(clearance_tubes(&s, "cables 1-7"), [(0, s.clearance.cable_cable / 2.0), (6, s.clearance.cable_cable / 2.0)]);
         assert!(clearance_tubes(&s, "cable 2 length").is_empty());
         assert!(clearance_tubes(&s, "cable 9 - crown").is_empty(), "no such cable");
+        // a routed cable's segments name their cables: the whole cable gets the tube
+        assert_eq!(clearance_tubes(&s, "cable 3 segment 2 - crown"), [(2, s.clearance.cable_obstacle)]);
+        assert_eq!(clearance_tubes(&s, "cable 1 segment 1 - cable 4"), [(0, s.clearance.cable_cable / 2.0), (3, s.clearance.cable_cable / 2.0)]);
     }
     use crate::logic;
     use crate::presets::PRESETS;
@@ -571,6 +594,37 @@ mod tests {
         // the scene's box holds every configuration's links
         let (min, max) = bounds(&s);
         assert!(max.z >= 1.19 && min.z <= 0.0, "{min} {max}");
+    }
+
+    #[test]
+    fn a_routed_cable_is_drawn_through_its_anchors() {
+        let text = PRESETS[crate::presets::find("bmarm-x4-2").unwrap()].json;
+        let mut v: serde_json::Value = serde_json::from_str(text).unwrap();
+        v["format"] = serde_json::json!("cablenav-scenario/6");
+        // cable 1 over a point of the upper arm to the lower arm; a lower-arm cable from the upper arm
+        v["robot"]["cables"][0]["via"] = serde_json::json!([{"link": "Upper Arm", "point": [0.05, 0.0, 0.2]}]);
+        v["robot"]["cables"][0]["link"] = serde_json::json!("Lower Arm");
+        let j = (1..5).find(|&j| v["robot"]["cables"][j]["link"] == "Lower Arm").unwrap();
+        v["robot"]["cables"][j]["from"] = serde_json::json!("Upper Arm");
+        let s = Scenario::from_json(&v.to_string()).unwrap();
+        let chain = s.robot.chain.as_ref().unwrap();
+        let q = s.config("initial").unwrap();
+        let shown = Shown::config(chain, &q);
+        let frames = chain.frames(&q);
+        let points = shown.cable_points(&s, 0);
+        assert_eq!(points.len(), 3);
+        assert!((points[1] - (frames[0].0 + frames[0].1 * nalgebra::Vector3::new(0.05, 0.0, 0.2))).norm() < 1e-15);
+        assert!((points[2] - shown.cable_end(&s, 0)).norm() < 1e-15);
+        let from = shown.cable_points(&s, j)[0];
+        assert!((from - (frames[0].0 + frames[0].1 * s.robot.cables[j].base)).norm() < 1e-15, "the base anchor moves with its link");
+        // one tube per segment: cable 1's two of 12 triangles each beside the others' one
+        let input = SceneInput { scenario: &s, shown: Some(shown), cables: &[], trajectory: &[], paths: &[], lattice: &[], handles: &[], selected: None, axis: None, tubes: &[] };
+        let straight = scenario("bmarm-x4-2");
+        let plain = SceneInput { scenario: &straight, shown: Some(Shown::config(chain, &q)), ..input };
+        let cables = |g: &Geometry| colours(&g.solid).iter().filter(|c| **c == CABLE).count();
+        assert_eq!(cables(&build(&input, bounds(&s))) - cables(&build(&plain, bounds(&straight))), 12 * 3, "one more segment");
+        // the backdrop's base anchors leave out the one now on the upper arm
+        assert_eq!(BackdropKey::of(&s).bases.len() + 1, BackdropKey::of(&straight).bases.len());
     }
 
     fn lattice_red() -> Rgba {
