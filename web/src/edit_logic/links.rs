@@ -207,8 +207,8 @@ fn check_name(new: &str, old: &str, taken: &[String], what: &str) -> Result<(), 
     Ok(())
 }
 
-/// Renames link `i`, and the name in its children's `parent`, its cables' `link` and the
-/// `wrench.link` of a wrench applied to it.
+/// Renames link `i`, and the name in its children's `parent`, its cables' `link`, a routed
+/// cable's `from` and `via[k].link`, and the `wrench.link` of a wrench applied to it.
 pub fn rename_link(doc: &mut Value, i: usize, new: &str) -> Result<(), String> {
     let names = link_names(doc);
     let old = names.get(i).cloned().ok_or("no such link")?;
@@ -221,8 +221,13 @@ pub fn rename_link(doc: &mut Value, i: usize, new: &str) -> Result<(), String> {
         }
     }
     let cables = Path::of(&["robot", "cables"]);
-    let references = (0..len(doc, &cables)).map(|c| cables.i(c).k("link")).chain([Path::of(&["wrench", "link"])]);
-    for link in references.collect::<Vec<_>>() {
+    let routes = (0..len(doc, &cables)).flat_map(|c| {
+        let via = cables.i(c).k("via");
+        let anchors = (0..len(doc, &via)).map(move |k| via.i(k).k("link"));
+        [cables.i(c).k("link"), cables.i(c).k("from")].into_iter().chain(anchors)
+    });
+    let references = routes.chain([Path::of(&["wrench", "link"])]).collect::<Vec<_>>();
+    for link in references {
         if get(doc, &link).and_then(Value::as_str) == Some(old.as_str()) {
             set(doc, &link, json!(new));
         }
@@ -421,6 +426,17 @@ mod tests {
         assert!(get(&d, &Path::of(&["robot", "links"]).i(k).k("parent")) == Some(&json!("Forearm")));
         assert!(s.robot.cables.iter().filter(|c| c.link == 1).count() >= 1);
         assert_eq!(rename_link(&mut d, 1, "Upper Arm").unwrap_err(), "another link is called “Upper Arm”");
+        // a routed cable's references follow a renamed link too (format 6: from, via)
+        d["format"] = json!("cablenav-scenario/6");
+        d["robot"]["cables"][0]["from"] = json!("Upper Arm");
+        d["robot"]["cables"][0]["link"] = json!("Forearm");
+        d["robot"]["cables"][1]["via"] = json!([{"link": "Upper Arm", "point": [0.01, 0.0, 0.1]}, {"point": [0.3, 0.0, 0.0]}]);
+        rename_link(&mut d, 0, "Humerus").unwrap();
+        assert_eq!((&d["robot"]["cables"][0]["from"], &d["robot"]["cables"][1]["via"][0]["link"]), (&json!("Humerus"), &json!("Humerus")));
+        assert!(d["robot"]["cables"][1]["via"][1].get("link").is_none(), "a base anchor stays on the base");
+        let s = valid(&d);
+        assert_eq!((s.robot.cables[0].from, s.robot.cables[1].via[0].link), (Some(0), Some(0)));
+        rename_link(&mut d, 0, "Upper Arm").unwrap();
         assert!(rename_link(&mut d, 1, " ").is_err());
         // removing a link drops its coordinates; what still names it is the core's error
         remove_link(&mut d, k);

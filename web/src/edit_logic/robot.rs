@@ -49,6 +49,18 @@ pub fn add_cable(doc: &mut Value) {
     }
 }
 
+/// How cable `i` of a multi-link robot is routed, for its row in the table: `from LINK` when its
+/// base anchor is on a link, and how many anchors it runs through (`via`); `None` for a straight
+/// cable from the base. The table edits the base and end anchors; the route is kept as written.
+pub fn route_summary(doc: &Value, i: usize) -> Option<String> {
+    let cable = Path::of(&["robot", "cables"]).i(i);
+    let from = get(doc, &cable.k("from")).and_then(Value::as_str).map(|l| format!("base anchor on {l}"));
+    let via = len(doc, &cable.k("via"));
+    let through = (via > 0).then(|| format!("through {via} anchor{}", if via == 1 { "" } else { "s" }));
+    let parts: Vec<String> = [from, through].into_iter().flatten().collect();
+    (!parts.is_empty()).then(|| format!("routed: {}", parts.join(", ")))
+}
+
 /// Removes cable `i` and its entry in per-cable bound lists.
 pub fn remove_cable(doc: &mut Value, i: usize) {
     remove(doc, &Path::of(&["robot", "cables"]).i(i));
@@ -93,6 +105,18 @@ mod tests {
     use super::*;
     use cablenav::Scenario;
     use serde_json::json;
+
+    #[test]
+    fn a_routed_cable_says_how_it_runs() {
+        let mut d = doc();
+        assert_eq!(route_summary(&d, 0), None);
+        d["robot"]["cables"][0]["from"] = json!("Upper Arm");
+        assert_eq!(route_summary(&d, 0).as_deref(), Some("routed: base anchor on Upper Arm"));
+        d["robot"]["cables"][0]["via"] = json!([{"point": [0, 0, 1]}, {"link": "Lower Arm", "point": [0, 0, 0.1]}]);
+        assert_eq!(route_summary(&d, 0).as_deref(), Some("routed: base anchor on Upper Arm, through 2 anchors"));
+        d["robot"]["cables"][0].as_object_mut().unwrap().remove("from");
+        assert_eq!(route_summary(&d, 0).as_deref(), Some("routed: through 2 anchors"));
+    }
 
     #[test]
     fn cables_add_and_remove_with_their_list_bounds() {

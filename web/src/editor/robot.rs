@@ -28,7 +28,7 @@ pub fn RobotEditor(ed: Ed) -> impl IntoView {
         <table class="cables" data-testid="cable-table">
             <caption>
                 {move || if chain.get() {
-                    "Cables: base anchor aᵢ (world frame), the link pulled and the point bᵢ on it (that link's frame), in metres"
+                    "Cables: base anchor aᵢ (world frame, or the frame of the link a routed cable starts on), the link pulled and the point bᵢ on it (that link's frame), in metres; ↝ marks a routed cable, its route kept as the file has it"
                 } else {
                     "Cables: base anchor aᵢ (world frame) and platform anchor bᵢ (platform frame), in metres"
                 }}
@@ -145,9 +145,14 @@ fn CableRow(ed: Ed, i: usize) -> impl IntoView {
             </td>
         }
     };
+    // a routed cable (format 6) says how it runs: the row edits its two end anchors only
+    let route = move || ed.read(|d| el::route_summary(d, i)).flatten();
     view! {
         <tr data-testid="cable-row" class:invalid=move || row_error.with(Option::is_some)>
-            <th scope="row">{i + 1}</th>
+            <th scope="row">
+                {i + 1}
+                {move || route().map(|r| view! { <span class="routed" data-testid="cable-route" title=r.clone() aria-label=r>"↝"</span> })}
+            </th>
             {cell("base", 0)}{cell("base", 1)}{cell("base", 2)}
             {link_cell}
             {cell("platform", 0)}{cell("platform", 1)}{cell("platform", 2)}
