@@ -113,43 +113,53 @@ fn unknown_coordinates_and_unsupported_commands_say_why() {
     assert!(e.reason.contains("\"phi\" is not a coordinate of this robot"), "{e}");
 }
 
+/// A CASPR model `name` in directory `m` (its bodies and cables files), imported by the CLI to
+/// `out` and worked on by `body` with the CLI over those files (`cli`) and the imported JSON
+/// (which `body` may rewrite).
+fn with_model(name: &str, bodies: &str, cables: &str, out: &str, body: impl FnOnce(&dyn Fn(&str) -> String, &std::cell::RefCell<String>)) {
+    let imported = std::cell::RefCell::new(String::new());
+    let (bodies_file, cables_file) = (format!("{name}_bodies.xml"), format!("{name}_cables.xml"));
+    let read = |p: &str| match p.strip_prefix("m/") {
+        Some(f) if f == bodies_file => Ok(bodies.to_string()),
+        Some(f) if f == cables_file => Ok(cables.to_string()),
+        _ if p == out => Ok(imported.borrow().clone()),
+        _ => Err(Error::new(p, "no such file")),
+    };
+    let list = |p: &str| if p == "m" { Ok(vec![bodies_file.clone(), cables_file.clone()]) } else { Ok(vec![]) };
+    let write = |_: &str, bytes: &[u8]| {
+        *imported.borrow_mut() = String::from_utf8_lossy(bytes).into_owned();
+        Ok(())
+    };
+    let cli = |args: &str| run(args.split(' '), &read, &write, &list, &mut |_| {}).unwrap_or_else(|e| panic!("{args}: {e}"));
+    body(&cli, &imported);
+}
+
 /// An arm imported from CASPR with its links' masses: the summary says so, and `check` and
 /// `verify` hold its weight as a condition of their own (static feasibility, with its margin).
 #[test]
 fn an_imported_arm_holds_its_weight() {
     let bodies = include_str!("../../../shared/models/caspr/BMArm/BMArm_bodies.xml");
     let cables = include_str!("../../../shared/models/caspr/BMArm/BMArm_cables.xml");
-    let imported = std::cell::RefCell::new(String::new());
-    let read = |p: &str| match p {
-        "m/BMArm_bodies.xml" => Ok(bodies.to_string()),
-        "m/BMArm_cables.xml" => Ok(cables.to_string()),
-        "arm.json" => Ok(imported.borrow().clone()),
-        _ => Err(Error::new(p, "no such file")),
-    };
-    let list = |p: &str| if p == "m" { Ok(vec!["BMArm_bodies.xml".to_string(), "BMArm_cables.xml".into()]) } else { Ok(vec![]) };
-    let write = |_: &str, bytes: &[u8]| {
-        *imported.borrow_mut() = String::from_utf8_lossy(bytes).into_owned();
-        Ok(())
-    };
-    let cli = |args: &str| run(args.split(' '), &read, &write, &list, &mut |_| {}).unwrap_or_else(|e| panic!("{args}: {e}"));
-    let printed = cli("import m --out arm.json");
-    assert!(printed.contains("wrote arm.json: BMArm (6 cables, links' mass 1.1123952 kg)"), "{printed}");
-    let check: Value = serde_json::from_str(&cli("check arm.json --pose initial --json")).unwrap();
-    let statics = check["checks"].as_array().unwrap().iter().find(|c| c["constraint"] == "static feasibility").unwrap_or_else(|| panic!("{check}"));
-    assert!(statics["distance"].as_f64().is_some_and(|d| d > 0.0), "{statics}");
-    // CASPR's initial configuration holds the arm; turning the lower arm on to θ = −0.95 loses
-    // the hold once, the condition named at the boundary
-    let mut v: Value = serde_json::from_str(&imported.borrow()).unwrap();
-    v["configurations"]["bent"] = v["configurations"]["initial"].clone();
-    v["configurations"]["bent"]["theta"] = serde_json::json!(-0.95);
-    v["trajectories"] = serde_json::json!([{"name": "bend", "through": ["initial", "bent"]}]);
-    *imported.borrow_mut() = v.to_string();
-    let r: Value = serde_json::from_str(&cli("verify arm.json --trajectory bend --json")).unwrap();
-    let boundaries = r["boundaries"].as_array().unwrap();
-    assert_eq!(boundaries.len(), 1, "{r}");
-    assert_eq!((boundaries[0]["constraint"].as_str(), boundaries[0]["enters"].as_str()), (Some("static feasibility"), Some("infeasible")), "{r}");
-    let t = boundaries[0]["t"].as_f64().unwrap();
-    assert!(t > 0.5 && t < 0.9 && r["uncertain"].as_array().unwrap().is_empty(), "{r}");
+    with_model("BMArm", bodies, cables, "arm.json", |cli, imported| {
+        let printed = cli("import m --out arm.json");
+        assert!(printed.contains("wrote arm.json: BMArm (6 cables, links' mass 1.1123952 kg)"), "{printed}");
+        let check: Value = serde_json::from_str(&cli("check arm.json --pose initial --json")).unwrap();
+        let statics = check["checks"].as_array().unwrap().iter().find(|c| c["constraint"] == "static feasibility").unwrap_or_else(|| panic!("{check}"));
+        assert!(statics["distance"].as_f64().is_some_and(|d| d > 0.0), "{statics}");
+        // CASPR's initial configuration holds the arm; turning the lower arm on to θ = −0.95 loses
+        // the hold once, the condition named at the boundary
+        let mut v: Value = serde_json::from_str(&imported.borrow()).unwrap();
+        v["configurations"]["bent"] = v["configurations"]["initial"].clone();
+        v["configurations"]["bent"]["theta"] = serde_json::json!(-0.95);
+        v["trajectories"] = serde_json::json!([{"name": "bend", "through": ["initial", "bent"]}]);
+        *imported.borrow_mut() = v.to_string();
+        let r: Value = serde_json::from_str(&cli("verify arm.json --trajectory bend --json")).unwrap();
+        let boundaries = r["boundaries"].as_array().unwrap();
+        assert_eq!(boundaries.len(), 1, "{r}");
+        assert_eq!((boundaries[0]["constraint"].as_str(), boundaries[0]["enters"].as_str()), (Some("static feasibility"), Some("infeasible")), "{r}");
+        let t = boundaries[0]["t"].as_f64().unwrap();
+        assert!(t > 0.5 && t < 0.9 && r["uncertain"].as_array().unwrap().is_empty(), "{r}");
+    });
 }
 
 /// A model with routed cables (CAREX: two of its six cables run over the upper arm to the
@@ -159,29 +169,18 @@ fn an_imported_arm_holds_its_weight() {
 fn a_routed_arm_imports_and_holds_its_weight_in_a_band() {
     let bodies = include_str!("../../../shared/models/caspr/CAREX/CAREX_bodies.xml");
     let cables = include_str!("../../../shared/models/caspr/CAREX/CAREX_cables.xml");
-    let imported = std::cell::RefCell::new(String::new());
-    let read = |p: &str| match p {
-        "m/CAREX_bodies.xml" => Ok(bodies.to_string()),
-        "m/CAREX_cables.xml" => Ok(cables.to_string()),
-        "carex.json" => Ok(imported.borrow().clone()),
-        _ => Err(Error::new(p, "no such file")),
-    };
-    let list = |p: &str| if p == "m" { Ok(vec!["CAREX_bodies.xml".to_string(), "CAREX_cables.xml".into()]) } else { Ok(vec![]) };
-    let write = |_: &str, bytes: &[u8]| {
-        *imported.borrow_mut() = String::from_utf8_lossy(bytes).into_owned();
-        Ok(())
-    };
-    let cli = |args: &str| run(args.split(' '), &read, &write, &list, &mut |_| {}).unwrap_or_else(|e| panic!("{args}: {e}"));
-    let printed = cli("import m --out carex.json");
-    assert!(printed.contains("(6 cables, links' mass 5 kg)") && printed.contains("robot.closure false") && printed.contains("wider than one turn"), "{printed}");
-    let v: Value = serde_json::from_str(&imported.borrow()).unwrap();
-    assert_eq!(v["format"], "cablenav-scenario/6");
-    assert_eq!(v["robot"]["cables"][0]["via"][0]["link"], "Upper Arm");
-    let r: Value = serde_json::from_str(&cli("ray carex.json --pose initial --vary alpha --range -0.3 0.3 --json")).unwrap();
-    let feasible = r["feasible"].as_array().unwrap();
-    assert_eq!(feasible.len(), 1, "{r}");
-    let [lo, hi] = [0, 1].map(|k| feasible[0][k].as_f64().unwrap());
-    assert!(lo > 0.0 && lo < hi && hi < 0.1 && r["uncertain"].as_array().unwrap().is_empty(), "{r}");
-    let named: Vec<&str> = r["boundaries"].as_array().unwrap().iter().map(|b| b["constraint"].as_str().unwrap()).collect();
-    assert_eq!(named, ["static feasibility", "static feasibility"], "{r}");
+    with_model("CAREX", bodies, cables, "carex.json", |cli, imported| {
+        let printed = cli("import m --out carex.json");
+        assert!(printed.contains("(6 cables, links' mass 5 kg)") && printed.contains("robot.closure false") && printed.contains("wider than one turn"), "{printed}");
+        let v: Value = serde_json::from_str(&imported.borrow()).unwrap();
+        assert_eq!(v["format"], "cablenav-scenario/6");
+        assert_eq!(v["robot"]["cables"][0]["via"][0]["link"], "Upper Arm");
+        let r: Value = serde_json::from_str(&cli("ray carex.json --pose initial --vary alpha --range -0.3 0.3 --json")).unwrap();
+        let feasible = r["feasible"].as_array().unwrap();
+        assert_eq!(feasible.len(), 1, "{r}");
+        let [lo, hi] = [0, 1].map(|k| feasible[0][k].as_f64().unwrap());
+        assert!(lo > 0.0 && lo < hi && hi < 0.1 && r["uncertain"].as_array().unwrap().is_empty(), "{r}");
+        let named: Vec<&str> = r["boundaries"].as_array().unwrap().iter().map(|b| b["constraint"].as_str().unwrap()).collect();
+        assert_eq!(named, ["static feasibility", "static feasibility"], "{r}");
+    });
 }
