@@ -133,7 +133,7 @@ fn a_path_around_the_closure_boundary_verifies_exactly() {
     let s = arm();
     let (ul, lr) = (s.config("ul").unwrap(), s.config("lr").unwrap());
     // the straight path leaves wrench closure
-    let straight = JointPath { name: "straight".into(), through: vec![ul.clone(), lr.clone()] };
+    let straight = JointPath { name: "straight".into(), through: vec![ul.clone(), lr.clone()], proportional: false };
     let r = verify_along(&s, Along::Joints(&straight)).unwrap();
     assert_eq!(r.infeasible.len(), 1, "{r:?}");
     assert!(r.infeasible[0][1] - r.infeasible[0][0] > 0.5, "{r:?}");

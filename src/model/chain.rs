@@ -13,6 +13,7 @@
 //! see no difference between a platform and a link.
 
 use super::motion::{quat_const, quat_mul, ramp_about, Motion, Param, QuatPoly, ANGLE_PIECE};
+use super::proportional::Leg;
 use super::pose::{Coord, Pose};
 use crate::poly::Bern;
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
@@ -337,9 +338,10 @@ impl Chain {
             .ray(&q[o..o + link.joint.dof()], k, lo, hi)
             .into_iter()
             .map(|joint| {
+                let param = joint.param;
                 let mut locals = vec![None; self.links.len()];
                 locals[varied] = Some(joint);
-                self.compose(q, locals)
+                self.compose(q, locals, param)
             })
             .collect()
     }
@@ -358,14 +360,14 @@ impl Chain {
                 link.joint.sweep(&from[o..o + n], &to[o..o + n], param)
             })
             .collect();
-        self.compose(from, locals)
+        self.compose(from, locals, param)
     }
 
     /// The links' world motions from each joint's own motion (`None`: the joint stays at `q`),
-    /// brought to one common weight: the product of the moving joints' weights.
-    fn compose(&self, q: &[f64], locals: Vec<Option<Motion>>) -> Vec<Motion> {
+    /// brought to one common weight: the product of the moving joints' weights; `param` maps
+    /// their λ to the user's parameter (kept when no joint moves).
+    pub(crate) fn compose(&self, q: &[f64], locals: Vec<Option<Motion>>, param: Param) -> Vec<Motion> {
         let frames = self.frames(q);
-        let param = locals.iter().flatten().next().map_or(Param::Linear { lo: 0.0, hi: 1.0 }, |m| m.param);
         // per link: its motion (None while constant) and which joints' weights it carries
         let mut moving: Vec<Option<(Motion, Vec<usize>)>> = Vec::with_capacity(self.links.len());
         for (l, link) in self.links.iter().enumerate() {
@@ -412,13 +414,16 @@ impl Chain {
 /// (its half-angle tangent grows linearly from one end to the other) and each length linearly.
 /// Each leg is cut into the fewest equal steps of at most [`ANGLE_PIECE`] in every angle; the
 /// path's t runs over [0, 1], the legs taking equal shares and the steps equal shares of their
-/// leg.
+/// leg. A `proportional` path moves every joint in proportion instead — CASPR's joint splines'
+/// path (`super::proportional`), t in proportion to the progress along each leg.
 #[derive(Debug, Clone, PartialEq)]
 pub struct JointPath {
     /// Its name.
     pub name: String,
     /// The configurations it passes through (at least two).
     pub through: Vec<Vec<f64>>,
+    /// Whether every joint progresses in proportion from one configuration to the next.
+    pub proportional: bool,
 }
 
 impl JointPath {
@@ -439,13 +444,41 @@ impl JointPath {
         out
     }
 
-    /// Every link's motion along each step (see [`Chain::sweep`]).
+    /// Every link's motion along each step (see [`Chain::sweep`]), or each piece of a
+    /// proportional path's legs ([`Leg::sweep`]).
     pub fn motions(&self, chain: &Chain) -> Vec<Vec<Motion>> {
+        if let Some(legs) = self.proportional_legs(chain) {
+            let n = legs.len() as f64;
+            let t = |k: usize| if k == legs.len() { 1.0 } else { k as f64 / n };
+            return legs.iter().enumerate().flat_map(|(k, leg)| (0..leg.pieces()).map(move |p| leg.sweep(chain, p, (t(k), t(k + 1))))).collect();
+        }
         self.steps(chain).into_iter().map(|(a, b, t0, t1)| chain.sweep(&a, &b, Param::Linear { lo: t0, hi: t1 })).collect()
+    }
+
+    /// A proportional path's legs (`None` for another path, or one with a leg that has no
+    /// rational form, which validation refuses: [`JointPath::check_legs`]).
+    fn proportional_legs(&self, chain: &Chain) -> Option<Vec<Leg>> {
+        if !self.proportional {
+            return None;
+        }
+        self.through.windows(2).map(|w| Leg::new(chain, &w[0], &w[1]).ok()).collect()
+    }
+
+    /// Why a proportional path's leg has no rational form, with the leg's number (0-based).
+    pub fn check_legs(&self, chain: &Chain) -> Result<(), (usize, String)> {
+        for (k, w) in self.through.windows(2).enumerate().filter(|_| self.proportional) {
+            Leg::new(chain, &w[0], &w[1]).map_err(|e| (k, e))?;
+        }
+        Ok(())
     }
 
     /// The configuration at t ∈ [0, 1].
     pub fn config_at(&self, chain: &Chain, t: f64) -> Vec<f64> {
+        if let Some(legs) = self.proportional_legs(chain) {
+            let at = t.clamp(0.0, 1.0) * legs.len() as f64;
+            let k = (at.floor() as usize).min(legs.len().saturating_sub(1));
+            return legs.get(k).map_or_else(|| self.through[0].clone(), |leg| leg.config_at(at - k as f64));
+        }
         let steps = self.steps(chain);
         let Some((a, b, t0, t1)) = steps.iter().find(|s| t <= s.3).or(steps.last()) else { return self.through.first().cloned().unwrap_or_default() };
         let lam = ((t - t0) / (t1 - t0)).clamp(0.0, 1.0);
@@ -566,7 +599,7 @@ mod tests {
         let a = vec![0.2, -0.1, 0.4, 0.3, 0.5, -0.2, 0.3, -0.4, 0.2, 0.15, 0.7, 0.4, -0.6, 0.1, -0.2, 0.8, 0.5, 0.6, 0.7, -0.3, 0.2, 0.4];
         let b = vec![-0.3, 0.2, 0.1, -0.9, 1.1, 0.6, -0.5, 0.4, 1.0, -0.25, -0.8, -0.2, 0.9, 0.3, 0.1, -0.7, -0.4, 0.2, 0.1, 0.6, -0.9, 1.0];
         let c = vec![0.0; 22];
-        let path = JointPath { name: "p".into(), through: vec![a.clone(), b.clone(), c.clone()] };
+        let path = JointPath { name: "p".into(), through: vec![a.clone(), b.clone(), c.clone()], proportional: false };
         let steps = path.steps(&chain);
         assert!(steps.len() > 2, "the legs are cut into steps of at most π/8");
         assert_eq!((steps[0].2, steps.last().unwrap().3), (0.0, 1.0));

@@ -6,6 +6,7 @@ pub mod dynamics;
 pub mod knots;
 pub mod motion;
 pub mod pose;
+pub mod proportional;
 pub mod robot;
 pub mod trajectory;
 pub mod turn;

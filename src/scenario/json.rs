@@ -345,6 +345,10 @@ pub struct RawTrajectory {
     /// A multi-link robot's path: the names of the configurations it passes through (format 3).
     #[serde(default)]
     pub through: Option<Vec<String>>,
+    /// How a multi-link robot's joints move between those configurations: `"proportional"`
+    /// (format 6, CASPR's joint splines' path) or `"tangent"` (the default).
+    #[serde(default)]
+    pub joints: Option<String>,
     /// How long the trajectory takes, in seconds (format 4).
     #[serde(default)]
     pub duration: Option<f64>,

@@ -92,7 +92,7 @@ impl LatticePlanner {
         if through.len() == 1 {
             through.push(through[0].clone());
         }
-        JointPath { name: format!("{}-lattice", self.query), through }
+        JointPath { name: format!("{}-lattice", self.query), through, proportional: false }
     }
 }
 

@@ -85,7 +85,7 @@ impl Space {
     pub(super) fn verify_run(&self, s: &Scenario, points: &[Vec<f64>]) -> Option<VerifyReport> {
         match self {
             Space::Platform => verify_trajectory(s, &bezier_trajectory(points, "piece")).ok(),
-            Space::Chain { .. } => verify_along(s, Along::Joints(&JointPath { name: "piece".into(), through: points.to_vec() })).ok(),
+            Space::Chain { .. } => verify_along(s, Along::Joints(&JointPath { name: "piece".into(), through: points.to_vec(), proportional: false })).ok(),
         }
     }
 

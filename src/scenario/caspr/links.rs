@@ -30,6 +30,7 @@ use roxmltree::Node;
 use serde::Serialize;
 use std::collections::BTreeMap;
 
+use super::joint_paths::{joint_paths, OutJointPath};
 use super::out::{OutAnchor, OutBody, OutCable, OutCableBounds, OutJoint, OutLink, OutRobot, Properties};
 use super::xml::{cable_set, child, child_numbers, children, document, line, parse_xml, properties};
 use super::{Import, CASPR_GRAVITY};
@@ -255,17 +256,27 @@ struct Out<'a> {
     format: &'static str,
     name: &'a str,
     robot: OutRobot,
-    configurations: BTreeMap<&'static str, BTreeMap<String, f64>>,
+    configurations: BTreeMap<String, BTreeMap<String, f64>>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    trajectories: Vec<OutJointPath>,
 }
 
-/// Converts a CASPR multi-link bodies file and cables file into scenario JSON called `name`.
-pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str, set: Option<&str>) -> Result<Import> {
+/// Converts a CASPR multi-link bodies file and cables file (and, when given, its trajectories
+/// file: [`super::joint_paths`]) into scenario JSON called `name`.
+pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str, trajectories_xml: Option<&str>, set: Option<&str>) -> Result<Import> {
     let mut notes = vec!["multi-link robot: clearances are left at 0 (the thesis' case study uses ε = 0.02, clearance.cable_cable and clearance.cable_link); link bodies are segments of radius 0".to_string()];
     let links = links(bodies_xml, &mut notes)?;
     let cables = cables(cables_xml, &links, set)?;
     let Properties { diameter, tension, per_cable } = Properties::of(cables.iter().map(|c| c.props).collect(), &mut notes);
     let link_name = |num: usize| links.get(num.wrapping_sub(1)).map(|l| l.name.clone());
     let initial = links.iter().flat_map(|l| l.coordinates.iter().cloned().zip(l.initial.iter().copied())).collect();
+    let coordinates: Vec<String> = links.iter().flat_map(|l| l.coordinates.iter().cloned()).collect();
+    let (trajectories, along) = match trajectories_xml {
+        Some(xml) => joint_paths(xml, &coordinates, &mut notes)?,
+        None => (Vec::new(), Vec::new()),
+    };
+    let mut configurations = BTreeMap::from([("initial".to_string(), initial)]);
+    configurations.extend(along);
     for l in links.iter().filter(|l| l.mass.is_some_and(|m| !(m > 0.0))) {
         notes.push(format!("link {:?}'s mass {} is not positive; imported massless", l.name, l.mass.unwrap_or(0.0)));
     }
@@ -279,8 +290,8 @@ pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str, set: Optio
                 .to_string(),
         );
     }
-    let out = Out {
-        format: if routed || weighed { FORMAT_6 } else { FORMAT_3 },
+    let mut out = Out {
+        format: if routed || weighed || !trajectories.is_empty() { FORMAT_6 } else { FORMAT_3 },
         name,
         robot: OutRobot {
             mobility: None,
@@ -317,8 +328,30 @@ pub(super) fn to_json(name: &str, bodies_xml: &str, cables_xml: &str, set: Optio
             tension,
             diameter,
         },
-        configurations: BTreeMap::from([("initial", initial)]),
+        configurations,
+        trajectories,
     };
-    let json = serde_json::to_string_pretty(&out).map_err(|e| Error::new("", format!("internal: {e}")))?;
-    Ok(Import { json, notes })
+    // a path with a leg of no rational form is dropped, with why
+    loop {
+        let json = serde_json::to_string_pretty(&out).map_err(|e| Error::new("", format!("internal: {e}")))?;
+        let refused = crate::Scenario::from_json(&json).err().and_then(|e| {
+            let k: usize = e.field.strip_prefix("trajectories[")?.split(']').next()?.parse().ok()?;
+            Some((k, e.reason))
+        });
+        let Some((k, why)) = refused.filter(|(k, _)| *k < out.trajectories.len()) else {
+            if !out.trajectories.is_empty() {
+                let n = out.trajectories.len();
+                notes.push(format!(
+                    "{n} trajector{} imported as paths through {} points (configurations ID-0, ID-1, …), every joint moving in proportion as CASPR's splines do; \
+                     their times are not kept (a multi-link robot's path is verified at rest)",
+                    if n == 1 { "y" } else { "ies" },
+                    if n == 1 { "its" } else { "their" }
+                ));
+            }
+            return Ok(Import { json, notes });
+        };
+        let path = out.trajectories.remove(k);
+        out.configurations.retain(|c, _| !path.through.contains(c));
+        notes.push(format!("trajectory \"{}\" skipped: {why}", path.name));
+    }
 }

@@ -39,6 +39,7 @@
 //! write the scenario with the types of `out.rs`.
 
 mod joint;
+mod joint_paths;
 mod links;
 mod out;
 mod platform;
@@ -75,11 +76,7 @@ pub fn to_json(name: &str, bodies_xml: &str, cables_xml: &str) -> Result<Import>
 /// `cable_set` listing the file's.
 pub fn model_to_json(name: &str, bodies_xml: &str, cables_xml: &str, trajectories_xml: Option<&str>, cable_set: Option<&str>) -> Result<Import> {
     let mut out = if links::is_multi_link(bodies_xml) {
-        let mut out = links::to_json(name, bodies_xml, cables_xml, cable_set)?;
-        if trajectories_xml.is_some() {
-            out.notes.push("the trajectories file was not read: trajectories of multi-link robots are not imported yet".to_string());
-        }
-        out
+        links::to_json(name, bodies_xml, cables_xml, trajectories_xml, cable_set)?
     } else {
         platform::to_json(name, bodies_xml, cables_xml, trajectories_xml, cable_set)?
     };

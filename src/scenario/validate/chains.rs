@@ -21,6 +21,9 @@ pub(super) fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clear
         if let Some(k) = raw.trajectories.iter().position(|t| t.through.is_some()) {
             return Err(Error::new(format!("trajectories[{k}].through"), "only a multi-link robot's trajectories pass through configurations; a platform robot's have translation and orientation"));
         }
+        if let Some(k) = raw.trajectories.iter().position(|t| t.joints.is_some()) {
+            return Err(Error::new(format!("trajectories[{k}].joints"), "only a multi-link robot's joints move between configurations; a platform robot's trajectories have translation and orientation"));
+        }
         for (i, c) in raw.robot.cables.iter().enumerate() {
             for (field, given) in [("link", c.link.is_some()), ("from", c.from.is_some()), ("via", c.via.is_some())] {
                 if given {
@@ -427,7 +430,7 @@ fn configurations(raw: &Ordered<Ordered<f64>>, robot: &Robot, chain: &Chain, war
 
 /// A multi-link robot's trajectories: each a `name` and the configurations it passes `through`
 /// (at least two, by name).
-pub(super) fn joint_paths(raw: &[RawTrajectory], configs: &[(String, Vec<f64>)]) -> Result<Vec<JointPath>> {
+pub(super) fn joint_paths(raw: &[RawTrajectory], configs: &[(String, Vec<f64>)], chain: &Chain, version: u8) -> Result<Vec<JointPath>> {
     let mut out: Vec<JointPath> = Vec::with_capacity(raw.len());
     for (k, t) in raw.iter().enumerate() {
         let path = format!("trajectories[{k}]");
@@ -454,7 +457,19 @@ pub(super) fn joint_paths(raw: &[RawTrajectory], configs: &[(String, Vec<f64>)])
                 })
             })
             .collect::<Result<Vec<_>>>()?;
-        out.push(JointPath { name: t.name.clone(), through });
+        let proportional = match t.joints.as_deref() {
+            None | Some("tangent") => false,
+            Some("proportional") => {
+                needs_format(version, 6, &format!("{path}.joints"))?;
+                true
+            }
+            Some(other) => return Err(Error::new(format!("{path}.joints"), format!("{other:?} is not \"tangent\" or \"proportional\""))),
+        };
+        let joint_path = JointPath { name: t.name.clone(), through, proportional };
+        joint_path.check_legs(chain).map_err(|(k, why)| {
+            Error::new(format!("{path}.joints"), format!("from {} to {}, every joint moving in proportion: {why}", names[k], names[k + 1]))
+        })?;
+        out.push(joint_path);
     }
     Ok(out)
 }

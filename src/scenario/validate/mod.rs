@@ -67,7 +67,8 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
     let clearance = robot::clearance(&raw)?;
     let configs = chains::multi_link(&raw, &mut robot, &clearance, &mut warnings)?;
     if robot.chain.is_some() {
-        let joint_paths = chains::joint_paths(&raw.trajectories, &configs)?;
+        let chain = robot.chain.as_ref().ok_or_else(|| Error::new("robot.links", "internal: chain missing"))?;
+        let joint_paths = chains::joint_paths(&raw.trajectories, &configs, chain, version)?;
         let obstacles = obstacles::obstacles(&raw.obstacles)?;
         let queries = match &robot.chain {
             Some(chain) => queries::joint_queries(&raw.queries, &configs, chain)?,
