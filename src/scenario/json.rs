@@ -33,7 +33,8 @@ pub const FORMAT_4: &str = "cablenav-scenario/4";
 /// them must declare it.
 pub const FORMAT_5: &str = "cablenav-scenario/5";
 /// Format version 6: version 5 plus routed cables of multi-link robots (cables' `from` and
-/// `via`). A file using them must declare it.
+/// `via`), `robot.closure` and paths whose joints move in proportion (`trajectories[k].joints`).
+/// A file using them must declare it.
 pub const FORMAT_6: &str = "cablenav-scenario/6";
 
 /// The version number of a format string this reader knows (1 to 6), or `None`.

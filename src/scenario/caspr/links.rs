@@ -1,5 +1,6 @@
-//! Import of CASPR multi-link robots (arms, trees: `BMArm`, `BMArm_X4_2`) into a
-//! `cablenav-scenario/3` scenario. Conventions: `../shared/notes/caspr-mcdr-conventions.md`.
+//! Import of CASPR multi-link robots (arms, trees, necks, snakes: the whole multi-link library)
+//! into a `cablenav-scenario/3` scenario (format 6 with masses, routed cables or trajectories).
+//! Conventions: `../shared/notes/caspr-mcdr-conventions.md`.
 //!
 //! What is read:
 //!
@@ -22,6 +23,8 @@
 //!   base to one link, or (format 6) from a link and over several: `from`, `via`, `link` and
 //!   `platform` of `docs/scenario-format.md`. A cable listed from a link back to the base is read
 //!   from the base.
+//!
+//! * trajectories (when given): [`super::joint_paths`].
 //!
 //! Not supported, with a message: other joint types; a cable with fewer than two attachments or
 //! all of them on one link.

@@ -56,7 +56,7 @@ const CASPR_GRAVITY: [f64; 3] = [0.0, 0.0, -9.81];
 /// An imported model: the scenario JSON and what the user should know about the conversion.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Import {
-    /// The scenario, as `cablenav-scenario/1` to `/5` JSON text (pretty-printed).
+    /// The scenario, as `cablenav-scenario/1` to `/6` JSON text (pretty-printed).
     pub json: String,
     /// Notes on the conversion (values combined or left out).
     pub notes: Vec<String>,
