@@ -2,6 +2,7 @@
 //! cables and their bounds, poses, trajectories, and the rational motions the exact conditions use.
 
 pub mod chain;
+pub mod joint_path;
 pub mod dynamics;
 pub mod knots;
 pub mod motion;
@@ -13,7 +14,8 @@ pub mod turn;
 pub mod via;
 pub mod wrench;
 
-pub use chain::{Chain, Joint, JointCoord, JointPath, Link, LinkWrench};
+pub use chain::{Chain, Joint, JointCoord, Link, LinkWrench};
+pub use joint_path::JointPath;
 pub use dynamics::{Dynamics, Kinematics, Winch};
 pub use motion::Motion;
 pub use pose::{Coord, Pose};
