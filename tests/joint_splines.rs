@@ -66,20 +66,6 @@ fn caspr_at(chain: &Chain, a: &[f64], b: &[f64], u: f64) -> Vec<(Vector3<f64>, n
         .collect()
 }
 
-/// Every link's joint transform of configuration q.
-fn joints_at(chain: &Chain, q: &[f64]) -> Vec<(Vector3<f64>, nalgebra::Matrix3<f64>)> {
-    let mut o = 0;
-    chain
-        .links
-        .iter()
-        .map(|link| {
-            let n = link.joint.dof();
-            o += n;
-            link.joint.transform(&q[o - n..o])
-        })
-        .collect()
-}
-
 /// The path's configurations and the exact motions agree with CASPR's interpolation: at each
 /// t the joints equal slerp / linear interpolation at the same progress along the leg, and the
 /// links' rational motions equal the frames there.
@@ -90,7 +76,10 @@ fn follows_caspr(chain: &Chain, path: &JointPath) {
         let leg = ((t * legs as f64).floor() as usize).min(legs - 1);
         let u = t * legs as f64 - leg as f64;
         let want = caspr_at(chain, &path.through[leg], &path.through[leg + 1], u);
-        let got = joints_at(chain, &path.config_at(chain, t));
+        // the joints at the path's configuration, written the same way (a ball joint's slerp
+        // from the configuration to itself is its rotation)
+        let q = path.config_at(chain, t);
+        let got = caspr_at(chain, &q, &q, 0.0);
         for (l, ((wp, wr), (gp, gr))) in want.iter().zip(&got).enumerate() {
             assert!((wp - gp).norm() < 1e-9 && (wr - gr).norm() < 1e-9, "{}: link {l} at t = {t}", path.name);
         }

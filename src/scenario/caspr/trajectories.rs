@@ -16,7 +16,7 @@
 use serde::Serialize;
 
 use super::joint::{place, split_rate};
-use super::xml::{child, children, document, line, numbers_n};
+use super::xml::{child, children, document, joint_trajectories, line, numbers_n};
 use crate::error::{Error, Result};
 use crate::model::Mobility;
 
@@ -48,23 +48,16 @@ struct OutKnot {
 pub(super) fn splines(trajectories_xml: &str, mobility: Mobility, origin: [f64; 3], notes: &mut Vec<String>) -> Result<Vec<OutSpline>> {
     let doc = document(FILE, trajectories_xml, "trajectories")?;
     let mut out = Vec::new();
-    for group in doc.root_element().children().filter(|c| c.is_element()) {
-        if group.tag_name().name() != "joint_trajectories" {
-            notes.push(format!("{}: <{}> skipped: only joint-space trajectories are imported", line(group), group.tag_name().name()));
-            continue;
-        }
-        for node in group.children().filter(|c| c.is_element()) {
-            let id = node.attribute("id").unwrap_or_default();
-            let spline = match node.tag_name().name() {
-                "quintic_spline_trajectory" => "quintic",
-                "cubic_spline_trajectory" => "cubic",
-                other => {
-                    notes.push(format!("{}: <{other} id=\"{id}\"> skipped: cablenav takes CASPR's quintic and cubic splines", line(node)));
-                    continue;
-                }
-            };
-            out.push(trajectory(node, id, spline, mobility, origin)?);
-        }
+    for (node, id) in joint_trajectories(doc.root_element(), notes) {
+        let spline = match node.tag_name().name() {
+            "quintic_spline_trajectory" => "quintic",
+            "cubic_spline_trajectory" => "cubic",
+            other => {
+                notes.push(format!("{}: <{other} id=\"{id}\"> skipped: cablenav takes CASPR's quintic and cubic splines", line(node)));
+                continue;
+            }
+        };
+        out.push(trajectory(node, id, spline, mobility, origin)?);
     }
     if out.is_empty() {
         notes.push("the trajectories file holds no quintic or cubic spline trajectory".to_string());

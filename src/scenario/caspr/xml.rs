@@ -35,6 +35,21 @@ pub(super) fn children<'a, 'i>(node: Node<'a, 'i>, tag: &'a str) -> impl Iterato
     node.children().filter(move |c| c.is_element() && c.tag_name().name() == tag)
 }
 
+/// The trajectory elements of a CASPR trajectories file's root, each with its `id` (empty when
+/// none): the children of every `<joint_trajectories>`; another group (operational-space
+/// trajectories) is skipped with a note.
+pub(super) fn joint_trajectories<'a, 'i>(root: Node<'a, 'i>, notes: &mut Vec<String>) -> Vec<(Node<'a, 'i>, &'a str)> {
+    let mut out = Vec::new();
+    for group in root.children().filter(|c| c.is_element()) {
+        if group.tag_name().name() != "joint_trajectories" {
+            notes.push(format!("{}: <{}> skipped: only joint-space trajectories are imported", line(group), group.tag_name().name()));
+            continue;
+        }
+        out.extend(group.children().filter(|c| c.is_element()).map(|node| (node, node.attribute("id").unwrap_or_default())));
+    }
+    out
+}
+
 /// The one child `tag` of `node`, if any.
 pub(super) fn child<'a, 'i>(node: Node<'a, 'i>, tag: &'a str) -> Option<Node<'a, 'i>> {
     children(node, tag).next()
