@@ -46,13 +46,9 @@ pub struct CableShape {
 }
 
 impl CableShape {
-    /// The condition for cable `cable` (0-based) against `obstacle` with clearance `c`.
-    pub fn new(cable: usize, obstacle: &Obstacle, c: f64) -> CableShape {
-        CableShape::of_segment(cable, cable, format!("cable {}", cable + 1), obstacle, c)
-    }
-
-    /// The condition for segment `segment` of cable `cable` (reported as `cable_name`).
-    pub fn of_segment(cable: usize, segment: usize, cable_name: String, obstacle: &Obstacle, c: f64) -> CableShape {
+    /// The condition for segment `segment` (of the sweep's and a pose's cables) of cable `cable`
+    /// (0-based, reported as `cable_name`) against `obstacle` with clearance `c`.
+    pub fn new(cable: usize, segment: usize, cable_name: String, obstacle: &Obstacle, c: f64) -> CableShape {
         let (geom, bound) = match &obstacle.shape {
             Shape::Mesh(mesh) => {
                 let faces: Vec<([V; 3], Bound)> = (0..mesh.triangles.len())

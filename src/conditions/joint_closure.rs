@@ -20,7 +20,7 @@ use super::closure::not_spanning;
 use super::joint_forces::{cable_matrix, routing, shared_cable_numerators, subtree_rows};
 use super::structure::{det_with, minors};
 use super::wrench_lp::closure_violation;
-use super::{norm2, Condition, Kind, PoseCheck, Sweep};
+use super::{Condition, Kind, PoseCheck, Sweep, SweptCable};
 use crate::model::{CableSegment, Chain};
 use crate::poly::{Bern, Partition, Truth};
 use crate::query::cables::PoseCables;
@@ -56,7 +56,7 @@ impl Condition for JointClosure {
         }
         if let Some(cable_of) = routing(&self.segments, m) {
             // a routed cable's column is no polynomial multiple: the linear programs' certificates
-            let len2 = sweep.cables.iter().map(|c| norm2([&c.s[0].p, &c.s[1].p, &c.s[2].p])).collect();
+            let len2 = sweep.cables.iter().map(SweptCable::len2).collect();
             return closure_violation(rows.as_ref().clone(), len2, Some(cable_of), tol, &subtree_rows(&self.chain));
         }
         if binomial(m, n - 1) > MAX_FACETS {

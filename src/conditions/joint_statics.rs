@@ -20,7 +20,7 @@ use std::rc::Rc;
 
 use super::joint_forces::{cable_matrix, load_numerators, load_vector, routing, shared_cable_numerators};
 use super::wrench_lp::{feasibility_violation, structurally_zero};
-use super::{norm2, Condition, Kind, PoseCheck, Sweep};
+use super::{Condition, Kind, PoseCheck, Sweep, SweptCable};
 use crate::model::{Bounds, CableSegment, Chain};
 use crate::poly::{Bern, Partition};
 use crate::query::cables::PoseCables;
@@ -62,7 +62,7 @@ impl Condition for JointStatics {
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let rows = shared_cable_numerators(&self.chain, &self.segments, sweep);
         let load = load_numerators(&self.chain, sweep);
-        let len2 = sweep.cables.iter().map(|c| norm2([&c.s[0].p, &c.s[1].p, &c.s[2].p])).collect();
+        let len2 = sweep.cables.iter().map(SweptCable::len2).collect();
         // rows nothing reaches (0 = 0) left out
         let (rows, load): (Vec<Vec<Bern>>, Vec<Bern>) =
             rows.iter().zip(load).filter(|(row, g)| !(structurally_zero(g) && row.iter().all(structurally_zero))).map(|(row, g)| (row.clone(), g)).unzip();

@@ -75,11 +75,25 @@ impl SweptCable {
     /// The segment from the start Ŝ (`None`: fixed at `base`) to the end X̂, over `w`.
     fn new(base: Vector3<f64>, start: Option<[Bern; 3]>, tip: &[Bern; 3], w: &Bern) -> SweptCable {
         let w_at = |d: usize| w.elevate(d.max(w.degree()));
-        let (s, tube) = match &start {
-            None => ([0, 1, 2].map(|i| algebra::H { p: Bern::linear_combination(&[(&tip[i], 1.0), (&w_at(tip[i].degree()), -base[i])]), k: 1 }), Tube::new(base, tip, w)),
-            Some(a) => ([0, 1, 2].map(|i| algebra::H { p: tip[i].sub(&a[i]), k: 1 }), Tube::moving(a, tip, w)),
+        let s = match &start {
+            None => [0, 1, 2].map(|i| algebra::H { p: Bern::linear_combination(&[(&tip[i], 1.0), (&w_at(tip[i].degree()), -base[i])]), k: 1 }),
+            Some(a) => [0, 1, 2].map(|i| algebra::H { p: tip[i].sub(&a[i]), k: 1 }),
         };
+        let tube = SweptCable::tube(base, start.as_ref(), tip, w);
         SweptCable { base, start, s, tube }
+    }
+
+    /// The pruning tube of the segment from `base` (or the moving start Ŝ) to X̂ = `tip`.
+    fn tube(base: Vector3<f64>, start: Option<&[Bern; 3]>, tip: &[Bern; 3], w: &Bern) -> Tube {
+        match start {
+            None => Tube::new(base, tip, w),
+            Some(a) => Tube::moving(a, tip, w),
+        }
+    }
+
+    /// P = ŝ·ŝ, its squared length times w².
+    pub fn len2(&self) -> Bern {
+        norm2([&self.s[0].p, &self.s[1].p, &self.s[2].p])
     }
 
     /// Its start Ŝ over `w` (the motion's weight).
@@ -183,10 +197,7 @@ impl Sweep {
                     None => [0, 1, 2].map(|i| Bern::linear_combination(&[(&s[i].p, 1.0), (w, c.base[i])])),
                     Some(st) => [0, 1, 2].map(|i| s[i].p.add(&st[i])),
                 };
-                let tube = match &start {
-                    None => Tube::new(c.base, &tip, w),
-                    Some(st) => Tube::moving(st, &tip, w),
-                };
+                let tube = SweptCable::tube(c.base, start.as_ref(), &tip, w);
                 SweptCable { base: c.base, start, tube, s }
             })
             .collect();
@@ -428,8 +439,9 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
     let m = robot.cables.len();
     let segments = robot.segments();
     // how reports name a segment: its cable, and its number along a routed cable
+    let routed = |seg: &crate::model::CableSegment| !robot.cables[seg.cable].via.is_empty();
     let name = |seg: &crate::model::CableSegment| {
-        if robot.cables[seg.cable].via.is_empty() { format!("cable {}", seg.cable + 1) } else { format!("cable {} segment {}", seg.cable + 1, seg.index + 1) }
+        if routed(seg) { format!("cable {} segment {}", seg.cable + 1, seg.index + 1) } else { format!("cable {}", seg.cable + 1) }
     };
     let mut out: Vec<Box<dyn Condition>> = Vec::new();
     for (i, cable) in robot.cables.iter().enumerate() {
@@ -442,15 +454,14 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
         for j in (i + 1)..segments.len() {
             let (a, b) = (&segments[i], &segments[j]);
             if !Robot::segments_meet(a, b) {
-                let straight = |s: &crate::model::CableSegment| robot.cables[s.cable].via.is_empty();
-                let label = if straight(a) && straight(b) { format!("cables {}-{}", a.cable + 1, b.cable + 1) } else { format!("{} - {}", name(a), name(b)) };
+                let label = if routed(a) || routed(b) { format!("{} - {}", name(a), name(b)) } else { format!("cables {}-{}", a.cable + 1, b.cable + 1) };
                 out.push(Box::new(CableCable { i, j, cables: [a.cable, b.cable], name: label, clearance: s.clearance.cable_cable }));
             }
         }
     }
     for obstacle in &s.obstacles {
         for (k, seg) in segments.iter().enumerate() {
-            out.push(Box::new(CableShape::of_segment(seg.cable, k, name(seg), obstacle, s.clearance.cable_obstacle)));
+            out.push(Box::new(CableShape::new(seg.cable, k, name(seg), obstacle, s.clearance.cable_obstacle)));
         }
     }
     if let Some(chain) = &robot.chain {

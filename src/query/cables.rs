@@ -93,10 +93,6 @@ fn cables_of_chain(robot: &Robot, links: Vec<Frame>) -> PoseCables {
 /// Each cable's length at the pose `at` of `robot`: the sum of its segments' for a routed cable.
 pub fn cable_lengths(robot: &Robot, at: &PoseCables) -> Vec<f64> {
     let mut out = vec![0.0; robot.cables.len()];
-    if at.cables.len() == out.len() {
-        // one segment per cable
-        return at.cables.iter().map(|(a, x)| (x - a).norm()).collect();
-    }
     for (seg, (a, x)) in robot.segments().iter().zip(at.iter()) {
         out[seg.cable] += (x - a).norm();
     }

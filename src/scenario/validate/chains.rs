@@ -61,7 +61,7 @@ pub(super) fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clear
         cable.link = link;
     }
     routes(&raw.robot.cables, robot, &chain, version)?;
-    let segments: usize = robot.cables.iter().map(|c| c.via.len() + 1).sum();
+    let segments = robot.segments().len();
     if segments > MAX_SEGMENTS {
         return Err(Error::new("robot.cables", format!("at most {MAX_SEGMENTS} segments (pairs of consecutive anchors) are supported, all cables together; got {segments}")));
     }
@@ -106,10 +106,7 @@ fn link_wrench(raw: &RawWrench, version: u8, chain: &Chain) -> Result<LinkWrench
     let Some(name) = &raw.link else {
         return Err(Error::new("wrench.link", "a multi-link robot's wrench names the link it acts on"));
     };
-    let link = chain.links.iter().position(|l| &l.name == name).ok_or_else(|| {
-        let known: Vec<&str> = chain.links.iter().map(|l| l.name.as_str()).collect();
-        Error::new("wrench.link", format!("no link named \"{name}\"; known links: {}", known.join(", ")))
-    })?;
+    let link = link_named(chain, "wrench.link", name)?;
     for (field, given) in [("wrench.ellipsoid", raw.ellipsoid.is_some()), ("wrench.radius", raw.radius.is_some())] {
         if given {
             return Err(Error::new(field, "a set of wrenches on a multi-link robot's link is not supported yet: give the nominal wrench alone"));
