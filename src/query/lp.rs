@@ -1,11 +1,18 @@
 //! A small dense linear-programming solver: maximise cᵀx subject to A x = b, x ≥ 0, by the
-//! two-phase simplex method with Bland's rule (no cycling). Sized for the per-pose wrench problems
-//! (a handful of equalities, tens of variables); not for large sparse problems.
+//! two-phase simplex method (Harris' ratio test; Bland's entering rule after degenerate streaks).
+//! Sized for the per-pose wrench and joint-space statics problems (up to about a hundred rows and
+//! a few hundred columns); not for large sparse problems.
 
 use nalgebra::{DMatrix, DVector};
 
 /// Pivot and feasibility tolerance, relative to the problem's scale.
 const EPS: f64 = 1e-11;
+/// Least pivot, relative to the largest entry of its column in the tableau (the row's, in the
+/// dual pivots that restore feasibility).
+const PIVOT: f64 = 1e-9;
+/// How far below zero (relative to the problem's scale) Harris' ratio test lets a basic variable
+/// go for a larger pivot; each phase's end repairs it.
+const HARRIS: f64 = 1e-9;
 /// Least sum of the artificials (per row, relative to the problem's scale) that phase 1 must
 /// leave for the program to count as infeasible: 1e-11 per row once failed a feasible 16-row
 /// program whose tableau had accumulated 4e-9 of rounding.
@@ -34,15 +41,47 @@ struct Tableau {
     width: usize,
     basis: Vec<usize>,
     eps: f64,
+    /// Least entry taken as a pivot, relative to the largest of its column (smaller ones are
+    /// rounding, or would amplify it).
+    pivot_tol: f64,
+    /// How far below zero the ratio test lets a basic variable go for a larger pivot (Harris).
+    slack: f64,
+    /// Bland's rules from the first pivot (the retry of a program whose phases did not settle).
+    bland_always: bool,
+    /// Least reduced cost that improves: relative to the phase's costs times the problem's scale
+    /// (a program with costs of 1e5, SJTUSnake's dual, once pivoted on its rounding).
+    dual_eps: f64,
+}
+
+/// How a phase of the simplex ended.
+#[derive(PartialEq)]
+enum Phase {
+    /// Optimal, checked on the tableau rebuilt from the program.
+    Optimal,
+    /// The objective grows without bound.
+    Unbounded,
+    /// The rebuilt tableau could not be made feasible and optimal (a singular basis, or dual
+    /// pivots that did not end): the answer is the simplex's own, unchecked.
+    Unsettled,
+}
+
+/// What leaves the basis when a column enters.
+enum Leaving {
+    /// This row, at this step (ratio).
+    Row(f64, usize),
+    /// No row limits the column: the objective grows without bound along it.
+    Unbounded,
+    /// Only entries below the pivot tolerance limit it: the column is passed over.
+    Tiny,
 }
 
 /// Consecutive degenerate pivots after which the entering rule turns from the steepest reduced
-/// cost (few pivots) to Bland's (no cycling) for the rest of the run.
+/// cost (few pivots) to Bland's (the first improving column) for the rest of the run.
 const DEGENERATE_STREAK: usize = 30;
 
 impl Tableau {
-    fn new(rows: usize, cols: usize, basis: Vec<usize>, eps: f64) -> Tableau {
-        Tableau { t: vec![0.0; (rows + 1) * (cols + 1)], width: cols + 1, basis, eps }
+    fn new(rows: usize, cols: usize, basis: Vec<usize>, [eps, pivot_tol, slack]: [f64; 3], bland_always: bool) -> Tableau {
+        Tableau { t: vec![0.0; (rows + 1) * (cols + 1)], width: cols + 1, basis, eps, pivot_tol, slack, bland_always, dual_eps: eps }
     }
 
     fn rows(&self) -> usize {
@@ -88,41 +127,131 @@ impl Tableau {
         self.basis[r] = c;
     }
 
+    /// Rebuilds the tableau from the program itself for the current basis: the rows B⁻¹ [M | r]
+    /// (M the constraint columns, artificials included, r the right-hand side, all in `system`,
+    /// k × (cols + 1)) and the objective row of `cost` (to maximise, per column) made canonical.
+    /// The pivots' rounding accumulates in the tableau; this clears it. `false` when the basis
+    /// matrix is singular to working precision (the tableau is then left as it was).
+    fn refactor(&mut self, system: &DMatrix<f64>, cost: &[f64]) -> bool {
+        let k = self.rows();
+        let basis = DMatrix::from_fn(k, k, |r, i| system[(r, self.basis[i])]);
+        let Some(rows) = basis.lu().solve(system) else { return false };
+        if !rows.iter().all(|x| x.is_finite()) {
+            return false;
+        }
+        for r in 0..k {
+            for c in 0..self.width {
+                self.set(r, c, rows[(r, c)]);
+            }
+        }
+        for c in 0..self.width {
+            let basic: f64 = (0..k).map(|r| cost[self.basis[r]] * rows[(r, c)]).sum();
+            let own = if c < self.cols() { cost[c] } else { 0.0 };
+            self.set(k, c, basic - own);
+        }
+        true
+    }
+
+    /// Dual simplex pivots over the columns `< allowed` until no right-hand side is below the
+    /// tolerance's negative (Harris' steps and rounding left a basic variable negative; the
+    /// objective row stays optimal). `false` when a negative row has no entering column, or after
+    /// ten pivots per row (8S_neck's dual programs took more than one per row).
+    fn restore_feasibility(&mut self, allowed: usize) -> bool {
+        let (obj, rhs) = (self.rows(), self.cols());
+        for _ in 0..=10 * obj {
+            let lowest = (0..obj).filter(|&r| self.at(r, rhs) < -self.eps).min_by(|&p, &q| self.at(p, rhs).total_cmp(&self.at(q, rhs)));
+            let Some(r) = lowest else { return true };
+            let least = (self.pivot_tol * (0..allowed).map(|j| self.at(r, j).abs()).fold(0.0, f64::max)).max(self.eps);
+            let entering = (0..allowed)
+                .filter(|&j| self.at(r, j) < -least)
+                .min_by(|&p, &q| (self.at(obj, p).max(0.0) / -self.at(r, p)).total_cmp(&(self.at(obj, q).max(0.0) / -self.at(r, q))));
+            let Some(c) = entering else { return false };
+            self.pivot(r, c);
+        }
+        false
+    }
+
+    /// Ends a phase: the simplex over the columns `< allowed`, then the tableau rebuilt from
+    /// `system` and checked — a basic variable below the tolerance's negative is restored by dual
+    /// pivots, a reduced cost that still improves resumes the simplex — a few rounds. The basic
+    /// variables are then those of B⁻¹b for the final basis, to rounding (once the tableau's own,
+    /// 8S_neck's balance was off by 3e-4).
+    fn settle(&mut self, allowed: usize, system: &DMatrix<f64>, cost: &[f64]) -> Phase {
+        for _ in 0..4 {
+            if !self.optimise(allowed) {
+                return Phase::Unbounded;
+            }
+            if !self.refactor(system, cost) {
+                return Phase::Unsettled;
+            }
+            let obj = self.rows();
+            let improving = |t: &Tableau| (0..allowed).any(|j| t.at(obj, j) < -t.dual_eps);
+            if (0..obj).all(|r| self.at(r, self.cols()) >= -self.eps) && !improving(self) {
+                return Phase::Optimal;
+            }
+            if !self.restore_feasibility(allowed) {
+                return Phase::Unsettled;
+            }
+        }
+        Phase::Unsettled
+    }
+
+    /// The row leaving the basis when column `c` enters. An artificial left basic (at zero) after
+    /// phase 1 leaves first, whatever the sign of its entry, so that it stays at zero. Otherwise
+    /// Harris' two passes: the least ratio with every right-hand side relaxed by the tolerance,
+    /// then the largest pivot among the rows within it — a stable pivot rather than a tiny one at
+    /// the exact least ratio. Entries below the pivot tolerance are never pivots: a column limited
+    /// only by such entries is passed over (one of 2e-10, taken, once wrecked a tableau of
+    /// SJTUSnake's statics; tiny pivots also left 8S_neck's infeasible or short by 17 N).
+    fn leaving(&self, c: usize, allowed: usize, bland: bool) -> Leaving {
+        let rhs = self.cols();
+        let rows = 0..self.rows();
+        let least = (self.pivot_tol * rows.clone().map(|r| self.at(r, c).abs()).fold(0.0, f64::max)).max(self.eps);
+        let artificial = rows.clone().filter(|&r| self.basis[r] >= allowed && self.at(r, c).abs() > least);
+        if let Some(r) = artificial.max_by(|&p, &q| self.at(p, c).abs().total_cmp(&self.at(q, c).abs())) {
+            return Leaving::Row(0.0, r);
+        }
+        let candidates = rows.clone().filter(|&r| self.at(r, c) > least).map(|r| (self.at(r, rhs).max(0.0) / self.at(r, c), r));
+        if bland {
+            let chosen = candidates.min_by(|&(p, i), &(q, j)| if (p - q).abs() <= self.eps { self.basis[i].cmp(&self.basis[j]) } else { p.total_cmp(&q) });
+            return chosen.map_or_else(|| if rows.into_iter().any(|r| self.at(r, c) > self.eps) { Leaving::Tiny } else { Leaving::Unbounded }, |(ratio, r)| Leaving::Row(ratio, r));
+        }
+        let limit = candidates.clone().map(|(_, r)| (self.at(r, rhs).max(0.0) + self.slack) / self.at(r, c)).fold(f64::INFINITY, f64::min);
+        match candidates.filter(|&(ratio, _)| ratio <= limit).max_by(|&(_, p), &(_, q)| self.at(p, c).total_cmp(&self.at(q, c))) {
+            Some((ratio, r)) => Leaving::Row(ratio, r),
+            None if rows.into_iter().any(|r| self.at(r, c) > self.eps || (self.basis[r] >= allowed && self.at(r, c).abs() > self.eps)) => Leaving::Tiny,
+            None => Leaving::Unbounded,
+        }
+    }
+
     /// Runs the simplex iterations on the objective row (reduced costs stored negated: entering
     /// columns have a negative entry) over the columns `< allowed`. `false` if unbounded. The
     /// entering column is the most negative reduced cost until [`DEGENERATE_STREAK`] degenerate
-    /// pivots in a row, then Bland's rule (the first negative one), which cannot cycle.
+    /// pivots in a row, then Bland's (the first negative one). With Harris' leaving rows Bland's
+    /// entering rule no longer excludes cycling: the iteration cap ends a run that cycles, which
+    /// leaves a feasible point (phase 2 keeps it feasible: the margin is then an underestimate,
+    /// on the safe side) or artificials in phase 1 (the program then counts as infeasible).
     fn optimise(&mut self, allowed: usize) -> bool {
         let obj = self.rows();
-        let rhs = self.cols();
-        let (mut streak, mut bland) = (0, false);
-        // Bland's rule guarantees termination; the cap only guards against rounding loops.
+        let (mut streak, mut bland) = (0, self.bland_always);
         for _ in 0..10_000 {
-            let entering = if bland {
-                (0..allowed).find(|&j| self.at(obj, j) < -self.eps)
-            } else {
-                (0..allowed).filter(|&j| self.at(obj, j) < -self.eps).min_by(|&i, &j| self.at(obj, i).total_cmp(&self.at(obj, j)))
-            };
-            let Some(c) = entering else { return true };
-            let mut best: Option<(f64, usize)> = None;
-            for r in 0..obj {
-                let a = self.at(r, c);
-                // an artificial left basic (at zero) in a degenerate row after phase 1 must stay
-                // at zero: its row takes part in the ratio test at ratio 0 whatever the sign of
-                // the entry, so that the entering column replaces it rather than lifting it
-                let artificial = self.basis[r] >= allowed;
-                if a > self.eps || (artificial && a < -self.eps) {
-                    let ratio = if artificial { 0.0 } else { self.at(r, rhs) / a };
-                    let better = match best {
-                        None => true,
-                        Some((q, br)) => ratio < q - self.eps || (ratio <= q + self.eps && self.basis[r] < self.basis[br]),
-                    };
-                    if better {
-                        best = Some((ratio, r));
+            let mut improving: Vec<usize> = (0..allowed).filter(|&j| self.at(obj, j) < -self.dual_eps).collect();
+            if !bland {
+                improving.sort_by(|&i, &j| self.at(obj, i).total_cmp(&self.at(obj, j)));
+            }
+            let mut step = None;
+            for &c in &improving {
+                match self.leaving(c, allowed, bland) {
+                    Leaving::Row(ratio, r) => {
+                        step = Some((c, ratio, r));
+                        break;
                     }
+                    Leaving::Unbounded => return false,
+                    Leaving::Tiny => {}
                 }
             }
-            let Some((ratio, r)) = best else { return false };
+            // no column improves, or only through pivots below the tolerance: optimal to it
+            let Some((c, ratio, r)) = step else { return true };
             streak = if ratio <= self.eps { streak + 1 } else { 0 };
             bland |= streak >= DEGENERATE_STREAK;
             self.pivot(r, c);
@@ -131,20 +260,34 @@ impl Tableau {
     }
 }
 
-/// Maximises cᵀx subject to A x = b, x ≥ 0 (A is k×n, b has k entries, c has n).
+/// Maximises cᵀx subject to A x = b, x ≥ 0 (A is k×n, b has k entries, c has n). A program
+/// whose phases do not settle (see [`Phase::Unsettled`]) is solved again with Bland's rules from
+/// the first pivot (slower; it took one of 8S_neck's dual programs to its optimum), whose answer
+/// stands.
 pub fn maximise(a: &DMatrix<f64>, b: &DVector<f64>, c: &DVector<f64>) -> LpResult {
+    solve(a, b, c, false).unwrap_or_else(|_| solve(a, b, c, true).unwrap_or_else(|again| again))
+}
+
+/// [`maximise`] by one run of both phases, with Bland's rules from the start or not: `Err` with
+/// the run's answer when a phase did not settle.
+fn solve(a: &DMatrix<f64>, b: &DVector<f64>, c: &DVector<f64>, bland: bool) -> Result<LpResult, LpResult> {
     let (k, n) = a.shape();
     let scale = a.amax().max(b.amax()).max(1.0);
     let eps = EPS * scale;
     // Phase 1: artificials y ≥ 0 with A x + y = b (rows negated where b < 0), minimise Σy.
-    let mut tab = Tableau::new(k, n + k, (n..n + k).collect(), eps);
-    for i in 0..k {
+    let system = DMatrix::from_fn(k, n + k + 1, |i, j| {
         let s = if b[i] < 0.0 { -1.0 } else { 1.0 };
-        for j in 0..n {
-            tab.set(i, j, s * a[(i, j)]);
+        match j {
+            j if j < n => s * a[(i, j)],
+            j if j == n + k => s * b[i],
+            j => f64::from(j == n + i),
         }
-        tab.set(i, n + i, 1.0);
-        tab.set(i, n + k, s * b[i]);
+    });
+    let mut tab = Tableau::new(k, n + k, (n..n + k).collect(), [eps, PIVOT, HARRIS * scale], bland);
+    for i in 0..k {
+        for j in 0..=n + k {
+            tab.set(i, j, system[(i, j)]);
+        }
     }
     // Objective row of phase 1 (maximise −Σy), made canonical for the artificial basis.
     for i in 0..k {
@@ -154,16 +297,20 @@ pub fn maximise(a: &DMatrix<f64>, b: &DVector<f64>, c: &DVector<f64>) -> LpResul
         // the artificials' own entries cancel: their reduced costs are zero
         tab.set(k, n + i, 0.0);
     }
-    tab.optimise(n + k);
+    let phase1: Vec<f64> = (0..n + k).map(|j| if j < n { 0.0 } else { -1.0 }).collect();
+    let mut settled = tab.settle(n + k, &system, &phase1) == Phase::Optimal;
     // the artificials' sum left by phase 1 carries the tableau's rounding, which grows with the
     // pivots: a program is infeasible only when it stays clearly above that
     if -tab.at(k, n + k) > INFEASIBLE * scale * (k as f64 + 1.0) {
-        return LpResult::Infeasible;
+        return if settled { Ok(LpResult::Infeasible) } else { Err(LpResult::Infeasible) };
     }
-    // Drive artificials out of the basis where possible (degenerate rows stay, at zero).
+    // Drive artificials out of the basis where possible, each on its row's largest entry (the
+    // first entry above the tolerance, once, was 1e-10 and wrecked the tableau); rows with none
+    // stay, their artificial at zero.
     for r in 0..k {
         if tab.basis[r] >= n {
-            if let Some(j) = (0..n).find(|&j| tab.at(r, j).abs() > eps) {
+            let least = (tab.pivot_tol * (0..n).map(|j| tab.at(r, j).abs()).fold(0.0, f64::max)).max(eps);
+            if let Some(j) = (0..n).filter(|&j| tab.at(r, j).abs() > least).max_by(|&p, &q| tab.at(r, p).abs().total_cmp(&tab.at(r, q).abs())) {
                 tab.pivot(r, j);
             }
         }
@@ -181,8 +328,12 @@ pub fn maximise(a: &DMatrix<f64>, b: &DVector<f64>, c: &DVector<f64>) -> LpResul
             }
         }
     }
-    if !tab.optimise(n) {
-        return LpResult::Unbounded;
+    let phase2: Vec<f64> = (0..n + k).map(|j| if j < n { c[j] } else { 0.0 }).collect();
+    tab.dual_eps = eps * c.amax().max(1.0);
+    match tab.settle(n, &system, &phase2) {
+        Phase::Unbounded => return if settled { Ok(LpResult::Unbounded) } else { Err(LpResult::Unbounded) },
+        Phase::Unsettled => settled = false,
+        Phase::Optimal => {}
     }
     let mut x = DVector::zeros(n);
     for r in 0..k {
@@ -191,7 +342,7 @@ pub fn maximise(a: &DMatrix<f64>, b: &DVector<f64>, c: &DVector<f64>) -> LpResul
         }
     }
     let value = c.dot(&x);
-    LpResult::Optimal { x, value }
+    if settled { Ok(LpResult::Optimal { x, value }) } else { Err(LpResult::Optimal { x, value }) }
 }
 
 #[cfg(test)]
