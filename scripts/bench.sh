@@ -14,6 +14,9 @@
 #                                     defaults" section (a full run keeps that section as it is)
 #   scripts/bench.sh --timing         only the fastest safe timing (examples/bench/timing.rs, native,
 #                                     ~1 min); rewrites only the "Fastest safe timing" section
+#   scripts/bench.sh --library        only CASPR's multi-link library (examples/bench/library.rs, native,
+#                                     ~2 min): each model's trajectories exact and point-wise; rewrites
+#                                     only the "CASPR's multi-link library" section
 #   scripts/bench.sh --batotp         only the fastest safe timing against the peer batotp on its CSPR3DOF
 #                                     case (examples/bench/batotp.rs: builds ../shared/peers/batotp in a
 #                                     temporary copy with g++ and Eigen, installed by
@@ -32,6 +35,7 @@ LATTICE_ONLY=0
 ATLAS_ONLY=0
 TIMING_ONLY=0
 BATOTP_ONLY=0
+LIBRARY_ONLY=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --no-write) WRITE=0 ;;
@@ -40,7 +44,8 @@ while [ $# -gt 0 ]; do
     --atlas) ATLAS_ONLY=1 ;;
     --timing) TIMING_ONLY=1 ;;
     --batotp) BATOTP_ONLY=1 ;;
-    *) echo "usage: scripts/bench.sh [--no-write] [--before REF] | --lattice | --atlas | --timing | --batotp" >&2; exit 2 ;;
+    --library) LIBRARY_ONLY=1 ;;
+    *) echo "usage: scripts/bench.sh [--no-write] [--before REF] | --lattice | --atlas | --timing | --batotp | --library" >&2; exit 2 ;;
   esac
   shift
 done
@@ -181,6 +186,46 @@ batotp_section() {
     echo "<!-- batotp:end -->"
   } > "$1"
 }
+LIBRARY_CMD="cargo run --release --example bench -- library"
+# The section "CASPR's multi-link library" (examples/bench/library.rs, measured now), to "$1".
+library_section() {
+  say "CASPR's multi-link library: $LIBRARY_CMD"
+  run_measured library "$TMP/library.txt"
+  {
+    echo "<!-- library:begin (scripts/bench.sh --library rewrites this section) -->"
+    echo "## CASPR's multi-link library"
+    echo
+    echo "Every model of CASPR's multi-link library whose joint-space trajectories import"
+    echo "(\`cablenav import ../shared/models/caspr/MODEL\`, docs/multilink.md: paths through their points,"
+    echo "every joint moving in proportion), each trajectory verified exactly (\`verify_along\`: every"
+    echo "condition of the scenario — cable–cable and cable–link per segment, cable lengths, static"
+    echo "feasibility of the links' weights) and point-wise at Δt = 0.01 (101 configurations) in one run,"
+    echo "natively (release, one thread). Time: median of three runs of each. Measured"
+    echo "$(date -u '+%Y-%m-%d %H:%M UTC'), commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- src examples 2>/dev/null || echo ' (with uncommitted changes)'); load average before"
+    echo "$before, after $after on the shared 2-core VM."
+    echo
+    echo "    $LIBRARY_CMD"
+    echo
+    echo "| model | trajectory | size | exact | point-wise, Δt = 0.01 | point-wise / exact | exact answer | point-wise answer |"
+    echo "|---|---|---|---:|---:|---:|---|---|"
+    cat "$TMP/library.txt"
+    echo
+    # point-wise / exact per trajectory (column 7), sorted: how many ≥ 1, the median and the range
+    awk -F'|' '{ r = $7; gsub(/[ ×]/, "", r); print r + 0 }' "$TMP/library.txt" | sort -g |
+      awk '{ ratio[++n] = $1; if ($1 >= 1) faster++ }
+        END { printf "Exact verification is at least as fast as point-wise sampling at Δt = 0.01 on %d of these %d trajectories (point-wise / exact: median %.2f×, from %.2f× to %.2f×). ", faster, n, ratio[int((n + 1) / 2)], ratio[1], ratio[n] }'
+    echo "A point-wise answer says nothing between its samples; the exact one holds for every t."
+    echo "<!-- library:end -->"
+  } > "$1"
+}
+if [ "$LIBRARY_ONLY" = 1 ]; then
+  say "building (release, native)"
+  cargo build --release --example bench >&2
+  library_section "$TMP/section.md"
+  put_section "$OUT" "$TMP/section.md" library
+  say "wrote the library section of $OUT"
+  exit 0
+fi
 if [ "$BATOTP_ONLY" = 1 ]; then
   scripts/install.sh --batotp
   say "building (release, native)"
@@ -583,6 +628,8 @@ if grep -q '<!-- atlas:begin' "$OUT"; then
 fi
 timing_section "$TMP/timing-section.md"
 put_section "$TMP/benchmarks.md" "$TMP/timing-section.md" timing
+library_section "$TMP/library-section.md"
+put_section "$TMP/benchmarks.md" "$TMP/library-section.md" library
 # The comparison with batotp needs the peer built (g++, Eigen): a full run keeps that section as it
 # is (--batotp rewrites it).
 if grep -q '<!-- batotp:begin' "$OUT"; then

@@ -5,6 +5,7 @@
 //!     cargo run --release --example bench -- lattice # the ray lattice cases (lattice.rs) instead
 //!     cargo run --release --example bench -- atlas   # the atlas planner's defaults, before/after (atlas.rs)
 //!     cargo run --release --example bench -- timing  # the fastest safe timing (timing.rs)
+//!     cargo run --release --example bench -- library # CASPR's multi-link library (library.rs)
 //!     cargo run --release --example bench -- batotp  # the fastest safe timing against batotp (batotp.rs)
 //!     cargo run --release --example bench -- batotp-preset  # writes static/scenarios/laval-cspr3dof.json
 //!
@@ -15,6 +16,7 @@ mod atlas;
 mod batotp;
 mod cases;
 mod lattice;
+mod library;
 mod timing;
 
 fn main() {
@@ -31,6 +33,10 @@ fn main() {
     }
     if filter == "batotp-preset" {
         batotp::run_preset();
+        return;
+    }
+    if filter == "library" {
+        library::run_library();
         return;
     }
     if filter == "timing" {
