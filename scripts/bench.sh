@@ -218,30 +218,21 @@ library_section() {
     echo "<!-- library:end -->"
   } > "$1"
 }
-if [ "$LIBRARY_ONLY" = 1 ]; then
+# Measures section "$1" alone (written by the function "$1_section") and puts it in place of its
+# old one in docs/benchmarks.md; then ends the script.
+only_section() {
   say "building (release, native)"
   cargo build --release --example bench >&2
-  library_section "$TMP/section.md"
-  put_section "$OUT" "$TMP/section.md" library
-  say "wrote the library section of $OUT"
+  "$1_section" "$TMP/section.md"
+  put_section "$OUT" "$TMP/section.md" "$1"
+  say "wrote the $1 section of $OUT"
   exit 0
-fi
+}
+[ "$LIBRARY_ONLY" = 0 ] || only_section library
+[ "$TIMING_ONLY" = 0 ] || only_section timing
 if [ "$BATOTP_ONLY" = 1 ]; then
   scripts/install.sh --batotp
-  say "building (release, native)"
-  cargo build --release --example bench >&2
-  batotp_section "$TMP/section.md"
-  put_section "$OUT" "$TMP/section.md" batotp
-  say "wrote the batotp section of $OUT"
-  exit 0
-fi
-if [ "$TIMING_ONLY" = 1 ]; then
-  say "building (release, native)"
-  cargo build --release --example bench >&2
-  timing_section "$TMP/section.md"
-  put_section "$OUT" "$TMP/section.md" timing
-  say "wrote the timing section of $OUT"
-  exit 0
+  only_section batotp
 fi
 
 if [ "$LATTICE_ONLY" = 1 ]; then
