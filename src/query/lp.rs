@@ -48,8 +48,9 @@ struct Tableau {
     slack: f64,
     /// Bland's rules from the first pivot (the retry of a program whose phases did not settle).
     bland_always: bool,
-    /// Least reduced cost that improves: relative to the phase's costs times the problem's scale
-    /// (a program with costs of 1e5, SJTUSnake's dual, once pivoted on its rounding).
+    /// Least reduced cost that improves: relative to the phase's largest cost times the problem's
+    /// scale, as reduced costs are sums of costs times entries (a dual program's costs are
+    /// tension bounds, up to 8e5 on SJTUSnake).
     dual_eps: f64,
 }
 
@@ -200,7 +201,8 @@ impl Tableau {
     /// phase 1 leaves first, whatever the sign of its entry, so that it stays at zero. Otherwise
     /// Harris' two passes: the least ratio with every right-hand side relaxed by the tolerance,
     /// then the largest pivot among the rows within it — a stable pivot rather than a tiny one at
-    /// the exact least ratio. Entries below the pivot tolerance are never pivots: a column limited
+    /// the exact least ratio; under Bland's rules (`bland`), the least ratio with ties to the
+    /// least basic index, which cannot cycle. Entries below the pivot tolerance are never pivots: a column limited
     /// only by such entries is passed over (one of 2e-10, taken, once wrecked a tableau of
     /// SJTUSnake's statics; tiny pivots also left 8S_neck's infeasible or short by 17 N).
     fn leaving(&self, c: usize, allowed: usize, bland: bool) -> Leaving {
@@ -212,12 +214,13 @@ impl Tableau {
             return Leaving::Row(0.0, r);
         }
         let candidates = rows.clone().filter(|&r| self.at(r, c) > least).map(|r| (self.at(r, rhs).max(0.0) / self.at(r, c), r));
-        if bland {
-            let chosen = candidates.min_by(|&(p, i), &(q, j)| if (p - q).abs() <= self.eps { self.basis[i].cmp(&self.basis[j]) } else { p.total_cmp(&q) });
-            return chosen.map_or_else(|| if rows.into_iter().any(|r| self.at(r, c) > self.eps) { Leaving::Tiny } else { Leaving::Unbounded }, |(ratio, r)| Leaving::Row(ratio, r));
-        }
-        let limit = candidates.clone().map(|(_, r)| (self.at(r, rhs).max(0.0) + self.slack) / self.at(r, c)).fold(f64::INFINITY, f64::min);
-        match candidates.filter(|&(ratio, _)| ratio <= limit).max_by(|&(_, p), &(_, q)| self.at(p, c).total_cmp(&self.at(q, c))) {
+        let chosen = if bland {
+            candidates.min_by(|&(p, i), &(q, j)| if (p - q).abs() <= self.eps { self.basis[i].cmp(&self.basis[j]) } else { p.total_cmp(&q) })
+        } else {
+            let limit = candidates.clone().map(|(_, r)| (self.at(r, rhs).max(0.0) + self.slack) / self.at(r, c)).fold(f64::INFINITY, f64::min);
+            candidates.filter(|&(ratio, _)| ratio <= limit).max_by(|&(_, p), &(_, q)| self.at(p, c).total_cmp(&self.at(q, c)))
+        };
+        match chosen {
             Some((ratio, r)) => Leaving::Row(ratio, r),
             None if rows.into_iter().any(|r| self.at(r, c) > self.eps || (self.basis[r] >= allowed && self.at(r, c).abs() > self.eps)) => Leaving::Tiny,
             None => Leaving::Unbounded,
@@ -227,10 +230,10 @@ impl Tableau {
     /// Runs the simplex iterations on the objective row (reduced costs stored negated: entering
     /// columns have a negative entry) over the columns `< allowed`. `false` if unbounded. The
     /// entering column is the most negative reduced cost until [`DEGENERATE_STREAK`] degenerate
-    /// pivots in a row, then Bland's (the first negative one). With Harris' leaving rows Bland's
-    /// entering rule no longer excludes cycling: the iteration cap ends a run that cycles, which
-    /// leaves a feasible point (phase 2 keeps it feasible: the margin is then an underestimate,
-    /// on the safe side) or artificials in phase 1 (the program then counts as infeasible).
+    /// pivots in a row, then Bland's rules (the first negative one entering, the leaving row by
+    /// [`Tableau::leaving`]'s), which cannot cycle in exact arithmetic; the iteration cap ends a run
+    /// that rounding keeps going, with a feasible point (phase 2 keeps it feasible: a margin is
+    /// then an underestimate) or artificials in phase 1 (the program then counts as infeasible).
     fn optimise(&mut self, allowed: usize) -> bool {
         let obj = self.rows();
         let (mut streak, mut bland) = (0, self.bland_always);
