@@ -128,6 +128,12 @@ impl Tableau {
         self.basis[r] = c;
     }
 
+    /// The least pivot among `entries` (a column, or a row for the dual pivots): [`PIVOT`] of
+    /// their largest, and never below the tolerance.
+    fn least_pivot(&self, entries: impl Iterator<Item = f64>) -> f64 {
+        (self.pivot_tol * entries.map(f64::abs).fold(0.0, f64::max)).max(self.eps)
+    }
+
     /// Rebuilds the tableau from the program itself for the current basis: the rows B⁻¹ [M | r]
     /// (M the constraint columns, artificials included, r the right-hand side, all in `system`,
     /// k × (cols + 1)) and the objective row of `cost` (to maximise, per column) made canonical.
@@ -162,7 +168,7 @@ impl Tableau {
         for _ in 0..=10 * obj {
             let lowest = (0..obj).filter(|&r| self.at(r, rhs) < -self.eps).min_by(|&p, &q| self.at(p, rhs).total_cmp(&self.at(q, rhs)));
             let Some(r) = lowest else { return true };
-            let least = (self.pivot_tol * (0..allowed).map(|j| self.at(r, j).abs()).fold(0.0, f64::max)).max(self.eps);
+            let least = self.least_pivot((0..allowed).map(|j| self.at(r, j)));
             let entering = (0..allowed)
                 .filter(|&j| self.at(r, j) < -least)
                 .min_by(|&p, &q| (self.at(obj, p).max(0.0) / -self.at(r, p)).total_cmp(&(self.at(obj, q).max(0.0) / -self.at(r, q))));
@@ -208,7 +214,7 @@ impl Tableau {
     fn leaving(&self, c: usize, allowed: usize, bland: bool) -> Leaving {
         let rhs = self.cols();
         let rows = 0..self.rows();
-        let least = (self.pivot_tol * rows.clone().map(|r| self.at(r, c).abs()).fold(0.0, f64::max)).max(self.eps);
+        let least = self.least_pivot(rows.clone().map(|r| self.at(r, c)));
         let artificial = rows.clone().filter(|&r| self.basis[r] >= allowed && self.at(r, c).abs() > least);
         if let Some(r) = artificial.max_by(|&p, &q| self.at(p, c).abs().total_cmp(&self.at(q, c).abs())) {
             return Leaving::Row(0.0, r);
@@ -312,7 +318,7 @@ fn solve(a: &DMatrix<f64>, b: &DVector<f64>, c: &DVector<f64>, bland: bool) -> R
     // stay, their artificial at zero.
     for r in 0..k {
         if tab.basis[r] >= n {
-            let least = (tab.pivot_tol * (0..n).map(|j| tab.at(r, j).abs()).fold(0.0, f64::max)).max(eps);
+            let least = tab.least_pivot((0..n).map(|j| tab.at(r, j)));
             if let Some(j) = (0..n).filter(|&j| tab.at(r, j).abs() > least).max_by(|&p, &q| tab.at(r, p).abs().total_cmp(&tab.at(r, q).abs())) {
                 tab.pivot(r, j);
             }
