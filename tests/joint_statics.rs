@@ -1,11 +1,12 @@
 //! Static feasibility of multi-link robots (issue 25, item 3): tensions strictly within their
 //! bounds holding the links' weights. Checked against a reference written from the principle of
 //! virtual work, apart from the core's joint rows: a cable of tension f does work −f·δL, gravity
-//! m·g·δc, so at equilibrium Σ_k f_k ∂L_k/∂q = Σ_l m_l g·∂c_l/∂q, both gradients by central
+//! m·g·δc, a force τ_i applied to coordinate i τ_i·δq_i, so at equilibrium
+//! Σ_k f_k ∂L_k/∂q = Σ_l m_l g·∂c_l/∂q + τ, both gradients by central
 //! differences of the cables' lengths and the centres of mass, and the largest margin of tensions
 //! within their bounds by a linear program of the tests' own (`support::lp`). Per configuration on
 //! random chains and on CASPR's arms, along random joint rays and paths against dense samples, and
-//! bad link masses refused by field.
+//! bad link masses, wrenches and joint forces refused by field.
 
 #[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
@@ -58,7 +59,8 @@ fn virtual_work(s: &Scenario, q: &[f64]) -> (DMatrix<f64>, DVector<f64>) {
         for k in 0..m {
             j[(i, k)] = (lu[k] - ld[k]) / (2.0 * H);
         }
-        g[i] = (work(&up) - work(&down)) / (2.0 * H);
+        // a force applied to the coordinate itself does work τ_i·δq_i
+        g[i] = (work(&up) - work(&down)) / (2.0 * H) + chain.joint_forces.get(i).copied().unwrap_or(0.0);
         if let Some(w) = &chain.load {
             let ((o, r), (ou, ru), (od, rd)) = (chain.frames(q)[w.link], chain.frames(&up)[w.link], chain.frames(&down)[w.link]);
             let turn = (ru - rd) / (2.0 * H) * r.transpose();
@@ -105,8 +107,9 @@ fn reference_margin_each(s: &Scenario, q: &[f64], lo: &[f64], hi: &[f64]) -> Opt
 }
 
 /// A random chain of 1–3 links with masses (most links), centres of mass, tension bounds,
-/// sometimes a gravity other than the standard one, half the time a wrench on one link; 1 to 4
-/// cables beyond its degrees of freedom.
+/// sometimes a gravity other than the standard one, half the time a wrench on one link, 40 % of
+/// the time forces on the coordinates of its revolute, prismatic, universal and planar joints;
+/// 1 to 4 cables beyond its degrees of freedom.
 fn weighed_chain(rng: &mut Rng, kinds: &[&str], route: bool) -> (Value, Vec<f64>, (f64, f64)) {
     let links = rng.int(1, 3);
     let (mut value, q) = random_chain_of(rng, links, kinds, &|rng, dof| dof + rng.int(1, 4));
@@ -138,6 +141,26 @@ fn weighed_chain(rng: &mut Rng, kinds: &[&str], route: bool) -> (Value, Vec<f64>
             wrench["point_frame"] = json!("world");
         }
         value["wrench"] = wrench;
+    }
+    if rng.chance(0.4) {
+        // forces from outside on the coordinates of the joints that take them: torques about
+        // axes, forces along them
+        let mut forces = serde_json::Map::new();
+        for link in value["robot"]["links"].as_array().unwrap() {
+            let kind = link["joint"]["type"].as_str().unwrap();
+            if !matches!(kind, "revolute" | "prismatic" | "universal" | "planar") {
+                continue;
+            }
+            for (k, name) in link["joint"]["coordinates"].as_array().unwrap().iter().enumerate() {
+                let slides = kind == "prismatic" || (kind == "planar" && k < 2);
+                let top = if slides { 15.0 } else { 5.0 };
+                forces.insert(name.as_str().unwrap().to_string(), json!(rng.range(-top, top)));
+            }
+        }
+        if !forces.is_empty() {
+            value["format"] = json!("cablenav-scenario/6");
+            value["joint_forces"] = Value::Object(forces);
+        }
     }
     (value, q, bounds)
 }
@@ -195,7 +218,7 @@ fn routed_chain_rays_agree_with_virtual_work() {
 fn rays_agree_with_virtual_work(seed: u64, route: bool) {
     let mut rng = Rng::new(seed);
     let wanted = env_usize("CABLENAV_STATICS_RAYS", if cfg!(target_arch = "wasm32") { 30 } else { 120 });
-    let (mut rays, mut judged, mut held, mut failed, mut mixed, mut uncertain) = (0, 0, 0, 0, 0, 0.0);
+    let (mut rays, mut judged, mut held, mut failed, mut mixed, mut uncertain, mut ends) = (0, 0, 0, 0, 0, 0.0, 0);
     while rays < wanted {
         let (value, q, bounds) = weighed_chain(&mut rng, &KINDS, route);
         let s = Scenario::from_json(&value.to_string()).unwrap_or_else(|e| panic!("{e}\n{value}"));
@@ -213,6 +236,21 @@ fn rays_agree_with_virtual_work(seed: u64, route: bool) {
         mixed += usize::from(!sec.feasible.is_empty() && !sec.infeasible.is_empty());
         uncertain += sec.uncertain.iter().map(|u| u[1] - u[0]).sum::<f64>() / width;
         let margin = 1e-6 * width;
+        // each end of a feasible section inside the ray is where the check changes its verdict:
+        // the loads' polynomials are exact, not merely close where samples fall
+        let check_at = |v: f64| {
+            let mut at = q.clone();
+            at[i] = v;
+            !condition.check(&cables_at_config(&s.robot, &at)).violated
+        };
+        for &[a, b] in &sec.feasible {
+            for (end, out) in [(a, -margin), (b, margin)] {
+                if end - margin > lo && end + margin < lo + width {
+                    assert!(check_at(end - out) && !check_at(end + out), "ray {rays}: the section [{a}, {b}] does not end at {end}\n{value}\nq = {q:?}");
+                    ends += 1;
+                }
+            }
+        }
         for k in 0..=100 {
             let v = lo + width * k as f64 / 100.0;
             let mut at = q.clone();
@@ -226,7 +264,7 @@ fn rays_agree_with_virtual_work(seed: u64, route: bool) {
             if claim { held += 1 } else { failed += 1 }
         }
     }
-    assert!(judged > wanted * 40 && held > wanted * 5 && failed > wanted * 5 && mixed * 20 >= wanted, "{judged} samples judged: {held} hold, {failed} fail; {mixed} rays with both");
+    assert!(judged > wanted * 40 && held > wanted * 5 && failed > wanted * 5 && mixed * 20 >= wanted && ends * 20 >= wanted, "{judged} samples judged: {held} hold, {failed} fail; {mixed} rays with both, {ends} ends checked");
     // undecided only near boundaries: a few percent of the rays' length at most
     assert!(uncertain <= 0.05 * wanted as f64, "{uncertain} rays' worth undecided of {wanted}");
 }
@@ -422,7 +460,7 @@ fn refused(v: &Value) -> (String, String) {
 }
 
 #[test]
-fn bad_link_masses_and_wrenches_name_the_field() {
+fn bad_link_masses_wrenches_and_joint_forces_name_the_field() {
     let mut rng = Rng::new(5);
     let (base, _, _) = weighed_chain(&mut rng, &["revolute"], false);
     let with = |f: &dyn Fn(&mut Value)| {
@@ -452,6 +490,18 @@ fn bad_link_masses_and_wrenches_name_the_field() {
             "wrench",
             "cablenav-scenario/4",
         ),
+        (with(&|v| { v["format"] = json!("cablenav-scenario/6"); v["joint_forces"] = json!({"nowhere": 1.0}) }), "joint_forces.nowhere", "the robot's coordinates: q0x"),
+        (with(&|v| { v["format"] = json!("cablenav-scenario/6"); v["joint_forces"] = json!({"q0x": "strong"}) }), "joint_forces", ""),
+        (with(&|v| { v["format"] = json!("cablenav-scenario/4"); v["joint_forces"] = json!({"q0x": 1.0}) }), "joint_forces", "cablenav-scenario/6"),
+        (
+            with(&|v| {
+                v["format"] = json!("cablenav-scenario/6");
+                v["robot"]["links"][0]["joint"] = json!({"type": "spherical", "coordinates": ["a0", "b0", "c0"]});
+                v["joint_forces"] = json!({"b0": 1.0});
+            }),
+            "joint_forces.b0",
+            "joint is spherical",
+        ),
     ] {
         let (f, reason) = refused(&bad);
         assert!(f.starts_with(field), "expected {field}, got {f}: {reason}");
@@ -467,6 +517,12 @@ fn bad_link_masses_and_wrenches_name_the_field() {
     platform["wrench"] = json!({"nominal": [0, 0, -1, 0, 0, 0], "link": "platform"});
     let (f, reason) = refused(&platform);
     assert_eq!(f, "wrench.link", "{reason}");
+    // … and forces on joint coordinates are a multi-link robot's
+    platform.as_object_mut().unwrap().remove("wrench");
+    platform["format"] = json!("cablenav-scenario/6");
+    platform["joint_forces"] = json!({"x": 1.0});
+    let (f, reason) = refused(&platform);
+    assert_eq!((f.as_str(), reason.contains("multi-link")), ("joint_forces.x", true), "{reason}");
 }
 
 /// A spatial link alone (Spatial_Tree's end effector, its tree left out) is the platform robot

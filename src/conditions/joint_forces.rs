@@ -173,7 +173,7 @@ pub(super) fn cable_matrix(chain: &Chain, segments: &[CableSegment], m: usize, a
 }
 
 /// The generalised forces of the loads on the links at one configuration: the weights (m·g at
-/// each centre of mass) and the wrench applied from outside.
+/// each centre of mass), the wrench applied from outside and the joint forces.
 pub(super) fn load_vector(chain: &Chain, at: &PoseCables) -> DVector<f64> {
     let mut out = vec![0.0; chain.dof()];
     for (l, link) in chain.links.iter().enumerate().filter(|(_, l)| l.mass > 0.0) {
@@ -183,6 +183,9 @@ pub(super) fn load_vector(chain: &Chain, at: &PoseCables) -> DVector<f64> {
     if let Some(load) = &chain.load {
         let (force, moment, point) = load.at(&at.links[load.link]);
         add_point_force(chain, &at.links, load.link, &force, &point, &moment, &mut out);
+    }
+    for (v, t) in out.iter_mut().zip(&chain.joint_forces) {
+        *v += t;
     }
     DVector::from_vec(out)
 }
@@ -258,7 +261,35 @@ pub(super) fn load_numerators(chain: &Chain, sweep: &Sweep) -> Vec<Bern> {
         let moment: [Bern; 3] = [0, 1, 2].map(|i| w.scale(load.nominal[3 + i]));
         add_point_force_along(chain, sweep, load.link, &constant(load.nominal.fixed_rows::<3>(0).into()), &point(load.link, &load.point, load.frame), Some(&moment), &mut out);
     }
+    if chain.joint_forces.iter().any(|t| *t != 0.0) {
+        let w = &sweep.motion().weight;
+        for ((v, t), power) in out.iter_mut().zip(&chain.joint_forces).zip(load_powers(chain)) {
+            let scaled = (0..power).fold(Bern::constant(*t), |acc, _| acc.mul(w));
+            *v = v.add(&scaled);
+        }
+    }
     out
+}
+
+/// Per row, the power of the motion's weight w the loads' row is over ([`load_numerators`]): a
+/// force row's vector is constant and a moment row's arm over w, an axis fixed in a link's
+/// frame (its own, or a parent link's) over w and a world axis or the base's constant (module
+/// docs) — so that a generalised force τ applied at the row reads τ·w^power there.
+fn load_powers(chain: &Chain) -> Vec<u32> {
+    chain
+        .links
+        .iter()
+        .flat_map(|link| {
+            row_axes(&link.joint).into_iter().map(move |(turn, frame, _)| {
+                let axis = match frame {
+                    Frame::World(_) => 0,
+                    Frame::Parent => u32::from(link.parent.is_some()),
+                    Frame::Link => 1,
+                };
+                u32::from(turn) + axis
+            })
+        })
+        .collect()
 }
 
 /// Per link, the rows of its own and its descendants' joint coordinates (only the forces on

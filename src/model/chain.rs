@@ -237,6 +237,11 @@ pub struct Chain {
     pub gravity: Vector3<f64>,
     /// A wrench applied to one link from outside, if any.
     pub load: Option<LinkWrench>,
+    /// Generalised forces applied to the joint coordinates from outside (format 6
+    /// `joint_forces`: a torque about a revolute or universal joint's axis, a force along a
+    /// prismatic or planar joint's axis), one per coordinate in configuration order; empty when
+    /// none is applied.
+    pub joint_forces: Vec<f64>,
     /// Whether joint-space wrench closure is a condition (format 6 `robot.closure`; true unless
     /// the file leaves it out: a loaded arm hanging from its cables holds its weight without it).
     pub closure: bool,
@@ -266,14 +271,16 @@ impl Chain {
             }],
             gravity: Vector3::zeros(),
             load: None,
+            joint_forces: Vec::new(),
             closure: true,
         }
     }
 
-    /// Whether a load acts on the links — a weight (some link's mass under gravity) or a wrench
-    /// from outside: the cables then hold it, and the chain's static feasibility is a condition.
+    /// Whether a load acts on the links — a weight (some link's mass under gravity), a wrench
+    /// or joint forces from outside: the cables then hold it, and the chain's static feasibility
+    /// is a condition.
     pub fn is_loaded(&self) -> bool {
-        self.gravity != Vector3::zeros() && self.links.iter().any(|l| l.mass > 0.0) || self.load.is_some()
+        self.gravity != Vector3::zeros() && self.links.iter().any(|l| l.mass > 0.0) || self.load.is_some() || self.joint_forces.iter().any(|t| *t != 0.0)
     }
 
     /// Total number of coordinates.
@@ -432,6 +439,7 @@ pub(crate) mod tests {
             ],
             gravity: Vector3::zeros(),
             load: None,
+            joint_forces: Vec::new(),
             closure: true,
         }
     }

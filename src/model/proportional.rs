@@ -264,7 +264,7 @@ mod tests {
             link("u", Some(0), Joint::Universal([Vector3::x(), Vector3::z()])),
             link("r", Some(1), Joint::Revolute(Vector3::new(0.0, 0.6, 0.8))),
         ];
-        Chain { links, gravity: Vector3::zeros(), load: None, closure: true }
+        Chain { links, gravity: Vector3::zeros(), load: None, joint_forces: Vec::new(), closure: true }
     }
 
     /// The links' frames along each piece equal CASPR's interpolation at the same progress: a

@@ -65,6 +65,10 @@ pub struct RawScenario {
     pub queries: Vec<RawQuery>,
     #[serde(default)]
     pub configurations: Ordered<Ordered<f64>>,
+    /// Generalised forces applied to a multi-link robot's joint coordinates from outside, by
+    /// coordinate name (format 6).
+    #[serde(default)]
+    pub joint_forces: Ordered<f64>,
 }
 
 /// The wrench set: nominal wrench, ellipsoid (a 6×6 matrix or a radius), application point.

@@ -40,6 +40,9 @@ pub(super) fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clear
         if raw.robot.closure.is_some() {
             return Err(Error::new("robot.closure", "only a multi-link robot's joint-space closure is asked here; a platform's is `wrench.closure`"));
         }
+        if let Some((name, _)) = raw.joint_forces.0.first() {
+            return Err(Error::new(format!("joint_forces.{name}"), "only a multi-link robot's joints take forces from outside; a platform's load is `wrench`"));
+        }
         if raw.wrench.as_ref().is_some_and(|w| w.link.is_some()) {
             return Err(Error::new("wrench.link", "only a multi-link robot's wrench names the link it acts on; a platform's acts on the platform"));
         }
@@ -73,6 +76,7 @@ pub(super) fn multi_link(raw: &RawScenario, robot: &mut Robot, clearance: &Clear
         ));
     }
     chain.load = raw.wrench.as_ref().map(|w| link_wrench(w, version, &chain)).transpose()?;
+    chain.joint_forces = joint_forces(&raw.joint_forces, version, &chain)?;
     if let Some(closure) = raw.robot.closure {
         needs_format(version, 6, "robot.closure")?;
         chain.closure = closure;
@@ -117,6 +121,51 @@ fn link_wrench(raw: &RawWrench, version: u8, chain: &Chain) -> Result<LinkWrench
     }
     let w = super::wrench::wrench(raw, version)?;
     Ok(LinkWrench { link, nominal: w.nominal, point: w.point, frame: w.frame })
+}
+
+/// A multi-link robot's `joint_forces` (format 6): the generalised force applied from outside to
+/// each coordinate named, in configuration order (zero for the others; empty when none is
+/// named). Only the coordinates of revolute, prismatic, universal and planar joints take one —
+/// a torque about the coordinate's axis or a force along it, what its joint row of the statics
+/// reads; a free, spatial or spherical joint's Euler angles have generalised forces that turn
+/// with the configuration (a moment on the link is a `wrench`), and the rows of its translation
+/// are along the world's axes.
+fn joint_forces(raw: &Ordered<f64>, version: u8, chain: &Chain) -> Result<Vec<f64>> {
+    if raw.0.is_empty() {
+        return Ok(Vec::new());
+    }
+    needs_format(version, 6, "joint_forces")?;
+    let names: Vec<&str> = chain.coords().map(|(_, _, c)| c.name.as_str()).collect();
+    let mut out = vec![None; names.len()];
+    for (name, value) in &raw.0 {
+        let field = format!("joint_forces.{name}");
+        let Some(i) = names.iter().position(|n| n == name) else {
+            return Err(Error::new(field, format!("no coordinate named \"{name}\"; the robot's coordinates: {}", names.join(", "))));
+        };
+        let (l, _, _) = chain.coords().nth(i).ok_or_else(|| Error::new(&field, "internal: coordinate missing"))?;
+        let link = &chain.links[l];
+        let ball = match link.joint {
+            Joint::Free => Some("free"),
+            Joint::Spatial => Some("spatial"),
+            Joint::Spherical => Some("spherical"),
+            _ => None,
+        };
+        if let Some(kind) = ball {
+            return Err(Error::new(
+                field,
+                format!(
+                    "link {}'s joint is {kind}: only revolute, prismatic, universal and planar joints take forces on their coordinates \
+                     (a moment or force on the link from outside is a `wrench` on link {})",
+                    link.name, link.name
+                ),
+            ));
+        }
+        if out[i].is_some() {
+            return Err(Error::new(field, "given twice"));
+        }
+        out[i] = Some(finite(&field, *value)?);
+    }
+    Ok(out.into_iter().map(|t| t.unwrap_or(0.0)).collect())
 }
 
 /// The links of `raw` as a chain, parents before children (file order otherwise); their masses
@@ -204,7 +253,7 @@ fn chain(raw: &[RawLink], version: u8) -> Result<Chain> {
         let parent = parent[k].map(|p| order.iter().position(|&o| o == p).unwrap_or(0));
         links.push(Link { name: l.name.clone(), parent, location, joint, coords, body, radius, mass, com });
     }
-    let chain = Chain { links, gravity: Vector3::zeros(), load: None, closure: true };
+    let chain = Chain { links, gravity: Vector3::zeros(), load: None, joint_forces: Vec::new(), closure: true };
     if chain.dof() > MAX_DOF {
         return Err(Error::new("robot.links", format!("at most {MAX_DOF} joint coordinates are supported, got {}", chain.dof())));
     }
