@@ -17,6 +17,9 @@
 #   scripts/bench.sh --library        only CASPR's multi-link library (examples/bench/library.rs, native,
 #                                     ~2 min): each model's trajectories exact and point-wise; rewrites
 #                                     only the "CASPR's multi-link library" section
+#   scripts/bench.sh --page           only the page weight (scripts/build-page.sh) and its first load in
+#                                     headless Chromium (tests/browser/first-load.mjs, ~4 min); rewrites
+#                                     only the "Page weight" section
 #   scripts/bench.sh --batotp         only the fastest safe timing against the peer batotp on its CSPR3DOF
 #                                     case (examples/bench/batotp.rs: builds ../shared/peers/batotp in a
 #                                     temporary copy with g++ and Eigen, installed by
@@ -36,6 +39,7 @@ ATLAS_ONLY=0
 TIMING_ONLY=0
 BATOTP_ONLY=0
 LIBRARY_ONLY=0
+PAGE_ONLY=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --no-write) WRITE=0 ;;
@@ -45,7 +49,8 @@ while [ $# -gt 0 ]; do
     --timing) TIMING_ONLY=1 ;;
     --batotp) BATOTP_ONLY=1 ;;
     --library) LIBRARY_ONLY=1 ;;
-    *) echo "usage: scripts/bench.sh [--no-write] [--before REF] | --lattice | --atlas | --timing | --batotp | --library" >&2; exit 2 ;;
+    --page) PAGE_ONLY=1 ;;
+    *) echo "usage: scripts/bench.sh [--no-write] [--before REF] | --lattice | --atlas | --timing | --batotp | --library | --page" >&2; exit 2 ;;
   esac
   shift
 done
@@ -218,6 +223,34 @@ library_section() {
     echo "<!-- library:end -->"
   } > "$1"
 }
+# The section "Page weight" (the page built now into $TMP/page, then its first load), to "$1".
+page_section() {
+  say "page weight: scripts/build-page.sh"
+  local weight total first
+  weight=$(scripts/build-page.sh "$TMP/page" 2>/dev/null | grep '^page weight:')
+  [ -n "$weight" ] || { say "scripts/build-page.sh printed no page weight"; exit 1; }
+  total=$(sed -nE 's/.*wasm\+js gzip ([0-9]+) B.*/\1/p' <<<"$weight")
+  say "first load: tests/browser/first-load.mjs"
+  first=$(node tests/browser/first-load.mjs "$TMP/page" | grep '^ok ' | sed -E 's/^ok +//; s/ \([0-9]+ ms\)$//')
+  [ -n "$first" ] || { say "tests/browser/first-load.mjs failed"; exit 1; }
+  {
+    echo "<!-- page:begin (scripts/bench.sh --page rewrites this section) -->"
+    echo "## Page weight"
+    echo
+    echo "The page as \`scripts/build-page.sh\` builds it (the \`page\` profile: opt-level z, fat LTO,"
+    echo "one codegen unit, the core at opt-level \"z\"; Leptos' erase_components; wasm-opt -Oz), gzip -9,"
+    echo "measured $(date -u '+%Y-%m-%d %H:%M UTC'), commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- src web 2>/dev/null || echo ' (with uncommitted changes)'):"
+    echo
+    echo "    ${weight#page weight: }"
+    echo
+    echo "Served gzip-compressed to a fresh headless Chromium (\`node tests/browser/first-load.mjs\`):"
+    echo
+    echo "    $first"
+    echo
+    awk -v b="$total" 'BEGIN { printf "| target | measured | |\n|---|---|---|\n| wasm + js ≤ 1.0 MB gzip | %.3f MB (%d B) | %s |\n", b / 1e6, b, (b <= 1000000 ? "yes" : "**no**") }'
+    echo "<!-- page:end -->"
+  } > "$1"
+}
 # Measures section "$1" alone (written by the function "$1_section") and puts it in place of its
 # old one in docs/benchmarks.md; then ends the script.
 only_section() {
@@ -229,6 +262,7 @@ only_section() {
   exit 0
 }
 [ "$LIBRARY_ONLY" = 0 ] || only_section library
+[ "$PAGE_ONLY" = 0 ] || only_section page
 [ "$TIMING_ONLY" = 0 ] || only_section timing
 if [ "$BATOTP_ONLY" = 1 ]; then
   scripts/install.sh --batotp
@@ -570,30 +604,9 @@ END {
   }
 }' "$TMP/all.txt" > "$TMP/benchmarks.md"
 
-# The page's download size: what scripts/build-page.sh prints (wasm + js, gzip -9).
-say "page weight: scripts/build-page.sh"
-WEIGHT=$(scripts/build-page.sh "$TMP/page" 2>/dev/null | grep '^page weight:')
-[ -n "$WEIGHT" ] || { say "scripts/build-page.sh printed no page weight"; exit 1; }
-TOTAL_GZ=$(sed -nE 's/.*wasm\+js gzip ([0-9]+) B.*/\1/p' <<<"$WEIGHT")
-# Its first load in headless Chromium on a throttled network (tests/browser/first-load.mjs).
-say "first load: tests/browser/first-load.mjs"
-FIRST_LOAD=$(node tests/browser/first-load.mjs "$TMP/page" | grep '^ok ' | sed -E 's/^ok +//; s/ \([0-9]+ ms\)$//')
-[ -n "$FIRST_LOAD" ] || { say "tests/browser/first-load.mjs failed"; exit 1; }
-{
-  echo
-  echo "## Page weight"
-  echo
-  echo "The page as \`scripts/build-page.sh\` builds it (the \`page\` profile: opt-level z, fat LTO,"
-  echo "one codegen unit, the core at opt-level \"z\"; Leptos' erase_components; wasm-opt -Oz), gzip -9:"
-  echo
-  echo "    ${WEIGHT#page weight: }"
-  echo
-  echo "Served gzip-compressed to a fresh headless Chromium (\`node tests/browser/first-load.mjs\`):"
-  echo
-  echo "    $FIRST_LOAD"
-  echo
-  awk -v b="$TOTAL_GZ" 'BEGIN { printf "| target | measured | |\n|---|---|---|\n| wasm + js ≤ 1.0 MB gzip | %.3f MB (%d B) | %s |\n", b / 1e6, b, (b <= 1000000 ? "yes" : "**no**") }'
-} >> "$TMP/benchmarks.md"
+# The page weight section, in the same run (the page it builds in $TMP/page serves the drag
+# benchmark below).
+{ echo; page_section "$TMP/page-section.md"; cat "$TMP/page-section.md"; } >> "$TMP/benchmarks.md"
 
 # The ray lattice section, in the same run.
 say "ray lattice cases"

@@ -21,9 +21,14 @@
 //   and the strip shows it as `cablenav verify` does on what `cablenav plan --out` wrote;
 // - the links' masses typed in the editor raise the file to format 4, and the strip gains the
 //   static feasibility boundary `cablenav verify` finds on the page's scenario; a wrench applied
-//   to the lower arm in the editor moves it as the CLI says.
+//   to the lower arm in the editor moves it as the CLI says, and so does a torque on the elbow
+//   typed under "Forces on joints" (the file raised to format 6);
+// - a routed model of CASPR's library (SJTUSnake's bodies, cables and trajectories files) imported
+//   on the page is the scenario `cablenav import` writes, drawn with its 36 cables and 24 joint
+//   sliders, and the strip of its trajectory `traj_test` is `cablenav verify`'s.
 // Screenshots in tests/browser/artifacts/. Ends with "N passed, M failed"; exits 1 on failure.
 
+import { execFileSync } from 'node:child_process';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { begin, cliJson, cliSections, cliVerify, openTab, stripSections, watchProblems } from './harness.mjs';
@@ -249,6 +254,56 @@ await test('a wrench applied to a link in the editor: the strip is `cablenav ver
   if (!statics || !(statics.t < 0.79)) throw new Error(`the CLI's static feasibility boundary: ${JSON.stringify(cli.boundaries)}`);
   const got = await stripBecomes(cliSections(cli));
   return `wrench ${JSON.stringify(await wrench())}; strip ${JSON.stringify(got.map((s) => s.kind))} as the CLI, static feasibility from t = ${statics.t.toFixed(4)}`;
+});
+
+await test('a torque on the elbow typed under "Forces on joints": format 6, and the strip is `cablenav verify`\'s on the page\'s scenario', async () => {
+  // the arm with the masses and the wrench above; 1 N·m about θ's axis helps the cables (the
+  // boundary of the weights and the wrench, t ≈ 0.756, moves to t ≈ 0.768)
+  const details = page.locator('[data-testid="scenario-editor"] details').filter({ has: page.locator('summary', { hasText: 'Forces on joints' }) }).first();
+  if (!(await details.evaluate((d) => d.open))) await details.locator('summary').first().click();
+  const fields = await page.$$eval('[data-testid="joint-forces"] [data-field]', (fs) => fs.map((f) => f.getAttribute('data-field')));
+  if (JSON.stringify(fields) !== JSON.stringify(['joint_forces.theta'])) throw new Error(`joint force fields ${JSON.stringify(fields)} (the spherical shoulder takes none)`);
+  const theta = page.locator('[data-field="joint_forces.theta"]');
+  await theta.click();
+  await theta.pressSequentially('1');
+  await page.waitForFunction(() => {
+    const d = JSON.parse(document.querySelector('textarea[data-testid="source"]').value);
+    return d.format === 'cablenav-scenario/6' && d.joint_forces?.theta === 1;
+  }, null, { timeout: TIMEOUT });
+  const file = join(scratch, 'arm-torque.json');
+  writeFileSync(file, await page.$eval('textarea[data-testid="source"]', (t) => t.value));
+  const cli = cliVerify(root, file, 'across the gap');
+  const statics = cli.boundaries.find((b) => b.constraint === 'static feasibility');
+  if (!statics || !(statics.t > 0.765)) throw new Error(`the CLI's static feasibility boundary: ${JSON.stringify(cli.boundaries)}`);
+  const got = await stripBecomes(cliSections(cli));
+  return `strip ${JSON.stringify(got.map((s) => s.kind))} as the CLI, static feasibility from t = ${statics.t.toFixed(4)}`;
+});
+
+await test('a routed model of CASPR\'s library imported on the page (SJTUSnake: 36 cables over 432 segments): the scenario is `cablenav import`\'s and the strip of its `traj_test` is `cablenav verify`\'s', async () => {
+  const dir = join(root, '..', 'shared', 'models', 'caspr', 'SJTUSnake');
+  await page.setInputFiles('[data-testid="import-caspr"]', ['bodies', 'cables', 'trajectories'].map((f) => join(dir, `SJTUSnake_${f}.xml`)));
+  await page.waitForFunction(() => JSON.parse(document.querySelector('textarea[data-testid="source"]').value).name === 'SJTUSnake', null, { timeout: TIMEOUT });
+  const text = await page.$eval('textarea[data-testid="source"]', (t) => t.value);
+  const imported = JSON.parse(text);
+  // the CLI's conversion of the same directory (the binary is up to date: cliJson built it above)
+  const cli = JSON.parse(execFileSync(join(root, 'target', 'release', 'cablenav'), ['import', dir], { cwd: root, encoding: 'utf8', maxBuffer: 64 << 20 }));
+  if (JSON.stringify(imported) !== JSON.stringify(cli)) throw new Error('the page imported another scenario than `cablenav import`');
+  const routed = imported.robot.cables.filter((c) => c.via || c.from).length;
+  if (imported.format !== 'cablenav-scenario/6' || imported.robot.cables.length !== 36 || routed < 30) throw new Error(`${imported.format}, ${imported.robot.cables.length} cables, ${routed} routed`);
+  const file = join(scratch, 'snake.json');
+  writeFileSync(file, text);
+  const report = cliVerify(root, file, 'traj_test');
+  const want = cliSections(report);
+  // the picker keeps the index of the trajectory shown before the import: pick traj_test by name
+  await page.selectOption('select[data-testid="trajectory"]', { label: 'traj_test' });
+  await page.waitForFunction(() => document.querySelector('section[data-testid="result"]')?.textContent.includes('SJTUSnake — traj_test'), null, { timeout: TIMEOUT });
+  const got = await stripBecomes(want);
+  const drawn = (await page.getAttribute(view, 'data-cables')).split(' ').length;
+  if (drawn !== 36) throw new Error(`${drawn} cables drawn`);
+  const sliders = await page.$$('[data-testid="joint-sliders"] label.joint');
+  if (sliders.length !== 24) throw new Error(`${sliders.length} joint sliders, expected 24`);
+  await (await page.$('[data-testid="stage"]')).screenshot({ path: join(artifacts, 'multilink-snake.png') });
+  return `${routed} of 36 cables routed; strip ${JSON.stringify(got.map((s) => s.kind))} as the CLI`;
 });
 
 await test('no console errors, page errors or failed requests', async () => {

@@ -4,7 +4,7 @@
 
 use serde_json::{json, Value};
 
-use super::{get, len, number, remove, round12, set, timing::require_format_4, Path};
+use super::{get, len, number, remove, round12, set, timing::{require_format, FORMAT_4}, Path};
 
 /// Whether the trajectory at `path` goes through knots.
 pub fn is_spline(doc: &Value, path: &Path) -> bool {
@@ -73,7 +73,7 @@ pub fn to_spline(doc: &mut Value, path: &Path, index: usize) -> bool {
     };
     let name = traj.name.clone();
     set(doc, path, json!({"name": name, "spline": "quintic", "knots": [knot(0.0, 0.0), knot(1.0, duration)]}));
-    require_format_4(doc);
+    require_format(doc, FORMAT_4);
     true
 }
 

@@ -67,6 +67,38 @@ pub fn all_coordinates(doc: &Value) -> Vec<(String, &'static str)> {
         .collect()
 }
 
+/// The coordinates a force from outside may act on (`joint_forces`: those of revolute,
+/// prismatic, universal and planar joints), in configuration order, with the force's unit
+/// (`N·m` about an axis, `N` along one).
+pub fn forceable_coordinates(doc: &Value) -> Vec<(String, &'static str)> {
+    (0..len(doc, &links()))
+        .flat_map(|i| {
+            let kind = joint_type(doc, i);
+            let takes = matches!(kind.as_str(), "revolute" | "prismatic" | "universal" | "planar");
+            let names = if takes { coordinate_names(doc, i) } else { Vec::new() };
+            names.into_iter().enumerate().map(move |(k, n)| (n, if unit(&kind, k) == "m" { "N" } else { "N·m" }))
+        })
+        .collect()
+}
+
+/// Sets the force from outside on the coordinate `name` (`None`: removes it, and `joint_forces`
+/// once it is empty), raising the file's format to 6 when writing.
+pub fn set_joint_force(doc: &mut Value, name: &str, value: Option<f64>) {
+    let forces = Path::of(&["joint_forces"]);
+    match value {
+        Some(x) => {
+            set(doc, &forces.k(name), number(x));
+            super::require_format(doc, cablenav::scenario::FORMAT_6);
+        }
+        None => {
+            remove(doc, &forces.k(name));
+            if matches!(get(doc, &forces), Some(Value::Object(m)) if m.is_empty()) {
+                remove(doc, &forces);
+            }
+        }
+    }
+}
+
 /// The unit of coordinate `k` of a joint of type `kind`.
 pub fn unit(kind: &str, k: usize) -> &'static str {
     match (kind, k) {
@@ -235,7 +267,8 @@ pub fn rename_link(doc: &mut Value, i: usize, new: &str) -> Result<(), String> {
     Ok(())
 }
 
-/// Renames coordinate `k` of link `i`, and its entry in every configuration (in place).
+/// Renames coordinate `k` of link `i`, and its entry in every configuration and in the joint
+/// forces (in place).
 pub fn rename_coordinate(doc: &mut Value, i: usize, k: usize, new: &str) -> Result<(), String> {
     let old = coordinate_names(doc, i).get(k).cloned().ok_or("no such coordinate")?;
     check_name(new, &old, &names_outside(doc, None), "coordinate")?;
@@ -243,6 +276,7 @@ pub fn rename_coordinate(doc: &mut Value, i: usize, k: usize, new: &str) -> Resu
     for c in 0..len(doc, &configurations()) {
         rename_key(doc, &configurations().i(c), &old, new);
     }
+    rename_key(doc, &Path::of(&["joint_forces"]), &old, new);
     Ok(())
 }
 
@@ -461,6 +495,23 @@ mod tests {
         let s = valid(&d);
         assert_eq!(s.joint_paths[0].through[0], s.config("low").unwrap(), "the path follows the rename");
         assert!(rename_configuration(&mut d, 1, "above").is_err());
+    }
+
+    #[test]
+    fn forces_on_joints_reach_the_core_and_follow_a_rename() {
+        let mut d = arm();
+        assert_eq!(forceable_coordinates(&d), [("theta".to_string(), "N·m")], "not the spherical shoulder's Euler angles");
+        set_joint_force(&mut d, "theta", Some(0.5));
+        assert_eq!(d["format"], json!(cablenav::scenario::FORMAT_6));
+        let s = valid(&d);
+        let chain = s.robot.chain.as_ref().unwrap();
+        assert!(chain.joint_forces == [0.0, 0.0, 0.0, 0.5] && chain.is_loaded(), "{:?}", chain.joint_forces);
+        rename_coordinate(&mut d, 1, 0, "elbow").unwrap();
+        assert_eq!(d["joint_forces"], json!({"elbow": 0.5}));
+        valid(&d);
+        set_joint_force(&mut d, "elbow", None);
+        assert!(d.get("joint_forces").is_none(), "{d}");
+        assert!(!valid(&d).robot.chain.as_ref().unwrap().is_loaded());
     }
 
     #[test]

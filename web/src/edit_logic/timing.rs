@@ -9,11 +9,12 @@ use super::{get, number, remove, set, Path};
 /// The format a file needs for the fields of this module.
 pub const FORMAT_4: &str = cablenav::scenario::FORMAT_4;
 
-/// Raises the file's format to version 4 (files of version 1 to 3 read the same).
-pub fn require_format_4(doc: &mut Value) {
-    let older = doc.get("format").and_then(Value::as_str).and_then(cablenav::scenario::json::version).is_some_and(|v| v < 4);
+/// Raises the file's format to `format` (files of the older versions read the same).
+pub fn require_format(doc: &mut Value, format: &str) {
+    let version = cablenav::scenario::json::version;
+    let older = doc.get("format").and_then(Value::as_str).and_then(version).zip(version(format)).is_some_and(|(v, least)| v < least);
     if older {
-        set(doc, &Path::of(&["format"]), json!(FORMAT_4));
+        set(doc, &Path::of(&["format"]), json!(format));
     }
 }
 
@@ -22,7 +23,7 @@ pub fn set_timed_number(doc: &mut Value, path: &Path, value: Option<f64>) {
     match value {
         Some(x) => {
             set(doc, path, number(x));
-            require_format_4(doc);
+            require_format(doc, FORMAT_4);
         }
         None => {
             remove(doc, path);
@@ -44,7 +45,7 @@ pub fn add_dynamics(doc: &mut Value) {
         &Path::of(&["robot", "dynamics"]),
         json!({"mass": 1.0, "com": [0.0, 0.0, 0.0], "inertia": [[i, 0.0, 0.0], [0.0, i, 0.0], [0.0, 0.0, i]], "gravity": cablenav::scenario::STANDARD_GRAVITY}),
     );
-    require_format_4(doc);
+    require_format(doc, FORMAT_4);
 }
 
 /// Removes the platform's mass (the robot is massless again: every load in the wrench set).

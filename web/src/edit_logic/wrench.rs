@@ -77,7 +77,7 @@ pub fn set_ellipsoid_mode(doc: &mut Value, mode: &str) {
         "none" => {
             remove(doc, &Path::of(&["wrench", "ellipsoid"]));
             remove(doc, &Path::of(&["wrench", "radius"]));
-            super::timing::require_format_4(doc);
+            super::timing::require_format(doc, super::timing::FORMAT_4);
         }
         "radius" => {
             let mean = round12(radii.iter().sum::<f64>() / 6.0);
@@ -104,7 +104,7 @@ pub fn wrench_template() -> Value {
 pub fn add_link_wrench(doc: &mut Value) {
     let Some(last) = super::link_names(doc).pop() else { return };
     set(doc, &Path::of(&["wrench"]), json!({"nominal": [0, 0, -1, 0, 0, 0], "link": last, "point": [0, 0, 0]}));
-    super::require_format_4(doc);
+    super::require_format(doc, super::FORMAT_4);
 }
 
 #[cfg(test)]

@@ -170,9 +170,10 @@ fn PlatformParts(ed: Ed) -> impl IntoView {
     }
 }
 
-/// A multi-link robot's parts (format 3): links, a wrench on a link, obstacles, configurations,
+/// A multi-link robot's parts (format 3): links, a wrench on a link, forces on joints, obstacles, configurations,
 /// paths. It has no poses or wrench set (its wrench conditions are joint-space wrench closure,
-/// always checked, and static feasibility once a link has a mass or carries a wrench).
+/// always checked, and static feasibility once a link has a mass, carries a wrench or its joints take
+/// forces).
 #[component]
 fn MultiLinkParts(ed: Ed) -> impl IntoView {
     view! {
@@ -183,6 +184,10 @@ fn MultiLinkParts(ed: Ed) -> impl IntoView {
         <details>
             <summary>"Wrench on a link"</summary>
             <wrench::LinkWrenchEditor ed />
+        </details>
+        <details>
+            <summary>"Forces on joints"</summary>
+            <wrench::JointForcesEditor ed />
         </details>
         <details>
             <summary>"Obstacles"</summary>
@@ -198,7 +203,8 @@ fn MultiLinkParts(ed: Ed) -> impl IntoView {
         </details>
         <p class="hint" data-testid="multilink-note">
             "A multi-link robot has no poses and no wrench set around a nominal wrench: its wrench conditions are \
-             joint-space wrench closure, always checked, and static feasibility once a link has a mass or carries a wrench; \
+             joint-space wrench closure, always checked, and static feasibility once a link has a mass, carries a wrench \
+             or its joints take forces; \
              it is posed by configurations (docs/multilink.md)."
         </p>
     }

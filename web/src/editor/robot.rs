@@ -17,9 +17,9 @@ pub fn RobotEditor(ed: Ed) -> impl IntoView {
         move || ed.error_at(&cables, false)
     });
     let chain = Memo::new(move |_| ed.read(el::is_multi_link).unwrap_or(false));
-    // a multi-link robot's tensions matter once a link has a mass or carries a wrench (static
-    // feasibility)
-    let weighed = Memo::new(move |_| ed.read(|d| el::has_link_mass(d) || d.get("wrench").is_some()).unwrap_or(false));
+    // a multi-link robot's tensions matter once a link has a mass or carries a wrench, or its
+    // joints take forces (static feasibility)
+    let weighed = Memo::new(move |_| ed.read(|d| el::has_link_mass(d) || d.get("wrench").is_some() || d.get("joint_forces").is_some()).unwrap_or(false));
     view! {
         <TextField ed path=Path::of(&["name"]) label="Scenario name" />
         // the table scrolls sideways inside the side panel when it is wider (a multi-link robot's

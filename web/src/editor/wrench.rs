@@ -1,6 +1,6 @@
 //! The wrench set: nominal wrench, application point and its frame, and the ellipsoid E as one
 //! radius, per-axis radii or the full 6×6 matrix (its positive definiteness is the core's check);
-//! and a multi-link robot's wrench on one of its links.
+//! and a multi-link robot's wrench on one of its links and forces on its joints.
 
 use leptos::prelude::*;
 use serde_json::Value;
@@ -109,6 +109,46 @@ pub fn LinkWrenchEditor(ed: Ed) -> impl IntoView {
                 "Remove the wrench"
             </button>
         </Show>
+    }
+}
+
+/// Forces from outside on a multi-link robot's joint coordinates (`joint_forces`): one optional
+/// number per coordinate of a revolute, prismatic, universal or planar joint.
+#[component]
+pub fn JointForcesEditor(ed: Ed) -> impl IntoView {
+    let coords = Memo::new(move |_| ed.read(el::forceable_coordinates).unwrap_or_default());
+    let section_error = Signal::derive(move || ed.error_at(&Path::of(&["joint_forces"]), false));
+    let fields = move || {
+        coords
+            .get()
+            .into_iter()
+            .map(|(name, unit)| {
+                let path = Path::of(&["joint_forces"]).k(&name);
+                let (p1, p2, p3) = (path.clone(), path.clone(), path);
+                let label = name.clone();
+                let on_value = Callback::new(move |v: Option<f64>| ed.edit(|d| el::set_joint_force(d, &name, v)));
+                view! {
+                    <NumInput
+                        value=Signal::derive(move || ed.num(&p1))
+                        on_value
+                        label
+                        unit
+                        optional=true
+                        field=Signal::derive(move || ed.core_path(&p2))
+                        error=Signal::derive(move || ed.error_at(&p3, true))
+                    />
+                }
+            })
+            .collect_view()
+    };
+    view! {
+        <p class="hint">
+            "A torque about a joint's axis or a force along it, applied from outside (a motor, a spring, a hand): \
+             the cables must hold it, with the weights and the wrench on a link. Empty: none. The coordinates of \
+             ball joints take none (a moment on their link is a wrench)."
+        </p>
+        <div class="values" data-testid="joint-forces">{fields}</div>
+        <FieldMessage local=RwSignal::new(None) core=section_error />
     }
 }
 
