@@ -294,8 +294,7 @@ await test('a routed model of CASPR\'s library imported on the page (SJTUSnake: 
   writeFileSync(file, text);
   const report = cliVerify(root, file, 'traj_test');
   const want = cliSections(report);
-  // the picker keeps the index of the trajectory shown before the import: pick traj_test by name
-  await page.selectOption('select[data-testid="trajectory"]', { label: 'traj_test' });
+  // a file loaded is shown from its first trajectory (not from the index shown before it)
   await page.waitForFunction(() => document.querySelector('section[data-testid="result"]')?.textContent.includes('SJTUSnake — traj_test'), null, { timeout: TIMEOUT });
   const got = await stripBecomes(want);
   const drawn = (await page.getAttribute(view, 'data-cables')).split(' ').length;

@@ -91,7 +91,7 @@ pub fn App() -> impl IntoView {
                     <aside class="side" data-testid="side-panel" aria-label="scenario editor, sharing and help">
                         <crate::editor::ScenarioEditor source origin />
                         <Editor source on_apply=apply_edit />
-                        <crate::editor::share::SharePanel source origin settings />
+                        <crate::editor::share::SharePanel source origin settings trajectory />
                         <crate::help::Help />
                     </aside>
                 }

@@ -7,9 +7,10 @@ use wasm_bindgen::JsCast;
 
 use crate::persist;
 
-/// The sharing panel.
+/// The sharing panel. `trajectory` is the picked trajectory's index: a file loaded is shown from
+/// its first one.
 #[component]
-pub fn SharePanel(source: RwSignal<String>, origin: RwSignal<&'static str>, settings: RwSignal<crate::state::Settings>) -> impl IntoView {
+pub fn SharePanel(source: RwSignal<String>, origin: RwSignal<&'static str>, settings: RwSignal<crate::state::Settings>, trajectory: RwSignal<usize>) -> impl IntoView {
     // one link per edit, made once, and during a drag at its end (crate::state::Quiet)
     let quiet = crate::state::Quiet::watch();
     let hash = Memo::new(move |prev: Option<&String>| match prev {
@@ -21,7 +22,8 @@ pub fn SharePanel(source: RwSignal<String>, origin: RwSignal<&'static str>, sett
     let message = RwSignal::new(None::<(bool, String)>);
     let load = move |text: String, what: String| {
         // The file's scenario replaces the text, whatever it holds (an invalid one shows the
-        // core's error; nothing is dropped).
+        // core's error; nothing is dropped), shown from its first trajectory.
+        trajectory.set(0);
         source.set(text);
         origin.set("edited");
         message.set(Some((true, what)));
