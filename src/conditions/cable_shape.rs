@@ -1,9 +1,13 @@
 //! Cable–obstacle clearance: the distance from a cable to an obstacle must be at least the
 //! clearance. Every shape is exact: meshes (and boxes) and spheres by point/segment/face tests,
 //! cylinders, cones and ellipsoids with a clearance through their offset solids
-//! ([`super::offset`]), and without one through the solid itself.
+//! ([`super::offset`]), and without one through the solid itself. A routed cable's segment
+//! between two links has a moving start: meshes, spheres, ellipsoids without a clearance and a
+//! cone's apex take it exactly (their tests read the start as fractions of the motion too); the
+//! offset solids' tests take a fixed start, so cylinders, cones and ellipsoids with a clearance
+//! are certified there by the pruning alone (undecided where it cannot clear them).
 
-use super::algebra::{hvec_const, HVec};
+use super::algebra::{hvec_const, Alg, HVec, H};
 use super::offset::{cone_near, cylinder_near, ellipsoid_clear};
 use super::primitives::{point_segment, segment_cone, segment_face, segment_segment, ConeSolid, ALL_ENDS};
 use super::tube::Bound;
@@ -118,12 +122,8 @@ impl Condition for CableShape {
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let cable = &sweep.cables[self.segment];
         let undecided = cable.tube.undecided_in(&self.bound, &sweep.settled);
-        if cable.start.is_some() {
-            // a segment between two links: its start moves, which the exact tests below do not
-            // take; only what the pruning clears is certified, the rest is undecided
-            let unknown = Partition::constant(Truth::Unknown);
-            return undecided.iter().fold(Partition::constant(Truth::False), |acc, &(a, b)| acc.splice((a, b), &unknown, (a, b)));
-        }
+        // a segment between two links starts at Â/w, which moves: its start's numerators
+        let moving = cable.start.clone();
         let a = cable.base;
         let c = self.clearance;
         // which mesh edges and faces the tube of the whole motion cannot clear
@@ -134,8 +134,21 @@ impl Condition for CableShape {
             }
             _ => Vec::new(),
         };
-        on_undecided(sweep, &undecided, &[self.segment], |alg, w, s, tol, _| {
+        on_undecided(sweep, &undecided, &[self.segment], |alg, w, s, tol, (lo, hi)| {
             let s = s[0];
+            // the start as fractions over the piece, and a fixed point's offset p − start
+            let start: HVec = match &moving {
+                Some(hat) => hat.each_ref().map(|p| H { p: if (lo, hi) == (0.0, 1.0) { p.clone() } else { p.restrict(lo, hi) }, k: 1 }),
+                None => hvec_const(&a),
+            };
+            let from_start = |alg: &mut Alg, p: &V| -> HVec {
+                match moving {
+                    Some(_) => [0, 1, 2].map(|i| alg.sub(&H::constant(p[i]), &start[i])),
+                    None => hvec_const(&(p - a)),
+                }
+            };
+            // the offset solids' tests take a fixed start: a moving one is left to the pruning
+            let unknown = Partition::constant(Truth::Unknown);
             match &self.geom {
                 Geom::Mesh { faces, edges } => {
                     let mut acc = Partition::constant(Truth::False);
@@ -143,7 +156,7 @@ impl Condition for CableShape {
                         if acc.is_all(Truth::True) {
                             break;
                         }
-                        let r: HVec = hvec_const(&(p - a));
+                        let r = from_start(alg, p);
                         let t: HVec = hvec_const(&(q - p));
                         acc = acc.or(&segment_segment(alg, &r, s, &t, c, ALL_ENDS, tol));
                     }
@@ -151,27 +164,39 @@ impl Condition for CableShape {
                         if acc.is_all(Truth::True) {
                             break;
                         }
-                        acc = acc.or(&segment_face(alg, &a, s, tri, c, tol));
+                        acc = acc.or(&segment_face(alg, &start, s, tri, c, tol));
                     }
                     acc
                 }
-                Geom::Sphere { center, reach, .. } => point_segment(alg, &hvec_const(&(center - a)), s, *reach, None, tol),
+                Geom::Sphere { center, reach, .. } => {
+                    let e = from_start(alg, center);
+                    point_segment(alg, &e, s, *reach, None, tol)
+                }
                 Geom::Ellipsoid { metric, frame } => {
-                    if c > 0.0 {
-                        ellipsoid_clear(&a, s, w, frame, c, tol).not()
+                    if c <= 0.0 {
+                        let e = from_start(alg, &frame.center);
+                        point_segment(alg, &e, s, 1.0, Some(metric), tol)
+                    } else if moving.is_some() {
+                        unknown
                     } else {
-                        point_segment(alg, &hvec_const(&(frame.center - a)), s, 1.0, Some(metric), tol)
+                        ellipsoid_clear(&a, s, w, frame, c, tol).not()
                     }
                 }
+                Geom::Cylinder { .. } if moving.is_some() => unknown,
                 Geom::Cylinder { from, to, radius } => cylinder_near(&a, s, w, from, to, *radius, c, tol),
                 Geom::Cone { solid, half_angle } => {
                     if c > 0.0 {
-                        let apex = point_segment(alg, &hvec_const(&(solid.apex - a)), s, c, None, tol);
+                        let e = from_start(alg, &solid.apex);
+                        let apex = point_segment(alg, &e, s, c, None, tol);
                         if apex.is_all(Truth::True) {
                             apex
+                        } else if moving.is_some() {
+                            apex.or(&unknown)
                         } else {
                             apex.or(&cone_near(&a, s, w, &solid.apex, &solid.axis, *half_angle, solid.height, c, tol))
                         }
+                    } else if moving.is_some() {
+                        unknown
                     } else {
                         segment_cone(alg, &a, s, solid, tol)
                     }

@@ -129,49 +129,87 @@ pub fn segment_segment(alg: &mut Alg, r: &HVec, si: &HVec, sj: &HVec, c: f64, en
 }
 
 /// Where the segment a + λ·s comes closer than `c` to the triangle, or crosses it, given by its
-/// face only (the edges are checked separately, once per mesh edge): an endpoint projects inside
-/// the triangle within `c` of its plane, or the segment crosses the triangle's interior.
-pub fn segment_face(alg: &mut Alg, a: &Vector3<f64>, s: &HVec, tri: &[Vector3<f64>; 3], c: f64, tol: f64) -> Partition {
+/// face only (the edges are checked separately, once per mesh edge): an end projects inside the
+/// triangle within `c` of its plane, or the segment crosses the triangle's interior. The start `a`
+/// is fractions like `s`: constant for a cable from the base, moving for a segment that starts on
+/// a link.
+pub fn segment_face(alg: &mut Alg, a: &HVec, s: &HVec, tri: &[Vector3<f64>; 3], c: f64, tol: f64) -> Partition {
     let n = (tri[1] - tri[0]).cross(&(tri[2] - tri[0]));
     let nn = n.norm_squared();
     let hn = hvec_const(&n);
-    let a_near = {
-        let h = (a - tri[0]).dot(&n);
-        let inside = (0..3).all(|k| n.cross(&(tri[(k + 1) % 3] - tri[k])).dot(&(a - tri[k])) > 0.0);
-        inside && h * h < c * c * nn
+    let m: [Vector3<f64>; 3] = std::array::from_fn(|k| n.cross(&(tri[(k + 1) % 3] - tri[k])));
+    // a fixed start's own tests are numbers (the common case: a cable from the base)
+    let fixed: Option<Vector3<f64>> = a.iter().all(|h| h.k == 0 && h.p.c.len() == 1).then(|| Vector3::new(a[0].p.c[0], a[1].p.c[0], a[2].p.c[0]));
+    // the start's offsets from the corners, d_k = a − tri_k, and what the tests read of them:
+    // m_k·d_k (inside edge k where positive) and n·d_0 (the height over the plane)
+    let mut d: [HVec; 3] = std::array::from_fn(|_| hvec_const(&Vector3::zeros()));
+    let mut inside_start: [H; 3] = std::array::from_fn(|_| H::constant(0.0));
+    for k in 0..3 {
+        match fixed {
+            Some(p) => inside_start[k] = H::constant(m[k].dot(&(p - tri[k]))),
+            None => {
+                for i in 0..3 {
+                    d[k][i] = alg.sub(&a[i], &H::constant(tri[k][i]));
+                }
+                inside_start[k] = alg.dot(&hvec_const(&m[k]), &d[k]);
+            }
+        }
+    }
+    let o_a = match fixed {
+        Some(p) => H::constant(n.dot(&(p - tri[0]))),
+        None => alg.dot(&hn, &d[0]),
     };
-    let o_a = (a - tri[0]).dot(&n);
+    let too_close = |alg: &mut Alg, h: &H| alg.sub(&h.mul(h), &H::constant(c * c * nn));
+    let start_near = match fixed {
+        Some(_) => {
+            let value = |h: &H| h.p.c[0];
+            let near = (0..3).all(|k| value(&inside_start[k]) > 0.0) && value(&o_a).powi(2) < c * c * nn;
+            Partition::constant(if near { Truth::True } else { Truth::False })
+        }
+        None => all_of!(tol;
+            inside_start[0].clone() => GT,
+            inside_start[1].clone() => GT,
+            inside_start[2].clone() => GT,
+            too_close(alg, &o_a) => LT,
+        ),
+    };
     any_of!(
-        Partition::constant(if a_near { Truth::True } else { Truth::False }),
+        // the start within c of the plane, inside all three edges
+        start_near,
         {
-            // the moving end a + s: height² < c²|n|² and inside all three edges
-            let ns = alg.dot(&hn, s);
+            // the moving end a + s: the same, m_k·(d_k + s) and n·(d_0 + s)
             let edge_atom = |alg: &mut Alg, k: usize| {
-                let m = n.cross(&(tri[(k + 1) % 3] - tri[k]));
-                let ms = alg.dot(&hvec_const(&m), s);
-                alg.add(&ms, &H::constant(m.dot(&(a - tri[k]))))
+                let ms = alg.dot(&hvec_const(&m[k]), s);
+                alg.add(&ms, &inside_start[k])
             };
             all_of!(tol;
                 edge_atom(alg, 0) => GT,
                 edge_atom(alg, 1) => GT,
                 edge_atom(alg, 2) => GT,
-                { let h = alg.add(&ns, &H::constant(o_a)); alg.sub(&h.mul(&h), &H::constant(c * c * nn)) } => LT,
+                { let ns = alg.dot(&hn, s); let h = alg.add(&ns, &o_a); too_close(alg, &h) } => LT,
             )
         },
         {
             // crossing: the ends on opposite sides of the plane, the line through the triangle
-            if o_a == 0.0 {
-                Partition::constant(Truth::False)
+            if o_a.p.c.iter().all(|v| *v == 0.0) {
+                Partition::constant(Truth::False) // the start stays in the plane: the tests above
             } else {
                 let ns = alg.dot(&hn, s);
-                let o_x = alg.add(&ns, &H::constant(o_a));
-                let side = all_of!(tol; o_x => o_a < 0.0);
+                let o_x = alg.add(&ns, &o_a);
+                let side = match fixed {
+                    Some(_) => all_of!(tol; o_x => o_a.p.c[0] < 0.0),
+                    None => all_of!(tol; o_a.mul(&o_x) => LT),
+                };
                 if side.is_all(Truth::False) {
                     side
                 } else {
+                    // (tri_k − a) × (tri_{k+1} − a) = d_k × d_{k+1}, against s
                     let vol = |alg: &mut Alg, k: usize| {
-                        let m = (tri[k] - a).cross(&(tri[(k + 1) % 3] - a));
-                        alg.dot(&hvec_const(&m), s)
+                        let v = match fixed {
+                            Some(p) => hvec_const(&(tri[k] - p).cross(&(tri[(k + 1) % 3] - p))),
+                            None => alg.cross(&d[k], &d[(k + 1) % 3]),
+                        };
+                        alg.dot(&v, s)
                     };
                     let through = any_of!(
                         all_of!(tol; vol(alg, 0) => GT, vol(alg, 1) => GT, vol(alg, 2) => GT),
