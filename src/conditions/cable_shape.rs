@@ -2,13 +2,12 @@
 //! clearance. Every shape is exact: meshes (and boxes) and spheres by point/segment/face tests,
 //! cylinders, cones and ellipsoids with a clearance through their offset solids
 //! ([`super::offset`]), and without one through the solid itself. A routed cable's segment
-//! between two links has a moving start: meshes, spheres, ellipsoids without a clearance and a
-//! cone's apex take it exactly (their tests read the start as fractions of the motion too); the
-//! offset solids' tests take a fixed start, so cylinders, cones and ellipsoids with a clearance
-//! are certified there by the pruning alone (undecided where it cannot clear them).
+//! between two links has a moving start, which every test reads as fractions of the motion like
+//! the cable vector (a point's offset from it, a face's corner offsets, the offset solids' cable
+//! line).
 
 use super::algebra::{hvec_const, Alg, HVec, H};
-use super::offset::{cone_near, cylinder_near, ellipsoid_clear};
+use super::offset::{cone_near, cylinder_near, ellipsoid_clear, Start};
 use super::primitives::{point_segment, segment_cone, segment_face, segment_segment, ConeSolid, ALL_ENDS};
 use super::tube::Bound;
 use super::{on_undecided, Condition, Cost, Kind, PoseCheck, Sweep};
@@ -136,19 +135,23 @@ impl Condition for CableShape {
         };
         on_undecided(sweep, &undecided, &[self.segment], |alg, w, s, tol, (lo, hi)| {
             let s = s[0];
-            // the start as fractions over the piece, and a fixed point's offset p − start
-            let start: HVec = match &moving {
-                Some(hat) => hat.each_ref().map(|p| H { p: if (lo, hi) == (0.0, 1.0) { p.clone() } else { p.restrict(lo, hi) }, k: 1 }),
+            // the start over the piece: as fractions (Â/w, or a constant), for the offset solids'
+            // tests as it comes, and a fixed point's offset p − start
+            let hat = moving.as_ref().map(|hat| hat.each_ref().map(|p| if (lo, hi) == (0.0, 1.0) { p.clone() } else { p.restrict(lo, hi) }));
+            let start: HVec = match &hat {
+                Some(hat) => hat.each_ref().map(|p| H { p: p.clone(), k: 1 }),
                 None => hvec_const(&a),
             };
+            let from = match hat {
+                Some(hat) => Start::Moving(hat),
+                None => Start::Fixed(a),
+            };
             let from_start = |alg: &mut Alg, p: &V| -> HVec {
-                match moving {
-                    Some(_) => [0, 1, 2].map(|i| alg.sub(&H::constant(p[i]), &start[i])),
-                    None => hvec_const(&(p - a)),
+                match from {
+                    Start::Moving(_) => [0, 1, 2].map(|i| alg.sub(&H::constant(p[i]), &start[i])),
+                    Start::Fixed(a) => hvec_const(&(p - a)),
                 }
             };
-            // the offset solids' tests take a fixed start: a moving one is left to the pruning
-            let unknown = Partition::constant(Truth::Unknown);
             match &self.geom {
                 Geom::Mesh { faces, edges } => {
                     let mut acc = Partition::constant(Truth::False);
@@ -173,32 +176,27 @@ impl Condition for CableShape {
                     point_segment(alg, &e, s, *reach, None, tol)
                 }
                 Geom::Ellipsoid { metric, frame } => {
-                    if c <= 0.0 {
+                    if c > 0.0 {
+                        ellipsoid_clear(&from, s, w, frame, c, tol).not()
+                    } else {
                         let e = from_start(alg, &frame.center);
                         point_segment(alg, &e, s, 1.0, Some(metric), tol)
-                    } else if moving.is_some() {
-                        unknown
-                    } else {
-                        ellipsoid_clear(&a, s, w, frame, c, tol).not()
                     }
                 }
-                Geom::Cylinder { .. } if moving.is_some() => unknown,
-                Geom::Cylinder { from, to, radius } => cylinder_near(&a, s, w, from, to, *radius, c, tol),
+                Geom::Cylinder { from: p, to: q, radius } => cylinder_near(&from, s, w, p, q, *radius, c, tol),
                 Geom::Cone { solid, half_angle } => {
+                    let to_apex = from_start(alg, &solid.apex);
                     if c > 0.0 {
-                        let e = from_start(alg, &solid.apex);
-                        let apex = point_segment(alg, &e, s, c, None, tol);
+                        let apex = point_segment(alg, &to_apex, s, c, None, tol);
                         if apex.is_all(Truth::True) {
                             apex
-                        } else if moving.is_some() {
-                            apex.or(&unknown)
                         } else {
-                            apex.or(&cone_near(&a, s, w, &solid.apex, &solid.axis, *half_angle, solid.height, c, tol))
+                            apex.or(&cone_near(&from, s, w, &solid.apex, &solid.axis, *half_angle, solid.height, c, tol))
                         }
-                    } else if moving.is_some() {
-                        unknown
                     } else {
-                        segment_cone(alg, &a, s, solid, tol)
+                        // segment_cone takes the start's offset from the apex, a − A = −(A − a)
+                        let e = to_apex.map(|h| h.scale(-1.0));
+                        segment_cone(alg, &e, s, solid, tol)
                     }
                 }
             }

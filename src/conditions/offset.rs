@@ -1,5 +1,6 @@
 //! The exact clearance conditions of the curved obstacles: where a cable a + u·s(λ), u ∈ [0, 1],
-//! comes closer than c > 0 to a finite cylinder, a finite cone or an ellipsoid. Each is
+//! comes closer than c > 0 to a finite cylinder, a finite cone or an ellipsoid (its start a fixed,
+//! or moving with a link: [`Start`]). Each is
 //! "∃u ∈ [0, 1] with the cable point in the offset solid K ⊕ B_c", written as sign conditions on
 //! polynomials in (u, λ) and decided by [`super::exists`]; the derivations are in
 //! `docs/verification.md` ("Curved obstacles with a clearance").
@@ -25,11 +26,61 @@ use nalgebra::Vector3;
 
 type V = Vector3<f64>;
 
+/// Where a cable starts: fixed (a cable from the base), or moving with a link (a routed cable's
+/// segment between two links) as its numerators Â over the motion's weight w, like Ŝ.
+#[derive(Debug, Clone)]
+pub enum Start {
+    /// A fixed point.
+    Fixed(V),
+    /// Â, the start being Â/w.
+    Moving([Bern; 3]),
+}
+
+impl Start {
+    /// The start along the part [lo, hi] of the motion (re-parametrised to [0, 1]).
+    fn restrict(&self, lo: f64, hi: f64) -> Start {
+        match self {
+            Start::Fixed(a) => Start::Fixed(*a),
+            Start::Moving(p) => Start::Moving(p.each_ref().map(|q| q.restrict(lo, hi))),
+        }
+    }
+
+    /// The numerators of start − `origin` over `w`.
+    fn offset(&self, w: &Bern, origin: &V) -> [Bern; 3] {
+        match self {
+            Start::Fixed(a) => {
+                let e = a - origin;
+                [0, 1, 2].map(|i| w.scale(e[i]))
+            }
+            Start::Moving(p) => [0, 1, 2].map(|i| p[i].sub(&w.scale(origin[i]))),
+        }
+    }
+
+    /// Bounds [lo, hi] on the start's distance to `centre` over the motion, with w within
+    /// [w_lo, w_hi]: certified from the Bernstein coefficients for a moving start.
+    fn distance(&self, w: &Bern, centre: &V, (w_lo, w_hi): (f64, f64)) -> (f64, f64) {
+        match self {
+            Start::Fixed(a) => {
+                let d = (a - centre).norm();
+                (d, d)
+            }
+            Start::Moving(_) => {
+                let n = self.offset(w, centre);
+                let hi = n.iter().map(|p| (p.max_abs() + p.err).powi(2)).sum::<f64>().sqrt() / w_lo;
+                let len2 = n[0].mul(&n[0]).add(&n[1].mul(&n[1])).add(&n[2].mul(&n[2]));
+                let lo = (len2.c.iter().fold(f64::INFINITY, |m, &x| m.min(x)) - len2.err).max(0.0).sqrt() / w_hi;
+                (lo, hi)
+            }
+        }
+    }
+}
+
 /// The part [u0, u1] of the cable that can come within `reach` of `centre` at any λ (`None`: no
-/// part can), from certified bounds on |s| = |Ŝ|/w: a point a + u·s is at least
-/// |u·|s| − |a − centre|| from the centre. Trimming the cable to that part keeps the polynomials'
-/// magnitudes (and so their error bounds) at the scale of the obstacle, not of the whole cable.
-fn u_range(a: &V, s: &HVec, w: &Bern, centre: &V, reach: f64) -> Option<(f64, f64)> {
+/// part can), from certified bounds on |s| = |Ŝ|/w and on the start's distance d to the centre:
+/// a point a + u·s is at least |u·|s| − d| from the centre. Trimming the cable to that part keeps
+/// the polynomials' magnitudes (and so their error bounds) at the scale of the obstacle, not of
+/// the whole cable.
+fn u_range(a: &Start, s: &HVec, w: &Bern, centre: &V, reach: f64) -> Option<(f64, f64)> {
     let w_lo = w.c.iter().fold(f64::INFINITY, |m, &x| m.min(x)) - w.err;
     let w_hi = w.max_abs() + w.err;
     if !(w_lo > 0.0) {
@@ -39,9 +90,9 @@ fn u_range(a: &V, s: &HVec, w: &Bern, centre: &V, reach: f64) -> Option<(f64, f6
     let len2 = s[0].p.mul(&s[0].p).add(&s[1].p.mul(&s[1].p)).add(&s[2].p.mul(&s[2].p));
     let len2_lo = len2.c.iter().fold(f64::INFINITY, |m, &x| m.min(x)) - len2.err;
     let s_lo = len2_lo.max(0.0).sqrt() / w_hi;
-    let (d, reach) = ((a - centre).norm(), reach * (1.0 + 1e-9) + 1e-12);
-    let u0 = if s_hi > 0.0 { ((d - reach) / s_hi * (1.0 - 1e-9)).max(0.0) } else { 0.0 };
-    let u1 = if s_lo > 0.0 { ((d + reach) / s_lo * (1.0 + 1e-9)).min(1.0) } else { 1.0 };
+    let ((d_lo, d_hi), reach) = (a.distance(w, centre, (w_lo, w_hi)), reach * (1.0 + 1e-9) + 1e-12);
+    let u0 = if s_hi > 0.0 { ((d_lo - reach) / s_hi * (1.0 - 1e-9)).max(0.0) } else { 0.0 };
+    let u1 = if s_lo > 0.0 { ((d_hi + reach) / s_lo * (1.0 + 1e-9)).min(1.0) } else { 1.0 };
     if u0 >= 1.0 || u1 < u0 {
         None
     } else {
@@ -50,17 +101,17 @@ fn u_range(a: &V, s: &HVec, w: &Bern, centre: &V, reach: f64) -> Option<(f64, f6
 }
 
 /// The cable part u ∈ [u0, u1] in homogeneous form relative to an origin O, in its own parameter
-/// v ∈ [0, 1] (u = u0 + (u1 − u0)·v): X(v) = w·(a − O) + u0·Ŝ + (u1 − u0)·v·Ŝ, so that the cable
-/// point is O + X/w, with the weight w.
+/// v ∈ [0, 1] (u = u0 + (u1 − u0)·v): X(v) = w·(a − O) + u0·Ŝ + (u1 − u0)·v·Ŝ (w·(a − O) being
+/// Â − w·O for a moving start), so that the cable point is O + X/w, with the weight w.
 struct CableLine {
     x: [VPoly; 3],
     w: VPoly,
 }
 
 impl CableLine {
-    fn new(a: &V, s: &HVec, w: &Bern, origin: &V, (u0, u1): (f64, f64)) -> CableLine {
-        let e = a - origin;
-        let x = [0, 1, 2].map(|i| VPoly::linear(w.scale(e[i]).add(&s[i].p.scale(u0)), s[i].p.scale(u1 - u0)));
+    fn new(a: &Start, s: &HVec, w: &Bern, origin: &V, (u0, u1): (f64, f64)) -> CableLine {
+        let e = a.offset(w, origin);
+        let x = [0, 1, 2].map(|i| VPoly::linear(e[i].add(&s[i].p.scale(u0)), s[i].p.scale(u1 - u0)));
         CableLine { x, w: VPoly::of(w.clone()) }
     }
 
@@ -100,7 +151,7 @@ fn slab(h: &VPoly, rho2: &VPoly, w: &VPoly, radius: f64, lo: f64, hi: f64) -> Cl
 /// The cable point within c of the circle of radius r about `axis` centred at `centre`:
 /// h² + (ρ − r)² < c² ⇔ W < 2rρ with W = h² + ρ² + r² − c², that is W < 0 or W² < 4r²ρ²
 /// (ρ ≥ 0). W < 0 needs c > r and is left out otherwise.
-fn torus(a: &V, s: &HVec, w: &Bern, centre: &V, axis: &V, r: f64, c: f64) -> Vec<Clause> {
+fn torus(a: &Start, s: &HVec, w: &Bern, centre: &V, axis: &V, r: f64, c: f64) -> Vec<Clause> {
     let Some(range) = u_range(a, s, w, centre, r + c) else {
         return vec![];
     };
@@ -121,20 +172,20 @@ fn torus(a: &V, s: &HVec, w: &Bern, centre: &V, axis: &V, r: f64, c: f64) -> Vec
 /// c = 0) from `from` to `to` with
 /// radius r.
 #[allow(clippy::too_many_arguments)]
-pub fn cylinder_near(a: &V, s: &HVec, w: &Bern, from: &V, to: &V, r: f64, c: f64, tol: f64) -> Partition {
-    exists(&|lo, hi| with_restricted(s, w, lo, hi, |s, w| cylinder_clauses(a, s, w, from, to, r, c)), tol)
+pub fn cylinder_near(a: &Start, s: &HVec, w: &Bern, from: &V, to: &V, r: f64, c: f64, tol: f64) -> Partition {
+    exists(&|lo, hi| with_restricted(a, s, w, lo, hi, |a, s, w| cylinder_clauses(a, s, w, from, to, r, c)), tol)
 }
 
 /// The inputs restricted to λ ∈ [lo, hi] (re-parametrised to [0, 1]), passed to `f`.
-fn with_restricted<T>(s: &HVec, w: &Bern, lo: f64, hi: f64, f: impl FnOnce(&HVec, &Bern) -> T) -> T {
+fn with_restricted<T>(a: &Start, s: &HVec, w: &Bern, lo: f64, hi: f64, f: impl FnOnce(&Start, &HVec, &Bern) -> T) -> T {
     if lo == 0.0 && hi == 1.0 {
-        return f(s, w);
+        return f(a, s, w);
     }
     let rs: HVec = [0, 1, 2].map(|i| H { p: s[i].p.restrict(lo, hi), k: s[i].k });
-    f(&rs, &w.restrict(lo, hi))
+    f(&a.restrict(lo, hi), &rs, &w.restrict(lo, hi))
 }
 
-fn cylinder_clauses(a: &V, s: &HVec, w: &Bern, from: &V, to: &V, r: f64, c: f64) -> Vec<Clause> {
+fn cylinder_clauses(a: &Start, s: &HVec, w: &Bern, from: &V, to: &V, r: f64, c: f64) -> Vec<Clause> {
     let len = (to - from).norm();
     let axis = (to - from) / len;
     let mid = 0.5 * (from + to);
@@ -160,12 +211,12 @@ fn cylinder_clauses(a: &V, s: &HVec, w: &Bern, from: &V, to: &V, r: f64, c: f64)
 /// n = (−sin α, cos α), the lateral piece is 0 < (h, ρ)·d < H/cos α, (h, ρ)·n < c, h < H; each
 /// linear condition on ρ is squared with the sign of its other side.
 #[allow(clippy::too_many_arguments)]
-pub fn cone_near(a: &V, s: &HVec, w: &Bern, apex: &V, axis: &V, half_angle: f64, height: f64, c: f64, tol: f64) -> Partition {
-    exists(&|lo, hi| with_restricted(s, w, lo, hi, |s, w| cone_clauses(a, s, w, apex, axis, half_angle, height, c)), tol)
+pub fn cone_near(a: &Start, s: &HVec, w: &Bern, apex: &V, axis: &V, half_angle: f64, height: f64, c: f64, tol: f64) -> Partition {
+    exists(&|lo, hi| with_restricted(a, s, w, lo, hi, |a, s, w| cone_clauses(a, s, w, apex, axis, half_angle, height, c)), tol)
 }
 
 #[allow(clippy::too_many_arguments)]
-fn cone_clauses(a: &V, s: &HVec, w: &Bern, apex: &V, axis: &V, half_angle: f64, height: f64, c: f64) -> Vec<Clause> {
+fn cone_clauses(a: &Start, s: &HVec, w: &Bern, apex: &V, axis: &V, half_angle: f64, height: f64, c: f64) -> Vec<Clause> {
     let (sa, ca) = half_angle.sin_cos();
     let radius = height * half_angle.tan();
     let slant = height / ca;
@@ -207,12 +258,12 @@ fn cone_clauses(a: &V, s: &HVec, w: &Bern, apex: &V, axis: &V, half_angle: f64, 
 /// quadratic α u² + β u + γ = (q − c²)·(positive factor) non-negative on u ∈ [0, 1]: γ ≥ 0,
 /// α + β + γ ≥ 0, and the vertex outside (0, 1) or 4αγ − β² ≥ 0. With t = v/(1 − v) and the
 /// positive factor (1 − v)⁴ Π(1 + m_i t), α, β and γ are polynomials in (v, λ).
-pub fn ellipsoid_clear(a: &V, s: &HVec, w: &Bern, frame: &EllipsoidFrame, c: f64, tol: f64) -> Partition {
-    exists(&|lo, hi| with_restricted(s, w, lo, hi, |s, w| ellipsoid_clauses(a, s, w, frame, c)), tol)
+pub fn ellipsoid_clear(a: &Start, s: &HVec, w: &Bern, frame: &EllipsoidFrame, c: f64, tol: f64) -> Partition {
+    exists(&|lo, hi| with_restricted(a, s, w, lo, hi, |a, s, w| ellipsoid_clauses(a, s, w, frame, c)), tol)
 }
 
 /// The clauses of [`ellipsoid_clear`]; one always-true clause when no part of the cable comes near.
-fn ellipsoid_clauses(a: &V, s: &HVec, w: &Bern, frame: &EllipsoidFrame, c: f64) -> Vec<Clause> {
+fn ellipsoid_clauses(a: &Start, s: &HVec, w: &Bern, frame: &EllipsoidFrame, c: f64) -> Vec<Clause> {
     let m = frame.m;
     let reach = 1.0 / m.min().max(f64::MIN_POSITIVE).sqrt() + c;
     let Some(range) = u_range(a, s, w, &frame.center, reach) else {

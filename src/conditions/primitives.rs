@@ -238,40 +238,50 @@ pub struct ConeSolid {
 /// Where the segment a + λ·s meets the solid cone. Exact: with g(λ) = (x−A)·u and
 /// f(λ) = g² − cos²α |x−A|² (a quadratic), the segment meets the cone iff the maximum of f over
 /// the λ ∈ [0, 1] with 0 ≤ g ≤ H is positive; that maximum is at λ = 0, λ = 1, where g = H, or
-/// at the vertex of f (f ≤ 0 where g = 0).
-pub fn segment_cone(alg: &mut Alg, a: &Vector3<f64>, s: &HVec, cone: &ConeSolid, tol: f64) -> Partition {
-    let e = a - cone.apex;
-    let (g0, hgt, k2) = (e.dot(&cone.axis), cone.height, cone.cos2);
-    let f0 = g0 * g0 - k2 * e.norm_squared();
-    let g1 = alg.dot(&hvec_const(&cone.axis), s);
-    let es = alg.dot(&hvec_const(&e), s);
+/// at the vertex of f (f ≤ 0 where g = 0). The offset e = a − A of the start is fractions like
+/// `s` (constant for a fixed start, moving for a segment that starts on a link), and so are the
+/// quadratic's coefficients f0, f1, f2 and g's, g0 and g1.
+pub fn segment_cone(alg: &mut Alg, e: &HVec, s: &HVec, cone: &ConeSolid, tol: f64) -> Partition {
+    let (hgt, k2) = (cone.height, cone.cos2);
+    let axis = hvec_const(&cone.axis);
+    let g0 = alg.dot(&axis, e);
+    let ee = alg.dot(e, e);
+    let f0 = alg.sub(&g0.mul(&g0), &ee.scale(k2));
+    let g1 = alg.dot(&axis, s);
+    let es = alg.dot(e, s);
     let ss = alg.dot(s, s);
-    let f1 = alg.sub(&g1.scale(2.0 * g0), &es.scale(2.0 * k2));
+    let f1 = alg.sub(&g1.mul(&g0).scale(2.0), &es.scale(2.0 * k2));
     let f2 = alg.sub(&g1.mul(&g1), &ss.scale(k2));
-    let d = hgt - g0;
-    let start_inside = f0 > 0.0 && g0 > 0.0 && d > 0.0;
+    let d = alg.sub(&H::constant(hgt), &g0);
+    let fixed = [&f0, &g0, &d].iter().all(|h| h.k == 0 && h.p.c.len() == 1);
+    let start_inside = if fixed {
+        let near = f0.p.c[0] > 0.0 && g0.p.c[0] > 0.0 && d.p.c[0] > 0.0;
+        Partition::constant(if near { Truth::True } else { Truth::False })
+    } else {
+        all_of!(tol; f0.clone() => GT, g0.clone() => GT, d.clone() => GT)
+    };
     any_of!(
-        Partition::constant(if start_inside { Truth::True } else { Truth::False }),
+        start_inside,
         all_of!(tol;
-            { let t = alg.add(&f1, &f2); alg.add(&t, &H::constant(f0)) } => GT,
-            alg.add(&g1, &H::constant(g0)) => GT,
-            alg.sub(&H::constant(d), &g1) => GT,
+            { let t = alg.add(&f1, &f2); alg.add(&t, &f0) } => GT,
+            alg.add(&g1, &g0) => GT,
+            alg.sub(&d, &g1) => GT,
         ),
         all_of!(tol;
-            g1.scale(d) => GT,
-            alg.sub(&g1.mul(&g1), &g1.scale(d)) => GT,
+            g1.mul(&d) => GT,
+            { let gd = g1.mul(&d); alg.sub(&g1.mul(&g1), &gd) } => GT,
             {
-                let t = alg.add(&g1.mul(&g1).scale(f0), &f1.mul(&g1).scale(d));
-                alg.add(&t, &f2.scale(d * d))
+                let t = alg.add(&g1.mul(&g1).mul(&f0), &f1.mul(&g1).mul(&d));
+                alg.add(&t, &f2.mul(&d).mul(&d))
             } => GT,
         ),
         all_of!(tol;
             f2.clone() => LT,
             f1.clone() => GT,
             alg.add(&f1, &f2.scale(2.0)) => LT,
-            alg.sub(&f2.scale(4.0 * f0), &f1.mul(&f1)) => LT,
-            alg.sub(&f2.scale(2.0 * g0), &f1.mul(&g1)) => LT,
-            alg.sub(&f2.scale(2.0 * (g0 - hgt)), &f1.mul(&g1)) => GT,
+            alg.sub(&f2.mul(&f0).scale(4.0), &f1.mul(&f1)) => LT,
+            alg.sub(&f2.mul(&g0).scale(2.0), &f1.mul(&g1)) => LT,
+            { let below = alg.sub(&g0, &H::constant(hgt)); alg.sub(&f2.mul(&below).scale(2.0), &f1.mul(&g1)) } => GT,
         ),
     )
 }
