@@ -5,7 +5,7 @@
 #[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
-use cablenav::conditions::{for_scenario, Kind};
+use cablenav::conditions::{for_scenario, Condition, Kind};
 use cablenav::lattice::{point_grid, Lattice, LatticeSpec};
 use cablenav::model::Coord;
 use cablenav::query::cables::cables_at_config;
@@ -290,33 +290,64 @@ fn routed_chain_rays_agree_condition_by_condition() {
     while rays < wanted {
         let (value, q) = random_routed_chain(&mut rng);
         let s = Scenario::from_json(&value.to_string()).unwrap_or_else(|e| panic!("generator made an invalid chain: {e}\n{value}"));
-        let chain = s.robot.chain.as_ref().unwrap();
-        let i = rng.int(0, chain.dof() - 1);
-        let coord = Coord::Joint { index: i as u8, angle: chain.is_angle(i) };
-        let width = if coord.is_angle() { rng.range(0.3, 2.5) } else { rng.range(0.1, 0.8) };
-        let lo = q[i] - rng.range(0.0, width);
+        let ray = random_ray(&mut rng, &s, &q, 2.5, 0.8);
         rays += 1;
         for condition in for_scenario(&s) {
-            let label = condition.label();
-            let sec = ray_sections(&s, std::slice::from_ref(&condition), &q, coord, lo, lo + width);
-            mixed += usize::from(!sec.feasible.is_empty() && !sec.infeasible.is_empty());
-            uncertain += sec.uncertain.iter().map(|u| u[1] - u[0]).sum::<f64>() / width;
+            let got = ray_agrees(&s, &condition, &q, ray, &format!("ray {rays}\n{value}"));
+            mixed += usize::from(got.both);
+            uncertain += got.undecided;
             measured += 1.0;
-            let margin = 1e-6 * width;
-            for k in 0..=60 {
-                let v = lo + width * k as f64 / 60.0;
-                let mut at = q.clone();
-                at[i] = v;
-                let claim = if inside(&sec.feasible, v, margin) { true } else if inside(&sec.infeasible, v, margin) { false } else { continue };
-                let holds = !condition.check(&cables_at_config(&s.robot, &at)).violated;
-                assert_eq!(holds, claim, "ray {rays}, {label} at {v}: reported {claim}\n{value}\nq = {q:?}");
-                judged += 1;
-                if claim { feasible_seen += 1 } else { infeasible_seen += 1 }
-            }
+            (judged, feasible_seen, infeasible_seen) = (judged + got.held + got.failed, feasible_seen + got.held, infeasible_seen + got.failed);
         }
     }
     assert!(judged > wanted * 1000 && feasible_seen > wanted * 200 && infeasible_seen > wanted * 50 && mixed > wanted, "{judged} samples judged: {feasible_seen} hold, {infeasible_seen} fail; {mixed} sections with both");
     assert!(uncertain <= 0.01 * measured, "{uncertain} of {measured} condition-rays undecided");
+}
+
+/// A random joint ray of `s`'s chain through `q`: the coordinate varied, its [`Coord`], and the
+/// range [lo, lo + width] around q's value (an angle's up to `turn` wide, a length's up to
+/// `slide`).
+fn random_ray(rng: &mut Rng, s: &Scenario, q: &[f64], turn: f64, slide: f64) -> (usize, Coord, f64, f64) {
+    let chain = s.robot.chain.as_ref().unwrap();
+    let i = rng.int(0, chain.dof() - 1);
+    let coord = Coord::Joint { index: i as u8, angle: chain.is_angle(i) };
+    let width = if coord.is_angle() { rng.range(0.3, turn) } else { rng.range(0.1, slide) };
+    (i, coord, q[i] - rng.range(0.0, width), width)
+}
+
+/// What [`ray_agrees`] saw of one condition along one ray.
+struct RayCheck {
+    /// The undecided share of the ray.
+    undecided: f64,
+    /// Whether both verdicts were reported.
+    both: bool,
+    /// Samples inside feasible and infeasible sections.
+    held: usize,
+    failed: usize,
+}
+
+/// The sections `condition` reports along the joint ray `(i, coord, lo, width)` from `q`, held
+/// to the condition's own check at 61 samples (those within 1e-6 of the ray's width of a
+/// section's end left out); `case` says which case failed.
+fn ray_agrees(s: &Scenario, condition: &Box<dyn Condition>, q: &[f64], (i, coord, lo, width): (usize, Coord, f64, f64), case: &str) -> RayCheck {
+    let sec = ray_sections(s, std::slice::from_ref(condition), q, coord, lo, lo + width);
+    let mut out = RayCheck {
+        undecided: sec.uncertain.iter().map(|u| u[1] - u[0]).sum::<f64>() / width,
+        both: !sec.feasible.is_empty() && !sec.infeasible.is_empty(),
+        held: 0,
+        failed: 0,
+    };
+    let margin = 1e-6 * width;
+    for k in 0..=60 {
+        let v = lo + width * k as f64 / 60.0;
+        let mut at = q.to_vec();
+        at[i] = v;
+        let claim = if inside(&sec.feasible, v, margin) { true } else if inside(&sec.infeasible, v, margin) { false } else { continue };
+        let holds = !condition.check(&cables_at_config(&s.robot, &at)).violated;
+        assert_eq!(holds, claim, "{}: reported {claim} at {v}, {case}\nq = {q:?}", condition.label());
+        if claim { out.held += 1 } else { out.failed += 1 }
+    }
+    out
 }
 
 /// An obstacle of kind `kind` (box, mesh, sphere, ellipsoid, cylinder, cone) named "block",
@@ -368,26 +399,13 @@ fn segments_between_links_against_every_shape() {
         let clearance = if rays % 3 == 0 { 0.0 } else { rng.range(0.005, 0.05) };
         value["clearance"]["cable_obstacle"] = json!(clearance);
         let s = Scenario::from_json(&value.to_string()).unwrap_or_else(|e| panic!("{e}\n{value}"));
-        let chain = s.robot.chain.as_ref().unwrap();
-        let i = rng.int(0, chain.dof() - 1);
-        let coord = Coord::Joint { index: i as u8, angle: chain.is_angle(i) };
-        let width = if coord.is_angle() { rng.range(0.3, 2.0) } else { rng.range(0.1, 0.6) };
-        let lo = q[i] - rng.range(0.0, width);
+        let ray = random_ray(&mut rng, &s, &q, 2.0, 0.6);
         rays += 1;
         for condition in for_scenario(&s).into_iter().filter(|c| c.label().ends_with(" - block")) {
-            let sec = ray_sections(&s, std::slice::from_ref(&condition), &q, coord, lo, lo + width);
-            uncertain += sec.uncertain.iter().map(|u| u[1] - u[0]).sum::<f64>() / width;
-            by_shape[kind] += usize::from(!sec.feasible.is_empty() && !sec.infeasible.is_empty());
-            let margin = 1e-6 * width;
-            for k in 0..=60 {
-                let v = lo + width * k as f64 / 60.0;
-                let mut at = q.clone();
-                at[i] = v;
-                let claim = if inside(&sec.feasible, v, margin) { true } else if inside(&sec.infeasible, v, margin) { false } else { continue };
-                let holds = !condition.check(&cables_at_config(&s.robot, &at)).violated;
-                assert_eq!(holds, claim, "ray {rays}, {} at {v}: reported {claim}\n{value}\nq = {q:?}", condition.label());
-                judged += 1;
-            }
+            let got = ray_agrees(&s, &condition, &q, ray, &format!("ray {rays}\n{value}"));
+            uncertain += got.undecided;
+            by_shape[kind] += usize::from(got.both);
+            judged += got.held + got.failed;
         }
     }
     // every shape is met and missed along its rays (box, mesh, sphere, ellipsoid, cylinder, cone)

@@ -81,17 +81,17 @@ pub fn forceable_coordinates(doc: &Value) -> Vec<(String, &'static str)> {
         .collect()
 }
 
-/// Sets the force from outside on the coordinate `name` (`None`: removes it, and `joint_forces`
-/// once it is empty), raising the file's format to 6 when writing.
-pub fn set_joint_force(doc: &mut Value, name: &str, value: Option<f64>) {
+/// Sets a force from outside on a coordinate, at `path` (`joint_forces.NAME`; `None`: removes
+/// it, and `joint_forces` once it is empty), raising the file's format to 6 when writing.
+pub fn set_joint_force(doc: &mut Value, path: &Path, value: Option<f64>) {
     let forces = Path::of(&["joint_forces"]);
     match value {
         Some(x) => {
-            set(doc, &forces.k(name), number(x));
+            set(doc, path, number(x));
             super::require_format(doc, cablenav::scenario::FORMAT_6);
         }
         None => {
-            remove(doc, &forces.k(name));
+            remove(doc, path);
             if matches!(get(doc, &forces), Some(Value::Object(m)) if m.is_empty()) {
                 remove(doc, &forces);
             }
@@ -501,7 +501,7 @@ mod tests {
     fn forces_on_joints_reach_the_core_and_follow_a_rename() {
         let mut d = arm();
         assert_eq!(forceable_coordinates(&d), [("theta".to_string(), "N·m")], "not the spherical shoulder's Euler angles");
-        set_joint_force(&mut d, "theta", Some(0.5));
+        set_joint_force(&mut d, &Path::of(&["joint_forces", "theta"]), Some(0.5));
         assert_eq!(d["format"], json!(cablenav::scenario::FORMAT_6));
         let s = valid(&d);
         let chain = s.robot.chain.as_ref().unwrap();
@@ -509,7 +509,7 @@ mod tests {
         rename_coordinate(&mut d, 1, 0, "elbow").unwrap();
         assert_eq!(d["joint_forces"], json!({"elbow": 0.5}));
         valid(&d);
-        set_joint_force(&mut d, "elbow", None);
+        set_joint_force(&mut d, &Path::of(&["joint_forces", "elbow"]), None);
         assert!(d.get("joint_forces").is_none(), "{d}");
         assert!(!valid(&d).robot.chain.as_ref().unwrap().is_loaded());
     }

@@ -98,7 +98,9 @@ pub fn NumInput(
 }
 
 /// A number at `path` of the scenario; a `timed` one is a format-4 field (mass, winch limit,
-/// duration): writing it raises the file's format, and only positive numbers are taken.
+/// duration): writing it raises the file's format, and only positive numbers are taken. `write`,
+/// when given, writes each value (`None`: an emptied field) instead of setting or removing it at
+/// `path` (a field of a newer format, say).
 #[component]
 pub fn NumField(
     ed: Ed,
@@ -108,16 +110,18 @@ pub fn NumField(
     #[prop(optional)] optional: bool,
     #[prop(optional)] compact: bool,
     #[prop(optional)] timed: bool,
+    #[prop(optional)] write: Option<fn(&mut serde_json::Value, &Path, Option<f64>)>,
 ) -> impl IntoView {
     let (p1, p2, p3, p4) = (path.clone(), path.clone(), path.clone(), path);
     let value = Memo::new(move |_| ed.num(&p1));
+    let write = write.or(timed.then_some(el::set_timed_number as fn(&mut serde_json::Value, &Path, Option<f64>)));
     let on_value = Callback::new(move |v: Option<f64>| {
-        ed.edit(|d| match v {
-            Some(x) if timed => el::set_timed_number(d, &p2, Some(x)),
-            Some(x) => {
+        ed.edit(|d| match (write, v) {
+            (Some(write), v) => write(d, &p2, v),
+            (None, Some(x)) => {
                 el::set(d, &p2, el::number(x));
             }
-            None => {
+            (None, None) => {
                 el::remove(d, &p2);
             }
         })

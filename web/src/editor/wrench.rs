@@ -122,23 +122,7 @@ pub fn JointForcesEditor(ed: Ed) -> impl IntoView {
         coords
             .get()
             .into_iter()
-            .map(|(name, unit)| {
-                let path = Path::of(&["joint_forces"]).k(&name);
-                let (p1, p2, p3) = (path.clone(), path.clone(), path);
-                let label = name.clone();
-                let on_value = Callback::new(move |v: Option<f64>| ed.edit(|d| el::set_joint_force(d, &name, v)));
-                view! {
-                    <NumInput
-                        value=Signal::derive(move || ed.num(&p1))
-                        on_value
-                        label
-                        unit
-                        optional=true
-                        field=Signal::derive(move || ed.core_path(&p2))
-                        error=Signal::derive(move || ed.error_at(&p3, true))
-                    />
-                }
-            })
+            .map(|(name, unit)| view! { <NumField ed path=Path::of(&["joint_forces"]).k(&name) label=name unit optional=true write=el::set_joint_force /> })
             .collect_view()
     };
     view! {
