@@ -187,6 +187,58 @@ fn closure_by_lengths(s: &Scenario, q: &[f64]) -> Option<bool> {
     (t.abs() >= 1e-5 && sv.min() >= 1e-4 * sv.max()).then_some(t > 0.0)
 }
 
+/// Every model of CASPR's multi-link library with its closure asked for (`robot.closure` true;
+/// the import leaves it out of the weighed arms): per configuration ([`chains::library_config`]),
+/// the condition's verdict equals the closure of the cable-length Jacobian (central differences of
+/// the whole routed lengths, apart from the core's joint rows): its columns positively span the
+/// joint space — a positive combination of them vanishes ([`closure_margin`]) and their rank is
+/// the number of joint coordinates, which a coordinate no cable reaches (a zero row) denies. On
+/// 8S_neck this once failed in the reference's own program: the simplex declared a ray that was
+/// the rounding of the free margin's two halves (`query::lp`, `settle`).
+#[test]
+fn caspr_models_closure_matches_the_length_jacobian() {
+    let models = [
+        ("BMArm", ARM_BODIES, ARM_CABLES),
+        ("BMArm_X4_2", X4_BODIES, X4_CABLES),
+        ("Spatial_Tree", model!("Spatial_Tree/Spatial_Tree_bodies.xml"), model!("Spatial_Tree/Spatial_Tree_cables.xml")),
+        ("CAREX", model!("CAREX/CAREX_bodies.xml"), model!("CAREX/CAREX_cables.xml")),
+        ("4U_modular_units_arm", model!("4U_modular_units_arm/4U_modular_units_arm_bodies.xml"), model!("4U_modular_units_arm/4U_modular_units_arm_cables.xml")),
+        ("RoboyLeftArm", model!("RoboyLeftArm/RoboyLeftArm_bodies.xml"), model!("RoboyLeftArm/RoboyLeftArm_cables.xml")),
+        ("BioBiped_one_leg", model!("BioBiped_one_leg/BioBiped_one_leg_bodies.xml"), model!("BioBiped_one_leg/BioBiped_one_leg_cables.xml")),
+        ("8S_neck", model!("8S_neck/8S_neck_bodies.xml"), model!("8S_neck/8S_neck_cables.xml")),
+        ("SJTUSnake", model!("SJTUSnake/SJTUSnake_bodies.xml"), model!("SJTUSnake/SJTUSnake_cables.xml")),
+    ];
+    let per_model = support::env_usize("CABLENAV_CLOSURE_CONFIGS", if cfg!(target_arch = "wasm32") { 200 } else { 10_000 });
+    let mut rng = Rng::new(61);
+    for (name, bodies, cables) in models {
+        let mut v: Value = serde_json::from_str(&to_json(name, bodies, cables).unwrap_or_else(|e| panic!("{name}: {e}")).json).unwrap();
+        v["robot"]["closure"] = json!(true);
+        let s = Scenario::from_json(&v.to_string()).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let condition = for_scenario(&s).into_iter().find(|c| c.label() == "wrench closure").expect("closure is asked for");
+        let mut judged = 0;
+        for _ in 0..per_model {
+            let q = chains::library_config(&mut rng, &s);
+            let jac = length_jacobian(&s, &q);
+            let sv = jac.clone().svd(false, false).singular_values;
+            let t = closure_margin(&jac);
+            // the differences err by about 1e-10 (h = 1e-6): a margin below 1e-7 is no strictly
+            // positive combination (CAREX's antagonist pairs balance each other with the others
+            // at zero, t = 0 exactly), one from 1e-7 to 1e-5 is too close to judge
+            let reference = if sv.min() < 1e-9 * sv.max() || t < 1e-7 {
+                false // a coordinate no cable reaches, dependent rows, or no positive combination
+            } else if t < 1e-5 || sv.min() < 1e-4 * sv.max() {
+                continue;
+            } else {
+                true
+            };
+            let holds = !condition.check(&cables_at_config(&s.robot, &q)).violated;
+            assert_eq!(holds, reference, "{name} at {q:?}: closure margin {t}, singular values {:.3e} to {:.3e}", sv.min(), sv.max());
+            judged += 1;
+        }
+        assert!(judged * 10 > per_model * 9, "{name}: {judged} of {per_model} judged");
+    }
+}
+
 /// Chains past the facets' reach (C(m, n − 1) > 252 sets of columns: 4 to 12 joint coordinates,
 /// 11 to 20 cables): joint-space closure by the linear programs' certificates, along random joint
 /// rays against the length Jacobian's closure at dense samples.

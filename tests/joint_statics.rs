@@ -364,20 +364,7 @@ fn caspr_models_statics_match_virtual_work() {
         let condition = statics(&s);
         let (mut judged, mut held) = (0, 0);
         for _ in 0..per_model {
-            // within each joint's range; a range CASPR pins to one value on a link the cables
-            // pull (Spatial_Tree's y, z and angles: a model for x alone, singular there by
-            // symmetry) is opened around it, ±1 m or ±0.05 rad; a link no cable pulls stays
-            // where it is pinned (the tree stands upright: tilted, nothing would hold it)
-            let q: Vec<f64> = chain
-                .coords()
-                .enumerate()
-                .map(|(i, (l, _, c))| {
-                    let open = if chain.is_angle(i) { 0.05 } else { 1.0 };
-                    let pulled = s.robot.cables.iter().any(|cable| cable.link == l);
-                    let [lo, hi] = if c.range[1] > c.range[0] || !pulled { c.range } else { [c.range[0] - open, c.range[0] + open] };
-                    rng.range(lo, hi)
-                })
-                .collect();
+            let q = chains::library_config(&mut rng, &s);
             let Some(reference) = reference_margin_each(&s, &q, &lo, &hi) else { continue };
             let check = condition.check(&cables_at_config(&s.robot, &q));
             assert_eq!(!check.violated, reference > 0.0, "{name} at {q:?}: margin {reference} by virtual work, {:?} by the condition", check.distance);

@@ -179,19 +179,24 @@ impl Tableau {
     }
 
     /// Ends a phase: the simplex over the columns `< allowed`, then the tableau rebuilt from
-    /// `system` and checked — a basic variable below the tolerance's negative is restored by dual
-    /// pivots, a reduced cost that still improves resumes the simplex — a few rounds. The basic
+    /// `system` and checked — a ray the simplex found must still be one, a basic variable below
+    /// the tolerance's negative is restored by dual pivots, a reduced cost that still improves
+    /// resumes the simplex — a few rounds. The basic
     /// variables are then those of B⁻¹b for the final basis, to rounding (once the tableau's own,
     /// 8S_neck's balance was off by 3e-4).
     fn settle(&mut self, allowed: usize, system: &DMatrix<f64>, cost: &[f64]) -> Phase {
         for _ in 0..4 {
-            if !self.optimise(allowed) {
-                return Phase::Unbounded;
-            }
+            let bounded = self.optimise(allowed);
             if !self.refactor(system, cost) {
                 return Phase::Unsettled;
             }
             let obj = self.rows();
+            // a ray found on the running objective row may be its rounding (a free variable's two
+            // halves: one basic, the other's reduced cost, exactly 0, drifted past the tolerance):
+            // unbounded only if the rebuilt row still has one
+            if !bounded && (0..allowed).any(|j| self.at(obj, j) < -self.dual_eps && matches!(self.leaving(j, allowed, false), Leaving::Unbounded)) {
+                return Phase::Unbounded;
+            }
             let improving = |t: &Tableau| (0..allowed).any(|j| t.at(obj, j) < -t.dual_eps);
             if (0..obj).all(|r| self.at(r, self.cols()) >= -self.eps) && !improving(self) {
                 return Phase::Optimal;

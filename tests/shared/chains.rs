@@ -176,3 +176,23 @@ pub fn cable_lengths(s: &cablenav::Scenario, q: &[f64]) -> Vec<f64> {
     let world = |a: &cablenav::model::Anchor| a.link.map_or(a.point, |l| frames[l].0 + frames[l].1 * a.point);
     s.robot.cables.iter().map(|c| c.anchors().windows(2).map(|w| (world(&w[1]) - world(&w[0])).norm()).sum()).collect()
 }
+
+/// A random configuration of an imported library model `s`: each coordinate uniformly within its
+/// joint's range, a range CASPR pins to one value on a link the cables pull (Spatial_Tree's y, z
+/// and angles: a model for x alone, singular there by symmetry) opened around it, ±1 m or
+/// ±0.05 rad; a link no cable pulls stays where it is pinned (the tree stands upright: tilted,
+/// nothing would hold it).
+#[allow(dead_code)] // not every test file that includes this module samples the library
+pub fn library_config(rng: &mut Rng, s: &cablenav::Scenario) -> Vec<f64> {
+    let chain = s.robot.chain.as_ref().expect("a multi-link model");
+    chain
+        .coords()
+        .enumerate()
+        .map(|(i, (l, _, c))| {
+            let open = if chain.is_angle(i) { 0.05 } else { 1.0 };
+            let pulled = s.robot.cables.iter().any(|cable| cable.link == l);
+            let [lo, hi] = if c.range[1] > c.range[0] || !pulled { c.range } else { [c.range[0] - open, c.range[0] + open] };
+            rng.range(lo, hi)
+        })
+        .collect()
+}
