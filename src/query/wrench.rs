@@ -117,9 +117,14 @@ pub fn positively_spans(j: &DMatrix<f64>) -> bool {
     full_rank
 }
 
-/// C(m, k): how many k-element subsets 0..m has.
+/// C(m, k): how many k-element subsets 0..m has, `usize::MAX` where it does not fit (the callers
+/// compare it with a cap). Each step's product is taken in 128 bits: 8S_neck's C(76, 23) fits,
+/// but its product on the way did not.
 pub fn binomial(m: usize, k: usize) -> usize {
-    (0..k.min(m + 1)).fold(1, |c, i| c * (m - i) / (i + 1))
+    if k > m {
+        return 0;
+    }
+    (0..k).try_fold(1usize, |c, i| usize::try_from(c as u128 * (m - i) as u128 / (i + 1) as u128).ok()).unwrap_or(usize::MAX)
 }
 
 /// The k-element subsets of 0..m in lexicographic order.
@@ -431,6 +436,15 @@ pub fn facet_normal(j: &DMatrix<f64>, s: &[usize]) -> DVector<f64> {
 #[cfg(test)]
 mod separating_tests {
     use super::*;
+
+    /// Binomials exact where they fit (against Pascal's rule), saturated where they do not.
+    #[test]
+    fn binomials_are_exact_or_saturated() {
+        assert_eq!((binomial(10, 5), binomial(5, 7), binomial(7, 0)), (252, 0, 1));
+        assert_eq!(binomial(76, 23), 17_061_084_191_613_232_800, "8S_neck: 76 cables, 23 of its 24 rows");
+        assert_eq!(binomial(76, 23), binomial(75, 22) + binomial(75, 23));
+        assert_eq!(binomial(128, 64), usize::MAX);
+    }
 
     /// Random 6×m matrices and loads: a direction is found exactly when the static margin is
     /// negative, and it separates: y·w0 above the zonotope's support.
