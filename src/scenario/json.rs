@@ -1,7 +1,8 @@
 //! The raw scenario JSON as serde reads it, before validation.
 //!
-//! Every struct denies unknown fields, and the file is read through `serde_path_to_error`, so a
-//! mistake is reported at its JSON path (`robot.cables[2].base: expected 3 numbers, got 2`).
+//! Every struct denies unknown fields, and a mistake is reported at its JSON path
+//! (`robot.cables[2].base: expected 3 numbers, got 2`), found from the error's position
+//! ([`super::json_path`]).
 //! Shapes that JSON alone cannot say (which obstacle fields go with which `type`, "exactly one of"
 //! choices, sizes of arrays that depend on other arrays) are checked in `validate`.
 //!
@@ -14,6 +15,7 @@ use serde::Deserialize;
 use std::fmt;
 use std::marker::PhantomData;
 
+use super::json_path::{offset, path_at, Anchor};
 use crate::error::{Error, Result};
 
 /// The scenario format version 1, which every writer uses unless it needs version 2.
@@ -606,12 +608,20 @@ struct FormatOnly {
     format: Option<serde_json::Value>,
 }
 
-/// Converts a serde error (with its path) into the crate's error.
-fn convert(err: serde_path_to_error::Error<serde_json::Error>) -> Error {
-    let path = err.path().to_string();
-    let mut path = if path == "." { String::new() } else { path };
-    let inner = err.into_inner();
+/// Converts a serde error into the crate's error, naming the JSON path of what it is about
+/// ([`super::json_path`]).
+fn convert(text: &str, inner: serde_json::Error) -> Error {
     let message = inner.to_string();
+    let bare = message.split(" at line ").next().unwrap_or_default();
+    let anchor = match inner.classify() {
+        serde_json::error::Category::Syntax if bare.starts_with("number out of range") => Anchor::Ends,
+        serde_json::error::Category::Syntax | serde_json::error::Category::Eof => Anchor::Broken,
+        // what a container's own visitor says: a missing field, a wrong length (`Fixed`)
+        _ if bare.starts_with("missing field") || bare.starts_with("expected ") => Anchor::Inside,
+        _ if bare.starts_with("invalid type: map") || bare.starts_with("invalid type: sequence") => Anchor::Starts,
+        _ => Anchor::Ends,
+    };
+    let mut path = path_at(text, offset(text, inner.line(), inner.column()), anchor);
     let reason = match inner.classify() {
         // `1e999` is a syntax error to serde_json, but the JSON is well formed: say what it is.
         serde_json::error::Category::Syntax if message.starts_with("number out of range") => {
@@ -619,7 +629,7 @@ fn convert(err: serde_path_to_error::Error<serde_json::Error>) -> Error {
         }
         serde_json::error::Category::Syntax => format!("malformed JSON: {inner}"),
         serde_json::error::Category::Eof => format!("truncated JSON: {inner}"),
-        _ => inner.to_string(),
+        _ => message,
     };
     // serde reports a missing field at the object that lacks it; name the field itself.
     if let Some(rest) = reason.strip_prefix("missing field `") {
@@ -633,7 +643,7 @@ fn convert(err: serde_path_to_error::Error<serde_json::Error>) -> Error {
 
 fn read<'a, T: Deserialize<'a>>(text: &'a str) -> Result<T> {
     let mut de = serde_json::Deserializer::from_str(text);
-    let value = serde_path_to_error::deserialize(&mut de).map_err(convert)?;
+    let value = T::deserialize(&mut de).map_err(|e| convert(text, e))?;
     de.end().map_err(|e| Error::new("", format!("malformed JSON: {e}")))?;
     Ok(value)
 }

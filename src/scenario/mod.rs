@@ -3,6 +3,7 @@
 
 pub mod caspr;
 pub mod json;
+mod json_path;
 pub mod share_url;
 pub mod validate;
 
