@@ -45,6 +45,7 @@ pub mod conditions;
 pub mod error;
 pub mod lattice;
 pub mod model;
+pub mod order;
 pub mod parallel;
 pub mod plan;
 pub mod png;

@@ -66,7 +66,7 @@ pub(crate) fn minors(rows: &[Vec<Bern>], cols: &[usize]) -> Vec<Bern> {
     det[0] = Some(Bern::constant(1.0));
     // Subsets in order of size: those of size k use the first k of `cols`.
     let mut masks: Vec<u32> = (1..=full).filter(|m| m.count_ones() < n as u32).collect();
-    masks.sort_by_key(|m| m.count_ones());
+    crate::order::sort_by_key(&mut masks, |m| f64::from(m.count_ones()));
     for mask in masks {
         let k = mask.count_ones() as usize;
         let c = cols[k - 1];

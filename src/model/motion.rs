@@ -220,7 +220,7 @@ fn slerp_cuts(theta: f64) -> Vec<f64> {
             j += 1;
         }
     }
-    cuts.sort_by(f64::total_cmp);
+    crate::order::sort_by_key(&mut cuts, |x| *x);
     cuts.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
     cuts
 }

@@ -251,7 +251,7 @@ impl Tableau {
         for _ in 0..10_000 {
             let mut improving: Vec<usize> = (0..allowed).filter(|&j| self.at(obj, j) < -self.dual_eps).collect();
             if !bland {
-                improving.sort_by(|&i, &j| self.at(obj, i).total_cmp(&self.at(obj, j)));
+                crate::order::sort_by_key(&mut improving, |&i| self.at(obj, i));
             }
             let mut step = None;
             for &c in &improving {

@@ -65,7 +65,7 @@ fn pieces_on(conditions: &[Box<dyn Condition>], sweeps: &mut [Sweep], settle: bo
     // the cheap conditions first (a stable sort keeps file order within each cost): where they
     // already violate, the costlier ones may stay undecided
     let mut order: Vec<usize> = (0..conditions.len()).collect();
-    order.sort_by_key(|&k| conditions[k].cost());
+    crate::order::sort_by_key(&mut order, |&k| f64::from(conditions[k].cost() as u8));
     let count = sweeps.len();
     for (piece, sweep) in sweeps.iter_mut().enumerate() {
         let tol = sweep.tol;

@@ -164,7 +164,9 @@ pub fn strip(report: &VerifyReport) -> StripModel {
     for &[t0, t1] in &report.uncertain {
         sections.push(Section { kind: SectionKind::Uncertain, t0, t1, tau: None });
     }
-    sections.sort_by(|a, b| a.t0.total_cmp(&b.t0).then(a.t1.total_cmp(&b.t1)));
+    // by t0, then t1 (two stable sorts, the minor key first)
+    cablenav::order::sort_by_key(&mut sections, |s| s.t1);
+    cablenav::order::sort_by_key(&mut sections, |s| s.t0);
 
     let duration = report.seconds.as_ref().map(|s| s.duration);
     let at = |t: f64| duration.map_or_else(String::new, |d| format!(", {} s", fmt_num(t * d)));
@@ -180,7 +182,7 @@ pub fn strip(report: &VerifyReport) -> StripModel {
             Tick { t: b.t, tau: b.tau, constraint: b.constraint.clone(), enters, label }
         })
         .collect();
-    ticks.sort_by(|a, b| a.t.total_cmp(&b.t));
+    cablenav::order::sort_by_key(&mut ticks, |t| t.t);
 
     let gaps = gaps(&sections);
     StripModel { sections, ticks, gaps, duration }

@@ -157,7 +157,7 @@ impl LatticePlanner {
         let a = self.end_rays[ray_no].axis;
         let ax = self.lattice.spec.axes[a].index();
         let mut with_value: Vec<(f64, usize)> = on_ray.drain(..).map(|v| (self.coords_of(v)[ax], v)).collect();
-        with_value.sort_by(|p, q| p.0.total_cmp(&q.0));
+        crate::order::sort_by_key(&mut with_value, |p| p.0);
         let ray = &self.end_rays[ray_no];
         let piece = |x: f64| ray.feasible.iter().position(|iv| iv[0] <= x && x <= iv[1]);
         let pairs: Vec<(usize, usize)> =

@@ -78,7 +78,7 @@ pub fn picture(atlas: &WireAtlas, path: &[[f64; 3]], yaw: f64, pitch: f64) -> Pi
     let fmt = |(x, y): (f64, f64)| format!("{x:.1},{y:.1}");
     // the charts on the path first, so that they are kept past the limit
     let mut order: Vec<usize> = (0..atlas.charts.len()).collect();
-    order.sort_by_key(|&i| !atlas.charts[i].on_path);
+    cablenav::order::sort_by_key(&mut order, |&i| f64::from(u8::from(!atlas.charts[i].on_path)));
     let (mut faces, mut left_out) = (Vec::new(), 0);
     for i in order {
         let c = &atlas.charts[i];
@@ -94,7 +94,7 @@ pub fn picture(atlas: &WireAtlas, path: &[[f64; 3]], yaw: f64, pitch: f64) -> Pi
         }
     }
     // back to front: the farthest (greatest depth) first
-    faces.sort_by(|a, b| b.0.total_cmp(&a.0));
+    cablenav::order::sort_by_key(&mut faces, |f| -f.0);
     let path = path
         .iter()
         .enumerate()
