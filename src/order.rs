@@ -18,6 +18,38 @@ pub fn sort_by_key<T>(v: &mut Vec<T>, key: impl Fn(&T) -> f64) {
     v.extend(order.into_iter().filter_map(|i| slots[i].take()));
 }
 
+/// An entry of a `BinaryHeap` that pops the least `key` first; among equal keys the least
+/// `tie`, then the least `id` (keys compare as `f64::total_cmp` orders them). `item` rides along
+/// and is not compared.
+#[derive(Debug, Clone, Copy)]
+pub struct Least<T> {
+    /// What orders the heap: the least pops first.
+    pub key: f64,
+    /// The first tie-break.
+    pub tie: f64,
+    /// The second tie-break, making the order total.
+    pub id: usize,
+    /// The payload.
+    pub item: T,
+}
+
+impl<T> PartialEq for Least<T> {
+    fn eq(&self, o: &Self) -> bool {
+        self.cmp(o) == std::cmp::Ordering::Equal
+    }
+}
+impl<T> Eq for Least<T> {}
+impl<T> PartialOrd for Least<T> {
+    fn partial_cmp(&self, o: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(o))
+    }
+}
+impl<T> Ord for Least<T> {
+    fn cmp(&self, o: &Self) -> std::cmp::Ordering {
+        o.key.total_cmp(&self.key).then(o.tie.total_cmp(&self.tie)).then(o.id.cmp(&self.id))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -29,5 +61,16 @@ mod tests {
         sort_by_key(&mut v, |p| p.0);
         let tags: String = v.iter().map(|p| p.1).collect();
         assert_eq!(tags, "debgacf");
+    }
+
+    /// A heap of [`Least`] pops by key, then tie, then id.
+    #[test]
+    fn least_pops_first() {
+        let mut heap = std::collections::BinaryHeap::new();
+        for (key, tie, id) in [(2.0, 0.0, 0), (1.0, 5.0, 3), (1.0, 5.0, 1), (1.0, -1.0, 9), (3.0, 0.0, 0)] {
+            heap.push(Least { key, tie, id, item: id });
+        }
+        let popped: Vec<usize> = std::iter::from_fn(|| heap.pop().map(|e| e.item)).collect();
+        assert_eq!(popped, vec![9, 1, 3, 0, 0]);
     }
 }

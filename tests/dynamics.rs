@@ -36,6 +36,11 @@ const SAMPLES: usize = 2_000;
 #[cfg(target_arch = "wasm32")]
 const SAMPLES: usize = 400;
 
+/// Up to this many cables the reference enumerates every facet pair of the available wrench set
+/// (C(15, 5) = 3003) and takes the sign of the ellipsoid's margin as its verdict; beyond, sampled
+/// directions (necessary) and the pseudo-inverse's tensions (sufficient).
+const EXACT_ELLIPSOID_CABLES: usize = 15;
+
 /// Finite-difference step in t (5-point stencils: truncation ~h⁴, rounding ~1e-16/h²).
 const H: f64 = 1e-3;
 
@@ -288,6 +293,9 @@ impl Case {
     /// against each of its facets; a facet's normal n is the dual vector of n − 1 columns (the
     /// last row of the inverse of those columns completed by a random n-th).
     fn ellipsoid_margin(&self, j: &DMatrix<f64>, w: &DVector<f64>, e_inv: &DMatrix<f64>) -> f64 {
+        if j.ncols() > EXACT_ELLIPSOID_CABLES {
+            return f64::INFINITY; // too many facets to enumerate at every sample
+        }
         let (dim, m) = j.shape();
         let mut rng = Rng::new(5);
         let mut least = f64::INFINITY;
@@ -386,7 +394,16 @@ impl Case {
         };
         let e_inv = self.e_block(e_inv);
         if e_inv.iter().any(|x| *x != 0.0) {
-            at.slack = at.slack.min(self.ellipsoid_margin(&j, &w, &e_inv) / range);
+            let exact = self.ellipsoid_margin(&j, &w, &e_inv);
+            at.slack = at.slack.min(exact / range);
+            // every facet pair tested (enumerated here up to 15 cables): its sign is the verdict
+            // where it clears the band
+            if m <= EXACT_ELLIPSOID_CABLES {
+                if exact.abs() > eps {
+                    at.verdict = Some(exact > 0.0);
+                }
+                return at;
+            }
         }
         // necessary: sampled directions against the zonotope's support function
         for _ in 0..64 {
@@ -559,8 +576,9 @@ fn random_case_of_kind(rng: &mut Rng, k: usize) -> Case {
     }
 }
 
-/// Per case: samples compared, contradictions, boundaries checked, mixed sections.
-fn run_case(k: usize, case: &Case) -> (usize, Vec<String>, usize, bool) {
+/// Per case, at `samples` evenly spread samples: samples compared, contradictions, boundaries
+/// checked, mixed sections.
+fn run_case_sampled(k: usize, case: &Case, samples: usize) -> (usize, Vec<String>, usize, bool) {
     let s = Scenario::from_json(&case.json()).unwrap_or_else(|e| panic!("case {k}: {e}"));
     let r = verify_trajectory(&s, &s.trajectories[0]).unwrap();
     let mut rng = Rng::new(k as u64);
@@ -571,7 +589,6 @@ fn run_case(k: usize, case: &Case) -> (usize, Vec<String>, usize, bool) {
     }
     let offset = rng.f64();
     let mut compared = 0;
-    let samples = env_usize("CABLENAV_DYNAMICS_SAMPLES", SAMPLES);
     for i in 0..samples {
         let t = (i as f64 + offset) / samples as f64;
         let Some(claim) = reported(&r, t, 1e-9) else { continue };
@@ -594,13 +611,18 @@ fn run_case(k: usize, case: &Case) -> (usize, Vec<String>, usize, bool) {
     (compared, bad, checked, !r.feasible.is_empty() && !r.infeasible.is_empty())
 }
 
-/// [`run_case`] on every case (on two threads natively), asserting that no sample contradicts the
+/// [`run_case_sampled`] on every case (on two threads natively), asserting that no sample contradicts the
 /// reference; the per-case results in order.
 fn run_cases(cases: &[Case]) -> Vec<(usize, Vec<String>, usize, bool)> {
+    run_cases_sampled(cases, env_usize("CABLENAV_DYNAMICS_SAMPLES", SAMPLES))
+}
+
+/// [`run_cases`] at `samples` samples per case.
+fn run_cases_sampled(cases: &[Case], samples: usize) -> Vec<(usize, Vec<String>, usize, bool)> {
     #[cfg(not(target_arch = "wasm32"))]
-    let results = support::on_two_threads(cases.len(), &|k| run_case(k, &cases[k]));
+    let results = support::on_two_threads(cases.len(), &|k| run_case_sampled(k, &cases[k], samples));
     #[cfg(target_arch = "wasm32")]
-    let results: Vec<_> = cases.iter().enumerate().map(|(k, c)| run_case(k, c)).collect();
+    let results: Vec<_> = cases.iter().enumerate().map(|(k, c)| run_case_sampled(k, c, samples)).collect();
     let failures: Vec<&String> = results.iter().flat_map(|r| &r.1).collect();
     assert!(failures.is_empty(), "{} contradictions, first: {}", failures.len(), failures[0]);
     results
@@ -663,6 +685,38 @@ fn many_cables_by_linear_programs_match_the_reference() {
     let mixed = results.iter().filter(|r| r.3).count();
     let boundaries: usize = results.iter().map(|r| r.2).sum();
     assert!(mixed * 5 >= n && boundaries * 12 >= n, "{mixed} of {n} trajectories with both kinds of section, {boundaries} boundaries checked");
+}
+
+/// A wrench ellipsoid beyond the facets' reach (11 to 15 cables, against the reference's own
+/// enumeration of every facet pair; and some with 16 to 64 against its sampled directions and
+/// pseudo-inverse tensions), with mass and inertia along random timed trajectories: the cover of
+/// wrench directions of `conditions::wrench_lp`.
+#[test]
+fn many_cables_with_an_ellipsoid_match_the_reference() {
+    let mut rng = Rng::new(27);
+    let n = if cfg!(target_arch = "wasm32") { 3 } else { env_usize("CABLENAV_ELLIPSOID_CASES", 16) };
+    let cases: Vec<Case> = (0..n)
+        .map(|k| {
+            let m = if k % 5 == 4 { rng.int(16, 64) } else { rng.int(11, 15) };
+            loop {
+                let mut case = random_case_of(&mut rng, m);
+                // ellipsoids up to three times as wide: more of them graze the available wrench
+                // set along the motion
+                if let Some((_, e_inv, _)) = &mut case.wrench {
+                    *e_inv *= rng.range(1.0, 3.0).powi(2);
+                    // the facets' margin is exact to rounding: a narrower band than the
+                    // finite differences' 1e-7 still clears their 1e-10, and decides the
+                    // reference 1e-6 from a boundary
+                    case.eps = 1e-9;
+                    break case;
+                }
+            }
+        })
+        .collect();
+    let results = run_cases_sampled(&cases, if cfg!(target_arch = "wasm32") { 100 } else { 300 });
+    let mixed = results.iter().filter(|r| r.3).count();
+    let boundaries: usize = results.iter().map(|r| r.2).sum();
+    assert!(mixed * 4 >= n && boundaries * 4 >= n, "{mixed} of {n} trajectories with both kinds of section, {boundaries} boundaries checked");
 }
 
 /// The fastest timing (`cablenav time`) of random robots' trajectories (spatial platforms with 6

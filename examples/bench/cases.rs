@@ -36,9 +36,10 @@ fn robocrane_tilt() -> Scenario {
 }
 
 /// A cable-suspended platform on 64 cables (a ring of anchors above, two below; 1 kg, tensions
-/// in [0, 3] N, no wrench ellipsoid: the linear-program certificates of `conditions::wrench_lp`)
-/// on a timed slerp with a linear translation, 1 s.
-fn ring64() -> Scenario {
+/// in [0, 3] N) on a timed slerp with a linear translation, 1 s; without a wrench section (the
+/// linear-program certificates of `conditions::wrench_lp`), or with a wrench ball of `radius`
+/// around zero (the cover of wrench directions).
+fn ring64(radius: Option<f64>) -> Scenario {
     let cables: Vec<serde_json::Value> = (0..64)
         .map(|k| {
             let angle = 2.0 * std::f64::consts::PI * k as f64 / 64.0;
@@ -66,8 +67,15 @@ fn ring64() -> Scenario {
             "orientation": {"slerp": [[1, 0, 0, 0], q.map(|x| x / norm)]}
         }]
     });
+    let mut v = v;
+    if let Some(r) = radius {
+        v["wrench"] = serde_json::json!({"nominal": [0, 0, 0, 0, 0, 0], "radius": r});
+    }
     Scenario::from_json(&v.to_string()).expect("ring64 parses")
 }
+
+/// The radius of the wrench ball of the 64-cable ring's second case (N and N·m).
+pub const RING_BALL: f64 = 0.2;
 
 /// Wall time spent measuring each case (after warm-up), in milliseconds.
 pub const CASE_MS: f64 = 1000.0;
@@ -240,10 +248,15 @@ pub fn run_all(platform: &str, filter: &str, now: &dyn Fn() -> f64, out: &mut dy
     record(measure(now, filter, "cogiro/general-1/pointwise-0.01", &mut || pointwise(&cogiro, &general, 0.01)), out);
     record(measure(now, filter, "cogiro/general-1/pointwise-0.001", &mut || pointwise(&cogiro, &general, 0.001)), out);
     // 64 cables, a single wrench (weight and inertia): linear programs instead of C(64, 5) facets
-    let ring = ring64();
+    let ring = ring64(None);
     let sweep = traj(&ring, "sweep");
     record(measure(now, filter, "ring64/sweep/exact-sections", &mut || sections(&ring, &sweep)), out);
     record(measure(now, filter, "ring64/sweep/pointwise-0.01", &mut || pointwise(&ring, &sweep, 0.01)), out);
+    // the same with a wrench ball: the cover of wrench directions instead of C(64, 5) facets
+    let ball = ring64(Some(RING_BALL));
+    let sweep = traj(&ball, "sweep");
+    record(measure(now, filter, "ring64-ball/sweep/exact-sections", &mut || sections(&ball, &sweep)), out);
+    record(measure(now, filter, "ring64-ball/sweep/pointwise-0.01", &mut || pointwise(&ball, &sweep, 0.01)), out);
     record(
         measure(now, filter, "crane/slice-400", &mut || {
             let range = [default_range(Coord::Phi).expect("angle"), default_range(Coord::Theta).expect("angle")];

@@ -520,11 +520,12 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
             let implied_by_closure = load.wrench.closure && load.is_zero() && bounds.iter().all(|b| b.min <= 0.0 && b.max > 0.0);
             if implied_by_closure {
                 // nothing to add
-            } else if load.wrench.is_single() {
-                // one wrench: linear programs, for any number of cables
+            } else if load.wrench.is_single() || !crate::scenario::validate::facets_enumerable(m, robot.mobility) {
+                // one wrench: linear programs, for any number of cables; an ellipsoid beyond the
+                // facets' reach: the same system with a cover of the wrench directions
                 out.push(Box::new(WrenchFeasibilityLp { load, bounds, closure: false }));
             } else {
-                // an ellipsoid: its reach against each facet (validation caps the cables)
+                // an ellipsoid: its reach against each facet
                 out.push(Box::new(WrenchFeasibility { load, bounds }));
             }
         }

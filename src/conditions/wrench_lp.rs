@@ -25,6 +25,17 @@
 //!   a_k keeps its sign), so the excess is one polynomial less Σ_k W ε_k |…|.
 //! * Otherwise the piece is halved, down to the boundary tolerance; what stays is undecided.
 //!
+//! **A wrench ellipsoid** beyond the facets' reach (more than [`crate::scenario::validate::MAX_FACETS`]
+//! facet pairs: 11 cables and more on a spatial platform) is decided with the same system and a
+//! cover of the wrench directions ([`crate::query::zonotope`]): at the piece's middle, cones of
+//! directions each with tensions f whose minorant y·J̃f − h_W̃(y) is positive at the cone's rays
+//! (the scaled ellipsoid W̃ = D W, D the rows' positive factors: W for forces, W·w for moments),
+//! each clearing how far the columns, the load and the ellipsoid's reach drift over the piece
+//! (enclosures of the polynomials and of 1/L_k). The cones are fixed sets of directions, so one
+//! cover, refined where a piece needs it, serves every piece of the motion. **Infeasible** where
+//! a direction y of the middle with G(y) < 0 keeps y·load + reach(y) above the zonotope's
+//! support throughout (the certificate above, with the reach's least value on the piece added).
+//!
 //! **Wrench closure** beyond the facets' reach ([`WrenchFeasibilityLp::closure`]) is the same
 //! program with the zero load and tensions in [1, ∞) (up to scale, a strictly positive null vector
 //! of J; the feasible certificate's σ_min bound gives rank 6). Where it fails the zero load lies on
@@ -50,20 +61,25 @@ use super::{Condition, Kind, Local, PoseCheck, Sweep};
 use crate::model::{Bounds, Load};
 use crate::poly::{Bern, Partition, Truth};
 use crate::query::cables::PoseCables;
-use crate::query::wrench::{closure_by_lp, enclosing_direction, separating_direction, static_margin, static_margin_of};
+use crate::query::wrench::{closure_by_lp, enclosing_direction, select, separating_direction, static_margin, static_margin_of, structure_matrix_m};
+use crate::query::zonotope::{contains, Containment, Cover, Verdict};
 
 /// Most pieces one motion is bisected into before the rest is reported undecided.
 const MAX_NODES: usize = 4_000;
 
+/// Most cuts of the wrench directions' cover along one motion (an ellipsoid's condition).
+const MAX_CUTS: usize = 40_000;
+
 /// Relative slack for the rounding of scalar steps outside the polynomials' tracked error.
 const SLACK: f64 = 1e-13;
 
-/// Wrench feasibility of the nominal load by linear programs (module docs); or, with `closure`,
-/// wrench closure: the zero load balanced by tensions in [1, ∞) (a strictly positive null vector
-/// of J, J of rank 6), shown infeasible by a direction with every column strictly on one side.
+/// Wrench feasibility of the nominal load by linear programs (module docs), or of the load's
+/// whole wrench ellipsoid by a cover of the wrench directions; or, with `closure`, wrench closure:
+/// the zero load balanced by tensions in [1, ∞) (a strictly positive null vector of J, J of rank
+/// 6), shown infeasible by a direction with every column strictly on one side.
 #[derive(Debug, Clone)]
 pub struct WrenchFeasibilityLp {
-    /// The load (its wrench set without an ellipsoid).
+    /// The load (its wrench set, with or without an ellipsoid; without for closure).
     pub load: Rc<Load>,
     /// Each cable's tension bounds.
     pub bounds: Vec<Bounds>,
@@ -95,6 +111,9 @@ struct Piece {
     /// it, `len2` that segment's), the cable's column the sum of its segments' n_s/L_s; `None`:
     /// one column per cable.
     cable_of: Option<Rc<Vec<usize>>>,
+    /// With a wrench ellipsoid: each row's positive factor d_r (W for a force, W·w for a
+    /// moment), the scaled ellipsoid's shape being D E⁻¹ D.
+    row_scale: Option<Vec<Bern>>,
 }
 
 impl Piece {
@@ -108,7 +127,8 @@ impl Piece {
             Some(q) => local.weight.mul(q),
             None => local.weight.clone(),
         };
-        Piece::new(n, rows, w, local.len2())
+        let row_scale = (!load.wrench.is_single()).then(|| load.rows().iter().map(|&r| if r < 3 { w.clone() } else { w.mul(&local.weight) }).collect());
+        Piece { row_scale, ..Piece::new(n, rows, w, local.len2()) }
     }
 
     /// The system N φ = load on all of [0, 1]: N's rows `n`, the load rows, their factor W and
@@ -122,7 +142,7 @@ impl Piece {
                 [p, d, dd]
             })
             .collect();
-        Piece { len2, n, load, w, width: 1.0, cable_of: None }
+        Piece { len2, n, load, w, width: 1.0, cable_of: None, row_scale: None }
     }
 
     fn halves(&self) -> (Piece, Piece) {
@@ -139,7 +159,17 @@ impl Piece {
         let (pl, pr) = self.len2.iter().map(split_array).unzip();
         let width = 0.5 * self.width;
         let cable_of = self.cable_of.clone();
-        (Piece { n: nl, load: ll, w: wl, len2: pl, width, cable_of: cable_of.clone() }, Piece { n: nr, load: lr, w: wr, len2: pr, width, cable_of })
+        let (dl, dr) = match &self.row_scale {
+            Some(d) => {
+                let (l, r) = split_all(d);
+                (Some(l), Some(r))
+            }
+            None => (None, None),
+        };
+        (
+            Piece { n: nl, load: ll, w: wl, len2: pl, width, cable_of: cable_of.clone(), row_scale: dl },
+            Piece { n: nr, load: lr, w: wr, len2: pr, width, cable_of, row_scale: dr },
+        )
     }
 }
 
@@ -213,8 +243,9 @@ fn least(p: &Bern) -> f64 {
 
 impl WrenchFeasibilityLp {
     /// Feasible (True), infeasible (False) or undecided on the piece; for closure, `blocks` are
-    /// sets of rows to look for a failure within as well ([`closure_violation`]).
-    fn decide(&self, piece: &Piece, blocks: &[Vec<usize>]) -> Truth {
+    /// sets of rows to look for a failure within as well ([`closure_violation`]); with an
+    /// ellipsoid, by the cover `cover` (refined here, within `cuts` more cuts).
+    fn decide(&self, piece: &Piece, blocks: &[Vec<usize>], search: &mut Search, open: &mut Option<Vec<usize>>) -> Truth {
         let w = Iv::of(&piece.w);
         if !(w.lo > 0.0 && w.hi.is_finite()) {
             return Truth::Unknown;
@@ -231,18 +262,47 @@ impl WrenchFeasibilityLp {
         // the scaled structure matrix at the middle: columns n_k·W/L_k, and the load rows
         let j = DMatrix::from_fn(n, m, |r, k| nc[(r, k)] * wc * inv[k].mid);
         let b = DVector::from_fn(n, |r, _| piece.load[r].eval(0.5).0);
+        if let Some(d) = &piece.row_scale {
+            return self.decide_ellipsoid(piece, nn, &inv, &j, &b, d, w, search, open);
+        }
         match static_margin_of(&j, &b, &self.bounds) {
             Some((t, f)) if t > 0.0 => self.feasible(piece, nn, &inv, &nc, &f, w),
             // a row of N that is zero throughout: rank below n, no closure
             _ if self.closure && nn.iter().any(|row| row.iter().all(structurally_zero)) => Truth::False,
             _ if self.closure => match enclosing_direction(&j).or_else(|| block_direction(nn, &j, blocks)) {
-                Some(y) => self.infeasible(piece, nn, &inv, &y, w),
+                Some(y) => self.infeasible(piece, nn, &inv, &y, w, None),
                 None => Truth::Unknown,
             },
             _ => match separating_direction(&j, &b, &self.bounds) {
-                Some((y, _)) => self.infeasible(piece, nn, &inv, &y, w),
+                Some((y, _)) => self.infeasible(piece, nn, &inv, &y, w, None),
                 None => Truth::Unknown,
             },
+        }
+    }
+
+    /// The wrench ellipsoid on the piece (module docs): the cover certifies the middle's
+    /// scaled problem — J̃ = `j`, the load `b`, the shape D E⁻¹ D with D the rows' factors `d` —
+    /// along the piece, or gives a direction to show it infeasible throughout. `open`: the cones
+    /// still to certify here (`None`: all, on the motion's first piece), on return those left.
+    #[allow(clippy::too_many_arguments)]
+    fn decide_ellipsoid(&self, piece: &Piece, nn: &[Vec<Bern>], inv: &[InverseLength], j: &DMatrix<f64>, b: &DVector<f64>, d: &[Bern], w: Iv, search: &mut Search, open: &mut Option<Vec<usize>>) -> Truth {
+        let n = j.nrows();
+        let rows = self.load.rows();
+        let e_inv = DMatrix::from_fn(n, n, |a, c| self.load.wrench.ellipsoid_inv[(rows[a], rows[c])]);
+        let dc: Vec<f64> = d.iter().map(|p| p.eval(0.5).0).collect();
+        let shape = DMatrix::from_fn(n, n, |a, c| dc[a] * e_inv[(a, c)] * dc[c]);
+        let problem = Containment { j, bounds: &self.bounds, centre: b, shape: &shape };
+        let cover = search.cover.get_or_insert_with(|| Cover::orthants(n));
+        cover.load(&problem);
+        let open = open.get_or_insert_with(|| cover.all());
+        let mut along = Along { piece, nn, inv, d, e_inv: &e_inv, shared: None };
+        match cover.certify(&problem, Some(&mut |f, rays| along.holds(f, rays)), &mut search.cuts, open) {
+            Verdict::Holds => Truth::True,
+            Verdict::Fails(ys) => {
+                let shown = ys.iter().any(|y| self.infeasible(piece, nn, inv, y, w, Some((d, &e_inv))) == Truth::False);
+                if shown { Truth::False } else { Truth::Unknown }
+            }
+            Verdict::Unknown => Truth::Unknown,
         }
     }
 
@@ -303,9 +363,10 @@ impl WrenchFeasibilityLp {
         Truth::True
     }
 
-    /// False when the direction `y` keeps y·load above the zonotope's support on the whole piece
-    /// (module docs).
-    fn infeasible(&self, piece: &Piece, nn: &[Vec<Bern>], inv: &[InverseLength], y: &DVector<f64>, w: Iv) -> Truth {
+    /// False when the direction `y` keeps y·load (plus, with an ellipsoid — its rows' factors and
+    /// E⁻¹ — the reach √((Dy)ᵀE⁻¹(Dy))) above the zonotope's support on the whole piece (module
+    /// docs).
+    fn infeasible(&self, piece: &Piece, nn: &[Vec<Bern>], inv: &[InverseLength], y: &DVector<f64>, w: Iv, ellipsoid: Option<(&[Bern], &DMatrix<f64>)>) -> Truth {
         let (n, m) = (nn.len(), inv.len());
         // max(f_min a_k, f_max a_k) ≤ α_k + β_k a_k on the range of a_k = y·n_k (the chord of a
         // convex function); the support's polynomial part over W is Σ_k s_k (α_k + β_k a_k) =
@@ -339,7 +400,17 @@ impl WrenchFeasibilityLp {
             support = support.add(&affine_sum(&nn[r], &c));
         }
         let excess = Bern::linear_combination(&(0..n).map(|r| (&piece.load[r], y[r])).collect::<Vec<_>>()).sub(&piece.w.mul(&support));
-        if least(&excess) - w.hi * rest - SLACK * excess.max_abs() > 0.0 {
+        // the reach's least value on the piece: (Dy)ᵀE⁻¹(Dy) is a polynomial
+        let reach = ellipsoid.map_or(0.0, |(d, e_inv)| {
+            let dy: Vec<Bern> = d.iter().zip(y.iter()).map(|(p, &yr)| p.scale(yr)).collect();
+            let mut square = Bern::constant(0.0);
+            for a in 0..n {
+                let terms: Vec<(&Bern, f64)> = (0..n).map(|c| (&dy[c], e_inv[(a, c)])).collect();
+                square = square.add(&dy[a].mul(&Bern::linear_combination(&terms)));
+            }
+            least(&square).max(0.0).sqrt()
+        });
+        if least(&excess) + reach * (1.0 - SLACK) - w.hi * rest - SLACK * excess.max_abs() > 0.0 {
             Truth::False
         } else {
             Truth::Unknown
@@ -350,25 +421,115 @@ impl WrenchFeasibilityLp {
     /// tolerance `tol`.
     fn violation_of(&self, piece: Piece, tol: f64, blocks: &[Vec<usize>]) -> Partition {
         let mut pieces = Vec::new();
-        let mut budget = MAX_NODES;
-        self.bisect(piece, (0.0, 1.0), tol, blocks, &mut budget, &mut pieces);
+        let mut search = Search { nodes: MAX_NODES, cuts: MAX_CUTS, cover: None };
+        self.bisect(piece, (0.0, 1.0), tol, blocks, &mut search, None, &mut pieces);
         Partition::from_pieces(pieces).not()
     }
 
-    /// Bisection of `piece` = [a, b]: pieces of `out` as (end, feasible?).
-    fn bisect(&self, piece: Piece, (a, b): (f64, f64), tol: f64, blocks: &[Vec<usize>], budget: &mut usize, out: &mut Vec<(f64, Truth)>) {
-        let truth = self.decide(&piece, blocks);
+    /// Bisection of `piece` = [a, b]: pieces of `out` as (end, feasible?). With an ellipsoid,
+    /// `open` are the cover's cones the piece must still certify (`None`: all of them): those its
+    /// parent certified hold on it too.
+    #[allow(clippy::too_many_arguments)]
+    fn bisect(&self, piece: Piece, (a, b): (f64, f64), tol: f64, blocks: &[Vec<usize>], search: &mut Search, mut open: Option<Vec<usize>>, out: &mut Vec<(f64, Truth)>) {
+        let truth = self.decide(&piece, blocks, search, &mut open);
         // a quarter of the tolerance: two undecided neighbours merged stay narrower than it
-        if truth != Truth::Unknown || b - a <= 0.25 * tol || *budget == 0 {
+        if truth != Truth::Unknown || b - a <= 0.25 * tol || search.nodes == 0 {
             out.push((b, truth));
             return;
         }
-        *budget -= 1;
+        search.nodes -= 1;
         let (left, right) = piece.halves();
         let mid = 0.5 * (a + b);
-        self.bisect(left, (a, mid), tol, blocks, budget, out);
-        self.bisect(right, (mid, b), tol, blocks, budget, out);
+        self.bisect(left, (a, mid), tol, blocks, search, open.clone(), out);
+        self.bisect(right, (mid, b), tol, blocks, search, open, out);
     }
+}
+
+/// The second-order check of a cone along a piece ([`Cover::certify`]'s transport): with the
+/// cone's tensions f fixed, each ray's minorant v·(J̃(λ)f − ℓ̃(λ)) − reach(v, λ) is one polynomial
+/// up to the inverse lengths' ε_k — J̃(λ)f = W Σ_k f_k s_k n_k, and √r ≤ (r + c²)/(2c) bounds
+/// the reach by the polynomial r = (Dv)ᵀE⁻¹(Dv), tightly at c = its middle value — and must stay
+/// positive on the piece.
+struct Along<'a> {
+    piece: &'a Piece,
+    nn: &'a [Vec<Bern>],
+    inv: &'a [InverseLength],
+    d: &'a [Bern],
+    e_inv: &'a DMatrix<f64>,
+    /// What every cone's check on this piece shares, made by the first.
+    shared: Option<Shared>,
+}
+
+/// The polynomials of a piece that every cone's check reads, raised to common degrees once: N's
+/// rows (each to its own), and the load rows and the products d_a·d_b (a ≤ b) to the degree of the
+/// checks' polynomials.
+struct Shared {
+    rows: Vec<Vec<Bern>>,
+    load: Vec<Bern>,
+    squares: Vec<Vec<Bern>>,
+    degree: usize,
+    /// max |n_rk|·max |W| per row and cable, for the ε_k of the inverse lengths.
+    size: Vec<Vec<f64>>,
+}
+
+impl Along<'_> {
+    fn shared(&mut self) -> &Shared {
+        let (nn, piece, d) = (self.nn, self.piece, self.d);
+        self.shared.get_or_insert_with(|| {
+            let n = nn.len();
+            let rows: Vec<Vec<Bern>> = nn.iter().map(|row| {
+                let top = row.iter().map(Bern::degree).max().unwrap_or(0);
+                row.iter().map(|p| p.elevate(top)).collect()
+            }).collect();
+            let squares: Vec<Vec<Bern>> = (0..n).map(|a| (a..n).map(|b| d[a].mul(&d[b])).collect()).collect();
+            let q_degree = rows.iter().map(|r| r.first().map_or(0, Bern::degree) + 1).max().unwrap_or(0) + piece.w.degree();
+            let degree = piece.load.iter().chain(squares.iter().flatten()).map(Bern::degree).fold(q_degree, usize::max);
+            let w_mag = Iv::of(&piece.w).mag();
+            let size = nn.iter().map(|row| row.iter().map(|p| Iv::of(p).mag() * w_mag).collect()).collect();
+            Shared {
+                load: piece.load.iter().map(|p| p.elevate(degree)).collect(),
+                squares: squares.iter().map(|row| row.iter().map(|p| p.elevate(degree)).collect()).collect(),
+                rows,
+                degree,
+                size,
+            }
+        })
+    }
+
+    fn holds(&mut self, f: &[f64], rays: &[DVector<f64>]) -> bool {
+        let (inv, e_inv, w) = (self.inv, self.e_inv, &self.piece.w);
+        let dc: Vec<f64> = self.d.iter().map(|p| p.eval(0.5).0).collect();
+        let shared = self.shared();
+        let n = shared.rows.len();
+        // q_r = W Σ_k f_k s_k n_rk − load_r, within err_r of J̃(λ)f − ℓ̃ (the ε_k of 1/L_k)
+        let scaled: Vec<[f64; 2]> = inv.iter().zip(f).map(|(il, fk)| [fk * il.s.c[0], fk * il.s.c[1]]).collect();
+        let q: Vec<Bern> = (0..n).map(|r| w.mul(&affine_sum(&shared.rows[r], &scaled)).elevate(shared.degree).sub(&shared.load[r])).collect();
+        let err: Vec<f64> = (0..n).map(|r| inv.iter().zip(f).enumerate().map(|(k, (il, fk))| fk.abs() * shared.size[r][k] * il.eps).sum()).collect();
+        let scale = q.iter().map(Bern::max_abs).fold(0.0, f64::max);
+        rays.iter().all(|v| {
+            let reach2: f64 = (0..n).map(|a| (0..n).map(|b| v[a] * v[b] * e_inv[(a, b)] * dc[a] * dc[b]).sum::<f64>()).sum();
+            let c = reach2.max(0.0).sqrt().max(1e-12 * scale).max(f64::MIN_POSITIVE);
+            // Σ_r v_r q_r − (Σ_ab v_a v_b E⁻¹_ab d_a d_b + c²)/(2c)
+            let mut terms: Vec<(&Bern, f64)> = (0..n).map(|r| (&q[r], v[r])).collect();
+            for a in 0..n {
+                for b in a..n {
+                    let weight = if a == b { 1.0 } else { 2.0 } * v[a] * v[b] * e_inv[(a, b)];
+                    terms.push((&shared.squares[a][b - a], -weight / (2.0 * c)));
+                }
+            }
+            let margin = Bern::linear_combination(&terms);
+            let slack: f64 = (0..n).map(|r| v[r].abs() * err[r]).sum::<f64>() + SLACK * (margin.max_abs() + scale);
+            least(&margin) - c / 2.0 - slack > 0.0
+        })
+    }
+}
+
+/// What one motion's bisection spends and keeps: the pieces and the cover's cuts it may still
+/// make, and the cover of the wrench directions (with an ellipsoid), refined along the way.
+struct Search {
+    nodes: usize,
+    cuts: usize,
+    cover: Option<Cover>,
 }
 
 /// A polynomial that is exactly zero (every coefficient 0, no error): an entry of N, or of the
@@ -444,10 +605,19 @@ impl Condition for WrenchFeasibilityLp {
     fn check(&self, at: &PoseCables) -> PoseCheck {
         let wrench = &self.load.wrench;
         if self.closure {
-            let j = crate::query::wrench::structure_matrix_m(&at.cables, &wrench.point_at(&at.pose), self.load.rows());
+            let j = structure_matrix_m(&at.cables, &wrench.point_at(&at.pose), self.load.rows());
             return PoseCheck { violated: !closure_by_lp(&j), distance: None };
         }
-        match static_margin(&at.cables, &wrench.point_at(&at.pose), &at.nominal(&self.load), &self.bounds, self.load.rows()) {
+        let (point, nominal) = (wrench.point_at(&at.pose), at.nominal(&self.load));
+        if !wrench.is_single() {
+            // the decision alone (the margin, `check`'s report, costs far more beyond the facets)
+            let rows = self.load.rows();
+            let j = structure_matrix_m(&at.cables, &point, rows);
+            let shape = DMatrix::from_fn(rows.len(), rows.len(), |a, b| wrench.ellipsoid_inv[(rows[a], rows[b])]);
+            let problem = Containment { j: &j, bounds: &self.bounds, centre: &select(&nominal, rows), shape: &shape };
+            return PoseCheck { violated: contains(&problem) != Some(true), distance: None };
+        }
+        match static_margin(&at.cables, &point, &nominal, &self.bounds, self.load.rows()) {
             Some((margin, _)) => PoseCheck { violated: !(margin > 0.0), distance: Some(margin) },
             None => PoseCheck { violated: true, distance: None },
         }

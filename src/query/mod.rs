@@ -2,8 +2,10 @@
 //! triangles, and membership tests against solid shapes. Free functions over plain vectors.
 
 pub mod cables;
+pub mod facets;
 pub mod lp;
 pub mod wrench;
+pub mod zonotope;
 
 use nalgebra::{Matrix3, Vector3};
 

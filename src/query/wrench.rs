@@ -13,6 +13,7 @@
 //! J f = w. Over the ellipsoid W the tensions form the ellipsoid f0 + J⁻¹(w − w0), so cable i
 //! ranges over f0,i ± v_ii with f0 = J⁻¹ w0 and v_ii = sqrt((J⁻¹ E⁻¹ J⁻ᵀ)_ii).
 
+pub use super::facets::{binomial, facet_normal, subsets, SINGULAR_RATIO};
 use crate::model::{Pose, Robot, Wrench};
 use super::lp::{maximise, LpResult};
 use crate::model::Bounds;
@@ -31,9 +32,6 @@ pub fn embed(v: &DVector<f64>, rows: &[usize]) -> Vector6<f64> {
     }
     w
 }
-
-/// Below this |det J| / Π‖column‖ (Hadamard ratio) a pose counts as singular.
-pub const SINGULAR_RATIO: f64 = 1e-10;
 
 /// The structure matrix of `robot` at `pose` with moments about `point`.
 pub fn structure_matrix(robot: &Robot, pose: &Pose, point: &Vector3<f64>) -> Matrix6<f64> {
@@ -115,35 +113,6 @@ pub fn positively_spans(j: &DMatrix<f64>) -> bool {
         }
     }
     full_rank
-}
-
-/// C(m, k): how many k-element subsets 0..m has, `usize::MAX` where it does not fit (the callers
-/// compare it with a cap). Each step's product is taken in 128 bits: 8S_neck's C(76, 23) fits,
-/// but its product on the way did not.
-pub fn binomial(m: usize, k: usize) -> usize {
-    if k > m {
-        return 0;
-    }
-    (0..k).try_fold(1usize, |c, i| usize::try_from(c as u128 * (m - i) as u128 / (i + 1) as u128).ok()).unwrap_or(usize::MAX)
-}
-
-/// The k-element subsets of 0..m in lexicographic order.
-pub fn subsets(m: usize, k: usize) -> Vec<Vec<usize>> {
-    let mut out = Vec::new();
-    let mut cur = Vec::with_capacity(k);
-    fn rec(start: usize, m: usize, k: usize, cur: &mut Vec<usize>, out: &mut Vec<Vec<usize>>) {
-        if cur.len() == k {
-            out.push(cur.clone());
-            return;
-        }
-        for i in start..m {
-            cur.push(i);
-            rec(i + 1, m, k, cur, out);
-            cur.pop();
-        }
-    }
-    rec(0, m, k, &mut cur, &mut out);
-    out
 }
 
 /// Static feasibility of the wrench `w0` at one pose (any number of cables; its components
@@ -353,11 +322,18 @@ pub fn tension_ranges_at(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector
 /// and at most half the narrowest finite tension range (the shrunk box is empty beyond).
 /// The result is that largest t: every wrench of W is balanced within [f_min + t, f_max − t], so
 /// the pose is wrench-feasible iff t > 0; for a single wrench (E⁻¹ = 0) it is the
-/// static-feasibility LP's margin. Any number of cables ≥ n (C(m, n − 1) facets). `None` when J
-/// has rank below n (no facet has columns off its hyperplane, or some hyperplane holds them all):
-/// W, or w0, is then balanced nowhere but on that hyperplane, reported as singular.
+/// static-feasibility LP's margin. Any number of cables ≥ n: up to
+/// [`super::facets::MAX_FACETS`] facet pairs each is tested, beyond that the same
+/// margin comes from the branch and bound over wrench directions of [`super::zonotope::margin`]
+/// (to 1e-9 of the largest finite tension bound). `None` when J has rank below n (no facet has
+/// columns off its hyperplane, or some hyperplane holds them all): W, or w0, is then balanced
+/// nowhere but on that hyperplane, reported as singular.
 pub fn wrench_set_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, nominal: &Vector6<f64>, ellipsoid_inv: &Matrix6<f64>, bounds: &[Bounds], rows: &[usize]) -> Option<f64> {
-    let facets = facets(&structure_matrix_m(cables, point, rows), rows, bounds)?;
+    let j = structure_matrix_m(cables, point, rows);
+    if binomial(j.ncols(), rows.len() - 1) > super::facets::MAX_FACETS {
+        return cover_margin(&j, &select(nominal, rows), &DMatrix::from_fn(rows.len(), rows.len(), |a, b| ellipsoid_inv[(rows[a], rows[b])]), bounds);
+    }
+    let facets = facets(&j, rows, bounds)?;
     let best = facets
         .iter()
         .map(|f| {
@@ -370,6 +346,20 @@ pub fn wrench_set_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector
     // past half the narrowest finite tension range the shrunk box is empty
     let half = bounds.iter().filter(|b| b.max.is_finite()).map(|b| 0.5 * (b.max - b.min)).fold(f64::INFINITY, f64::min);
     (!facets.is_empty()).then_some(best.min(half))
+}
+
+/// Most cuts of the directions one pose's margin may take ([`super::zonotope::margin`]).
+const MARGIN_CUTS: usize = 200_000;
+
+/// The margin of the ellipsoid around `nominal` with shape `ellipsoid_inv` (both in the rows of
+/// `j`) inside the available wrench set of `j`, by the branch and bound over wrench directions:
+/// its certified lower end where the bracket leaves the sign open (out of cuts), else the value
+/// at the worst direction found.
+fn cover_margin(j: &DMatrix<f64>, nominal: &DVector<f64>, ellipsoid_inv: &DMatrix<f64>, bounds: &[Bounds]) -> Option<f64> {
+    let scale = bounds.iter().flat_map(|b| [b.min.abs(), if b.max.is_finite() { b.max.abs() } else { 0.0 }]).fold(1e-300, f64::max);
+    let problem = super::zonotope::Containment { j, bounds, centre: nominal, shape: ellipsoid_inv };
+    let m = super::zonotope::margin(&problem, 1e-9 * scale, MARGIN_CUTS)?;
+    Some(if m.hi > 0.0 { m.lo } else { m.hi })
 }
 
 /// One facet pair of the zonotope {J f : f_min ≤ f ≤ f_max} ([`wrench_set_margin`]): the wrenches
@@ -422,31 +412,9 @@ pub fn facets(j: &DMatrix<f64>, rows: &[usize], bounds: &[Bounds]) -> Option<Vec
     Some(out)
 }
 
-/// The normal of the hyperplane through the n − 1 columns `s` of the n×m matrix `j`: the
-/// cofactors of the last column of [J_S | x], so that n·x = det [J_S | x].
-pub fn facet_normal(j: &DMatrix<f64>, s: &[usize]) -> DVector<f64> {
-    let n = j.nrows();
-    DVector::from_fn(n, |r, _| {
-        let minor = DMatrix::from_fn(n - 1, n - 1, |a, b| j[(if a < r { a } else { a + 1 }, s[b])]);
-        let sign = if (r + n - 1) % 2 == 0 { 1.0 } else { -1.0 };
-        sign * minor.determinant()
-    })
-}
-
 #[cfg(test)]
 mod separating_tests {
     use super::*;
-
-    /// Binomials exact where they fit (against Pascal's rule), saturated where they do not.
-    #[test]
-    fn binomials_are_exact_or_saturated() {
-        assert_eq!((binomial(10, 5), binomial(5, 7), binomial(7, 0)), (252, 0, 1));
-        // 8S_neck: 76 cables, 23 of its 24 rows (saturated where usize has 32 bits, as in wasm32)
-        let exact: u128 = 17_061_084_191_613_232_800;
-        assert_eq!(binomial(76, 23) as u128, exact.min(usize::MAX as u128));
-        assert_eq!(binomial(76, 23), binomial(75, 22).saturating_add(binomial(75, 23)));
-        assert_eq!(binomial(128, 64), usize::MAX);
-    }
 
     /// Random 6×m matrices and loads: a direction is found exactly when the static margin is
     /// negative, and it separates: y·w0 above the zonotope's support.

@@ -11,7 +11,7 @@
 use super::atlas::{Atlas, AtlasParams};
 use super::chart::ChartState;
 use super::manifold::Manifold;
-use std::cmp::Ordering;
+use crate::order::Least;
 use std::collections::{BinaryHeap, HashMap, HashSet};
 
 /// How a search ended.
@@ -38,30 +38,9 @@ pub struct ContinuationProgress {
     pub ended: Option<Ended>,
 }
 
-/// An open-list entry, ordered so that the heap pops the least f (ties: least h).
-#[derive(Debug, Clone, Copy)]
-struct Entry {
-    f: f64,
-    h: f64,
-    chart: usize,
-}
-
-impl PartialEq for Entry {
-    fn eq(&self, o: &Self) -> bool {
-        self.cmp(o) == Ordering::Equal
-    }
-}
-impl Eq for Entry {}
-impl PartialOrd for Entry {
-    fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
-        Some(self.cmp(o))
-    }
-}
-impl Ord for Entry {
-    fn cmp(&self, o: &Self) -> Ordering {
-        o.f.total_cmp(&self.f).then(o.h.total_cmp(&self.h)).then(o.chart.cmp(&self.chart))
-    }
-}
+/// An open-list entry: the heap pops the least f (key), ties broken by the least h, then the
+/// least chart (id).
+type Entry = Least<()>;
 
 /// A chart path to a goal whose dense path is being built, one edge per unit of work.
 struct Pending {
@@ -218,7 +197,7 @@ impl<M: Manifold> Continuation<M> {
         self.skipped_open = false;
         self.g[self.start] = 0.0;
         let h = self.heuristic(self.start);
-        self.open.push(Entry { f: self.weight * h, h, chart: self.start });
+        self.open.push(Entry { key: self.weight * h, tie: h, id: self.start, item: () });
     }
 
     /// Distance from chart `c`'s centre to the nearest goal point (0 with no goals).
@@ -268,7 +247,7 @@ impl<M: Manifold> Continuation<M> {
         ContinuationProgress {
             charts: self.atlas.charts.len(),
             open: self.open.len(),
-            best_heuristic: self.open.iter().map(|e| e.h).fold(f64::INFINITY, f64::min),
+            best_heuristic: self.open.iter().map(|e| e.tie).fold(f64::INFINITY, f64::min),
             ended: self.ended,
         }
     }
@@ -294,7 +273,7 @@ impl<M: Manifold> Continuation<M> {
                 }
                 continue;
             }
-            let Some(Entry { chart: c, .. }) = self.open.pop() else {
+            let Some(Entry { id: c, .. }) = self.open.pop() else {
                 if self.skipped_open {
                     // the charts there were hold no path: search again, growing the atlas
                     self.grow = true;
@@ -332,7 +311,7 @@ impl<M: Manifold> Continuation<M> {
                 self.parent[nb] = Some(c);
                 self.popped[nb] = false;
                 let h = self.heuristic(nb);
-                self.open.push(Entry { f: g + self.weight * h, h, chart: nb });
+                self.open.push(Entry { key: g + self.weight * h, tie: h, id: nb, item: () });
             }
         }
     }

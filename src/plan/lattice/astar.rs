@@ -6,39 +6,14 @@ use super::graph::Key;
 use super::smooth::{initial_runs, turning_points};
 use super::{LatticePlanner, Stage};
 use crate::plan::PlanStatus;
-use std::cmp::Ordering;
+use crate::order::Least;
 
-/// An open-list entry (least f first, ties: least h). `g` is the cost from the start with which
-/// `v` was pushed: the entry is stale exactly when `g` is no longer `v`'s best cost (an exact
+/// An open-list entry: the heap pops the least f = g + h (key), ties broken by the least h,
+/// then the least vertex (id). The item is the cost g from the start with which the vertex was
+/// pushed: the entry is stale exactly when g is no longer the vertex's best cost (an exact
 /// comparison of the stored number; recomputing it as f − h can exceed it by a rounding error,
 /// which skipped live entries, platform-dependently).
-#[derive(Debug, Clone, Copy)]
-pub(super) struct Open {
-    f: f64,
-    h: f64,
-    g: f64,
-    v: usize,
-}
-
-impl PartialEq for Open {
-    fn eq(&self, o: &Self) -> bool {
-        self.cmp(o) == Ordering::Equal
-    }
-}
-
-impl Eq for Open {}
-
-impl PartialOrd for Open {
-    fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
-        Some(self.cmp(o))
-    }
-}
-
-impl Ord for Open {
-    fn cmp(&self, o: &Self) -> Ordering {
-        o.f.total_cmp(&self.f).then(o.h.total_cmp(&self.h)).then(o.v.cmp(&self.v))
-    }
-}
+pub(super) type Open = Least<f64>;
 
 impl LatticePlanner {
     fn heuristic(&self, v: usize) -> f64 {
@@ -49,7 +24,7 @@ impl LatticePlanner {
         let s = self.ends[0];
         let h = self.heuristic(s);
         self.g.insert(s, 0.0);
-        self.open.push(Open { f: h, h, g: 0.0, v: s });
+        self.open.push(Open { key: h, tie: h, id: s, item: 0.0 });
         self.stage = Stage::Search;
     }
 
@@ -106,7 +81,7 @@ impl LatticePlanner {
 
     pub(super) fn search_unit(&mut self) {
         let goal = self.ends[1];
-        let Some(Open { g: g_pushed, v, .. }) = self.open.pop() else {
+        let Some(Open { item: g_pushed, id: v, .. }) = self.open.pop() else {
             self.status = Some(PlanStatus::NoPath);
             self.stage = Stage::Done;
             return;
@@ -134,7 +109,7 @@ impl LatticePlanner {
                 self.g.insert(w, gw);
                 self.parent.insert(w, v);
                 let h = self.heuristic(w);
-                self.open.push(Open { f: gw + h, h, g: gw, v: w });
+                self.open.push(Open { key: gw + h, tie: h, id: w, item: gw });
             }
         }
     }

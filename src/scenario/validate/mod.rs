@@ -92,37 +92,10 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
     if let Some(w) = &mut wrench {
         w.closure = wrench::closure(&raw, version)?;
     }
-    let m = robot.cables.len();
-    if wrench.as_ref().is_some_and(|w| !w.is_single()) && !facets_enumerable(m, robot.mobility) {
-        let field = if raw.wrench.as_ref().is_some_and(|r| r.radius.is_some()) { "wrench.radius" } else { "wrench.ellipsoid" };
-        let n = robot.mobility.dof();
-        return Err(Error::new(
-            field,
-            format!(
-                "a wrench ellipsoid is supported while the available wrench set has at most {MAX_FACETS} facet pairs (it is \
-                 tested against every one, one per {} structure-matrix columns: up to 10 cables on a spatial platform, 23 on a \
-                 point mass or a planar one; beyond that a single wrench, the platform's dynamics and closure are tested by \
-                 linear programs); this robot has {m} cables, {} facet pairs",
-                n - 1,
-                crate::query::wrench::binomial(m, n - 1)
-            ),
-        ));
-    }
     Ok(Scenario { name: raw.name, robot, clearance, obstacles, poses, written_angles, trajectories, queries, wrench, configs, joint_paths: Vec::new(), warnings })
 }
 
-/// Most facet pairs (sets of n − 1 of the structure matrix's m columns, C(m, n − 1); 252 = C(10, 5))
-/// for which the wrench conditions test them all: a wrench ellipsoid is supported up to this;
-/// beyond it a single wrench and closure are tested by linear programs
-/// (`conditions::WrenchFeasibilityLp`).
-pub const MAX_FACETS: usize = 252;
-
-/// Whether the wrench conditions enumerate the facets of `m` cables for a platform moving as
-/// `mobility` (at most [`MAX_FACETS`] of them): up to 10 cables on a spatial platform, 23 on a
-/// point mass or a planar one.
-pub fn facets_enumerable(m: usize, mobility: crate::model::Mobility) -> bool {
-    crate::query::wrench::binomial(m, mobility.dof() - 1) <= MAX_FACETS
-}
+pub use crate::query::facets::{facets_enumerable, MAX_FACETS};
 
 
 /// A finite number at `field`.
