@@ -7,6 +7,7 @@
 //! positively-weighted combinations) adds a small, explicitly bounded rounding term.
 
 use smallvec::{smallvec, SmallVec};
+use std::borrow::Cow;
 use std::sync::OnceLock;
 
 /// Bernstein coefficients: up to [`INLINE`] of them stored in place (every polynomial of the
@@ -93,11 +94,11 @@ impl Bern {
         let n = a.len() - 1;
         let mut c = zeros(n + 1);
         let mut bound = 0.0f64;
+        let bn = pascal_row(n);
         for (k, ck) in c.iter_mut().enumerate() {
-            let mut s = 0.0;
-            let mut mag = 0.0;
+            let (mut s, mut mag, bk) = (0.0, 0.0, pascal_row(k));
             for (j, aj) in a.iter().enumerate().take(k + 1) {
-                let t = binomial(k, j) / binomial(n, j) * aj;
+                let t = bk[j] / bn[j] * aj;
                 s += t;
                 mag += t.abs();
             }
@@ -207,13 +208,13 @@ impl Bern {
             }
         } else {
             let (bm, bn, bmn) = (pascal_row(m), pascal_row(n), pascal_row(m + n));
-            for (i, (x, bi)) in self.c.iter().zip(&bm).enumerate() {
+            for (i, (x, bi)) in self.c.iter().zip(bm.iter()).enumerate() {
                 let ai = x * bi;
-                for ((ck, y), bj) in c[i..].iter_mut().zip(&other.c[..]).zip(&bn) {
+                for ((ck, y), bj) in c[i..].iter_mut().zip(&other.c[..]).zip(bn.iter()) {
                     *ck += ai * (y * bj);
                 }
             }
-            for (ck, b) in c.iter_mut().zip(&bmn) {
+            for (ck, b) in c.iter_mut().zip(bmn.iter()) {
                 *ck /= b;
             }
         }
@@ -267,13 +268,13 @@ impl Bern {
     /// taken relative to Σ|c_k|B_k(x) ≤ max|c|.
     pub fn eval(&self, x: f64) -> (f64, f64) {
         let n = self.degree();
-        let row = &pascal_row_ref(n);
+        let row = pascal_row(n);
         let (r, scale, forward) = if x <= 0.5 { (x / (1.0 - x), (1.0 - x).powi(n as i32), false) } else { ((1.0 - x) / x, x.powi(n as i32), true) };
         let (mut acc, c) = (0.0, &self.c[..]);
         for k in 0..=n {
             // highest power first: c_n (or c_0 when running backwards)
             let j = if forward { k } else { n - k };
-            acc = acc * r + c[j] * row.get(j).copied().unwrap_or_else(|| binomial(n, j));
+            acc = acc * r + c[j] * row[j];
         }
         (acc * scale, self.err + (5 * n + 5) as f64 * U * self.max_abs())
     }
@@ -389,28 +390,29 @@ fn elevate_into(c: &[f64], out: &mut [f64]) {
             *o *= q;
         }
     } else {
+        let (bm, br, bn) = (pascal_row(m), pascal_row(r), pascal_row(n));
         for (k, o) in out.iter_mut().enumerate() {
             let (lo, hi) = (k.saturating_sub(r), k.min(m));
-            *o = (lo..=hi).map(|j| binomial(m, j) * binomial(r, k - j) / binomial(n, k) * c[j]).sum();
+            *o = (lo..=hi).map(|j| bm[j] * br[k - j] / bn[k] * c[j]).sum();
         }
     }
 }
 
-/// Row n of the binomial table, borrowed (empty past the table: callers then compute entries).
-fn pascal_row_ref(n: usize) -> &'static [f64] {
+/// Row n of the binomial table: borrowed from the table up to [`MAX_DEGREE`], computed past it
+/// in O(n), each entry the same number [`binomial`] gives (the same products in the same order,
+/// mirrored about the middle).
+fn pascal_row(n: usize) -> Cow<'static, [f64]> {
     if n <= MAX_DEGREE {
-        &pascal()[n]
-    } else {
-        &[]
+        return Cow::Borrowed(&pascal()[n]);
     }
-}
-
-fn pascal_row(n: usize) -> Vec<f64> {
-    if n <= MAX_DEGREE {
-        pascal()[n].clone()
-    } else {
-        (0..=n).map(|k| binomial(n, k)).collect()
+    let mut row = vec![1.0; n + 1];
+    let mut acc = 1.0;
+    for i in 0..n / 2 {
+        acc = acc * (n - i) as f64 / (i + 1) as f64;
+        row[i + 1] = acc;
+        row[n - i - 1] = acc;
     }
+    Cow::Owned(row)
 }
 
 #[cfg(test)]
@@ -419,6 +421,16 @@ mod tests {
 
     fn mono_eval(a: &[f64], x: f64) -> f64 {
         a.iter().rev().fold(0.0, |acc, c| acc * x + c)
+    }
+
+    /// Rows past the table are the numbers `binomial` gives, bit for bit.
+    #[test]
+    fn rows_past_the_table_are_binomial() {
+        for n in [MAX_DEGREE - 1, MAX_DEGREE, MAX_DEGREE + 1, MAX_DEGREE + 2, 400, 777] {
+            let row = pascal_row(n);
+            assert_eq!(row.len(), n + 1);
+            assert!((0..=n).all(|k| row[k].to_bits() == binomial(n, k).to_bits()), "row {n}");
+        }
     }
 
     #[test]
