@@ -22,7 +22,7 @@
 use std::rc::Rc;
 
 use super::interval::Iv;
-use super::load::{inverse_square, with_inertia};
+use super::load::{inverse_square, split_part, split_under, with_inertia, TimeLaw};
 use super::primitives::{GT, LT};
 use super::structure::{det_with, minors, quadratic_form, row_weight, structure_numerators};
 use super::{Condition, Kind, Local, PoseCheck, Sweep};
@@ -39,6 +39,9 @@ struct Facet {
     /// d_0 = n̂_S·(D_w ℓ) (times the load's w^q), and its inertial part for one second (a
     /// motion run in T seconds has d_0 + inertial/T²).
     load: (Bern, Option<Bern>),
+    /// The inertial part kept apart from the time law, (per unit λ̈, per unit λ̇²), where
+    /// asked for ([`FacetPolys::new`]): what [`FacetPolys::part`] restricts.
+    split: Option<(Bern, Bern)>,
     /// r_S² = (D_w n̂_S)ᵀ E⁻¹ (D_w n̂_S) ≥ 0 (times w^2q); `None` for a single wrench (E⁻¹ = 0).
     reach2: Option<Bern>,
 }
@@ -60,11 +63,15 @@ pub struct FacetPolys {
     weight: Bern,
     /// w^q, the positive factor the loads d_0 carry (`None` for 1).
     scale: Option<Bern>,
+    /// Whether the inertial parts are kept apart from the law (or there are none).
+    split: bool,
 }
 
 impl FacetPolys {
-    /// The shared polynomials of `sweep` under `load`.
-    pub fn new(sweep: &Sweep, load: &Load) -> FacetPolys {
+    /// The shared polynomials of `sweep` under `load`; with `split`, the inertial parts are
+    /// also kept apart from the time law, so that parts of the motion under other laws can be
+    /// restricted from them ([`Self::part`]).
+    pub fn new(sweep: &Sweep, load: &Load, split: bool) -> FacetPolys {
         let local = Local::of(sweep, load);
         let rows = load.rows();
         let dim = rows.len();
@@ -73,7 +80,7 @@ impl FacetPolys {
         let w2 = w.mul(w);
         let e_inv = &load.wrench.ellipsoid_inv;
         let single = load.wrench.is_single();
-        let (load_rows, inertial) = (&local.load.rows, local.inertial());
+        let load_rows = &local.load.rows;
         let m = local.cables.len();
         let facets = subsets(m, dim - 1)
             .into_iter()
@@ -94,18 +101,44 @@ impl FacetPolys {
                     local.load.scaled_square(quadratic_form(&g, e_inv, rows))
                 });
                 let d0 = |all: &[Bern; 6]| det_with(&minors, &rows.iter().map(|&r| &all[r]).collect::<Vec<_>>());
-                Facet { others, load: (d0(load_rows), inertial.map(d0)), reach2 }
+                // d_0 is linear in the rows: the split parts' d_0 under the law is the rows'
+                let split = if split { local.load.inertial.as_ref().map(|r| (d0(&r.accel), d0(&r.square))) } else { None };
+                let inertial = if split.is_some() { split_under(&split, local.law.as_ref()) } else { local.inertial().map(d0) };
+                Facet { others, load: (d0(load_rows), inertial), split, reach2 }
             })
             .collect();
         let len2 = local.len2();
-        FacetPolys { facets, len2, weight: w.clone(), scale: local.load.scale.clone() }
+        FacetPolys { facets, len2, weight: w.clone(), scale: local.load.scale.clone(), split: split || local.load.inertial.is_none() }
     }
 
-    fn of(sweep: &mut Sweep, load: &Load) -> Rc<FacetPolys> {
+    /// The polynomials on the part [a, b] of the motion they were expanded on, re-parametrised
+    /// to [0, 1] and run by `law` there (for one second): restricted, not expanded again, as
+    /// [`super::tension::TensionPolys::part`] does. `None` unless the inertial parts were kept
+    /// apart from the law.
+    pub fn part(&self, (a, b): (f64, f64), law: Option<&TimeLaw>) -> Option<FacetPolys> {
+        if !self.split {
+            return None;
+        }
+        let r = |p: &Bern| p.restrict(a, b);
+        let facets = self
+            .facets
+            .iter()
+            .map(|f| {
+                let split = split_part(&f.split, (a, b));
+                let inertial = split_under(&split, law);
+                Facet { others: f.others.iter().map(|(k, d)| (*k, r(d))).collect(), load: (r(&f.load.0), inertial), split, reach2: f.reach2.as_ref().map(r) }
+            })
+            .collect();
+        Some(FacetPolys { facets, len2: self.len2.iter().map(r).collect(), weight: r(&self.weight), scale: self.scale.as_ref().map(r), split: true })
+    }
+
+    /// The sweep's polynomials, built if they are not yet (or, when `split` asks for the
+    /// inertial parts apart from the law, they are not).
+    fn of(sweep: &mut Sweep, load: &Load, split: bool) -> Rc<FacetPolys> {
         match &sweep.facets {
-            Some(p) => Rc::clone(p),
-            None => {
-                let p = Rc::new(FacetPolys::new(sweep, load));
+            Some(p) if !split || p.split => Rc::clone(p),
+            _ => {
+                let p = Rc::new(FacetPolys::new(sweep, load, split));
                 sweep.facets = Some(Rc::clone(&p));
                 p
             }
@@ -130,9 +163,13 @@ impl Condition for WrenchClosure {
         "wrench closure".to_string()
     }
 
+    fn prepare(&self, sweep: &mut Sweep) {
+        FacetPolys::of(sweep, &self.load, true);
+    }
+
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let tol = sweep.tol;
-        let polys = FacetPolys::of(sweep, &self.load);
+        let polys = FacetPolys::of(sweep, &self.load, false);
         not_spanning(polys.facets.iter().map(|f| f.others.iter().map(|(_, d)| d.clone()).collect()), tol)
     }
 
@@ -328,9 +365,13 @@ impl Condition for WrenchFeasibility {
         "wrench feasibility".to_string()
     }
 
+    fn prepare(&self, sweep: &mut Sweep) {
+        FacetPolys::of(sweep, &self.load, true);
+    }
+
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let tol = sweep.tol;
-        let polys = FacetPolys::of(sweep, &self.load);
+        let polys = FacetPolys::of(sweep, &self.load, false);
         let live: Vec<usize> = (0..polys.facets.len()).filter(|&i| !polys.facets[i].degenerate()).collect();
         if live.is_empty() {
             return Partition::constant(Truth::True); // rank < n − 1 all along: nothing is balanced

@@ -87,6 +87,19 @@ pub(crate) fn per_part_unit(p: &Bern, (a, b): (f64, f64), power: i32) -> Bern {
     p.restrict(a, b).scale((b - a).powi(power))
 }
 
+/// An inertial part kept apart from the time law — (per unit λ̈, per unit λ̇²) — under `law`:
+/// λ̈·accel + λ̇²·square (`None` without either).
+pub(crate) fn split_under(split: &Option<(Bern, Bern)>, law: Option<&TimeLaw>) -> Option<Bern> {
+    let ((accel, square), law) = (split.as_ref()?, law?);
+    Some(law.accel.mul(accel).add(&law.square.mul(square)))
+}
+
+/// A split inertial part ([`split_under`]) on the part [a, b] of the motion, per unit of the
+/// part's own λ̈ and λ̇² ([`per_part_unit`]).
+pub(crate) fn split_part(split: &Option<(Bern, Bern)>, (a, b): (f64, f64)) -> Option<(Bern, Bern)> {
+    split.as_ref().map(|(accel, square)| (per_part_unit(accel, (a, b), 1), per_part_unit(square, (a, b), 2)))
+}
+
 /// 1/T² for a motion run in `duration` seconds (0 at rest, `None`).
 pub(crate) fn inverse_square(duration: Option<f64>) -> f64 {
     duration.map_or(0.0, |d| 1.0 / (d * d))

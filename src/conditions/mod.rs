@@ -216,6 +216,7 @@ impl Sweep {
         };
         let law = reference_law(&part);
         part.tension = self.tension.as_ref().and_then(|t| t.part((a, b), law.as_ref())).map(Rc::new);
+        part.facets = self.facets.as_ref().and_then(|f| f.part((a, b), law.as_ref())).map(Rc::new);
         part
     }
 }

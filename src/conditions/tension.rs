@@ -19,7 +19,7 @@ use std::borrow::Cow;
 use std::rc::Rc;
 
 use super::algebra::H;
-use super::load::{inverse_square, per_part_unit, with_inertia, TimeLaw};
+use super::load::{inverse_square, split_part, split_under, with_inertia, TimeLaw};
 use super::primitives::{all_of, any_of, GT, LT};
 use super::structure::{minors, quadratic_form, row_weight, structure_numerators};
 use super::{Condition, Kind, Local, PoseCheck, Sweep};
@@ -65,14 +65,6 @@ struct Column {
     /// α_i's inertial part under the motion's law for one second: a motion run in T seconds has
     /// α_i = alpha + inertial/T².
     inertial: Option<Bern>,
-}
-
-impl Column {
-    /// The inertial part under `law` from the split one.
-    fn under(split: &Option<(Bern, Bern)>, law: Option<&TimeLaw>) -> Option<Bern> {
-        let ((accel, square), law) = (split.as_ref()?, law?);
-        Some(law.accel.mul(accel).add(&law.square.mul(square)))
-    }
 }
 
 /// The polynomials the tension conditions of one motion share, on one λ-interval.
@@ -124,8 +116,8 @@ impl TensionPolys {
             .columns
             .iter()
             .map(|c| {
-                let split = c.split.as_ref().map(|(accel, square)| (per_part_unit(accel, (a, b), 1), per_part_unit(square, (a, b), 2)));
-                let inertial = Column::under(&split, law);
+                let split = split_part(&c.split, (a, b));
+                let inertial = split_under(&split, law);
                 Column { cable: c.cable, alpha: r(&c.alpha), beta: r(&c.beta), split, inertial }
             })
             .collect();
@@ -186,7 +178,7 @@ impl TensionPolys {
             // apart from the law (for parts) or under it: one dot product fewer
             let (split, inertial) = if split {
                 let split = local.load.inertial.as_ref().map(|r| (dot(&r.accel), dot(&r.square)));
-                let inertial = Column::under(&split, local.law.as_ref());
+                let inertial = split_under(&split, local.law.as_ref());
                 (split, inertial)
             } else {
                 (None, local.inertial().map(dot))
