@@ -361,16 +361,23 @@ fn caspr_models_statics_match_virtual_work() {
         let chain = s.robot.chain.as_ref().unwrap();
         assert!(chain.is_loaded(), "{name}: its links' masses are imported");
         let (lo, hi): (Vec<f64>, Vec<f64>) = s.robot.cables.iter().map(|c| (c.tension.min, c.tension.max)).unzip();
-        let condition = statics(&s);
-        let (mut judged, mut held) = (0, 0);
-        for _ in 0..per_model {
-            let q = chains::library_config(&mut rng, &s);
-            let Some(reference) = reference_margin_each(&s, &q, &lo, &hi) else { continue };
-            let check = condition.check(&cables_at_config(&s.robot, &q));
-            assert_eq!(!check.violated, reference > 0.0, "{name} at {q:?}: margin {reference} by virtual work, {:?} by the condition", check.distance);
-            judged += 1;
-            held += usize::from(reference > 0.0);
-        }
+        let configs: Vec<_> = (0..per_model).map(|_| chains::library_config(&mut rng, &s)).collect();
+        // per configuration: None unjudged, else whether the reference holds; half of them on
+        // each thread, each with a condition of its own
+        let half = per_model.div_ceil(2);
+        let verdicts: Vec<Option<bool>> = support::on_two_threads(2, &|w| {
+            let condition = statics(&s);
+            let judge = |q: &Vec<f64>| {
+                let reference = reference_margin_each(&s, q, &lo, &hi)?;
+                let check = condition.check(&cables_at_config(&s.robot, q));
+                assert_eq!(!check.violated, reference > 0.0, "{name} at {q:?}: margin {reference} by virtual work, {:?} by the condition", check.distance);
+                Some(reference > 0.0)
+            };
+            configs.iter().skip(w * half).take(half).map(judge).collect::<Vec<_>>()
+        })
+        .concat();
+        let judged = verdicts.iter().flatten().count();
+        let held = verdicts.iter().flatten().filter(|&&h| h).count();
         assert!(judged * 10 > per_model * 9, "{name}: {judged} of {per_model} judged");
         eprintln!("{name}: {judged} configurations judged, statically feasible at {held}");
     }
