@@ -13,7 +13,7 @@
 #   6. tests/browser/e2e-edit.mjs      editing, reload, shared link, embed, files, CASPR (checked
 #                                      against the CLI that step 1 built)
 #   7. tests/browser/e2e-view.mjs      the page's 3-D view, plots, exports and planning end to end
-#                                      (compares with the CLI: brings the release binary up to date)
+#                                      (compares with the CLI step 1 built, brought up to date)
 #   8. tests/browser/e2e-workbench.mjs the layout at 1366×768 and 390×844, the results tabs,
 #                                      dragging a via point in 3-D (against the CLI), undo/redo,
 #                                      planning in a Web Worker while typing and orbiting (frames

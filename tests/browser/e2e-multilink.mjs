@@ -31,7 +31,7 @@
 import { execFileSync } from 'node:child_process';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { begin, cliJson, cliSections, cliVerify, openTab, stripSections, watchProblems } from './harness.mjs';
+import { begin, cli, cliJson, cliSections, cliVerify, openTab, stripSections, watchProblems } from './harness.mjs';
 
 const { root, artifacts, scratch, test, finish, base, browser, close } = await begin(import.meta.url, { watchdogMinutes: 8, scratch: 'cablenav-multilink-' });
 const TIMEOUT = 60_000;
@@ -285,8 +285,8 @@ await test('a routed model of CASPR\'s library imported on the page (SJTUSnake: 
   await page.waitForFunction(() => JSON.parse(document.querySelector('textarea[data-testid="source"]').value).name === 'SJTUSnake', null, { timeout: TIMEOUT });
   const text = await page.$eval('textarea[data-testid="source"]', (t) => t.value);
   const imported = JSON.parse(text);
-  // the CLI's conversion of the same directory (the binary is up to date: cliJson built it above)
-  const cli = JSON.parse(execFileSync(join(root, 'target', 'release', 'cablenav'), ['import', dir], { cwd: root, encoding: 'utf8', maxBuffer: 64 << 20 }));
+  // the CLI's conversion of the same directory
+  const cli = JSON.parse(execFileSync(cli(root), ['import', dir], { cwd: root, encoding: 'utf8', maxBuffer: 64 << 20 }));
   if (JSON.stringify(imported) !== JSON.stringify(cli)) throw new Error('the page imported another scenario than `cablenav import`');
   const routed = imported.robot.cables.filter((c) => c.via || c.from).length;
   if (imported.format !== 'cablenav-scenario/6' || imported.robot.cables.length !== 36 || routed < 30) throw new Error(`${imported.format}, ${imported.robot.cables.length} cables, ${routed} routed`);

@@ -2,7 +2,7 @@
 // headless Chromium driven by playwright-core, against the built page (scripts/build-page.sh).
 //   node tests/browser/e2e-view.mjs [PAGE_DIR]      (default: target/page)
 // The page's sections are compared with what the CLI prints for the same scenario
-// (`cablenav verify FILE --json`, the release binary, brought up to date first). Screenshots go to
+// (`cablenav verify FILE --json`, the CLI step 1 built, brought up to date first). Screenshots go to
 // tests/browser/artifacts/. Ends with "N passed, M failed"; exits 1 on failure.
 
 import { readFileSync, writeFileSync } from 'node:fs';

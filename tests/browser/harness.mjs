@@ -170,8 +170,8 @@ export async function readSections(scope) {
   );
 }
 
-/** What `cablenav verify FILE --trajectory NAME --json` prints, parsed (the release binary under
- * `root`, brought up to date first). */
+/** What `cablenav verify FILE --trajectory NAME --json` prints, parsed (the CLI under `root`,
+ * brought up to date first: [`cliJson`]). */
 export function cliVerify(root, file, trajectory) {
   return cliJson(root, ['verify', file, '--trajectory', trajectory]);
 }
@@ -254,17 +254,22 @@ export function frameStats(xs) {
   return { n: s.length, median: s[Math.floor(s.length / 2)] ?? NaN, worst: s[s.length - 1] ?? NaN, dropped: s.filter((x) => x > 25).length };
 }
 
-/** Whether this process has brought the release CLI up to date. */
+/** Whether this process has brought the CLI up to date. */
 let cliFresh = false;
 
-/** What `cablenav ARGS…` prints with --json, parsed (the release binary under `root`, brought up
- * to date once per process: a binary left from an older commit would compare the page with
- * another core). */
-export function cliJson(root, args) {
-  const cliPath = join(root, 'target', 'release', 'cablenav');
+/** The CLI under `root`, brought up to date once per process (a binary left from an older commit
+ * would compare the page with another core): the dev profile's (`opt-level = 2`), which
+ * `cargo test --workspace` (scripts/test.sh step 1) has built already, so that the browser tests
+ * do not build the core and its dependencies once more in release. */
+export function cli(root) {
   if (!cliFresh) {
-    execFileSync('cargo', ['build', '--release', '-q', '--bin', 'cablenav'], { cwd: root, stdio: 'inherit' });
+    execFileSync('cargo', ['build', '-q', '--bin', 'cablenav'], { cwd: root, stdio: 'inherit' });
     cliFresh = true;
   }
-  return JSON.parse(execFileSync(cliPath, [...args, '--json'], { cwd: root, encoding: 'utf8' }));
+  return join(root, 'target', 'debug', 'cablenav');
+}
+
+/** What `cablenav ARGS…` prints with --json, parsed ([`cli`]). */
+export function cliJson(root, args) {
+  return JSON.parse(execFileSync(cli(root), [...args, '--json'], { cwd: root, encoding: 'utf8' }));
 }
