@@ -334,8 +334,8 @@ LOAD_AFTER=$(cut -d' ' -f1-3 /proc/loadavg)
 grep -h '^BENCH ' "$TMP/before.txt" "$TMP/native.txt" "$TMP/wasm.txt" > "$TMP/all.txt"
 n_native=$(grep '^BENCH native ' "$TMP/all.txt" | grep -vc ' lattice/' || true)
 n_wasm=$(grep '^BENCH wasm ' "$TMP/all.txt" | grep -vc ' lattice/' || true)
-if [ "$n_native" -ne 45 ] || [ "$n_wasm" -ne 45 ]; then
-  say "expected 45 native and 45 wasm results, got $n_native and $n_wasm:"
+if [ "$n_native" -ne 47 ] || [ "$n_wasm" -ne 47 ]; then
+  say "expected 47 native and 47 wasm results, got $n_native and $n_wasm:"
   cat "$TMP/native.txt" "$TMP/wasm.txt" >&2
   exit 1
 fi
