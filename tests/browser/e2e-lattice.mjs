@@ -19,7 +19,7 @@
 import { spawnSync } from 'node:child_process';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { begin, cli, cliJson, cliSections, cliVerify, frameStats, openTab, recordFrames, stopFrames, stripSections, watchProblems } from './harness.mjs';
+import { begin, cliBinary, cliJson, cliSections, cliVerify, frameStats, openTab, recordFrames, stopFrames, stripSections, watchProblems } from './harness.mjs';
 
 const { root, artifacts, scratch, test, finish, base, browser, close } = await begin(import.meta.url, { watchdogMinutes: 10, scratch: 'cablenav-lattice-' });
 const TIMEOUT = 60_000;
@@ -191,7 +191,7 @@ await test('the lattice planner\'s steps: 1 is refused with the CLI\'s error, 9 
   // out of range: the core's error, as the CLI prints it
   await setSteps(1);
   const refused = await planned();
-  const cli = spawnSync(cli(root), [...args, '1'], { cwd: root, encoding: 'utf8' });
+  const cli = spawnSync(cliBinary(root), [...args, '1'], { cwd: root, encoding: 'utf8' });
   const want = cli.stderr.trim().replace(/^cablenav: /, '');
   if (cli.status === 0 || !want.startsWith('--steps:')) throw new Error(`the CLI accepted --steps 1: ${cli.stdout} ${cli.stderr}`);
   if (refused.state !== 'error' || refused.status !== `The planner refused: ${want}`) throw new Error(`page: ${refused.state} "${refused.status}"; CLI: "${want}"`);

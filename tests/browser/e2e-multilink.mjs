@@ -31,7 +31,7 @@
 import { execFileSync } from 'node:child_process';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { begin, cli, cliJson, cliSections, cliVerify, openTab, stripSections, watchProblems } from './harness.mjs';
+import { begin, cliBinary, cliJson, cliSections, cliVerify, openTab, stripSections, watchProblems } from './harness.mjs';
 
 const { root, artifacts, scratch, test, finish, base, browser, close } = await begin(import.meta.url, { watchdogMinutes: 8, scratch: 'cablenav-multilink-' });
 const TIMEOUT = 60_000;
@@ -286,7 +286,7 @@ await test('a routed model of CASPR\'s library imported on the page (SJTUSnake: 
   const text = await page.$eval('textarea[data-testid="source"]', (t) => t.value);
   const imported = JSON.parse(text);
   // the CLI's conversion of the same directory
-  const cli = JSON.parse(execFileSync(cli(root), ['import', dir], { cwd: root, encoding: 'utf8', maxBuffer: 64 << 20 }));
+  const cli = JSON.parse(execFileSync(cliBinary(root), ['import', dir], { cwd: root, encoding: 'utf8', maxBuffer: 64 << 20 }));
   if (JSON.stringify(imported) !== JSON.stringify(cli)) throw new Error('the page imported another scenario than `cablenav import`');
   const routed = imported.robot.cables.filter((c) => c.via || c.from).length;
   if (imported.format !== 'cablenav-scenario/6' || imported.robot.cables.length !== 36 || routed < 30) throw new Error(`${imported.format}, ${imported.robot.cables.length} cables, ${routed} routed`);

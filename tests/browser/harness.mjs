@@ -171,7 +171,7 @@ export async function readSections(scope) {
 }
 
 /** What `cablenav verify FILE --trajectory NAME --json` prints, parsed (the CLI under `root`,
- * brought up to date first: [`cliJson`]). */
+ * brought up to date first: [`cliBinary`]). */
 export function cliVerify(root, file, trajectory) {
   return cliJson(root, ['verify', file, '--trajectory', trajectory]);
 }
@@ -261,7 +261,7 @@ let cliFresh = false;
  * would compare the page with another core): the dev profile's (`opt-level = 2`), which
  * `cargo test --workspace` (scripts/test.sh step 1) has built already, so that the browser tests
  * do not build the core and its dependencies once more in release. */
-export function cli(root) {
+export function cliBinary(root) {
   if (!cliFresh) {
     execFileSync('cargo', ['build', '-q', '--bin', 'cablenav'], { cwd: root, stdio: 'inherit' });
     cliFresh = true;
@@ -269,7 +269,7 @@ export function cli(root) {
   return join(root, 'target', 'debug', 'cablenav');
 }
 
-/** What `cablenav ARGS…` prints with --json, parsed ([`cli`]). */
+/** What `cablenav ARGS…` prints with --json, parsed ([`cliBinary`]). */
 export function cliJson(root, args) {
-  return JSON.parse(execFileSync(cli(root), [...args, '--json'], { cwd: root, encoding: 'utf8' }));
+  return JSON.parse(execFileSync(cliBinary(root), [...args, '--json'], { cwd: root, encoding: 'utf8' }));
 }
