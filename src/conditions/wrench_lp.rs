@@ -56,12 +56,12 @@ use nalgebra::{DMatrix, DVector};
 
 use super::interval::Iv;
 use super::load::{inverse_square, with_inertia};
-use super::structure::structure_numerators;
+use super::structure::{quadratic_form, structure_numerators};
 use super::{Condition, Kind, Local, PoseCheck, Sweep};
 use crate::model::{Bounds, Load};
 use crate::poly::{Bern, Partition, Truth};
 use crate::query::cables::PoseCables;
-use crate::query::wrench::{closure_by_lp, enclosing_direction, select, separating_direction, static_margin, static_margin_of, structure_matrix_m};
+use crate::query::wrench::{closure_by_lp, enclosing_direction, select, select_square, separating_direction, static_margin, static_margin_of, structure_matrix_m};
 use crate::query::zonotope::{contains, Containment, Cover, Verdict};
 
 /// Most pieces one motion is bisected into before the rest is reported undecided.
@@ -287,19 +287,18 @@ impl WrenchFeasibilityLp {
     #[allow(clippy::too_many_arguments)]
     fn decide_ellipsoid(&self, piece: &Piece, nn: &[Vec<Bern>], inv: &[InverseLength], j: &DMatrix<f64>, b: &DVector<f64>, d: &[Bern], w: Iv, search: &mut Search, open: &mut Option<Vec<usize>>) -> Truth {
         let n = j.nrows();
-        let rows = self.load.rows();
-        let e_inv = DMatrix::from_fn(n, n, |a, c| self.load.wrench.ellipsoid_inv[(rows[a], rows[c])]);
+        let e_inv = select_square(&self.load.wrench.ellipsoid_inv, self.load.rows());
         let dc: Vec<f64> = d.iter().map(|p| p.eval(0.5).0).collect();
         let shape = DMatrix::from_fn(n, n, |a, c| dc[a] * e_inv[(a, c)] * dc[c]);
         let problem = Containment { j, bounds: &self.bounds, centre: b, shape: &shape };
         let cover = search.cover.get_or_insert_with(|| Cover::orthants(n));
         cover.load(&problem);
         let open = open.get_or_insert_with(|| cover.all());
-        let mut along = Along { piece, nn, inv, d, e_inv: &e_inv, shared: None };
+        let mut along = Along { piece, nn, inv, d, e_inv: &e_inv, shape: &shape, shared: None };
         match cover.certify(&problem, Some(&mut |f, rays| along.holds(f, rays)), &mut search.cuts, open) {
             Verdict::Holds => Truth::True,
             Verdict::Fails(ys) => {
-                let shown = ys.iter().any(|y| self.infeasible(piece, nn, inv, y, w, Some((d, &e_inv))) == Truth::False);
+                let shown = ys.iter().any(|y| self.infeasible(piece, nn, inv, y, w, Some(d)) == Truth::False);
                 if shown { Truth::False } else { Truth::Unknown }
             }
             Verdict::Unknown => Truth::Unknown,
@@ -363,10 +362,10 @@ impl WrenchFeasibilityLp {
         Truth::True
     }
 
-    /// False when the direction `y` keeps y·load (plus, with an ellipsoid — its rows' factors and
-    /// E⁻¹ — the reach √((Dy)ᵀE⁻¹(Dy))) above the zonotope's support on the whole piece (module
-    /// docs).
-    fn infeasible(&self, piece: &Piece, nn: &[Vec<Bern>], inv: &[InverseLength], y: &DVector<f64>, w: Iv, ellipsoid: Option<(&[Bern], &DMatrix<f64>)>) -> Truth {
+    /// False when the direction `y` keeps y·load (plus, with an ellipsoid — given its rows'
+    /// factors D — the reach √((Dy)ᵀE⁻¹(Dy))) above the zonotope's support on the whole piece
+    /// (module docs).
+    fn infeasible(&self, piece: &Piece, nn: &[Vec<Bern>], inv: &[InverseLength], y: &DVector<f64>, w: Iv, row_scale: Option<&[Bern]>) -> Truth {
         let (n, m) = (nn.len(), inv.len());
         // max(f_min a_k, f_max a_k) ≤ α_k + β_k a_k on the range of a_k = y·n_k (the chord of a
         // convex function); the support's polynomial part over W is Σ_k s_k (α_k + β_k a_k) =
@@ -401,14 +400,9 @@ impl WrenchFeasibilityLp {
         }
         let excess = Bern::linear_combination(&(0..n).map(|r| (&piece.load[r], y[r])).collect::<Vec<_>>()).sub(&piece.w.mul(&support));
         // the reach's least value on the piece: (Dy)ᵀE⁻¹(Dy) is a polynomial
-        let reach = ellipsoid.map_or(0.0, |(d, e_inv)| {
+        let reach = row_scale.map_or(0.0, |d| {
             let dy: Vec<Bern> = d.iter().zip(y.iter()).map(|(p, &yr)| p.scale(yr)).collect();
-            let mut square = Bern::constant(0.0);
-            for a in 0..n {
-                let terms: Vec<(&Bern, f64)> = (0..n).map(|c| (&dy[c], e_inv[(a, c)])).collect();
-                square = square.add(&dy[a].mul(&Bern::linear_combination(&terms)));
-            }
-            least(&square).max(0.0).sqrt()
+            least(&quadratic_form(&dy, &self.load.wrench.ellipsoid_inv, self.load.rows())).max(0.0).sqrt()
         });
         if least(&excess) + reach * (1.0 - SLACK) - w.hi * rest - SLACK * excess.max_abs() > 0.0 {
             Truth::False
@@ -456,6 +450,8 @@ struct Along<'a> {
     inv: &'a [InverseLength],
     d: &'a [Bern],
     e_inv: &'a DMatrix<f64>,
+    /// The middle's shape D E⁻¹ D (D at the middle), for the tangent point c of each ray.
+    shape: &'a DMatrix<f64>,
     /// What every cone's check on this piece shares, made by the first.
     shared: Option<Shared>,
 }
@@ -497,8 +493,7 @@ impl Along<'_> {
     }
 
     fn holds(&mut self, f: &[f64], rays: &[DVector<f64>]) -> bool {
-        let (inv, e_inv, w) = (self.inv, self.e_inv, &self.piece.w);
-        let dc: Vec<f64> = self.d.iter().map(|p| p.eval(0.5).0).collect();
+        let (inv, e_inv, shape, w) = (self.inv, self.e_inv, self.shape, &self.piece.w);
         let shared = self.shared();
         let n = shared.rows.len();
         // q_r = W Σ_k f_k s_k n_rk − load_r, within err_r of J̃(λ)f − ℓ̃ (the ε_k of 1/L_k)
@@ -507,7 +502,7 @@ impl Along<'_> {
         let err: Vec<f64> = (0..n).map(|r| inv.iter().zip(f).enumerate().map(|(k, (il, fk))| fk.abs() * shared.size[r][k] * il.eps).sum()).collect();
         let scale = q.iter().map(Bern::max_abs).fold(0.0, f64::max);
         rays.iter().all(|v| {
-            let reach2: f64 = (0..n).map(|a| (0..n).map(|b| v[a] * v[b] * e_inv[(a, b)] * dc[a] * dc[b]).sum::<f64>()).sum();
+            let reach2 = v.dot(&(shape * v));
             let c = reach2.max(0.0).sqrt().max(1e-12 * scale).max(f64::MIN_POSITIVE);
             // Σ_r v_r q_r − (Σ_ab v_a v_b E⁻¹_ab d_a d_b + c²)/(2c)
             let mut terms: Vec<(&Bern, f64)> = (0..n).map(|r| (&q[r], v[r])).collect();
@@ -613,8 +608,7 @@ impl Condition for WrenchFeasibilityLp {
             // the decision alone (the margin, `check`'s report, costs far more beyond the facets)
             let rows = self.load.rows();
             let j = structure_matrix_m(&at.cables, &point, rows);
-            let shape = DMatrix::from_fn(rows.len(), rows.len(), |a, b| wrench.ellipsoid_inv[(rows[a], rows[b])]);
-            let problem = Containment { j: &j, bounds: &self.bounds, centre: &select(&nominal, rows), shape: &shape };
+            let problem = Containment { j: &j, bounds: &self.bounds, centre: &select(&nominal, rows), shape: &select_square(&wrench.ellipsoid_inv, rows) };
             return PoseCheck { violated: contains(&problem) != Some(true), distance: None };
         }
         match static_margin(&at.cables, &point, &nominal, &self.bounds, self.load.rows()) {

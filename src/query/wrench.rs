@@ -24,6 +24,12 @@ pub fn select(w: &Vector6<f64>, rows: &[usize]) -> DVector<f64> {
     DVector::from_iterator(rows.len(), rows.iter().map(|&r| w[r]))
 }
 
+/// The rows and columns `rows` of the 6 × 6 matrix `m` (an ellipsoid's shape in those
+/// components).
+pub fn select_square(m: &Matrix6<f64>, rows: &[usize]) -> DMatrix<f64> {
+    DMatrix::from_fn(rows.len(), rows.len(), |a, b| m[(rows[a], rows[b])])
+}
+
 /// The 6-D wrench with components `rows` from `v` (as many), zero elsewhere.
 pub fn embed(v: &DVector<f64>, rows: &[usize]) -> Vector6<f64> {
     let mut w = Vector6::zeros();
@@ -306,8 +312,7 @@ pub fn tension_ranges_at(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector
     }
     let inv = lu.try_inverse()?;
     let f0 = &inv * select(nominal, rows);
-    let e_inv = DMatrix::from_fn(n, n, |a, b| wrench.ellipsoid_inv[(rows[a], rows[b])]);
-    let v = &inv * e_inv * inv.transpose();
+    let v = &inv * select_square(&wrench.ellipsoid_inv, rows) * inv.transpose();
     Some((0..n).map(|i| TensionRange { nominal: f0[i], spread: v[(i, i)].max(0.0).sqrt() }).collect())
 }
 
@@ -331,7 +336,7 @@ pub fn tension_ranges_at(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector
 pub fn wrench_set_margin(cables: &[(Vector3<f64>, Vector3<f64>)], point: &Vector3<f64>, nominal: &Vector6<f64>, ellipsoid_inv: &Matrix6<f64>, bounds: &[Bounds], rows: &[usize]) -> Option<f64> {
     let j = structure_matrix_m(cables, point, rows);
     if binomial(j.ncols(), rows.len() - 1) > super::facets::MAX_FACETS {
-        return cover_margin(&j, &select(nominal, rows), &DMatrix::from_fn(rows.len(), rows.len(), |a, b| ellipsoid_inv[(rows[a], rows[b])]), bounds);
+        return cover_margin(&j, &select(nominal, rows), &select_square(ellipsoid_inv, rows), bounds);
     }
     let facets = facets(&j, rows, bounds)?;
     let best = facets

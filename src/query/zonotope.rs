@@ -146,15 +146,17 @@ impl Cover {
     }
 
     /// Takes `p` as the problem (its dimension must be the cover's); the rays' values follow as
-    /// cones need them ([`Cover::ensure`]).
+    /// cones need them ([`Cover::ensure`]): every ray's are stale once `current` moves on.
     pub fn load(&mut self, p: &Containment) {
         let m = p.j.ncols();
+        let rays = self.dirs.len() / self.n;
+        if self.m != m || self.a.len() != rays * m {
+            self.a = vec![0.0; rays * m];
+        }
         self.m = m;
         self.norms = (0..m).map(|k| p.j.column(k).norm()).collect();
-        let rays = self.dirs.len() / self.n;
-        self.a = vec![0.0; rays * m];
-        self.hw = vec![0.0; rays];
-        self.stamp = vec![0; rays];
+        self.hw.resize(rays, 0.0);
+        self.stamp.resize(rays, 0);
         self.current += 1;
     }
 
@@ -310,7 +312,7 @@ impl Cover {
                     self.ensure(o, p);
                     found.extend(self.cones[o].iter().map(|&r| (self.ray_ratio(r as usize, p), r)).filter(|w| w.0 < 0.0).map(|(q, r)| (q, self.dir(r))));
                 }
-                found.sort_by(|x, y| x.0.total_cmp(&y.0));
+                crate::order::sort_by_key(&mut found, |f| f.0);
                 break Verdict::Fails(found.into_iter().take(FAILING).map(|f| f.1).collect());
             }
             let cone = self.cones[c].clone();
@@ -339,13 +341,7 @@ impl Cover {
     /// G/s at ray `r` from its loaded values, as [`ratio`] computes it.
     fn ray_ratio(&self, r: usize, p: &Containment) -> f64 {
         let m = self.m;
-        let (mut support, mut s) = (0.0, 0.0);
-        for (k, b) in p.bounds.iter().enumerate() {
-            let a = self.a[r * m + k];
-            s += a.abs();
-            support += if a > 1e-11 * self.norms[k] { if b.max.is_finite() { b.max * a } else { return f64::INFINITY } } else { b.min * a };
-        }
-        if s > 0.0 { (support - self.hw[r]) / s } else { f64::INFINITY }
+        ratio_of(p.bounds, (0..m).map(|k| (self.a[r * m + k], self.norms[k])), || self.hw[r])
     }
 }
 
@@ -362,14 +358,22 @@ fn support_of_ellipsoid(p: &Containment, v: &[f64]) -> f64 {
 /// orthogonal to y counts as not pulling: the least ratio sits on such columns' hyperplanes,
 /// where rounding leaves a_k a few ulps either side.
 pub fn ratio(p: &Containment, y: &DVector<f64>) -> f64 {
-    let (mut support, mut s) = (0.0, 0.0);
-    for (k, b) in p.bounds.iter().enumerate() {
+    let products = (0..p.j.ncols()).map(|k| {
         let column = p.j.column(k);
-        let a = y.dot(&column);
+        (y.dot(&column), column.norm())
+    });
+    ratio_of(p.bounds, products, || support_of_ellipsoid(p, y.as_slice()))
+}
+
+/// G/s from each column's a_k = y·j_k and norm ‖j_k‖ (in the order of `bounds`) and h_W(y)
+/// (asked for only when G is finite), as [`ratio`] describes it.
+fn ratio_of(bounds: &[Bounds], products: impl Iterator<Item = (f64, f64)>, hw: impl FnOnce() -> f64) -> f64 {
+    let (mut support, mut s) = (0.0, 0.0);
+    for (b, (a, norm)) in bounds.iter().zip(products) {
         s += a.abs();
-        support += if a > 1e-11 * column.norm() { if b.max.is_finite() { b.max * a } else { return f64::INFINITY } } else { b.min * a };
+        support += if a > 1e-11 * norm { if b.max.is_finite() { b.max * a } else { return f64::INFINITY } } else { b.min * a };
     }
-    if s > 0.0 { (support - support_of_ellipsoid(p, y.as_slice())) / s } else { f64::INFINITY }
+    if s > 0.0 { (support - hw()) / s } else { f64::INFINITY }
 }
 
 /// max over f with l ≤ f ≤ u of min_i (b_i + g_i·f), for r rows b_i, g_i (g row-major, r × m)

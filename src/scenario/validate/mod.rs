@@ -97,7 +97,6 @@ pub fn scenario(raw: RawScenario) -> Result<Scenario> {
 
 pub use crate::query::facets::{facets_enumerable, MAX_FACETS};
 
-
 /// A finite number at `field`.
 fn num(field: &str, x: f64) -> Result<f64> {
     finite(field, x)
