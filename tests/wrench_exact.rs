@@ -120,7 +120,8 @@ fn random_case(rng: &mut Rng) -> Case {
     let radii = Matrix6::from_diagonal(&Vector6::from_fn(|_, _| (mass * rng.range(0.005, 0.1)).powi(2)));
     let e_inv = q.transpose() * radii * q;
     let tension = (if rng.chance(0.5) { 0.0 } else { 0.05 * mass }, mass * rng.range(1.0, 4.0));
-    let deg = rng.int(1, 3);
+    // degree 0: a slerp in place, of half the degree (Motion::trajectory)
+    let deg = rng.int(0, 3);
     let centre = v3(rng.range(-0.3, 0.3), rng.range(-0.3, 0.3), rng.range(1.5, 2.5));
     let mut coeffs: [Vec<f64>; 3] = Default::default();
     for (axis, c) in coeffs.iter_mut().enumerate() {

@@ -135,15 +135,17 @@ impl TimeLaw {
     /// The uniform law along a trajectory's motion run in `duration` seconds in all (time =
     /// t·duration); `None` for a motion without time (a ray).
     pub fn uniform(param: &Param, duration: f64) -> Option<TimeLaw> {
-        let Param::Trajectory { psi, h, t0, t1, within: (a, b) } = *param else { return None };
+        let Param::Trajectory { psi, h, t0, t1, within: (a, b), centred } = *param else { return None };
         // g on the whole stretch, then on its part: λ = a + (b − a)λ' ⇒ dλ'/ds = g(λ)/(b − a)
         let span = (t1 - t0) * duration;
         let g = if psi < 1e-9 {
             Bern::constant(1.0 / span)
         } else {
-            // t = t0 + (t1 − t0)·2·atan(hλ)/ψ  ⇒  dλ/dt = ψ(1 + h²λ²)/(2h(t1 − t0))
+            // t = t0 + (t1 − t0)·2·atan(hλ)/ψ  ⇒  dλ/dt = ψ(1 + h²λ²)/(2h(t1 − t0)); centred,
+            // t = t0 + (t1 − t0)·(½ + atan((2λ − 1)h)/ψ)  ⇒  dλ/dt = ψ(1 + h²(2λ − 1)²)/(2h(t1 − t0))
             let c = psi / (2.0 * h * span);
-            Bern::from_monomial(&[c, 0.0, c * h * h])
+            let monomial = if centred { [1.0 + h * h, -4.0 * h * h, 4.0 * h * h] } else { [1.0, 0.0, h * h] };
+            Bern::from_monomial(&monomial.map(|m| c * m))
         };
         let g = g.restrict(a, b).scale(1.0 / (b - a));
         Some(TimeLaw::from_square(g.mul(&g)))

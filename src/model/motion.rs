@@ -31,8 +31,9 @@ pub const ANGLE_PIECE: f64 = FRAC_PI_2 / 4.0;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Param {
     /// A stretch [t0, t1] of a trajectory's t that rotates by ψ at a constant rate:
-    /// t = t0 + (t1 − t0)·2·atan(hλ)/ψ with h = tan(ψ/2) (t = t0 + (t1 − t0)·λ when ψ = 0), or a
-    /// part of such a stretch (`within`).
+    /// t = t0 + (t1 − t0)·2·atan(hλ)/ψ with h = tan(ψ/2) (t = t0 + (t1 − t0)·λ when ψ = 0), or,
+    /// `centred`, t = t0 + (t1 − t0)·(½ + atan((2λ − 1)h)/ψ); or a part of such a stretch
+    /// (`within`).
     Trajectory {
         /// The piece's rotation angle ψ.
         psi: f64,
@@ -45,6 +46,9 @@ pub enum Param {
         /// The part [a, b] of the stretch's λ this motion covers: (0, 1) but for a part
         /// ([`Motion::part`]), whose λ' ∈ [0, 1] is the stretch's a + (b − a)·λ'.
         within: (f64, f64),
+        /// Whether the angle runs from the stretch's middle (λ = ½) rather than its start: the
+        /// quaternion (1 − λ)Q0 + λQ1 of a slerp in place ([`Motion::trajectory`]).
+        centred: bool,
     },
     /// A linear coordinate: value = lo + (hi − lo)·λ.
     Linear {
@@ -68,10 +72,12 @@ impl Param {
     /// The user-facing value (t for trajectories) at λ; exactly the range's ends at λ = 0 and 1.
     pub fn value(&self, lam: f64) -> f64 {
         match *self {
-            Param::Trajectory { psi, h, t0, t1, within: (a, b) } => {
+            Param::Trajectory { psi, h, t0, t1, within: (a, b), centred } => {
                 let lam = if lam >= 1.0 { b } else { a + (b - a) * lam };
                 let local = if psi < 1e-9 || lam <= 0.0 || lam >= 1.0 {
                     lam.clamp(0.0, 1.0)
+                } else if centred {
+                    (0.5 + (h * (2.0 * lam - 1.0)).atan() / psi).clamp(0.0, 1.0)
                 } else {
                     (2.0 * (h * lam).atan() / psi).clamp(0.0, 1.0)
                 };
@@ -95,7 +101,8 @@ impl Param {
     /// An upper bound on |d value / dλ| over [0, 1].
     pub fn max_slope(&self) -> f64 {
         match *self {
-            Param::Trajectory { psi, h, t0, t1, within: (a, b) } => {
+            // the slope 2h/(ψ(1 + h²x²)), x = λ or 2λ − 1, is at most 2h/ψ
+            Param::Trajectory { psi, h, t0, t1, within: (a, b), .. } => {
                 let span = (t1 - t0) * (b - a);
                 if psi < 1e-9 {
                     span
@@ -267,9 +274,12 @@ impl Motion {
             Orientation::Turn { from: q0, axis, angle, profile } => return Motion::turn(&seg.translation, q0, axis, *angle, *profile, [from, to]),
         };
         let theta = seg.theta();
+        let translation = translation_bernstein(&seg.translation);
+        if translation.iter().all(|p| p.c.iter().all(|&c| c == p.c[0])) {
+            return Motion::slerp_in_place(seg, translation.map(|p| Bern::constant(p.c[0])), [from, to]);
+        }
         let cuts = slerp_cuts(theta);
         let pieces = cuts.len() - 1;
-        let translation = translation_bernstein(&seg.translation);
         let whole = |t: f64| if t >= 1.0 { to } else { from + (to - from) * t };
         let (s, e) = (qs.quaternion(), qe.quaternion());
         // Q(t) on the slerp's great circle (signs as given, so consecutive ends are ψ apart)
@@ -296,7 +306,7 @@ impl Motion {
                     vec![q0.j, lin.j, quad.j],
                     vec![q0.k, lin.k, quad.k],
                 ];
-                let param = Param::Trajectory { psi, h, t0: whole(t0), t1: whole(t1), within: (0.0, 1.0) };
+                let param = Param::Trajectory { psi, h, t0: whole(t0), t1: whole(t1), within: (0.0, 1.0), centred: false };
                 if pieces == 1 {
                     return Motion::from_parts(translation.clone(), &n, param);
                 }
@@ -329,6 +339,37 @@ impl Motion {
             .collect()
     }
 
+    /// The motions of a piece `seg` that slerps (quaternion angle θ) at the fixed `position`,
+    /// covering `span` of the trajectory's t: pieces of at most π/2 of quaternion angle ψ, each
+    /// N(λ) = (1 − λ)Q0 + λQ1 — linear in λ, so that the rotation numerator and the weight have
+    /// degree 2, half the degree of a slerp that also translates, and w = |N|² stays within
+    /// [cos²(ψ/2), 1]. The quaternion angle from Q0 is ψ/2 + atan((2λ − 1)·tan(ψ/2)): the
+    /// `centred` form of [`Param::Trajectory`]. (A translation polynomial in τ, the tangent of the
+    /// half angle, is not rational in this λ: moving slerps keep [`Motion::segment`]'s form.)
+    fn slerp_in_place(seg: &Segment, position: [Bern; 3], [from, to]: [f64; 2]) -> Vec<Motion> {
+        let theta = seg.theta();
+        let pieces = ((theta / FRAC_PI_2).ceil() as usize).max(1);
+        let whole = |t: f64| if t >= 1.0 { to } else { from + (to - from) * t };
+        // Q at the end of piece k on the slerp's great circle (signs as given)
+        let q_at = |k: usize| -> Quaternion<f64> {
+            match (&seg.orientation, k) {
+                (Orientation::Slerp(qs, _), 0) => *qs.quaternion(),
+                (Orientation::Slerp(_, qe), k) if k == pieces => *qe.quaternion(),
+                _ => seg.pose_at(k as f64 / pieces as f64).rotation.into_inner(),
+            }
+        };
+        let psi = theta / pieces as f64;
+        (0..pieces)
+            .map(|k| {
+                let (q0, q1) = (q_at(k), q_at(k + 1));
+                let d = q1 - q0;
+                let n: QuatPoly = [vec![q0.w, d.w], vec![q0.i, d.i], vec![q0.j, d.j], vec![q0.k, d.k]];
+                let (t0, t1) = (whole(k as f64 / pieces as f64), whole((k + 1) as f64 / pieces as f64));
+                Motion::from_parts(position.clone(), &n, Param::Trajectory { psi, h: (psi / 2.0).tan(), t0, t1, within: (0.0, 1.0), centred: true })
+            })
+            .collect()
+    }
+
     /// The motions of a piece that turns (`super::turn`): one per stretch of the turn's
     /// polynomial enclosure, λ linear in the piece's t (and so in time), the translation (a
     /// polynomial in t) restricted to the stretch, the rotation `q0`·(c(λ), d(λ)·axis).
@@ -341,7 +382,7 @@ impl Motion {
                 let position = whole.each_ref().map(|p| p.restrict(s.a, s.b));
                 let relative: QuatPoly = [s.cos.clone(), s.sin.iter().map(|c| c * axis.x).collect(), s.sin.iter().map(|c| c * axis.y).collect(), s.sin.iter().map(|c| c * axis.z).collect()];
                 let n = quat_mul(&quat_const(q0), &relative);
-                Motion::from_parts(position, &n, Param::Trajectory { psi: 0.0, h: 0.0, t0: at(s.a), t1: at(s.b), within: (0.0, 1.0) })
+                Motion::from_parts(position, &n, Param::Trajectory { psi: 0.0, h: 0.0, t0: at(s.a), t1: at(s.b), within: (0.0, 1.0), centred: false })
             })
             .collect()
     }
@@ -453,7 +494,7 @@ impl Motion {
     /// The part λ ∈ [a, b] of this motion as a motion of its own in λ' ∈ [0, 1]
     /// (λ = a + (b − a)·λ'), its parameter mapped to match. Only a trajectory's motion has parts.
     pub fn part(&self, a: f64, b: f64) -> Motion {
-        let Param::Trajectory { psi, h, t0, t1, within: (c, d) } = self.param else {
+        let Param::Trajectory { psi, h, t0, t1, within: (c, d), centred } = self.param else {
             panic!("only a trajectory's motion is cut into parts");
         };
         let r = |p: &Bern| p.restrict(a, b);
@@ -461,7 +502,7 @@ impl Motion {
             position: self.position.each_ref().map(r),
             rotation: self.rotation.each_ref().map(|row| row.each_ref().map(r)),
             weight: r(&self.weight),
-            param: Param::Trajectory { psi, h, t0, t1, within: (c + (d - c) * a, c + (d - c) * b) },
+            param: Param::Trajectory { psi, h, t0, t1, within: (c + (d - c) * a, c + (d - c) * b), centred },
         }
     }
 
@@ -508,6 +549,66 @@ mod tests {
                 last_t = m.param.value(1.0);
             }
             assert_eq!(last_t, 1.0);
+        }
+    }
+
+    /// A slerp that does not translate is linear in λ (rotation numerator and weight of degree 2),
+    /// follows the slerp at the t its parameter names, keeps w within [cos²(ψ/2), 1] on each piece
+    /// of at most π/2, and the pieces tile t ∈ [0, 1].
+    #[test]
+    fn slerp_in_place_is_linear_and_follows_the_slerp() {
+        let qs = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.9);
+        let at = Translation::Line(Vector3::new(0.5, -1.0, 2.0), Vector3::new(0.5, -1.0, 2.0));
+        for (angle, pieces) in [(1e-7, 1), (0.4, 1), (FRAC_PI_2, 1), (2.5, 2), (std::f64::consts::PI - 1e-3, 2)] {
+            let qe = qs * UnitQuaternion::from_axis_angle(&nalgebra::Unit::new_normalize(Vector3::new(0.3, -0.5, 0.8)), 2.0 * angle);
+            let traj = Trajectory::single("t", at.clone(), Orientation::Slerp(qs, qe));
+            let motions = Motion::trajectory(&traj);
+            assert_eq!(motions.len(), pieces, "θ = {angle}");
+            let mut last_t = 0.0;
+            for m in &motions {
+                assert!(m.weight.degree() <= 2 && m.rotation[0][0].degree() <= 2 && m.position[0].degree() <= 2);
+                let psi = angle / pieces as f64;
+                assert_eq!(m.param.value(0.0), last_t);
+                for i in 0..=20 {
+                    let lam = i as f64 / 20.0;
+                    let t = m.param.value(lam);
+                    let (p, r) = m.eval(lam);
+                    let want = traj.pose_at(t);
+                    assert!((r - want.matrix()).norm() < 1e-11, "rotation at t={t}, θ = {angle}: {}", (r - want.matrix()).norm());
+                    assert!((p - want.position).norm() < 1e-12);
+                    let w = m.weight.eval(lam).0;
+                    assert!(w <= 1.0 + 1e-12 && w >= (psi / 2.0).cos().powi(2) - 1e-12, "w = {w} at λ = {lam}");
+                }
+                last_t = m.param.value(1.0);
+            }
+            assert_eq!(last_t, 1.0);
+        }
+    }
+
+    /// Along every form of a trajectory's parameter — the general slerp's, a slerp in place's
+    /// (centred) and a part of each — the uniform time law's λ̇ is dλ/dt of the parameter map
+    /// (central differences), and its slope bound holds.
+    #[test]
+    fn uniform_law_is_the_parameter_maps_rate() {
+        let qs = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.9);
+        let qe = qs * UnitQuaternion::from_axis_angle(&nalgebra::Unit::new_normalize(Vector3::new(0.3, -0.5, 0.8)), 2.6);
+        let moving = Translation::Polynomial([vec![1.0, 2.0], vec![0.5], vec![2.0]]);
+        let fixed = Translation::Polynomial([vec![1.0], vec![0.5], vec![2.0]]);
+        for translation in [moving, fixed] {
+            let traj = Trajectory::single("t", translation, Orientation::Slerp(qs, qe));
+            for whole in Motion::trajectory(&traj) {
+                for m in [whole.clone(), whole.part(0.2, 0.7)] {
+                    let law = crate::conditions::TimeLaw::uniform(&m.param, 1.0).expect("a trajectory's law");
+                    for i in 1..10 {
+                        let lam = i as f64 / 10.0;
+                        let h = 1e-6;
+                        let dt = (m.param.value(lam + h) - m.param.value(lam - h)) / (2.0 * h);
+                        let g = law.square.eval(lam).0.sqrt();
+                        assert!((g * dt - 1.0).abs() < 1e-6, "{:?} at {lam}: λ̇ {g} vs 1/{dt}", m.param);
+                        assert!(dt <= m.param.max_slope() * (1.0 + 1e-9));
+                    }
+                }
+            }
         }
     }
 

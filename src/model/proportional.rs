@@ -150,7 +150,7 @@ impl Leg {
         let (u0, u1) = (p as f64 / n, (p + 1) as f64 / n);
         let (t0, t1) = (t0 + (t1 - t0) * u0, if p + 1 == self.pieces { t1 } else { t0 + (t1 - t0) * u1 });
         let (psi, h) = self.piece_angle();
-        let param = if self.base == 0.0 { Param::Linear { lo: t0, hi: t1 } } else { Param::Trajectory { psi, h, t0, t1, within: (0.0, 1.0) } };
+        let param = if self.base == 0.0 { Param::Linear { lo: t0, hi: t1 } } else { Param::Trajectory { psi, h, t0, t1, within: (0.0, 1.0), centred: false } };
         let one: QuatPoly = [vec![1.0], vec![0.0], vec![0.0], vec![0.0]];
         let about = |axis: &Vector3<f64>, a: f64| quat_const(&UnitQuaternion::from_axis_angle(&Unit::new_unchecked(*axis), a));
         // a turn of d in all from `from` on: at u0, then k base angles of the piece
