@@ -24,10 +24,10 @@ use std::rc::Rc;
 use super::interval::Iv;
 use super::load::{inverse_square, split_part, split_under, with_inertia, TimeLaw};
 use super::primitives::{GT, LT};
-use super::structure::{det_with, minors, quadratic_form, row_weight, structure_numerators};
+use super::structure::{det_with, quadratic_form, row_weight, structure_numerators};
 use super::{Condition, Kind, Local, PoseCheck, Sweep};
 use crate::model::{Bounds, Load};
-use crate::poly::{Bern, Partition, Truth};
+use crate::poly::{Bern, Minors, Partition, Truth};
 use crate::query::cables::PoseCables;
 use crate::query::wrench::{closure_holds, subsets, wrench_set_margin};
 
@@ -82,10 +82,11 @@ impl FacetPolys {
         let single = load.wrench.is_single();
         let load_rows = &local.load.rows;
         let m = local.cables.len();
+        let mut minors_of = Minors::new(&n);
         let facets = subsets(m, dim - 1)
             .into_iter()
             .map(|s| {
-                let minors = minors(&n, &s);
+                let minors = minors_of.of(&s);
                 let others = (0..m)
                     .filter(|k| !s.contains(k))
                     .map(|k| (k, det_with(&minors, &(0..dim).map(|j| &n[j][k]).collect::<Vec<_>>())))

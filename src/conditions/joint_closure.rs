@@ -18,11 +18,11 @@ use std::rc::Rc;
 
 use super::closure::not_spanning;
 use super::joint_forces::{cable_matrix, routing, shared_cable_numerators, subtree_rows};
-use super::structure::{det_with, minors};
+use super::structure::det_with;
 use super::wrench_lp::closure_violation;
 use super::{Condition, Kind, PoseCheck, Sweep, SweptCable};
 use crate::model::{CableSegment, Chain};
-use crate::poly::{Bern, Partition, Truth};
+use crate::poly::{Bern, Minors, Partition, Truth};
 use crate::query::cables::PoseCables;
 use crate::query::wrench::{binomial, closure_by_lp, positively_spans, subsets};
 use crate::scenario::validate::MAX_FACETS;
@@ -64,8 +64,9 @@ impl Condition for JointClosure {
             // for within each link's subtree as well
             return closure_violation(rows.as_ref().clone(), vec![Bern::constant(1.0); m], None, tol, &subtree_rows(&self.chain));
         }
+        let mut minors_of = Minors::new(&rows);
         let facets = subsets(m, n - 1).into_iter().map(|s| {
-            let minors = minors(&rows, &s);
+            let minors = minors_of.of(&s);
             (0..m).filter(|k| !s.contains(k)).map(|k| det_with(&minors, &rows.iter().map(|r| &r[k]).collect::<Vec<_>>())).collect()
         });
         not_spanning(facets, tol)

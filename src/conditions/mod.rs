@@ -403,8 +403,23 @@ pub trait Condition {
     /// What the condition is about, for classifying poses (slice maps).
     fn kind(&self) -> Kind;
 
-    /// The set of λ ∈ [0, 1] where the condition is violated along the sweep's motion.
+    /// The set of λ ∈ [0, 1] where the condition is violated along the sweep's motion; it may
+    /// leave pieces undecided that [`Condition::refine`] can still decide by costlier local work.
     fn violation(&self, sweep: &mut Sweep) -> Partition;
+
+    /// `found`, [`Condition::violation`]'s answer on this sweep, with its undecided pieces
+    /// decided by costlier local work where that can succeed and matters: outside the sweep's
+    /// settled intervals. The verifier calls it once every condition has given its first answer,
+    /// so that the settled intervals spare the most. Most conditions have nothing more to do.
+    fn refine(&self, _sweep: &mut Sweep, found: Partition) -> Partition {
+        found
+    }
+
+    /// [`Condition::violation`], then [`Condition::refine`]: the condition's whole answer alone.
+    fn decided(&self, sweep: &mut Sweep) -> Partition {
+        let found = self.violation(sweep);
+        self.refine(sweep, found)
+    }
 
     /// Builds into `sweep` the polynomials the condition keeps there, so that parts of it
     /// ([`Sweep::part`]) restrict them instead of expanding them again. Most conditions keep

@@ -16,10 +16,14 @@ pub const LT: bool = false;
 
 /// Conjunction of sign conditions, evaluated lazily: once the conjunction is false everywhere the
 /// remaining polynomials are not even built, and each sign is classified only where the
-/// conditions before it are not already false.
+/// conditions before it are not already false. `all_of!(from start, tol; …)` conjoins them with
+/// the partition `start` (false where the caller needs no answer).
 macro_rules! all_of {
-    ($tol:expr; $($poly:expr => $side:expr),+ $(,)?) => {{
-        let mut acc = Partition::constant(Truth::True);
+    ($tol:expr; $($poly:expr => $side:expr),+ $(,)?) => {
+        all_of!(from Partition::constant(Truth::True), $tol; $($poly => $side),+)
+    };
+    (from $start:expr, $tol:expr; $($poly:expr => $side:expr),+ $(,)?) => {{
+        let mut acc: Partition = $start;
         $(
             if !acc.is_all(Truth::False) {
                 let h: H = $poly;

@@ -56,38 +56,8 @@ pub(crate) fn row_weight<'a>(row: usize, w: &'a Bern, w2: &'a Bern) -> &'a Bern 
     if row < 3 { w } else { w2 }
 }
 
-/// The (n−1)×(n−1) minors of the n-row matrix `rows` restricted to the n − 1 columns `cols` (in
-/// that order): entry j is the minor without row j. Laplace expansion along the last column with
-/// the determinants of all row subsets memoised (bit masks).
-pub(crate) fn minors(rows: &[Vec<Bern>], cols: &[usize]) -> Vec<Bern> {
-    let n = rows.len();
-    let full = (1u32 << n) - 1;
-    let mut det: Vec<Option<Bern>> = vec![None; 1 << n];
-    det[0] = Some(Bern::constant(1.0));
-    // Subsets in order of size: those of size k use the first k of `cols`.
-    let mut masks: Vec<u32> = (1..=full).filter(|m| m.count_ones() < n as u32).collect();
-    crate::order::sort_by_key(&mut masks, |m| f64::from(m.count_ones()));
-    for mask in masks {
-        let k = mask.count_ones() as usize;
-        let c = cols[k - 1];
-        let mut acc: Option<Bern> = None;
-        for (pos, row) in (0..n).filter(|r| mask & (1 << r) != 0).enumerate() {
-            let Some(sub) = det[(mask & !(1 << row)) as usize].as_ref() else { continue };
-            let term = rows[row][c].mul(sub);
-            let negative = (pos + k - 1) % 2 == 1;
-            acc = Some(match (acc, negative) {
-                (None, false) => term,
-                (None, true) => term.scale(-1.0),
-                (Some(a), false) => a.add(&term),
-                (Some(a), true) => a.sub(&term),
-            });
-        }
-        det[mask as usize] = acc;
-    }
-    (0..n).map(|j| det[(full & !(1u32 << j)) as usize].clone().unwrap_or_else(|| Bern::constant(0.0))).collect()
-}
-
-/// det [Ñ_S | x] for the n − 1 columns S whose [`minors`] are `minors`, x an n-th column:
+/// det [Ñ_S | x] for the n − 1 columns S whose minors ([`crate::poly::Minors`]) are `minors`, x
+/// an n-th column:
 /// expansion along the last column, Σ_j (−1)^(j+n−1) x_j M_j.
 pub(crate) fn det_with(minors: &[Bern], x: &[&Bern]) -> Bern {
     let n = minors.len();
@@ -106,3 +76,4 @@ pub(crate) fn quadratic_form(g: &[Bern], m: &nalgebra::Matrix6<f64>, rows: &[usi
         acc.add(&g[j].mul(&Bern::linear_combination(&terms)))
     })
 }
+

@@ -21,10 +21,10 @@ use std::rc::Rc;
 use super::algebra::H;
 use super::load::{inverse_square, split_part, split_under, with_inertia, TimeLaw};
 use super::primitives::{all_of, any_of, GT, LT};
-use super::structure::{minors, quadratic_form, row_weight, structure_numerators};
+use super::structure::{quadratic_form, row_weight, structure_numerators};
 use super::{Condition, Kind, Local, PoseCheck, Sweep};
 use crate::model::Load;
-use crate::poly::{Bern, Partition, Truth};
+use crate::poly::{Bern, Minors, Partition, Truth};
 use crate::query::cables::PoseCables;
 
 /// Which tension bound a [`CableTension`] condition is about.
@@ -159,9 +159,10 @@ impl TensionPolys {
         let w2 = w.mul(w);
         let mut delta: Option<Bern> = None;
         let mut columns = Vec::with_capacity(cables.len());
+        let mut minors = Minors::new(&n);
         for &i in cables {
             let others: Vec<usize> = (0..dim).filter(|&c| c != i).collect();
-            let minors = minors(&n, &others);
+            let minors = minors.of(&others);
             // Cofactors C_ji = (−1)^{i+j} M_ji; Δ = Σ_j Ñ_ji C_ji; g_j = w^{k_j} C_ji.
             let cofactors: Vec<Bern> = (0..dim).map(|j| if (i + j) % 2 == 0 { minors[j].clone() } else { minors[j].scale(-1.0) }).collect();
             if delta.is_none() {
@@ -213,6 +214,19 @@ fn and_then(first: Partition, rest: impl FnOnce() -> Partition) -> Partition {
     } else {
         first.and(&rest())
     }
+}
+
+/// The constants (c, d) of the AM–GM bounds √β ≤ (β + c²)/(2c) and √P ≤ (P + d²)/(2d) (and
+/// √P ≥ 2dP/(P + d²)), c² and d² the largest Bernstein coefficients of β and P, so that each
+/// bound is off by at most c/2 (d/2); `None` when either vanishes.
+fn amgm(beta: &Bern, p: &Bern) -> Option<(f64, f64)> {
+    let (c, d) = (beta.max_abs().sqrt(), p.max_abs().sqrt());
+    (c > 0.0 && d > 0.0 && c.is_finite() && d.is_finite()).then_some((c, d))
+}
+
+/// False where `cert` is true (no answer needed there), true elsewhere.
+fn unsettled(cert: &Partition) -> Partition {
+    Partition::from_pieces(cert.pieces.iter().map(|&(end, t)| (end, if t == Truth::True { Truth::False } else { Truth::True })).collect())
 }
 
 /// How many times undecided pieces are re-expanded locally.
@@ -280,15 +294,27 @@ impl CableTension {
             // it holds when a + √β ≤ 0, else iff M > −2 P |a| √β.
             TensionSide::Upper => {
                 let kk = scaled_bound();
+                let cert = match amgm(beta, p) {
+                    Some((c, d)) if self.bound >= 0.0 => {
+                        // √P (a + √β) ≤ (P + d²)(2ca + β + c²)/(4cd) for a ≥ 0
+                        let s = kk.scale(4.0 * c * d).sub(&Bern::linear_combination(&[(p, 1.0), (&Bern::constant(d * d), 1.0)]).mul(&Bern::linear_combination(&[(&a, 2.0 * c), (beta, 1.0), (&Bern::constant(c * c), 1.0)])));
+                        all_of!(tol; h(a.clone()) => GT, h(s) => GT)
+                    }
+                    _ => Partition::constant(Truth::Unknown),
+                };
+                if cert.is_all(Truth::True) {
+                    return cert;
+                }
+                let start = unsettled(&cert);
                 let m = || kk.mul(&kk).sub(&p.mul(&a.mul(&a).add(beta)));
-                any_of!(
-                    all_of!(tol; h(a.clone()) => GT, h(m()) => GT, h({ let m = m(); m.mul(&m).sub(&cross()) }) => GT),
-                    and_then(all_of!(tol; h(a.clone()) => LT), || any_of!(
+                cert.or(&any_of!(
+                    all_of!(from start.clone(), tol; h(a.clone()) => GT, h(m()) => GT, h({ let m = m(); m.mul(&m).sub(&cross()) }) => GT),
+                    and_then(all_of!(from start, tol; h(a.clone()) => LT), || any_of!(
                         all_of!(tol; h(a2_minus_b()) => GT),
                         all_of!(tol; h(m()) => GT),
                         all_of!(tol; h({ let m = m(); cross().sub(&m.mul(&m)) }) => GT),
                     )),
-                )
+                ))
             }
         }
     }
@@ -331,17 +357,24 @@ impl Condition for CableTension {
     }
 
     fn violation(&self, sweep: &mut Sweep) -> Partition {
+        let polys = self.polys(sweep, false);
+        self.violated_on(&polys, inverse_square(sweep.duration), sweep.tol)
+    }
+
+    /// Undecided pieces wider than the tolerance (outside the sweep's settled intervals): the
+    /// motion re-expanded around each and decided again, where error bounds follow the local
+    /// (often much smaller) magnitudes.
+    fn refine(&self, sweep: &mut Sweep, found: Partition) -> Partition {
         let tol = sweep.tol;
         let polys = self.polys(sweep, false);
         let inv_t2 = inverse_square(sweep.duration);
-        let mut out = self.violated_on(&polys, inv_t2, tol);
-        // Undecided pieces wider than tol: re-expand the motion around each and decide again,
-        // where error bounds follow the local (often much smaller) magnitudes.
+        let mut out = found;
         for _ in 0..REFINE_ROUNDS {
+            let settled = &sweep.settled;
             let wide: Vec<(f64, f64)> = out
                 .intervals()
                 .into_iter()
-                .filter(|&(a, b, t)| t == Truth::Unknown && b - a > tol)
+                .filter(|&(a, b, t)| t == Truth::Unknown && b - a > tol && !settled.iter().any(|&(c, d)| c <= a && b <= d))
                 .map(|(a, b, _)| (a, b))
                 .collect();
             if wide.is_empty() {

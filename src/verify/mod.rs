@@ -83,6 +83,19 @@ fn pieces_on(conditions: &[Box<dyn Condition>], sweeps: &mut [Sweep], settle: bo
                 sweep.settled = settled(&union, SETTLED_MARGIN * tol, neighbours);
             }
         }
+        // then the costlier local work, spared wherever any condition's first answer already
+        // violates (the union only gains certainty here: it is made again from the answers)
+        if found.iter().any(|f| !f.where_is(Truth::Unknown).is_empty()) {
+            for &k in &order {
+                let first = std::mem::replace(&mut found[k], Partition::constant(Truth::Unknown));
+                found[k] = conditions[k].refine(sweep, first);
+                if settle {
+                    union = union.or(&found[k]);
+                    sweep.settled = settled(&union, SETTLED_MARGIN * tol, neighbours);
+                }
+            }
+            union = found.iter().fold(Partition::constant(Truth::False), |u, f| u.or(f));
+        }
         let param = sweep.motion().param;
         for (v, out) in found.iter().zip(per.iter_mut()) {
             append_mapped(out, v, &param);

@@ -68,7 +68,7 @@ fn verdict(conditions: &[Box<dyn Condition>], whole: &Sweep, cell: &Cell, (x0, x
     let mut sweep = whole.part((cell.a, cell.b), Some(TimeLaw::from_square(Bern::from_bernstein(vec![x0 / width2, x1 / width2]))));
     let (mut failed, mut open) = (Vec::new(), Vec::new());
     for c in conditions {
-        let v = c.violation(&mut sweep);
+        let v = c.decided(&mut sweep);
         if !v.where_is(Truth::True).is_empty() {
             failed.push(c.label());
         } else if !v.where_is(Truth::Unknown).is_empty() {
