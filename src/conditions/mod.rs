@@ -539,7 +539,7 @@ pub fn for_scenario(s: &Scenario) -> Vec<Box<dyn Condition>> {
             } else if load.wrench.is_single() || !crate::scenario::validate::facets_enumerable(m, robot.mobility) {
                 // one wrench: linear programs, for any number of cables; an ellipsoid beyond the
                 // facets' reach: the same system with a cover of the wrench directions
-                out.push(Box::new(WrenchFeasibilityLp { load, bounds, closure: false }));
+                out.push(Box::new(WrenchFeasibilityLp::new(load, bounds)));
             } else {
                 // an ellipsoid: its reach against each facet
                 out.push(Box::new(WrenchFeasibility { load, bounds }));

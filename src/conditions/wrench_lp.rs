@@ -50,6 +50,7 @@
 //! programs in O(m) variables, O(m) polynomial linear combinations and a few products.
 
 use std::borrow::Cow;
+use std::cell::RefCell;
 use std::rc::Rc;
 
 use nalgebra::{DMatrix, DVector};
@@ -85,14 +86,36 @@ pub struct WrenchFeasibilityLp {
     pub bounds: Vec<Bounds>,
     /// Whether this is wrench closure (load zero, bounds [1, ∞)).
     pub closure: bool,
+    /// The tensions of the last piece certified feasible (by any motion of this verification),
+    /// to try first on the next: a neighbouring pose is usually balanced by nearly the same.
+    warm: RefCell<Option<Vec<f64>>>,
 }
 
 impl WrenchFeasibilityLp {
+    /// Wrench feasibility of `load` (its nominal wrench, or its ellipsoid) with tensions within
+    /// `bounds`.
+    pub fn new(load: Rc<Load>, bounds: Vec<Bounds>) -> WrenchFeasibilityLp {
+        WrenchFeasibilityLp { load, bounds, closure: false, warm: RefCell::new(None) }
+    }
+
     /// Wrench closure of `m` cables about the point of `load`'s wrench set.
     pub fn closure(load: &Load, m: usize) -> WrenchFeasibilityLp {
         let wrench = crate::model::Wrench { point: load.wrench.point, frame: load.wrench.frame, ..crate::model::Wrench::zero() };
-        WrenchFeasibilityLp { load: Rc::new(Load { wrench, dynamics: None, mobility: load.mobility }), bounds: vec![Bounds { min: 1.0, max: f64::INFINITY }; m], closure: true }
+        let bounds = vec![Bounds { min: 1.0, max: f64::INFINITY }; m];
+        WrenchFeasibilityLp { closure: true, ..WrenchFeasibilityLp::new(Rc::new(Load { wrench, dynamics: None, mobility: load.mobility }), bounds) }
     }
+}
+
+/// `f` moved by the least-norm correction that balances the load `b` at J = `j` (J f = b), if
+/// the result stays strictly within `bounds`.
+fn balanced(j: &DMatrix<f64>, b: &DVector<f64>, f: &[f64], bounds: &[Bounds]) -> Option<Vec<f64>> {
+    if f.len() != j.ncols() {
+        return None;
+    }
+    let f = DVector::from_column_slice(f);
+    let y = (j * j.transpose()).lu().solve(&(b - j * &f))?;
+    let f = f + j.transpose() * y;
+    f.iter().zip(bounds).all(|(x, bd)| *x > bd.min && *x < bd.max).then(|| f.iter().copied().collect())
 }
 
 /// The scaled system on a piece of the motion: N (n × m, the wrench components balanced), the
@@ -257,16 +280,30 @@ impl WrenchFeasibilityLp {
         };
         let nn: &[Vec<Bern>] = &columns;
         let (n, m) = (nn.len(), inv.len());
-        let wc = piece.w.eval(0.5).0;
-        let nc = DMatrix::from_fn(n, m, |r, k| nn[r][k].eval(0.5).0);
+        let wc = piece.w.value(0.5);
+        let nc = DMatrix::from_fn(n, m, |r, k| nn[r][k].value(0.5));
         // the scaled structure matrix at the middle: columns n_k·W/L_k, and the load rows
         let j = DMatrix::from_fn(n, m, |r, k| nc[(r, k)] * wc * inv[k].mid);
-        let b = DVector::from_fn(n, |r, _| piece.load[r].eval(0.5).0);
+        let b = DVector::from_fn(n, |r, _| piece.load[r].value(0.5));
         if let Some(d) = &piece.row_scale {
             return self.decide_ellipsoid(piece, nn, &inv, &j, &b, d, w, search, open);
         }
+        // the last feasible piece's tensions, balanced here: no linear program where they do
+        let warm = self.warm.borrow().as_deref().and_then(|f| balanced(&j, &b, f, &self.bounds));
+        if let Some(f) = warm {
+            if self.feasible(piece, nn, &inv, &nc, &f, w) == Truth::True {
+                *self.warm.borrow_mut() = Some(f);
+                return Truth::True;
+            }
+        }
         match static_margin_of(&j, &b, &self.bounds) {
-            Some((t, f)) if t > 0.0 => self.feasible(piece, nn, &inv, &nc, &f, w),
+            Some((t, f)) if t > 0.0 => {
+                let truth = self.feasible(piece, nn, &inv, &nc, &f, w);
+                if truth == Truth::True {
+                    *self.warm.borrow_mut() = Some(f);
+                }
+                truth
+            }
             // a row of N that is zero throughout: rank below n, no closure
             _ if self.closure && nn.iter().any(|row| row.iter().all(structurally_zero)) => Truth::False,
             _ if self.closure => match enclosing_direction(&j).or_else(|| block_direction(nn, &j, blocks)) {
@@ -288,7 +325,7 @@ impl WrenchFeasibilityLp {
     fn decide_ellipsoid(&self, piece: &Piece, nn: &[Vec<Bern>], inv: &[InverseLength], j: &DMatrix<f64>, b: &DVector<f64>, d: &[Bern], w: Iv, search: &mut Search, open: &mut Option<Vec<usize>>) -> Truth {
         let n = j.nrows();
         let e_inv = select_square(&self.load.wrench.ellipsoid_inv, self.load.rows());
-        let dc: Vec<f64> = d.iter().map(|p| p.eval(0.5).0).collect();
+        let dc: Vec<f64> = d.iter().map(|p| p.value(0.5)).collect();
         let shape = DMatrix::from_fn(n, n, |a, c| dc[a] * e_inv[(a, c)] * dc[c]);
         let problem = Containment { j, bounds: &self.bounds, centre: b, shape: &shape };
         let cover = search.cover.get_or_insert_with(|| Cover::orthants(n));
@@ -309,10 +346,10 @@ impl WrenchFeasibilityLp {
     /// corrected, stay strictly within the bounds throughout (module docs).
     fn feasible(&self, piece: &Piece, nn: &[Vec<Bern>], inv: &[InverseLength], nc: &DMatrix<f64>, f: &[f64], w: Iv) -> Truth {
         let (n, m) = (nn.len(), inv.len());
-        let wc = piece.w.eval(0.5).0;
+        let wc = piece.w.value(0.5);
         // ψ0_k = s_k f_k; P_r = Σ_k n_rk ψ0_k and ρ0 = load − W P, of which only ρ0'(½) is needed
         let psi0: Vec<[f64; 2]> = inv.iter().zip(f).map(|(i, fk)| [i.s.c[0] * fk, i.s.c[1] * fk]).collect();
-        let (wc1, load1) = (piece.w.derivative().eval(0.5).0, |r: usize| piece.load[r].derivative().eval(0.5).0);
+        let (wc1, load1) = (piece.w.derivative().value(0.5), |r: usize| piece.load[r].derivative().value(0.5));
         // rows scaled to unit largest entry at the middle
         let d: Vec<f64> = (0..n).map(|r| 1.0 / nc.row(r).amax()).collect();
         if d.iter().any(|x| !x.is_finite()) {
@@ -320,7 +357,7 @@ impl WrenchFeasibilityLp {
         }
         let slope = DVector::from_fn(n, |r, _| {
             let p = affine_sum(&nn[r], &psi0);
-            d[r] * (load1(r) - wc1 * p.eval(0.5).0 - wc * p.derivative().eval(0.5).0) / wc
+            d[r] * (load1(r) - wc1 * p.value(0.5) - wc * p.derivative().value(0.5)) / wc
         });
         let dn = DMatrix::from_fn(n, m, |r, k| d[r] * nc[(r, k)]);
         let svd = dn.svd(true, true);
@@ -338,7 +375,7 @@ impl WrenchFeasibilityLp {
         for r in 0..n {
             for k in 0..m {
                 let range = Iv::of(&nn[r][k]);
-                let dev = (range.hi - nc[(r, k)]).max(nc[(r, k)] - range.lo) + nn[r][k].eval(0.5).1;
+                let dev = (range.hi - nc[(r, k)]).max(nc[(r, k)] - range.lo) + nn[r][k].value_error();
                 drift += (d[r] * dev).powi(2);
             }
         }
@@ -578,7 +615,7 @@ pub(crate) fn closure_violation(rows: Vec<Vec<Bern>>, len2: Vec<Bern>, cable_of:
 /// its cable, and cable k's column is Σ_s n_s/√P_s over its segments. By the same certificates as the platform's, for any n and m
 /// (a multi-link robot's joint-space statics).
 pub(crate) fn feasibility_violation(rows: Vec<Vec<Bern>>, load: Vec<Bern>, len2: Vec<Bern>, bounds: Vec<Bounds>, cable_of: Option<Vec<usize>>, tol: f64) -> Partition {
-    let lp = WrenchFeasibilityLp { load: Rc::new(Load { wrench: crate::model::Wrench::zero(), dynamics: None, mobility: crate::model::Mobility::Spatial }), bounds, closure: false };
+    let lp = WrenchFeasibilityLp::new(Rc::new(Load { wrench: crate::model::Wrench::zero(), dynamics: None, mobility: crate::model::Mobility::Spatial }), bounds);
     let mut piece = Piece::new(rows, load, Bern::constant(1.0), len2);
     piece.cable_of = cable_of.map(Rc::new);
     lp.violation_of(piece, tol, &[])

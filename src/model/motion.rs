@@ -372,17 +372,23 @@ impl Motion {
 
     /// The motions of a piece that turns (`super::turn`): one per stretch of the turn's
     /// polynomial enclosure, λ linear in the piece's t (and so in time), the translation (a
-    /// polynomial in t) restricted to the stretch, the rotation `q0`·(c(λ), d(λ)·axis).
+    /// polynomial in t) restricted to the stretch, the rotation R0·(I + S(λ)K + (1 − C(λ))K²)
+    /// (R0 of `q0`, K the axis's cross-product matrix, C and S the stretch's cos θ and sin θ)
+    /// over the weight 1.
     fn turn(translation: &Translation, q0: &UnitQuaternion<f64>, axis: &nalgebra::Unit<nalgebra::Vector3<f64>>, angle: f64, profile: super::Profile, [from, to]: [f64; 2]) -> Vec<Motion> {
         let whole = translation_bernstein(translation);
         let at = |t: f64| if t >= 1.0 { to } else { from + (to - from) * t };
+        // R = R0 (I + sin θ K + (1 − cos θ) K²), K the cross-product matrix of the axis
+        let k = axis.into_inner().cross_matrix();
+        let (r0, k2) = (q0.to_rotation_matrix().into_inner(), k * k);
+        let (r0k, r0k2) = (r0 * k, r0 * k2);
         super::turn::turn_stretches(angle, profile)
             .iter()
             .map(|s| {
                 let position = whole.each_ref().map(|p| p.restrict(s.a, s.b));
-                let relative: QuatPoly = [s.cos.clone(), s.sin.iter().map(|c| c * axis.x).collect(), s.sin.iter().map(|c| c * axis.y).collect(), s.sin.iter().map(|c| c * axis.z).collect()];
-                let n = quat_mul(&quat_const(q0), &relative);
-                Motion::from_parts(position, &n, Param::Trajectory { psi: 0.0, h: 0.0, t0: at(s.a), t1: at(s.b), within: (0.0, 1.0), centred: false })
+                let (c, sn, one) = (Bern::from_monomial(&s.cos), Bern::from_monomial(&s.sin), Bern::constant(1.0));
+                let rotation = [0, 1, 2].map(|i| [0, 1, 2].map(|j| Bern::linear_combination(&[(&one, r0[(i, j)] + r0k2[(i, j)]), (&sn, r0k[(i, j)]), (&c, -r0k2[(i, j)])])));
+                Motion { position, rotation, weight: Bern::constant(1.0), param: Param::Trajectory { psi: 0.0, h: 0.0, t0: at(s.a), t1: at(s.b), within: (0.0, 1.0), centred: false } }
             })
             .collect()
     }
@@ -508,9 +514,9 @@ impl Motion {
 
     /// Position and rotation matrix at λ (for checks; the exact conditions use the polynomials).
     pub fn eval(&self, lam: f64) -> (nalgebra::Vector3<f64>, nalgebra::Matrix3<f64>) {
-        let w = self.weight.eval(lam).0;
-        let p = nalgebra::Vector3::from_fn(|i, _| self.position[i].eval(lam).0 / w);
-        let r = nalgebra::Matrix3::from_fn(|i, j| self.rotation[i][j].eval(lam).0 / w);
+        let w = self.weight.value(lam);
+        let p = nalgebra::Vector3::from_fn(|i, _| self.position[i].value(lam) / w);
+        let r = nalgebra::Matrix3::from_fn(|i, j| self.rotation[i][j].value(lam) / w);
         (p, r)
     }
 }
@@ -576,7 +582,7 @@ mod tests {
                     let want = traj.pose_at(t);
                     assert!((r - want.matrix()).norm() < 1e-11, "rotation at t={t}, θ = {angle}: {}", (r - want.matrix()).norm());
                     assert!((p - want.position).norm() < 1e-12);
-                    let w = m.weight.eval(lam).0;
+                    let w = m.weight.value(lam);
                     assert!(w <= 1.0 + 1e-12 && w >= (psi / 2.0).cos().powi(2) - 1e-12, "w = {w} at λ = {lam}");
                 }
                 last_t = m.param.value(1.0);
@@ -603,7 +609,7 @@ mod tests {
                         let lam = i as f64 / 10.0;
                         let h = 1e-6;
                         let dt = (m.param.value(lam + h) - m.param.value(lam - h)) / (2.0 * h);
-                        let g = law.square.eval(lam).0.sqrt();
+                        let g = law.square.value(lam).sqrt();
                         assert!((g * dt - 1.0).abs() < 1e-6, "{:?} at {lam}: λ̇ {g} vs 1/{dt}", m.param);
                         assert!(dt <= m.param.max_slope() * (1.0 + 1e-9));
                     }

@@ -1,28 +1,32 @@
 //! A turn about a fixed axis by angle·s(t), s a polynomial time profile (CASPR's rotation between
-//! knots, [`super::Orientation::Turn`]), as quaternion polynomials with a certified error.
+//! knots, [`super::Orientation::Turn`]), as polynomials with a certified error.
 //!
-//! cos(β(t)) and sin(β(t)), β = angle·s(t)/2, are not rational in t, so no exact rational motion
+//! cos(θ(t)) and sin(θ(t)), θ = angle·s(t), are not rational in t, so no exact rational motion
 //! follows the turn. On each stretch [a, b] of t they are replaced by polynomials of low degree
 //! in λ (t = a + (b − a)λ), with an error bound in two parts:
 //!
-//! 1. the Taylor polynomials of cos and sin about β_m (the stretch's middle) of order n, composed
-//!    exactly with y(λ) = β(t) − β_m: by Taylor's theorem the value is off by at most
+//! 1. the Taylor polynomials of cos and sin about θ_m (the stretch's middle) of order n, composed
+//!    exactly with y(λ) = θ(t) − θ_m: by Taylor's theorem the value is off by at most
 //!    Y^(n+1)/(n+1)!, Y ≥ |y| over the stretch, and the derivatives in t (chain rule) by
-//!    Y^n/n!·B1 and Y^(n−1)/(n−1)!·B1² + Y^n/n!·B2, B1 ≥ |β'|, B2 ≥ |β''|;
+//!    Y^n/n!·B1 and Y^(n−1)/(n−1)!·B1² + Y^n/n!·B2, B1 ≥ |θ'|, B2 ≥ |θ''|;
 //! 2. that polynomial (degree 5n) is interpolated at Chebyshev points by one of degree d, and the
 //!    difference (and its derivatives) bounded by its largest Bernstein coefficient, which bounds
 //!    a polynomial on [0, 1], with the rounding the Bernstein arithmetic tracks.
 //!
 //! Stretches are halved until the value's error is at most [`TURN_TOLERANCE`] (the first and second
-//! derivatives' 100× and 10⁴× that, per unit of the piece's t). The quaternion (c, d·axis) is
-//! exactly a rotation about the axis, by 2·atan2(d, c), which is within
-//! 2·asin(√2·TURN_TOLERANCE) ≈ 3e-11 rad of CASPR's angle — CASPR itself rounds its angles to
-//! 1e-10. What cablenav certifies along such a trajectory is this polynomial motion.
+//! derivatives' 100× and 10⁴× that, per unit of the piece's t). The motion's rotation is then
+//! the polynomial matrix R0·(I + S·K + (1 − C)·K²) (Rodrigues' formula, K the axis's cross-product
+//! matrix, C and S the polynomials for cos θ and sin θ) over the weight 1: each entry within
+//! 2·[`TURN_TOLERANCE`] of CASPR's rotation (its derivatives likewise), and orthogonal to within
+//! about 4·TURN_TOLERANCE — CASPR itself rounds its angles to 1e-10. What cablenav certifies along
+//! such a trajectory is this polynomial motion. (A rotation exact to rounding, the quaternion
+//! (C, S·axis) over its squared norm, doubles the degree and brings a weight of that degree into
+//! every condition: a turn of CASPR's spline took five times as long to verify.)
 
 use super::trajectory::Profile;
 use crate::poly::Bern;
 
-/// The largest error allowed in the cosine and sine of the half-angle; their first and second
+/// The largest error allowed in the cosine and sine of the angle turned; their first and second
 /// derivatives per unit of the piece's t are allowed 100× and 10⁴× that.
 pub const TURN_TOLERANCE: f64 = 1e-11;
 
@@ -39,7 +43,7 @@ const MAX_DEPTH: u32 = 12;
 /// Highest Taylor order composed.
 const MAX_ORDER: usize = 24;
 
-/// One stretch [a, b] of a turn's t: cos β and sin β (β the half-angle turned since t = 0) as
+/// One stretch [a, b] of a turn's t: cos θ and sin θ (θ the angle turned since t = 0) as
 /// polynomials in λ ∈ [0, 1], t = a + (b − a)λ, and their certified errors.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TurnStretch {
@@ -47,9 +51,9 @@ pub struct TurnStretch {
     pub a: f64,
     /// End of the stretch.
     pub b: f64,
-    /// cos β, ascending monomial coefficients in λ.
+    /// cos θ, ascending monomial coefficients in λ.
     pub cos: Vec<f64>,
-    /// sin β, likewise.
+    /// sin θ, likewise.
     pub sin: Vec<f64>,
     /// Bounds on |error|, |d error/dt| and |d² error/dt²| of both, over the stretch.
     pub error: [f64; 3],
@@ -83,18 +87,18 @@ fn tolerances() -> [f64; 3] {
     DERIVATIVE_SLACK.map(|k| k * TURN_TOLERANCE)
 }
 
-/// The Taylor polynomials of cos β and sin β about the stretch's middle composed with y(λ), as
+/// The Taylor polynomials of cos θ and sin θ about the stretch's middle composed with y(λ), as
 /// Bernstein polynomials, and their error bounds (part 1 of the module docs); `None` when no
 /// order up to [`MAX_ORDER`] is within a quarter of the tolerances.
-fn composed(half: f64, profile: Profile, a: f64, b: f64) -> Option<(Bern, Bern, [f64; 3])> {
+fn composed(angle: f64, profile: Profile, a: f64, b: f64) -> Option<(Bern, Bern, [f64; 3])> {
     let width = b - a;
     // composed in monomial form, not by Bernstein restriction: restriction's tracked rounding,
     // divided by the width squared, swamps the second derivative's bound on short stretches
-    let beta = Bern::from_monomial(&compose_linear(profile.coefficients(), a, width)).scale(half);
-    let beta_m = half * profile.at(0.5 * (a + b))[0];
-    let y = beta.sub(&Bern::constant(beta_m));
+    let theta = Bern::from_monomial(&compose_linear(profile.coefficients(), a, width)).scale(angle);
+    let theta_m = angle * profile.at(0.5 * (a + b))[0];
+    let y = theta.sub(&Bern::constant(theta_m));
     let big_y = sup(&y);
-    let d1 = beta.derivative();
+    let d1 = theta.derivative();
     let (b1, b2) = (sup(&d1) / width, sup(&d1.derivative()) / (width * width));
     let tol = tolerances();
     let factorial = |k: usize| (1..=k).fold(1.0, |acc, j| acc * j as f64);
@@ -105,33 +109,46 @@ fn composed(half: f64, profile: Profile, a: f64, b: f64) -> Option<(Bern, Bern, 
     };
     let order = (1..=MAX_ORDER).find(|&n| (0..3).all(|k| bounds(n)[k] <= 0.25 * tol[k]))?;
     let error = bounds(order);
-    // C(y) = Σ (−1)^(j/2) y^j/j! over even j, S(y) over odd j
-    let (mut c, mut s) = (Bern::constant(1.0), Bern::constant(0.0));
-    let mut power = Bern::constant(1.0);
+    // C(y) = Σ (−1)^(j/2) y^j/j! over even j, S(y) over odd j: each sum in one pass
+    let mut powers = vec![Bern::constant(1.0)];
     for j in 1..=order {
-        power = power.mul(&y);
-        let term = power.scale(if (j / 2) % 2 == 0 { 1.0 } else { -1.0 } / factorial(j));
-        if j % 2 == 0 {
-            c = c.add(&term);
-        } else {
-            s = s.add(&term);
-        }
+        powers.push(powers[j - 1].mul(&y));
     }
-    let (cm, sm) = (beta_m.cos(), beta_m.sin());
+    let series = |parity: usize| {
+        let terms: Vec<(&Bern, f64)> = (parity..=order).step_by(2).map(|j| (&powers[j], if (j / 2) % 2 == 0 { 1.0 } else { -1.0 } / factorial(j))).collect();
+        Bern::linear_combination(&terms)
+    };
+    let (c, s) = (series(0), series(1));
+    let (cm, sm) = (theta_m.cos(), theta_m.sin());
     let cos = Bern::linear_combination(&[(&c, cm), (&s, -sm)]);
     let sin = Bern::linear_combination(&[(&c, sm), (&s, cm)]);
     Some((cos, sin, error))
 }
 
-/// The polynomial of degree d through `p` at d + 1 Chebyshev points of [0, 1] (ascending monomial
-/// coefficients), or `None` if the system is singular.
+/// The d + 1 Chebyshev points of [0, 1] and the LU factors of their Vandermonde matrix, for
+/// every degree d up to [`MAX_DEGREE`] (index d).
+type Nodes = Vec<(Vec<f64>, nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>)>;
+
+fn chebyshev() -> &'static Nodes {
+    static TABLE: std::sync::OnceLock<Nodes> = std::sync::OnceLock::new();
+    TABLE.get_or_init(|| {
+        (0..=MAX_DEGREE)
+            .map(|d| {
+                let nodes: Vec<f64> = (0..=d).map(|k| 0.5 - 0.5 * (std::f64::consts::PI * (2 * k + 1) as f64 / (2 * d + 2) as f64).cos()).collect();
+                let v = nalgebra::DMatrix::from_fn(d + 1, d + 1, |i, j| nodes[i].powi(j as i32));
+                (nodes, v.lu())
+            })
+            .collect()
+    })
+}
+
+/// The polynomial of degree d ≤ [`MAX_DEGREE`] through `p` at d + 1 Chebyshev points of [0, 1]
+/// (ascending monomial coefficients), or `None` if the system is singular. (Its error is
+/// bounded afterwards, [`difference`]: how it is found does not matter to the certificate.)
 fn interpolate(p: &Bern, d: usize) -> Option<Vec<f64>> {
-    let nodes: Vec<f64> = (0..=d)
-        .map(|k| 0.5 - 0.5 * (std::f64::consts::PI * (2 * k + 1) as f64 / (2 * d + 2) as f64).cos())
-        .collect();
-    let v = nalgebra::DMatrix::from_fn(d + 1, d + 1, |i, j| nodes[i].powi(j as i32));
-    let rhs = nalgebra::DVector::from_iterator(d + 1, nodes.iter().map(|&x| p.eval(x).0));
-    v.lu().solve(&rhs).map(|c| c.iter().copied().collect())
+    let (nodes, lu) = &chebyshev()[d];
+    let rhs = nalgebra::DVector::from_iterator(d + 1, nodes.iter().map(|&x| p.value(x)));
+    lu.solve(&rhs).map(|c| c.iter().copied().collect())
 }
 
 /// The bounds on |p − q|, |(p − q)'| and |(p − q)''| in t over the stretch of width `width`.
@@ -158,35 +175,41 @@ pub fn turn_stretches(angle: f64, profile: Profile) -> Vec<TurnStretch> {
         }];
     }
     let mut out = Vec::new();
-    stretch(0.5 * angle, profile, 0.0, 1.0, 0, &mut out);
+    stretch(angle, profile, 0.0, 1.0, 0, &mut out);
     out
 }
 
-/// The approximation on [a, b], or on its halves.
-fn stretch(half: f64, profile: Profile, a: f64, b: f64, depth: u32, out: &mut Vec<TurnStretch>) {
+/// The approximation on [a, b], or on its halves: where the highest degree meets the tolerances,
+/// the lowest that does (by bisection on the degree); where it does not, the stretch is halved
+/// at once.
+fn stretch(angle: f64, profile: Profile, a: f64, b: f64, depth: u32, out: &mut Vec<TurnStretch>) {
     let tol = tolerances();
-    if let Some((cos, sin, taylor)) = composed(half, profile, a, b) {
-        for d in 2..=MAX_DEGREE {
-            let (Some(qc), Some(qs)) = (interpolate(&cos, d), interpolate(&sin, d)) else {
-                continue;
-            };
+    let within = |error: &[f64; 3]| (0..3).all(|k| error[k] <= tol[k]);
+    if let Some((cos, sin, taylor)) = composed(angle, profile, a, b) {
+        // the interpolants of degree d and their certified errors
+        let fit = |d: usize| -> Option<TurnStretch> {
+            let (qc, qs) = (interpolate(&cos, d)?, interpolate(&sin, d)?);
             let (ec, es) = (difference(&cos, &qc, b - a), difference(&sin, &qs, b - a));
-            let error: [f64; 3] = std::array::from_fn(|k| taylor[k] + ec[k].max(es[k]));
-            if (0..3).all(|k| error[k] <= tol[k]) || (d == MAX_DEGREE && depth >= MAX_DEPTH) {
-                out.push(TurnStretch {
-                    a,
-                    b,
-                    cos: qc,
-                    sin: qs,
-                    error,
-                });
-                return;
+            Some(TurnStretch { a, b, cos: qc, sin: qs, error: std::array::from_fn(|k| taylor[k] + ec[k].max(es[k])) })
+        };
+        if let Some(best) = fit(MAX_DEGREE).filter(|f| within(&f.error) || depth >= MAX_DEPTH) {
+            // bisection on the degree: `best` meets the tolerances (or the depth is spent), the
+            // degree below `low` is not known to
+            let (mut best, mut low) = (best, 2);
+            while low < best.cos.len() - 1 {
+                let d = (low + best.cos.len() - 1) / 2;
+                match fit(d).filter(|f| within(&f.error)) {
+                    Some(f) => best = f,
+                    None => low = d + 1,
+                }
             }
+            out.push(best);
+            return;
         }
     }
     let m = 0.5 * (a + b);
-    stretch(half, profile, a, m, depth + 1, out);
-    stretch(half, profile, m, b, depth + 1, out);
+    stretch(angle, profile, a, m, depth + 1, out);
+    stretch(angle, profile, m, b, depth + 1, out);
 }
 
 #[cfg(test)]
@@ -218,13 +241,13 @@ mod tests {
                     for i in 0..=200 {
                         let lam = i as f64 / 200.0;
                         let t = s.a + (s.b - s.a) * lam;
-                        let beta = 0.5 * angle * profile.at(t)[0];
+                        let theta = angle * profile.at(t)[0];
                         assert!(
-                            (eval(&s.cos, lam) - beta.cos()).abs() <= s.error[0].max(1e-16),
+                            (eval(&s.cos, lam) - theta.cos()).abs() <= s.error[0].max(1e-16),
                             "{profile:?} {angle} cos at {t}"
                         );
                         assert!(
-                            (eval(&s.sin, lam) - beta.sin()).abs() <= s.error[0].max(1e-16),
+                            (eval(&s.sin, lam) - theta.sin()).abs() <= s.error[0].max(1e-16),
                             "{profile:?} {angle} sin at {t}"
                         );
                     }

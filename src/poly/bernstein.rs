@@ -263,10 +263,14 @@ impl Bern {
         r
     }
 
-    /// Value at x ∈ [0, 1] and a bound on its error. Horner's scheme in x/(1−x) (or (1−x)/x past
-    /// the middle) on the C(n,k)-scaled coefficients: O(n), no allocation. The rounding bound is
-    /// taken relative to Σ|c_k|B_k(x) ≤ max|c|.
+    /// Value at x ∈ [0, 1] and a bound on its error ([`Bern::value`], [`Bern::value_error`]).
     pub fn eval(&self, x: f64) -> (f64, f64) {
+        (self.value(x), self.value_error())
+    }
+
+    /// Value at x ∈ [0, 1]. Horner's scheme in x/(1−x) (or (1−x)/x past the middle) on the
+    /// C(n,k)-scaled coefficients: O(n), no allocation.
+    pub fn value(&self, x: f64) -> f64 {
         let n = self.degree();
         let row = pascal_row(n);
         let (r, scale, forward) = if x <= 0.5 { (x / (1.0 - x), (1.0 - x).powi(n as i32), false) } else { ((1.0 - x) / x, x.powi(n as i32), true) };
@@ -276,7 +280,13 @@ impl Bern {
             let j = if forward { k } else { n - k };
             acc = acc * r + c[j] * row[j];
         }
-        (acc * scale, self.err + (5 * n + 5) as f64 * U * self.max_abs())
+        acc * scale
+    }
+
+    /// A bound on the error of [`Bern::value`] at any x ∈ [0, 1]: the coefficients' own, plus the
+    /// rounding, taken relative to Σ|c_k|B_k(x) ≤ max|c|.
+    pub fn value_error(&self) -> f64 {
+        self.err + (5 * self.degree() + 5) as f64 * U * self.max_abs()
     }
 
     /// The two halves of the polynomial split at x, each re-parametrised to [0, 1].
@@ -457,8 +467,8 @@ mod tests {
         let (l, r) = p.split(0.3);
         for i in 0..=10 {
             let x = i as f64 / 10.0;
-            assert!((l.eval(x).0 - p.eval(0.3 * x).0).abs() < 1e-13);
-            assert!((r.eval(x).0 - p.eval(0.3 + 0.7 * x).0).abs() < 1e-13);
+            assert!((l.value(x) - p.value(0.3 * x)).abs() < 1e-13);
+            assert!((r.value(x) - p.value(0.3 + 0.7 * x)).abs() < 1e-13);
         }
     }
 
@@ -468,7 +478,7 @@ mod tests {
         let q = p.restrict(0.25, 0.75);
         for i in 0..=10 {
             let x = i as f64 / 10.0;
-            assert!((q.eval(x).0 - p.eval(0.25 + 0.5 * x).0).abs() < 1e-13);
+            assert!((q.value(x) - p.value(0.25 + 0.5 * x)).abs() < 1e-13);
         }
     }
 
@@ -479,7 +489,7 @@ mod tests {
         assert_eq!(sum.degree(), 3);
         for i in 0..=10 {
             let x = i as f64 / 10.0;
-            let want = 2.0 * p.eval(x).0 - 0.3 * q.eval(x).0 + 1.5 * r.eval(x).0;
+            let want = 2.0 * p.value(x) - 0.3 * q.value(x) + 1.5 * r.value(x);
             let (v, e) = sum.eval(x);
             assert!((v - want).abs() <= e + 1e-15, "at {x}: {v} vs {want} (err {e})");
         }
@@ -493,7 +503,7 @@ mod tests {
         let q = p.elevate(7);
         for i in 0..=10 {
             let x = i as f64 / 10.0;
-            assert!((p.eval(x).0 - q.eval(x).0).abs() < 1e-14);
+            assert!((p.value(x) - q.value(x)).abs() < 1e-14);
         }
     }
 }

@@ -191,7 +191,7 @@ mod tests {
             .map(|p| {
                 let inversions = (0..n).flat_map(|i| (i + 1..n).map(move |j| (i, j))).filter(|&(i, j)| p[i] > p[j]).count();
                 let sign = if inversions % 2 == 0 { 1.0 } else { -1.0 };
-                sign * p.iter().enumerate().map(|(r, &c)| m[r][c].eval(x).0).product::<f64>()
+                sign * p.iter().enumerate().map(|(r, &c)| m[r][c].value(x)).product::<f64>()
             })
             .sum()
     }

@@ -130,8 +130,9 @@ fn recurse(p: &Bern, lo: f64, hi: f64, limits: &Limits, budget: &mut usize, out:
 /// Emits sign `s0` before the root, Unknown around it, −s0 after.
 fn bisect_root(p: &Bern, lo: f64, hi: f64, limits: &Limits, s0: i8, out: &mut Vec<(f64, Sign)>) {
     let tol = limits.tol;
+    let e = p.value_error();
     let sign_at = |x: f64| -> (i8, f64) {
-        let (v, e) = p.eval(x);
+        let v = p.value(x);
         (if v > e { 1 } else if v < -e { -1 } else { 0 }, v)
     };
     let width = hi - lo;
@@ -241,7 +242,7 @@ mod tests {
         let mut start = 0.0;
         for &(end, s) in &pieces {
             let mid = 0.5 * (start + end);
-            let v = p.eval(mid).0;
+            let v = p.value(mid);
             match s {
                 Sign::Pos => assert!(v > 0.0),
                 Sign::Neg => assert!(v < 0.0),

@@ -96,7 +96,7 @@ impl Rates {
 
     /// The jet at λ: with f = F/w, f' = (F'w − Fw')/w² and f'' = (F''w − Fw'')/w² − 2w'f'/w.
     pub fn jet(&self, lam: f64) -> Jet {
-        let at = |p: &Bern| p.eval(lam).0;
+        let at = |p: &Bern| p.value(lam);
         let (w, w1, w2) = (at(&self.motion.weight), at(&self.dw), at(&self.ddw));
         let quotient = |f: f64, f1: f64, f2: f64| {
             let d1 = (f1 * w - f * w1) / (w * w);
@@ -122,7 +122,7 @@ impl Rates {
     /// dλ/dt at λ (t the trajectory's parameter).
     pub fn per_t(&self, lam: f64) -> f64 {
         let law = TimeLaw::uniform(&self.motion.param, 1.0).expect("a trajectory's motion");
-        law.square.eval(lam).0.sqrt()
+        law.square.value(lam).sqrt()
     }
 }
 
