@@ -426,6 +426,14 @@ pub trait Condition {
     /// nothing that a part could restrict: the default does nothing.
     fn prepare(&self, _sweep: &mut Sweep) {}
 
+    /// A cheap guess of the first λ where the condition is violated along the sweep's motion
+    /// (`f64::INFINITY` where it seems to hold throughout), or `None` where the condition makes
+    /// none. A hint, never an answer: the verifier takes conditions of equal cost in the order of
+    /// their guesses, so that the stretches the first ones settle spare the others.
+    fn hint(&self, _sweep: &mut Sweep) -> Option<f64> {
+        None
+    }
+
     /// How much exact work [`Condition::violation`] takes: the verifier evaluates the cheaper
     /// conditions first, so that the costlier ones may leave the parts of the motion already
     /// settled ([`Sweep::settled`]).

@@ -224,10 +224,8 @@ fn amgm(beta: &Bern, p: &Bern) -> Option<(f64, f64)> {
     (c > 0.0 && d > 0.0 && c.is_finite() && d.is_finite()).then_some((c, d))
 }
 
-/// False where `cert` is true (no answer needed there), true elsewhere.
-fn unsettled(cert: &Partition) -> Partition {
-    Partition::from_pieces(cert.pieces.iter().map(|&(end, t)| (end, if t == Truth::True { Truth::False } else { Truth::True })).collect())
-}
+/// How many points of the motion [`Condition::hint`] looks at.
+const HINT_PROBES: usize = 8;
 
 /// How many times undecided pieces are re-expanded locally.
 const REFINE_ROUNDS: usize = 3;
@@ -235,18 +233,22 @@ const REFINE_ROUNDS: usize = 3;
 impl CableTension {
     /// Where the bound is violated on `t`'s span (as a partition of [0, 1] over it): violated
     /// unless (Δ > 0 and it holds with σ = +1) or (Δ < 0 and with σ = −1) — so also wherever Δ
-    /// vanishes identically.
-    fn violated_on(&self, t: &TensionPolys, inv_t2: f64, tol: f64) -> Partition {
+    /// vanishes identically. Undecided, without work, on the ordered, disjoint intervals `spare`
+    /// (where other conditions already settle the answer).
+    fn violated_on(&self, t: &TensionPolys, inv_t2: f64, tol: f64, spare: &[(f64, f64)]) -> Partition {
+        // false on the spared intervals (nothing is classified there), true elsewhere
+        let open = Partition::outside(spare);
         let holds = any_of!(
-            and_then(all_of!(tol; h(t.delta.clone()) => GT), || self.holds(t, 1.0, inv_t2, tol)),
-            and_then(all_of!(tol; h(t.delta.clone()) => LT), || self.holds(t, -1.0, inv_t2, tol)),
+            and_then(all_of!(from open.clone(), tol; h(t.delta.clone()) => GT), || self.holds(t, 1.0, inv_t2, tol, &open)),
+            and_then(all_of!(from open.clone(), tol; h(t.delta.clone()) => LT), || self.holds(t, -1.0, inv_t2, tol, &open)),
         );
-        holds.not()
+        // the spared intervals undecided
+        holds.or(&open.not().and(&Partition::constant(Truth::Unknown))).not()
     }
 
     /// Where the bound holds over the whole ellipsoid, assuming sign Δ = `sigma` (the caller
-    /// restricts to those pieces).
-    fn holds(&self, t: &TensionPolys, sigma: f64, inv_t2: f64, tol: f64) -> Partition {
+    /// restricts to those pieces), on the pieces where `open` is true (false elsewhere).
+    fn holds(&self, t: &TensionPolys, sigma: f64, inv_t2: f64, tol: f64, open: &Partition) -> Partition {
         let i = self.cable;
         let Some((alpha, beta)) = t.column(i, inv_t2) else { return Partition::constant(Truth::Unknown) };
         let a = alpha.scale(sigma);
@@ -266,24 +268,25 @@ impl CableTension {
                 None => k,
             }
         };
+        let open = || open.clone();
         match self.side {
             // a single wrench (β = 0): √P a > k ≥ 0 iff a > 0 and P a² > k² (for k = 0, a > 0);
             // √P a < K iff a < 0 or K² > P a²
-            TensionSide::Lower if t.single && self.bound == 0.0 => all_of!(tol; h(a.clone()) => GT),
+            TensionSide::Lower if t.single && self.bound == 0.0 => all_of!(from open(), tol; h(a.clone()) => GT),
             TensionSide::Lower if t.single => {
                 let k = scaled_bound();
-                all_of!(tol; h(a.clone()) => GT, h(p.mul(&a.mul(&a)).sub(&k.mul(&k))) => GT)
+                all_of!(from open(), tol; h(a.clone()) => GT, h(p.mul(&a.mul(&a)).sub(&k.mul(&k))) => GT)
             }
             TensionSide::Upper if t.single => {
                 let kk = scaled_bound();
-                any_of!(all_of!(tol; h(a.clone()) => LT), all_of!(tol; h(kk.mul(&kk).sub(&p.mul(&a.mul(&a)))) => GT))
+                any_of!(all_of!(from open(), tol; h(a.clone()) => LT), all_of!(from open(), tol; h(kk.mul(&kk).sub(&p.mul(&a.mul(&a)))) => GT))
             }
             // √P (a − √β) > k with k ≥ 0: a > √β, then square.
-            TensionSide::Lower if self.bound == 0.0 => all_of!(tol; h(a.clone()) => GT, h(a2_minus_b()) => GT),
+            TensionSide::Lower if self.bound == 0.0 => all_of!(from open(), tol; h(a.clone()) => GT, h(a2_minus_b()) => GT),
             TensionSide::Lower => {
                 let k = scaled_bound();
                 let l = || p.mul(&a.mul(&a).add(beta)).sub(&k.mul(&k));
-                all_of!(tol;
+                all_of!(from open(), tol;
                     h(a.clone()) => GT,
                     h(a2_minus_b()) => GT,
                     h(l()) => GT,
@@ -298,14 +301,15 @@ impl CableTension {
                     Some((c, d)) if self.bound >= 0.0 => {
                         // √P (a + √β) ≤ (P + d²)(2ca + β + c²)/(4cd) for a ≥ 0
                         let s = kk.scale(4.0 * c * d).sub(&Bern::linear_combination(&[(p, 1.0), (&Bern::constant(d * d), 1.0)]).mul(&Bern::linear_combination(&[(&a, 2.0 * c), (beta, 1.0), (&Bern::constant(c * c), 1.0)])));
-                        all_of!(tol; h(a.clone()) => GT, h(s) => GT)
+                        all_of!(from open(), tol; h(a.clone()) => GT, h(s) => GT)
                     }
                     _ => Partition::constant(Truth::Unknown),
                 };
-                if cert.is_all(Truth::True) {
+                // the exact squares only where the certificate leaves it open
+                let start = open().and(&cert.is_not(Truth::True));
+                if start.is_all(Truth::False) {
                     return cert;
                 }
-                let start = unsettled(&cert);
                 let m = || kk.mul(&kk).sub(&p.mul(&a.mul(&a).add(beta)));
                 cert.or(&any_of!(
                     all_of!(from start.clone(), tol; h(a.clone()) => GT, h(m()) => GT, h({ let m = m(); m.mul(&m).sub(&cross()) }) => GT),
@@ -356,9 +360,31 @@ impl Condition for CableTension {
         self.polys(sweep, true);
     }
 
+    /// The first of [`HINT_PROBES`] evenly spread points where the tension range read off the
+    /// polynomials' control polygons (each coefficient c_k stands for the value at k/n) crosses
+    /// the bound.
+    fn hint(&self, sweep: &mut Sweep) -> Option<f64> {
+        let t = self.polys(sweep, false);
+        let c = t.columns.iter().find(|c| c.cable == self.cable)?;
+        let inv_t2 = inverse_square(sweep.duration);
+        let at = |p: &Bern, x: f64| p.c[(x * p.degree() as f64).round() as usize];
+        // the bound against √P (a ∓ √β) with the denominators cleared, as the conditions have it
+        let violated = |x: f64| {
+            let delta = at(&t.delta, x);
+            let a = delta.signum() * (at(&c.alpha, x) + c.inertial.as_ref().map_or(0.0, |p| inv_t2 * at(p, x)));
+            let cleared = self.bound * at(&t.weight, x) * delta.abs() * t.scale.as_ref().map_or(1.0, |q| at(q, x));
+            let (root_p, root_b) = (at(&t.len2[self.cable], x).max(0.0).sqrt(), at(&c.beta, x).max(0.0).sqrt());
+            match self.side {
+                TensionSide::Lower => !(root_p * (a - root_b) > cleared),
+                TensionSide::Upper => !(root_p * (a + root_b) < cleared),
+            }
+        };
+        Some((0..HINT_PROBES).map(|j| (j as f64 + 0.5) / HINT_PROBES as f64).find(|&x| violated(x)).unwrap_or(f64::INFINITY))
+    }
+
     fn violation(&self, sweep: &mut Sweep) -> Partition {
         let polys = self.polys(sweep, false);
-        self.violated_on(&polys, inverse_square(sweep.duration), sweep.tol)
+        self.violated_on(&polys, inverse_square(sweep.duration), sweep.tol, &sweep.settled)
     }
 
     /// Undecided pieces wider than the tolerance (outside the sweep's settled intervals): the
@@ -383,7 +409,7 @@ impl Condition for CableTension {
             for (a, b) in wide {
                 let span = ((a - (b - a)).max(0.0), (b + (b - a)).min(1.0));
                 let local = polys.refined(span, &self.load, self.cable, sweep);
-                let inner = self.violated_on(&local, inv_t2, tol / (span.1 - span.0));
+                let inner = self.violated_on(&local, inv_t2, tol / (span.1 - span.0), &[]);
                 out = out.splice((a, b), &inner, span);
             }
         }

@@ -158,6 +158,27 @@ impl Partition {
         Partition { pieces: self.pieces.iter().map(|&(end, t)| (end, flip(t))).collect() }
     }
 
+    /// True where the truth is not `t`, false where it is: the pieces a later step still has to
+    /// look at (`t` = True: those a certificate has not decided).
+    pub fn is_not(&self, t: Truth) -> Partition {
+        Partition::normalised(self.pieces.iter().map(|&(end, u)| (end, if u == t { Truth::False } else { Truth::True })).collect())
+    }
+
+    /// False on the ordered, disjoint intervals `inside`, true elsewhere.
+    pub fn outside(inside: &[(f64, f64)]) -> Partition {
+        let mut pieces = Vec::with_capacity(2 * inside.len() + 1);
+        for &(a, b) in inside.iter().filter(|(a, b)| b > a) {
+            if a > 0.0 {
+                pieces.push((a, Truth::True));
+            }
+            pieces.push((b.min(1.0), Truth::False));
+        }
+        if pieces.last().is_none_or(|p| p.0 < 1.0) {
+            pieces.push((1.0, Truth::True));
+        }
+        Partition::normalised(pieces)
+    }
+
     /// The intervals (ordered, disjoint, closed) where the truth is `t`.
     pub fn where_is(&self, t: Truth) -> Vec<(f64, f64)> {
         self.intervals().into_iter().filter(|p| p.2 == t).map(|(a, b, _)| (a, b)).collect()
@@ -185,6 +206,17 @@ impl Partition {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn outside_and_is_not() {
+        let p = Partition::outside(&[(0.0, 0.2), (0.5, 0.7)]);
+        assert_eq!(p.pieces, vec![(0.2, Truth::False), (0.5, Truth::True), (0.7, Truth::False), (1.0, Truth::True)]);
+        assert_eq!(Partition::outside(&[(0.3, 1.0)]).pieces, vec![(0.3, Truth::True), (1.0, Truth::False)]);
+        assert!(Partition::outside(&[]).is_all(Truth::True));
+        let q = Partition::from_pieces(vec![(0.4, Truth::True), (0.6, Truth::Unknown), (1.0, Truth::False)]);
+        assert_eq!(q.is_not(Truth::True).pieces, vec![(0.4, Truth::False), (1.0, Truth::True)]);
+        assert_eq!(q.is_not(Truth::False).pieces, vec![(0.6, Truth::True), (1.0, Truth::False)]);
+    }
 
     #[test]
     fn and_or_merge_pieces() {

@@ -62,12 +62,14 @@ fn sweeps(s: &Scenario, motions: &[Vec<Motion>], tol_user: f64, duration: Option
 fn pieces_on(conditions: &[Box<dyn Condition>], sweeps: &mut [Sweep], settle: bool) -> (Vec<Piece>, Vec<Vec<Piece>>) {
     let mut per: Vec<Vec<Piece>> = vec![Vec::new(); conditions.len()];
     let mut overall: Vec<Piece> = Vec::new();
-    // the cheap conditions first (a stable sort keeps file order within each cost): where they
-    // already violate, the costlier ones may stay undecided
-    let mut order: Vec<usize> = (0..conditions.len()).collect();
-    crate::order::sort_by_key(&mut order, |&k| f64::from(conditions[k].cost() as u8));
     let count = sweeps.len();
     for (piece, sweep) in sweeps.iter_mut().enumerate() {
+        // the cheap conditions first, and within each cost those that seem violated earliest
+        // (their hints; a stable sort keeps file order otherwise): where they already violate,
+        // the others may stay undecided
+        let hints: Vec<f64> = conditions.iter().map(|c| c.hint(sweep).unwrap_or(f64::INFINITY).clamp(0.0, 2.0)).collect();
+        let mut order: Vec<usize> = (0..conditions.len()).collect();
+        crate::order::sort_by_key(&mut order, |&k| 4.0 * f64::from(conditions[k].cost() as u8) + hints[k]);
         let tol = sweep.tol;
         sweep.settled.clear();
         let mut union = Partition::constant(Truth::False);
