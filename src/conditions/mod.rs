@@ -267,7 +267,7 @@ impl Local {
             inertial: OnceCell::new(),
         };
         // timed: the inertial rows, scaled to the sweep's duration when used
-        local.load = load_polys(&local, load, local.law.is_some());
+        local.load = load_polys(&local, load, local.law.is_some(), m.spin.as_ref());
         local
     }
 

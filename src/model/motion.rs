@@ -127,6 +127,23 @@ pub struct Motion {
     pub weight: Bern,
     /// λ → user parameter.
     pub param: Param,
+    /// The turn about one fixed axis the rotation encloses, with its rate known exactly (a
+    /// CASPR spline's turn); `None`: the rates come from the polynomials.
+    pub spin: Option<Spin>,
+}
+
+/// A turn about one fixed axis at a rate known exactly, beside the rotation that encloses it
+/// (`super::turn`): the angular velocity is ω = (dθ/dλ)·λ̇·`axis` and its acceleration
+/// α = ((dθ/dλ)·λ̈ + (d²θ/dλ²)·λ̇²)·`axis`, whatever the rounding of the enclosure.
+#[derive(Debug, Clone)]
+pub struct Spin {
+    /// The axis in the world frame (unit).
+    pub axis: nalgebra::Vector3<f64>,
+    /// The same axis in the body's frame: Rᵀ·axis, which Rodrigues' enclosure R0·(I + S·K +
+    /// (1 − C)·K²) of a turn about R0·`body` keeps exactly (K·body = 0), whatever C and S.
+    pub body: nalgebra::Vector3<f64>,
+    /// dθ/dλ, the angle's rate per unit of the motion's parameter.
+    pub rate: Bern,
 }
 
 /// A quaternion whose components are polynomials in λ (ascending monomial coefficients).
@@ -243,7 +260,7 @@ impl Motion {
     pub(crate) fn from_parts(position: [Bern; 3], n: &QuatPoly, param: Param) -> Motion {
         let (rotation, weight) = rotation_of(n);
         let position = position.map(|p| p.mul(&weight));
-        Motion { position, rotation, weight, param }
+        Motion { position, rotation, weight, param, spin: None }
     }
 
     /// The motion with position `position`/`den` (den > 0 on [0, 1]) and rotation from `n`.
@@ -251,7 +268,7 @@ impl Motion {
         let (rotation, w) = rotation_of(n);
         let position = position.map(|p| p.mul(&w));
         let rotation = rotation.map(|row| row.map(|m| m.mul(&den)));
-        Motion { position, rotation, weight: w.mul(&den), param }
+        Motion { position, rotation, weight: w.mul(&den), param, spin: None }
     }
 
     /// The motions of a trajectory: for each of its pieces (format 2), one per stretch of at most
@@ -388,7 +405,10 @@ impl Motion {
                 let position = whole.each_ref().map(|p| p.restrict(s.a, s.b));
                 let (c, sn, one) = (Bern::from_monomial(&s.cos), Bern::from_monomial(&s.sin), Bern::constant(1.0));
                 let rotation = [0, 1, 2].map(|i| [0, 1, 2].map(|j| Bern::linear_combination(&[(&one, r0[(i, j)] + r0k2[(i, j)]), (&sn, r0k[(i, j)]), (&c, -r0k2[(i, j)])])));
-                Motion { position, rotation, weight: Bern::constant(1.0), param: Param::Trajectory { psi: 0.0, h: 0.0, t0: at(s.a), t1: at(s.b), within: (0.0, 1.0), centred: false } }
+                // θ = angle·s(t) on the stretch, t = a + (b − a)λ: its rate in λ, exactly
+                let rate = super::turn::angle_on(angle, profile, s.a, s.b).derivative();
+                let spin = Some(Spin { axis: q0 * axis.into_inner(), body: axis.into_inner(), rate });
+                Motion { position, rotation, weight: Bern::constant(1.0), param: Param::Trajectory { psi: 0.0, h: 0.0, t0: at(s.a), t1: at(s.b), within: (0.0, 1.0), centred: false }, spin }
             })
             .collect()
     }
@@ -453,7 +473,8 @@ impl Motion {
         let position = [0, 1, 2].map(|i| Bern::linear_combination(&[(w, p[i]), (&self.position[0], r[(i, 0)]), (&self.position[1], r[(i, 1)]), (&self.position[2], r[(i, 2)])]));
         let m = &self.rotation;
         let rotation = [0, 1, 2].map(|i| [0, 1, 2].map(|c| Bern::linear_combination(&[(&m[0][c], r[(i, 0)]), (&m[1][c], r[(i, 1)]), (&m[2][c], r[(i, 2)])])));
-        Motion { position, rotation, weight: w.clone(), param: self.param }
+        let spin = self.spin.as_ref().map(|sp| Spin { axis: r * sp.axis, ..sp.clone() });
+        Motion { position, rotation, weight: w.clone(), param: self.param, spin }
     }
 
     /// The frame fixed to this moving one at offset `t` and relative rotation `r`
@@ -462,7 +483,8 @@ impl Motion {
         let m = &self.rotation;
         let position = [0, 1, 2].map(|i| Bern::linear_combination(&[(&self.position[i], 1.0), (&m[i][0], t[0]), (&m[i][1], t[1]), (&m[i][2], t[2])]));
         let rotation = [0, 1, 2].map(|i| [0, 1, 2].map(|c| Bern::linear_combination(&[(&m[i][0], r[(0, c)]), (&m[i][1], r[(1, c)]), (&m[i][2], r[(2, c)])])));
-        Motion { position, rotation, weight: self.weight.clone(), param: self.param }
+        let spin = self.spin.as_ref().map(|sp| Spin { body: r.transpose() * sp.body, ..sp.clone() });
+        Motion { position, rotation, weight: self.weight.clone(), param: self.param, spin }
     }
 
     /// This (moving) frame followed by a joint at `location` in it moving by `joint` (relative):
@@ -473,7 +495,7 @@ impl Motion {
             (0..3).fold(self.position[i].mul(wj), |acc, k| acc.add(&self.rotation[i][k].mul(&joint.position[k].add(&wj.scale(location[k])))))
         });
         let rotation = [0, 1, 2].map(|i| [0, 1, 2].map(|c| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&self.rotation[i][k].mul(&joint.rotation[k][c])))));
-        Motion { position, rotation, weight: self.weight.mul(wj), param: self.param }
+        Motion { position, rotation, weight: self.weight.mul(wj), param: self.param, spin: None }
     }
 
     /// The same motion over a weight `f` times larger (numerators and weight multiplied by the
@@ -484,6 +506,7 @@ impl Motion {
             rotation: self.rotation.each_ref().map(|row| row.each_ref().map(|p| p.mul(f))),
             weight: self.weight.mul(f),
             param: self.param,
+            spin: self.spin.clone(),
         }
     }
 
@@ -494,6 +517,7 @@ impl Motion {
             rotation: [0, 1, 2].map(|i| [0, 1, 2].map(|j| w.scale(r[(i, j)]))),
             weight: w.clone(),
             param,
+            spin: None,
         }
     }
 
@@ -509,6 +533,8 @@ impl Motion {
             rotation: self.rotation.each_ref().map(|row| row.each_ref().map(r)),
             weight: r(&self.weight),
             param: Param::Trajectory { psi, h, t0, t1, within: (c + (d - c) * a, c + (d - c) * b), centred },
+            // dθ/dλ' = (b − a)·dθ/dλ
+            spin: self.spin.as_ref().map(|sp| Spin { rate: r(&sp.rate).scale(b - a), ..sp.clone() }),
         }
     }
 

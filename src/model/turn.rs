@@ -18,8 +18,10 @@
 //! the polynomial matrix R0·(I + S·K + (1 − C)·K²) (Rodrigues' formula, K the axis's cross-product
 //! matrix, C and S the polynomials for cos θ and sin θ) over the weight 1: each entry within
 //! 2·[`TURN_TOLERANCE`] of CASPR's rotation (its derivatives likewise), and orthogonal to within
-//! about 4·TURN_TOLERANCE — CASPR itself rounds its angles to 1e-10. What cablenav certifies along
-//! such a trajectory is this polynomial motion. (A rotation exact to rounding, the quaternion
+//! about 4·TURN_TOLERANCE — CASPR itself rounds its angles to 1e-10. The angle's own rate,
+//! θ' = angle·s'(t), is a polynomial: the motion carries it ([`super::motion::Spin`]), and the
+//! platform's angular velocity and acceleration are taken from it exactly. What cablenav
+//! certifies along such a trajectory is this polynomial motion. (A rotation exact to rounding, the quaternion
 //! (C, S·axis) over its squared norm, doubles the degree and brings a weight of that degree into
 //! every condition: a turn of CASPR's spline took five times as long to verify.)
 
@@ -87,14 +89,20 @@ fn tolerances() -> [f64; 3] {
     DERIVATIVE_SLACK.map(|k| k * TURN_TOLERANCE)
 }
 
+/// The angle turned, θ = `angle`·s(t), on the stretch [a, b] of t as a polynomial in λ
+/// (t = a + (b − a)λ).
+pub fn angle_on(angle: f64, profile: Profile, a: f64, b: f64) -> Bern {
+    // composed in monomial form, not by Bernstein restriction: restriction's tracked rounding,
+    // divided by the width squared, swamps the second derivative's bound on short stretches
+    Bern::from_monomial(&compose_linear(profile.coefficients(), a, b - a)).scale(angle)
+}
+
 /// The Taylor polynomials of cos θ and sin θ about the stretch's middle composed with y(λ), as
 /// Bernstein polynomials, and their error bounds (part 1 of the module docs); `None` when no
 /// order up to [`MAX_ORDER`] is within a quarter of the tolerances.
 fn composed(angle: f64, profile: Profile, a: f64, b: f64) -> Option<(Bern, Bern, [f64; 3])> {
     let width = b - a;
-    // composed in monomial form, not by Bernstein restriction: restriction's tracked rounding,
-    // divided by the width squared, swamps the second derivative's bound on short stretches
-    let theta = Bern::from_monomial(&compose_linear(profile.coefficients(), a, width)).scale(angle);
+    let theta = angle_on(angle, profile, a, b);
     let theta_m = angle * profile.at(0.5 * (a + b))[0];
     let y = theta.sub(&Bern::constant(theta_m));
     let big_y = sup(&y);
