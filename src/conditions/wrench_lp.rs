@@ -349,15 +349,20 @@ impl WrenchFeasibilityLp {
         let wc = piece.w.value(0.5);
         // ψ0_k = s_k f_k; P_r = Σ_k n_rk ψ0_k and ρ0 = load − W P, of which only ρ0'(½) is needed
         let psi0: Vec<[f64; 2]> = inv.iter().zip(f).map(|(i, fk)| [i.s.c[0] * fk, i.s.c[1] * fk]).collect();
-        let (wc1, load1) = (piece.w.derivative().value(0.5), |r: usize| piece.load[r].derivative().value(0.5));
+        let (wc1, load1) = (piece.w.value_and_slope(0.5).1, |r: usize| piece.load[r].value_and_slope(0.5).1);
         // rows scaled to unit largest entry at the middle
         let d: Vec<f64> = (0..n).map(|r| 1.0 / nc.row(r).amax()).collect();
         if d.iter().any(|x| !x.is_finite()) {
             return Truth::Unknown;
         }
+        // P_r and P_r' at the middle from the entries' values and slopes there (ψ0 is affine)
         let slope = DVector::from_fn(n, |r, _| {
-            let p = affine_sum(&nn[r], &psi0);
-            d[r] * (load1(r) - wc1 * p.value(0.5) - wc * p.derivative().value(0.5)) / wc
+            let (p, p1) = nn[r].iter().zip(&psi0).fold((0.0, 0.0), |(v, s), (entry, psi)| {
+                let (mid, rise) = (0.5 * (psi[0] + psi[1]), psi[1] - psi[0]);
+                let (e, e1) = entry.value_and_slope(0.5);
+                (v + e * mid, s + e1 * mid + e * rise)
+            });
+            d[r] * (load1(r) - wc1 * p - wc * p1) / wc
         });
         let dn = DMatrix::from_fn(n, m, |r, k| d[r] * nc[(r, k)]);
         let svd = dn.svd(true, true);

@@ -25,6 +25,9 @@
 //! (C, S·axis) over its squared norm, doubles the degree and brings a weight of that degree into
 //! every condition: a turn of CASPR's spline took five times as long to verify.)
 
+use std::cell::RefCell;
+use std::rc::Rc;
+
 use super::trajectory::Profile;
 use crate::poly::Bern;
 
@@ -170,9 +173,37 @@ fn difference(p: &Bern, q: &[f64], width: f64) -> [f64; 3] {
     ]
 }
 
-/// The stretches of a turn by `angle` with `profile` over t ∈ [0, 1], each within the tolerances.
-/// A turn by 0 is one stretch with the exact polynomials 1 and 0.
-pub fn turn_stretches(angle: f64, profile: Profile) -> Vec<TurnStretch> {
+/// How many turns [`turn_stretches`] remembers (per thread).
+const REMEMBERED: usize = 32;
+
+thread_local! {
+    /// The last turns built, by angle and profile, newest last.
+    static BUILT: RefCell<Vec<((u64, Profile), Rc<Vec<TurnStretch>>)>> = const { RefCell::new(Vec::new()) };
+}
+
+/// The stretches of a turn by `angle` with `profile` over t ∈ [0, 1], each within the tolerances
+/// ([`build_stretches`]), remembered: a turn depends on its angle and profile alone, and a
+/// scenario verified again (the page's live updates, another duration, another condition) asks
+/// for the same turns.
+pub fn turn_stretches(angle: f64, profile: Profile) -> Rc<Vec<TurnStretch>> {
+    let key = (angle.to_bits(), profile);
+    if let Some(found) = BUILT.with(|b| b.borrow().iter().find(|(k, _)| *k == key).map(|(_, s)| Rc::clone(s))) {
+        return found;
+    }
+    let built = Rc::new(build_stretches(angle, profile));
+    BUILT.with(|b| {
+        let mut b = b.borrow_mut();
+        if b.len() == REMEMBERED {
+            b.remove(0);
+        }
+        b.push((key, Rc::clone(&built)));
+    });
+    built
+}
+
+/// The stretches of a turn by `angle` with `profile` over t ∈ [0, 1], each within the tolerances,
+/// built anew. A turn by 0 is one stretch with the exact polynomials 1 and 0.
+pub fn build_stretches(angle: f64, profile: Profile) -> Vec<TurnStretch> {
     if angle == 0.0 {
         return vec![TurnStretch {
             a: 0.0,
@@ -187,30 +218,33 @@ pub fn turn_stretches(angle: f64, profile: Profile) -> Vec<TurnStretch> {
     out
 }
 
-/// The approximation on [a, b], or on its halves: where the highest degree meets the tolerances,
-/// the lowest that does (by bisection on the degree); where it does not, the stretch is halved
-/// at once.
+/// The approximation on [a, b], or on its halves: the lowest degree that meets the tolerances,
+/// looked for from the degree of the stretch before (neighbouring stretches need about the same:
+/// mostly two fits), downwards while it meets them, else upwards to [`MAX_DEGREE`]; where none
+/// does, the stretch is halved.
 fn stretch(angle: f64, profile: Profile, a: f64, b: f64, depth: u32, out: &mut Vec<TurnStretch>) {
     let tol = tolerances();
     let within = |error: &[f64; 3]| (0..3).all(|k| error[k] <= tol[k]);
     if let Some((cos, sin, taylor)) = composed(angle, profile, a, b) {
-        // the interpolants of degree d and their certified errors
+        // the interpolant of degree d, if it meets the tolerances (at the deepest halving, the
+        // highest degree whatever its error)
         let fit = |d: usize| -> Option<TurnStretch> {
             let (qc, qs) = (interpolate(&cos, d)?, interpolate(&sin, d)?);
             let (ec, es) = (difference(&cos, &qc, b - a), difference(&sin, &qs, b - a));
-            Some(TurnStretch { a, b, cos: qc, sin: qs, error: std::array::from_fn(|k| taylor[k] + ec[k].max(es[k])) })
+            let error = std::array::from_fn(|k| taylor[k] + ec[k].max(es[k]));
+            (within(&error) || (d == MAX_DEGREE && depth >= MAX_DEPTH)).then_some(TurnStretch { a, b, cos: qc, sin: qs, error })
         };
-        if let Some(best) = fit(MAX_DEGREE).filter(|f| within(&f.error) || depth >= MAX_DEPTH) {
-            // bisection on the degree: `best` meets the tolerances (or the depth is spent), the
-            // degree below `low` is not known to
-            let (mut best, mut low) = (best, 2);
-            while low < best.cos.len() - 1 {
-                let d = (low + best.cos.len() - 1) / 2;
-                match fit(d).filter(|f| within(&f.error)) {
-                    Some(f) => best = f,
-                    None => low = d + 1,
+        let start = out.last().map_or(MAX_DEGREE, |s| s.cos.len() - 1).clamp(2, MAX_DEGREE);
+        let found = match fit(start) {
+            Some(mut best) => {
+                while let Some(lower) = (best.cos.len() > 3).then(|| fit(best.cos.len() - 2)).flatten() {
+                    best = lower;
                 }
+                Some(best)
             }
+            None => (start + 1..=MAX_DEGREE).find_map(fit),
+        };
+        if let Some(best) = found {
             out.push(best);
             return;
         }
@@ -234,7 +268,7 @@ mod tests {
     fn stretches_follow_the_turn_within_their_bounds() {
         for profile in [Profile::Quintic, Profile::Cubic] {
             for angle in [1e-6, 0.3, 1.0, 2.0, std::f64::consts::PI] {
-                let stretches = turn_stretches(angle, profile);
+                let stretches = build_stretches(angle, profile);
                 assert_eq!(stretches[0].a, 0.0);
                 assert_eq!(stretches.last().unwrap().b, 1.0);
                 for w in stretches.windows(2) {
@@ -270,9 +304,19 @@ mod tests {
         }
     }
 
+    /// A turn asked for again is the one built the first time (the same stretches, not rebuilt),
+    /// and equal to one built anew.
+    #[test]
+    fn turns_are_remembered() {
+        let first = turn_stretches(0.8, Profile::Cubic);
+        assert!(Rc::ptr_eq(&first, &turn_stretches(0.8, Profile::Cubic)));
+        assert!(!Rc::ptr_eq(&first, &turn_stretches(0.8, Profile::Quintic)));
+        assert_eq!(*first, build_stretches(0.8, Profile::Cubic));
+    }
+
     #[test]
     fn no_turn_is_exact() {
-        let s = turn_stretches(0.0, Profile::Quintic);
+        let s = build_stretches(0.0, Profile::Quintic);
         assert_eq!(s.len(), 1);
         assert_eq!(
             (s[0].cos.clone(), s[0].sin.clone(), s[0].error),
