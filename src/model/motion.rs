@@ -567,21 +567,27 @@ mod tests {
             if angle <= FRAC_PI_2 {
                 assert_eq!(motions.len(), 1);
             }
-            let mut last_t = 0.0;
-            for m in &motions {
-                assert_eq!(m.param.value(0.0), last_t);
-                for i in 0..=10 {
-                    let lam = i as f64 / 10.0;
-                    let t = m.param.value(lam);
-                    let (p, r) = m.eval(lam);
-                    let want = traj.pose_at(t);
-                    assert!((r - want.matrix()).norm() < 1e-11, "rotation at t={t}, θ = {angle}: {}", (r - want.matrix()).norm());
-                    assert!((p - want.position).norm() < 1e-9 * (1.0 + want.position.norm()), "position at t={t}, θ = {angle}: {p} vs {}", want.position);
-                }
-                last_t = m.param.value(1.0);
-            }
-            assert_eq!(last_t, 1.0);
+            follows(&traj, &motions, angle);
         }
+    }
+
+    /// The motions tile t ∈ [0, 1] in order, and at every λ of 21 per piece their pose is the
+    /// trajectory's at the t their parameter names.
+    fn follows(traj: &Trajectory, motions: &[Motion], angle: f64) {
+        let mut last_t = 0.0;
+        for m in motions {
+            assert_eq!(m.param.value(0.0), last_t);
+            for i in 0..=20 {
+                let lam = i as f64 / 20.0;
+                let t = m.param.value(lam);
+                let (p, r) = m.eval(lam);
+                let want = traj.pose_at(t);
+                assert!((r - want.matrix()).norm() < 1e-11, "rotation at t={t}, θ = {angle}: {}", (r - want.matrix()).norm());
+                assert!((p - want.position).norm() < 1e-9 * (1.0 + want.position.norm()), "position at t={t}, θ = {angle}: {p} vs {}", want.position);
+            }
+            last_t = m.param.value(1.0);
+        }
+        assert_eq!(last_t, 1.0);
     }
 
     /// A slerp that does not translate is linear in λ (rotation numerator and weight of degree 2),
@@ -596,24 +602,15 @@ mod tests {
             let traj = Trajectory::single("t", at.clone(), Orientation::Slerp(qs, qe));
             let motions = Motion::trajectory(&traj);
             assert_eq!(motions.len(), pieces, "θ = {angle}");
-            let mut last_t = 0.0;
+            follows(&traj, &motions, angle);
+            let psi = angle / pieces as f64;
             for m in &motions {
                 assert!(m.weight.degree() <= 2 && m.rotation[0][0].degree() <= 2 && m.position[0].degree() <= 2);
-                let psi = angle / pieces as f64;
-                assert_eq!(m.param.value(0.0), last_t);
                 for i in 0..=20 {
-                    let lam = i as f64 / 20.0;
-                    let t = m.param.value(lam);
-                    let (p, r) = m.eval(lam);
-                    let want = traj.pose_at(t);
-                    assert!((r - want.matrix()).norm() < 1e-11, "rotation at t={t}, θ = {angle}: {}", (r - want.matrix()).norm());
-                    assert!((p - want.position).norm() < 1e-12);
-                    let w = m.weight.value(lam);
-                    assert!(w <= 1.0 + 1e-12 && w >= (psi / 2.0).cos().powi(2) - 1e-12, "w = {w} at λ = {lam}");
+                    let w = m.weight.value(i as f64 / 20.0);
+                    assert!(w <= 1.0 + 1e-12 && w >= (psi / 2.0).cos().powi(2) - 1e-12, "w = {w} at λ = {i}/20");
                 }
-                last_t = m.param.value(1.0);
             }
-            assert_eq!(last_t, 1.0);
         }
     }
 
