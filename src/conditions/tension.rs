@@ -216,9 +216,9 @@ fn and_then(first: Partition, rest: impl FnOnce() -> Partition) -> Partition {
     }
 }
 
-/// The constants (c, d) of the AM–GM bounds √β ≤ (β + c²)/(2c) and √P ≤ (P + d²)/(2d) (and
-/// √P ≥ 2dP/(P + d²)), c² and d² the largest Bernstein coefficients of β and P, so that each
-/// bound is off by at most c/2 (d/2); `None` when either vanishes.
+/// The constants (c, d) of the AM–GM bounds √β ≤ (β + c²)/(2c) and √P ≤ (P + d²)/(2d), c² and
+/// d² the largest Bernstein coefficients of β and P, so that each bound is off by at most c/2
+/// (d/2); `None` when either vanishes.
 fn amgm(beta: &Bern, p: &Bern) -> Option<(f64, f64)> {
     let (c, d) = (beta.max_abs().sqrt(), p.max_abs().sqrt());
     (c > 0.0 && d > 0.0 && c.is_finite() && d.is_finite()).then_some((c, d))

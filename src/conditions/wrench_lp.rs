@@ -13,7 +13,10 @@
 //! the certificates:
 //!
 //! * **Feasible**: f* and t* > 0, the largest-margin tensions at the middle
-//!   ([`crate::query::wrench::static_margin_of`]). The tension law φ = W ψ, ψ_k = s_k f*_k +
+//!   ([`crate::query::wrench::static_margin_of`]) — or first, without a linear program, the last
+//!   feasible piece's tensions moved by the least-norm correction that balances this middle, if
+//!   they stay within the bounds (any tensions balancing the middle serve: the certificate below
+//!   bounds the rest). The tension law φ = W ψ, ψ_k = s_k f*_k +
 //!   (λ − ½) γ_k, with γ chosen so that the residual ρ = load − N φ vanishes to first order at
 //!   the middle, leaves a residual of second order; the correction δ with N δ = ρ has ‖δ‖ ≤
 //!   ‖Dρ‖/σ_min(DN) (D a row scaling, σ_min(DN(λ)) bounded below from the middle's by the
