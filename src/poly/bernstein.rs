@@ -195,26 +195,21 @@ impl Bern {
         }
         let mut coeffs = zeros(m + n + 1);
         let c: &mut [f64] = &mut coeffs;
-        if m + n <= MAX_DEGREE {
-            let (bm, bn, inv) = (&pascal()[m], &pascal()[n], &inverse_pascal()[m + n]);
-            for (i, (x, bi)) in self.c.iter().zip(bm).enumerate() {
-                let ai = x * bi;
-                for ((ck, y), bj) in c[i..].iter_mut().zip(&other.c[..]).zip(bn) {
-                    *ck += ai * (y * bj);
-                }
+        // the C(n, j)-scaled coefficients of `other` once, then a plain convolution
+        let (bm, bn) = (pascal_row(m), pascal_row(n));
+        let scaled: Coeffs = other.c.iter().zip(bn.iter()).map(|(y, bj)| y * bj).collect();
+        for (i, (x, bi)) in self.c.iter().zip(bm.iter()).enumerate() {
+            let ai = x * bi;
+            for (ck, y) in c[i..].iter_mut().zip(&scaled[..]) {
+                *ck += ai * y;
             }
-            for (ck, q) in c.iter_mut().zip(inv) {
+        }
+        if m + n <= MAX_DEGREE {
+            for (ck, q) in c.iter_mut().zip(&inverse_pascal()[m + n]) {
                 *ck *= q;
             }
         } else {
-            let (bm, bn, bmn) = (pascal_row(m), pascal_row(n), pascal_row(m + n));
-            for (i, (x, bi)) in self.c.iter().zip(bm.iter()).enumerate() {
-                let ai = x * bi;
-                for ((ck, y), bj) in c[i..].iter_mut().zip(&other.c[..]).zip(bn.iter()) {
-                    *ck += ai * (y * bj);
-                }
-            }
-            for (ck, b) in c.iter_mut().zip(bmn.iter()) {
+            for (ck, b) in c.iter_mut().zip(pascal_row(m + n).iter()) {
                 *ck /= b;
             }
         }
