@@ -407,10 +407,12 @@ pub trait Condition {
     /// leave pieces undecided that [`Condition::refine`] can still decide by costlier local work.
     fn violation(&self, sweep: &mut Sweep) -> Partition;
 
-    /// `found`, [`Condition::violation`]'s answer on this sweep, with its undecided pieces
-    /// decided by costlier local work where that can succeed and matters: outside the sweep's
-    /// settled intervals. The verifier calls it once every condition has given its first answer,
-    /// so that the settled intervals spare the most. Most conditions have nothing more to do.
+    /// `found`, [`Condition::violation`]'s answer on this sweep, with its undecided pieces wider
+    /// than the sweep's tolerance (narrower ones are certified boundaries) decided by costlier
+    /// local work where that can succeed and matters: outside the sweep's settled intervals. The
+    /// verifier calls it once every condition has given its first answer, so that the settled
+    /// intervals spare the most, and only where such pieces are left. Most conditions have
+    /// nothing more to do.
     fn refine(&self, _sweep: &mut Sweep, found: Partition) -> Partition {
         found
     }

@@ -87,13 +87,19 @@ fn pieces_on(conditions: &[Box<dyn Condition>], sweeps: &mut [Sweep], settle: bo
         }
         // then the costlier local work, spared wherever any condition's first answer already
         // violates (the union only gains certainty here: it is made again from the answers)
-        if found.iter().any(|f| !f.where_is(Truth::Unknown).is_empty()) {
+        let wide = |f: &Partition| f.intervals().iter().any(|&(a, b, t)| t == Truth::Unknown && b - a > tol);
+        if found.iter().any(wide) {
             for &k in &order {
-                let first = std::mem::replace(&mut found[k], Partition::constant(Truth::Unknown));
-                found[k] = conditions[k].refine(sweep, first);
-                if settle {
-                    union = union.or(&found[k]);
-                    sweep.settled = settled(&union, SETTLED_MARGIN * tol, neighbours);
+                if !wide(&found[k]) {
+                    continue;
+                }
+                let refined = conditions[k].refine(sweep, found[k].clone());
+                if refined != found[k] {
+                    found[k] = refined;
+                    if settle {
+                        union = union.or(&found[k]);
+                        sweep.settled = settled(&union, SETTLED_MARGIN * tol, neighbours);
+                    }
                 }
             }
             union = found.iter().fold(Partition::constant(Truth::False), |u, f| u.or(f));
