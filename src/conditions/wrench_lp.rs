@@ -14,14 +14,16 @@
 //!
 //! * **Feasible**: f* and t* > 0, the largest-margin tensions at the middle
 //!   ([`crate::query::wrench::static_margin_of`]) — or first, without a linear program, the last
-//!   feasible piece's tensions moved by the least-norm correction that balances this middle, if
-//!   they stay within the bounds (any tensions balancing the middle serve: the certificate below
-//!   bounds the rest). The tension law φ = W ψ, ψ_k = s_k f*_k +
-//!   (λ − ½) γ_k, with γ chosen so that the residual ρ = load − N φ vanishes to first order at
-//!   the middle, leaves a residual of second order; the correction δ with N δ = ρ has ‖δ‖ ≤
-//!   ‖Dρ‖/σ_min(DN) (D a row scaling, σ_min(DN(λ)) bounded below from the middle's by the
-//!   entries' ranges). The piece is feasible when every cable keeps
-//!   ψ_k − f_min,k s_k − |f_min,k| ε_k − ‖δ‖/W > 0 and likewise below f_max,k.
+//!   feasible piece's tensions (on a motion's first piece, the middle of the bounds) moved by
+//!   the least-norm correction that balances this middle, if they stay within the bounds (any
+//!   tensions balancing the middle serve: the certificate below bounds the rest). The tension
+//!   law φ = W ψ, ψ_k = s_k f*_k + (λ − ½) γ_k + (λ − ½)² η_k, with γ and then η chosen (least
+//!   norm, from the entries' values, slopes and curvatures at the middle) so that the residual
+//!   ρ = load − N φ vanishes to first and to second order at the middle, leaves a residual of
+//!   third order; the correction δ with N δ = ρ has ‖δ‖ ≤ ‖Dρ‖/σ_min(DN) (D a row scaling,
+//!   σ_min(DN(λ)) bounded below from the middle's by the entries' ranges). The piece is feasible
+//!   when every cable keeps ψ_k − f_min,k s_k − |f_min,k| ε_k − ‖δ‖/W > 0 (the quadratic's least
+//!   Bernstein coefficient) and likewise below f_max,k.
 //! * **Infeasible**: a direction y from the middle ([`crate::query::wrench::separating_direction`])
 //!   with y·load above the zonotope's support Σ_k u_k max(f_min,k a_k, f_max,k a_k) (a_k = y·n_k,
 //!   u_k = W/L_k) throughout; each max is bounded above by its chord over a_k's range (exact when
@@ -106,6 +108,11 @@ impl WrenchFeasibilityLp {
         let wrench = crate::model::Wrench { point: load.wrench.point, frame: load.wrench.frame, ..crate::model::Wrench::zero() };
         let bounds = vec![Bounds { min: 1.0, max: f64::INFINITY }; m];
         WrenchFeasibilityLp { closure: true, ..WrenchFeasibilityLp::new(Rc::new(Load { wrench, dynamics: None, mobility: load.mobility }), bounds) }
+    }
+
+    /// The middle of every cable's tension bounds (`None` where one is unbounded above).
+    fn centre(&self) -> Option<Vec<f64>> {
+        self.bounds.iter().map(|b| b.max.is_finite().then(|| 0.5 * (b.min + b.max))).collect()
     }
 }
 
@@ -254,11 +261,20 @@ fn grouped<'a>(n: &[Vec<Bern>], inv: &[InverseLength], cable_of: &[usize], m: us
     (Cow::Owned(columns), unit)
 }
 
-/// Σ_k n_k·(c_k,0 (1 − λ) + c_k,1 λ): a row of N against affine polynomials given by their two
-/// Bernstein coefficients, as two linear combinations (no product per cable).
+/// Σ_k n_k·ψ_k for a row of N and polynomials ψ_k of degree K − 1 given by their Bernstein
+/// coefficients: one linear combination per coefficient (no product per cable), joined by de
+/// Casteljau's blends ([`Bern::blend`]).
+fn law_sum<const K: usize>(row: &[Bern], c: &[[f64; K]]) -> Bern {
+    let mut level: Vec<Bern> = (0..K).map(|j| Bern::linear_combination(&row.iter().zip(c).map(|(p, ck)| (p, ck[j])).collect::<Vec<_>>())).collect();
+    while level.len() > 1 {
+        level = level.windows(2).map(|pair| Bern::blend(&pair[0], &pair[1])).collect();
+    }
+    level.pop().unwrap_or_else(|| Bern::constant(0.0))
+}
+
+/// [`law_sum`] for affine ψ_k.
 fn affine_sum(row: &[Bern], c: &[[f64; 2]]) -> Bern {
-    let side = |j: usize| Bern::linear_combination(&row.iter().zip(c).map(|(p, ck)| (p, ck[j])).collect::<Vec<_>>());
-    side(0).mul(&Bern::from_bernstein(vec![1.0, 0.0])).add(&side(1).mul(&Bern::from_bernstein(vec![0.0, 1.0])))
+    law_sum(row, c)
 }
 
 /// The least value of a polynomial on its piece (its Bernstein coefficients' least, less its
@@ -291,8 +307,12 @@ impl WrenchFeasibilityLp {
         if let Some(d) = &piece.row_scale {
             return self.decide_ellipsoid(piece, nn, &inv, &j, &b, d, w, search, open);
         }
-        // the last feasible piece's tensions, balanced here: no linear program where they do
-        let warm = self.warm.borrow().as_deref().and_then(|f| balanced(&j, &b, f, &self.bounds));
+        // the last feasible piece's tensions, balanced here, or on a first piece the middle of
+        // the bounds: no linear program where they do
+        let warm = match self.warm.borrow().as_deref() {
+            Some(f) => balanced(&j, &b, f, &self.bounds),
+            None => self.centre().and_then(|f| balanced(&j, &b, &f, &self.bounds)),
+        };
         if let Some(f) = warm {
             if self.feasible(piece, nn, &inv, &nc, &f, w) == Truth::True {
                 *self.warm.borrow_mut() = Some(f);
@@ -345,37 +365,54 @@ impl WrenchFeasibilityLp {
         }
     }
 
-    /// True when the tensions `f` at the middle, carried along the piece to first order and
+    /// True when the tensions `f` at the middle, carried along the piece to second order and
     /// corrected, stay strictly within the bounds throughout (module docs).
     fn feasible(&self, piece: &Piece, nn: &[Vec<Bern>], inv: &[InverseLength], nc: &DMatrix<f64>, f: &[f64], w: Iv) -> Truth {
         let (n, m) = (nn.len(), inv.len());
-        let wc = piece.w.value(0.5);
-        // ψ0_k = s_k f_k; P_r = Σ_k n_rk ψ0_k and ρ0 = load − W P, of which only ρ0'(½) is needed
+        // ψ0_k = s_k f_k (affine); P_r = Σ_k n_rk ψ_k and ρ = load − W P, of which the middle's
+        // first and second derivatives are needed: the values, slopes and curvatures there
         let psi0: Vec<[f64; 2]> = inv.iter().zip(f).map(|(i, fk)| [i.s.c[0] * fk, i.s.c[1] * fk]).collect();
-        let (wc1, load1) = (piece.w.value_and_slope(0.5).1, |r: usize| piece.load[r].value_and_slope(0.5).1);
+        let (wc, wc1, wc2) = piece.w.jet(0.5);
+        let loads: Vec<(f64, f64, f64)> = piece.load.iter().map(|p| p.jet(0.5)).collect();
+        let jets: Vec<Vec<(f64, f64, f64)>> = nn.iter().map(|row| row.iter().map(|e| e.jet(0.5)).collect()).collect();
         // rows scaled to unit largest entry at the middle
         let d: Vec<f64> = (0..n).map(|r| 1.0 / nc.row(r).amax()).collect();
         if d.iter().any(|x| !x.is_finite()) {
             return Truth::Unknown;
         }
-        // P_r and P_r' at the middle from the entries' values and slopes there (ψ0 is affine)
-        let slope = DVector::from_fn(n, |r, _| {
-            let (p, p1) = nn[r].iter().zip(&psi0).fold((0.0, 0.0), |(v, s), (entry, psi)| {
-                let (mid, rise) = (0.5 * (psi[0] + psi[1]), psi[1] - psi[0]);
-                let (e, e1) = entry.value_and_slope(0.5);
-                (v + e * mid, s + e1 * mid + e * rise)
-            });
-            d[r] * (load1(r) - wc1 * p - wc * p1) / wc
-        });
         let dn = DMatrix::from_fn(n, m, |r, k| d[r] * nc[(r, k)]);
         let svd = dn.svd(true, true);
         let (smin, smax) = (svd.singular_values.min(), svd.singular_values.max());
-        // γ: least-norm solution of N(½) γ = ρ0'(½)/W(½), so that ρ vanishes to first order:
-        // ψ_k = s_k f_k + (λ − ½) γ_k and ρ = load − W Σ_k n_k ψ_k
+        // P_r, P_r' and P_r'' at the middle for ψ_k = ψ0_k + (λ − ½) g_k (no second-order term:
+        // it vanishes there, and enters P'' only through N(½))
+        let jet_of_p = |r: usize, g: &[f64]| {
+            jets[r].iter().zip(&psi0).zip(g).fold((0.0, 0.0, 0.0), |(v, s, c), ((&(e, e1, e2), psi), gk)| {
+                let (mid, rise) = (0.5 * (psi[0] + psi[1]), psi[1] - psi[0] + gk);
+                (v + e * mid, s + e1 * mid + e * rise, c + e2 * mid + 2.0 * e1 * rise)
+            })
+        };
+        // γ: least-norm solution of N(½) γ = ρ0'(½)/W(½) (ρ0 of ψ0), so that ρ vanishes to first
+        // order; then η: of N(½) 2η = ρ1''(½)/W(½) (ρ1 of ψ0 + (λ − ½)γ), so that it vanishes to
+        // second order: ψ_k = s_k f_k + (λ − ½) γ_k + (λ − ½)² η_k and ρ = load − W Σ_k n_k ψ_k
+        let zero = vec![0.0; m];
+        let slope = DVector::from_fn(n, |r, _| {
+            let (p, p1, _) = jet_of_p(r, &zero);
+            d[r] * (loads[r].1 - wc1 * p - wc * p1) / wc
+        });
         let Ok(gamma) = svd.solve(&slope, SLACK * smax) else { return Truth::Unknown };
-        let psi: Vec<[f64; 2]> = psi0.iter().zip(gamma.iter()).map(|(p, g)| [p[0] - 0.5 * g, p[1] + 0.5 * g]).collect();
+        let curvature = DVector::from_fn(n, |r, _| {
+            let (p, p1, p2) = jet_of_p(r, gamma.as_slice());
+            d[r] * (loads[r].2 - wc2 * p - 2.0 * wc1 * p1 - wc * p2) / (2.0 * wc)
+        });
+        let Ok(eta) = svd.solve(&curvature, SLACK * smax) else { return Truth::Unknown };
+        // in Bernstein form of degree 2: λ − ½ is (−½, 0, ½), (λ − ½)² is (¼, −¼, ¼)
+        let psi: Vec<[f64; 3]> = psi0
+            .iter()
+            .zip(gamma.iter().zip(eta.iter()))
+            .map(|(p, (g, e))| [p[0] - 0.5 * g + 0.25 * e, 0.5 * (p[0] + p[1]) - 0.25 * e, p[1] + 0.5 * g + 0.25 * e])
+            .collect();
         let residual = (0..n)
-            .map(|r| (d[r] * Iv::of(&piece.load[r].sub(&piece.w.mul(&affine_sum(&nn[r], &psi)))).mag()).powi(2))
+            .map(|r| (d[r] * Iv::of(&piece.load[r].sub(&piece.w.mul(&law_sum(&nn[r], &psi)))).mag()).powi(2))
             .sum::<f64>()
             .sqrt();
         // σ_min(D N(λ)) ≥ σ_min(D N(½)) − ‖D (N(λ) − N(½))‖_F
@@ -393,10 +430,12 @@ impl WrenchFeasibilityLp {
         }
         // |δ_k|/W for the correction δ = N⁺ρ
         let correction = residual / sigma / w.lo;
-        // ψ_k − f_min s_k and f_max s_k − ψ_k (affine: least at an end) must clear ε_k and δ
-        let clear = |p: &[f64; 2], s: &Bern, bound: f64, sign: f64, eps: f64| {
-            let end = |j: usize| sign * (p[j] - bound * s.c[j]) - SLACK * (p[j].abs() + (bound * s.c[j]).abs());
-            end(0).min(end(1)) - bound.abs() * eps - correction > 0.0
+        // ψ_k − f_min s_k and f_max s_k − ψ_k (quadratic: at least their least Bernstein
+        // coefficient, s_k raised to degree 2) must clear ε_k and δ
+        let clear = |p: &[f64; 3], s: &Bern, bound: f64, sign: f64, eps: f64| {
+            let s2 = [s.c[0], 0.5 * (s.c[0] + s.c[1]), s.c[1]];
+            let coefficient = |j: usize| sign * (p[j] - bound * s2[j]) - SLACK * (p[j].abs() + (bound * s2[j]).abs());
+            coefficient(0).min(coefficient(1)).min(coefficient(2)) - bound.abs() * eps - correction > 0.0
         };
         for (k, (il, p)) in inv.iter().zip(&psi).enumerate() {
             let Bounds { min, max } = self.bounds[k];

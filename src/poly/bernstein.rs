@@ -249,6 +249,24 @@ impl Bern {
         Bern { c, err }
     }
 
+    /// (1 − x)·`a` + x·`b` for `a` and `b` of one degree n, at degree n + 1 without a product:
+    /// its coefficient j is ((n + 1 − j)·a_j + j·b_(j−1))/(n + 1), a convex combination, so the
+    /// error is the larger of the two plus a few roundings.
+    pub fn blend(a: &Bern, b: &Bern) -> Bern {
+        let n = a.degree();
+        assert_eq!(n, b.degree(), "a blend of polynomials of one degree");
+        let mut c = zeros(n + 2);
+        let top = (n + 1) as f64;
+        let (ac, bc): (&[f64], &[f64]) = (&a.c, &b.c);
+        for (j, z) in c.iter_mut().enumerate() {
+            let left = if j <= n { (top - j as f64) / top * ac[j] } else { 0.0 };
+            let right = if j > 0 { j as f64 / top * bc[j - 1] } else { 0.0 };
+            *z = left + right;
+        }
+        let err = a.err.max(b.err) + 4.0 * U * (max_abs(ac) + max_abs(bc));
+        Bern { c, err }
+    }
+
     fn scale_with_err(&self, k: f64, k_err: f64) -> Bern {
         if k_err == 0.0 && k == 0.0 {
             return Bern::constant(0.0);
@@ -278,22 +296,33 @@ impl Bern {
         acc * scale
     }
 
-    /// Value and derivative at x ∈ [0, 1], without error bounds (for estimates, not
-    /// certificates): the derivative n·Σ (c_{k+1} − c_k) B_k^(n−1)(x) by the same Horner scheme as
-    /// [`Bern::value`], in O(n) and no allocation.
-    pub fn value_and_slope(&self, x: f64) -> (f64, f64) {
-        let n = self.degree();
-        if n == 0 {
-            return (self.c[0], 0.0);
+    /// Value, first and second derivative at x ∈ [0, 1], without error bounds (for estimates,
+    /// not certificates): the last two steps of de Casteljau's scheme, from b₀, b₁, b₂ — the
+    /// degree n − 2 polynomials of c_0 … c_(n−2), c_1 … c_(n−1) and c_2 … c_n at x, all three by
+    /// one pass of [`Bern::value`]'s Horner scheme: p = (1 − x)²b₀ + 2x(1 − x)b₁ + x²b₂,
+    /// p' = n((1 − x)(b₁ − b₀) + x(b₂ − b₁)), p'' = n(n − 1)(b₂ − 2b₁ + b₀). O(n), no allocation.
+    pub fn jet(&self, x: f64) -> (f64, f64, f64) {
+        let c: &[f64] = &self.c;
+        let n = c.len() - 1;
+        match n {
+            0 => return (c[0], 0.0, 0.0),
+            1 => return ((1.0 - x) * c[0] + x * c[1], c[1] - c[0], 0.0),
+            _ => {}
         }
-        let row = pascal_row(n - 1);
-        let (r, scale, forward) = if x <= 0.5 { (x / (1.0 - x), (1.0 - x).powi(n as i32 - 1), false) } else { ((1.0 - x) / x, x.powi(n as i32 - 1), true) };
-        let mut acc = 0.0;
-        for k in 0..n {
-            let j = if forward { k } else { n - 1 - k };
-            acc = acc * r + (self.c[j + 1] - self.c[j]) * row[j];
+        let row = pascal_row(n - 2);
+        let power = n as i32 - 2;
+        let (r, scale, forward) = if x <= 0.5 { (x / (1.0 - x), (1.0 - x).powi(power), false) } else { ((1.0 - x) / x, x.powi(power), true) };
+        let (mut b0, mut b1, mut b2) = (0.0, 0.0, 0.0);
+        for k in 0..=n - 2 {
+            let j = if forward { k } else { n - 2 - k };
+            b0 = b0 * r + c[j] * row[j];
+            b1 = b1 * r + c[j + 1] * row[j];
+            b2 = b2 * r + c[j + 2] * row[j];
         }
-        (self.value(x), n as f64 * acc * scale)
+        let (b0, b1, b2) = (b0 * scale, b1 * scale, b2 * scale);
+        let (l0, l1) = ((1.0 - x) * b0 + x * b1, (1.0 - x) * b1 + x * b2);
+        let nf = n as f64;
+        ((1.0 - x) * l0 + x * l1, nf * (l1 - l0), nf * (nf - 1.0) * (b2 - 2.0 * b1 + b0))
     }
 
     /// A bound on the error of [`Bern::value`] at any x ∈ [0, 1]: the coefficients' own, plus the
@@ -511,13 +540,28 @@ mod tests {
     }
 
     #[test]
-    fn value_and_slope_match_the_derivative() {
+    fn a_jet_matches_the_derivatives() {
         let p = Bern::from_monomial(&[0.3, -2.0, 5.0, -1.0, 0.7]);
+        let (d1, d2) = (p.derivative(), p.derivative().derivative());
         for x in [0.0, 0.2, 0.5, 0.7, 1.0] {
-            let (v, s) = p.value_and_slope(x);
-            assert!((v - p.value(x)).abs() < 1e-14 && (s - p.derivative().value(x)).abs() < 1e-13, "at {x}");
+            let (v, s, c) = p.jet(x);
+            assert!((v - p.value(x)).abs() < 1e-14 && (s - d1.value(x)).abs() < 1e-13 && (c - d2.value(x)).abs() < 1e-12, "at {x}");
         }
-        assert_eq!(Bern::constant(2.5).value_and_slope(0.3), (2.5, 0.0));
+        assert_eq!(Bern::constant(2.5).jet(0.3), (2.5, 0.0, 0.0));
+        let line = Bern::from_bernstein(vec![1.0, 3.0]);
+        assert_eq!(line.jet(0.25), (1.5, 2.0, 0.0));
+    }
+
+    #[test]
+    fn a_blend_is_the_products_sum() {
+        let (a, b) = (Bern::from_monomial(&[1.0, 2.0, -3.0, 0.5]), Bern::from_monomial(&[-0.4, 0.1, 2.0, 1.5]));
+        let blend = Bern::blend(&a, &b);
+        let products = a.mul(&Bern::from_bernstein(vec![1.0, 0.0])).add(&b.mul(&Bern::from_bernstein(vec![0.0, 1.0])));
+        assert_eq!(blend.degree(), 4);
+        for (x, y) in blend.c.iter().zip(&products.c) {
+            assert!((x - y).abs() <= blend.err + products.err, "{blend:?} vs {products:?}");
+        }
+        assert!(blend.err > 0.0 && blend.err < 1e-14, "{}", blend.err);
     }
 
     #[test]
