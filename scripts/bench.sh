@@ -326,12 +326,17 @@ else
 fi
 say "native benchmark: $NATIVE_CMD"
 cargo run -q --release --example bench > "$TMP/native.txt"
+# a long trajectory's pieces are verified in two runs on two threads natively (verify::pieces_in_parts):
+# CoGiRo's general_1 once more on one thread, the runs one after the other
+ONE_THREAD_CMD="RAYON_NUM_THREADS=1 $NATIVE_CMD -- cogiro/general-1/exact-sections"
+say "native benchmark on one thread: $ONE_THREAD_CMD"
+RAYON_NUM_THREADS=1 cargo run -q --release --example bench -- cogiro/general-1/exact-sections | sed 's/^BENCH native /BENCH one-thread /' > "$TMP/one-thread.txt"
 say "wasm benchmark (node): $WASM_CMD"
 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
   cargo test --release --target wasm32-unknown-unknown --features bench --test bench_wasm -- --nocapture > "$TMP/wasm.txt"
 LOAD_AFTER=$(cut -d' ' -f1-3 /proc/loadavg)
 
-grep -h '^BENCH ' "$TMP/before.txt" "$TMP/native.txt" "$TMP/wasm.txt" > "$TMP/all.txt"
+grep -h '^BENCH ' "$TMP/before.txt" "$TMP/native.txt" "$TMP/one-thread.txt" "$TMP/wasm.txt" > "$TMP/all.txt"
 n_native=$(grep '^BENCH native ' "$TMP/all.txt" | grep -vc ' lattice/' || true)
 n_wasm=$(grep '^BENCH wasm ' "$TMP/all.txt" | grep -vc ' lattice/' || true)
 if [ "$n_native" -ne 47 ] || [ "$n_wasm" -ne 47 ]; then
@@ -352,7 +357,7 @@ DATE=$(date -u '+%Y-%m-%d %H:%M UTC')
 
 awk -v before_id="$BEFORE_ID" -v nproc="$(nproc)" -v cpu="$CPU" -v mhz="$MHZ" -v rustc="$RUSTC" -v node="$NODE" -v runner="$RUNNER" \
     -v commit="$COMMIT" -v date="$DATE" -v load_before="$LOAD_BEFORE" -v load_after="$LOAD_AFTER" \
-    -v native_cmd="$NATIVE_CMD" -v wasm_cmd="$WASM_CMD" '
+    -v native_cmd="$NATIVE_CMD" -v wasm_cmd="$WASM_CMD" -v one_thread_cmd="$ONE_THREAD_CMD" '
 function us(x) { # a time given in microseconds, readably
   if (x >= 100000) return sprintf("%.1f ms", x / 1000)
   if (x >= 1000) return sprintf("%.2f ms", x / 1000)
@@ -427,6 +432,7 @@ END {
   print "```sh"
   print "scripts/bench.sh                 # runs both and rewrites this file"
   print native_cmd "   # native, release profile (opt-level 3, thin LTO)"
+  print one_thread_cmd "   # CoGiRo general_1 on one thread"
   print wasm_cmd
   print "```"
   print ""
@@ -438,6 +444,9 @@ END {
   print "Method: per case, one call for the result, a 200 ms warm-up that also picks k, the number of calls"
   print "per sample, so that a sample lasts at least 2 ms; then samples of k calls for at least 1 s (and at"
   print "least 15 samples). Reported: the median over samples of the time per call, and the fastest sample."
+  print "Natively, a trajectory of 8 pieces or more is verified in two runs of consecutive pieces on two"
+  print "threads (`verify::pieces_in_parts`; CoGiRo'"'"'s general_1 has 16 pieces, its turns enclosed by stretches); the"
+  print "wasm build runs the same two runs one after the other, and so does the one-thread run of general_1."
   print "Scenarios are parsed once, outside the timing (`include_str!` of `static/scenarios/*.json`)."
   print ""
   print "## Results"
@@ -565,7 +574,7 @@ END {
   lq = med["wasm", "timed/quick-drop/exact-sections"]; ls = med["wasm", "timed/swing/exact-sections"]
   printf "| live update of a timed preset in the page ≤ 5 ms (robocrane-timed, exact at its timing, wasm in node) | quick drop %s, swing %s (native %s, %s) | %s |\n", us(lq), us(ls), us(med["native", "timed/quick-drop/exact-sections"]), us(med["native", "timed/swing/exact-sections"]), yes(lq <= 5000 && ls <= 5000)
   cg = med["native", "cogiro/general-1/exact-sections"]
-  printf "| exact dynamic verification of CoGiRo \"general_1\" (8 cables), native: ≤ 1 ms | %s median at its timing (%s with the time-scale search) | %s%s |\n", us(cg), us(med["native", "cogiro/general-1/exact"]), yes(cg <= 1000), (cg > 1000 ? sprintf(" (%.1f× the target)", cg / 1000) : "")
+  printf "| exact dynamic verification of CoGiRo \"general_1\" (8 cables), native: ≤ 1 ms | %s median at its timing, its two runs of pieces on the two cores (%s on one thread; %s with the time-scale search) | %s%s |\n", us(cg), us(med["one-thread", "cogiro/general-1/exact-sections"]), us(med["native", "cogiro/general-1/exact"]), yes(cg <= 1000), (cg > 1000 ? sprintf(" (%.1f× the target)", cg / 1000) : "")
   # every wrench case at its own timing: point-wise at Δt = 0.01 over exact
   nw = split("crane/q1-q2/pointwise-0.01:crane/q1-q2/exact:Robocrane slerp q1-q2;crane/tilt/pointwise-0.01:crane/tilt/exact:Robocrane tilt;timed/quick-drop/pointwise-0.01:timed/quick-drop/exact-sections:quick drop;timed/swing/pointwise-0.01:timed/swing/exact-sections:swing;cogiro/general-1/pointwise-0.01:cogiro/general-1/exact-sections:CoGiRo general_1;ring64/sweep/pointwise-0.01:ring64/sweep/exact-sections:64-cable ring;ring64-ball/sweep/pointwise-0.01:ring64-ball/sweep/exact-sections:64-cable ring with a wrench ball", wcase, ";")
   wlist = ""; wall = 1

@@ -25,8 +25,9 @@
 //! * [`plan`] plans a path for a query of a scenario: the planning interface (which planner, its
 //!   options, the common result) and the planners, [`plan::atlas`] (an atlas of the
 //!   wrench-feasible C-space) and [`plan::lattice`] (A* over the ray lattice, Bézier smoothing).
-//! * [`parallel`] spreads many independent queries (slice cells, batch verification) over
-//!   threads natively; single queries stay single-threaded.
+//! * [`parallel`] spreads many independent queries (slice cells, batch verification, the two
+//!   runs of pieces of a long trajectory) over threads natively; other single queries stay
+//!   single-threaded.
 //! * [`command`] is the commands over all of it — typed requests, JSON and text output — shared
 //!   by the `cablenav` CLI (the `cli/` crate, which parses command lines with clap), the Python
 //!   package (`python/`) and the npm package (`npm/`).

@@ -1,7 +1,9 @@
 //! Data parallelism for the callers that answer many independent queries at once (slice maps,
-//! batch verification): on native targets the work is spread over threads with rayon; on
-//! `wasm32` (no threads in the page) it runs in order on the calling thread. Single queries
-//! (one trajectory, one ray, one pose) never go through here: they stay single-threaded.
+//! batch verification), and for the one single query split into independent parts: a trajectory
+//! of many pieces, verified in two runs of consecutive pieces (`verify::pieces_in_parts`). On
+//! native targets the work is spread over threads with rayon; on `wasm32` (no threads in the
+//! page) it runs in order on the calling thread. Other single queries (a short trajectory, one
+//! ray, one pose) never go through here: they stay single-threaded.
 //!
 //! Results come back in index order either way, so the output does not depend on the schedule.
 

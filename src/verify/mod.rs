@@ -60,6 +60,13 @@ fn sweeps(s: &Scenario, motions: &[Vec<Motion>], tol_user: f64, duration: Option
 /// polynomials the conditions expanded on them, so a caller may run them again — at another
 /// duration, say — without expanding anew.
 fn pieces_on(conditions: &[Box<dyn Condition>], sweeps: &mut [Sweep], settle: bool) -> (Vec<Piece>, Vec<Vec<Piece>>) {
+    pieces_within(conditions, sweeps, settle, (false, false))
+}
+
+/// [`pieces_on`] for `sweeps` that are part of a longer run of pieces: `beyond` says whether
+/// pieces of the run lie before the first sweep and after the last (their meeting points may be
+/// boundaries, as between any two sweeps).
+fn pieces_within(conditions: &[Box<dyn Condition>], sweeps: &mut [Sweep], settle: bool, beyond: (bool, bool)) -> (Vec<Piece>, Vec<Vec<Piece>>) {
     let mut per: Vec<Vec<Piece>> = vec![Vec::new(); conditions.len()];
     let mut overall: Vec<Piece> = Vec::new();
     let count = sweeps.len();
@@ -75,7 +82,7 @@ fn pieces_on(conditions: &[Box<dyn Condition>], sweeps: &mut [Sweep], settle: bo
         let mut union = Partition::constant(Truth::False);
         // where the piece meets its neighbour a boundary may lie, so a margin is kept there too;
         // the range's own ends are no boundary
-        let neighbours = (piece > 0, piece + 1 < count);
+        let neighbours = (piece > 0 || beyond.0, piece + 1 < count || beyond.1);
         let mut found = vec![Partition::constant(Truth::False); conditions.len()];
         for &k in &order {
             found[k] = conditions[k].violation(sweep);
@@ -264,7 +271,7 @@ pub fn verify_along(s: &Scenario, along: Along) -> Result<VerifyReport> {
 fn verify_along_with(s: &Scenario, along: Along, scale: bool) -> Result<VerifyReport> {
     let conditions = for_scenario(s);
     let motions = along.motions(s);
-    let (overall, per) = violation_pieces(&conditions, s, &motions, BOUNDARY_TOL, along.duration());
+    let (overall, per) = pieces_in_parts(&conditions, s, &motions, along.duration());
     let sec = sections(&overall, &per, &|k| conditions[k].label(), BOUNDARY_TOL);
     let mut warnings = s.warnings.clone();
     if !sec.uncertain.is_empty() {
@@ -274,10 +281,44 @@ fn verify_along_with(s: &Scenario, along: Along, scale: bool) -> Result<VerifyRe
     Ok(trajectory_report(along, sec, "exact", None, warnings, seconds))
 }
 
+/// Fewest pieces of a trajectory for which its verification is split into [`PARTS`].
+const SPLIT_FROM: usize = 8;
+
+/// How many runs of consecutive pieces a long trajectory's verification is split into.
+const PARTS: usize = 2;
+
+/// [`violation_pieces`] of the scenario's own `conditions` along a trajectory's `motions` at
+/// [`BOUNDARY_TOL`]; from [`SPLIT_FROM`] pieces on, in [`PARTS`] runs of consecutive pieces,
+/// each with conditions of its own, verified in parallel on native targets (in order on wasm).
+/// The runs are the same on every target and for any number of threads, and each starts afresh
+/// (what a condition keeps from piece to piece, as the last certified tensions, stays within its
+/// run), so the answer does not depend on the schedule.
+fn pieces_in_parts(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[Vec<Motion>], duration: Option<f64>) -> (Vec<Piece>, Vec<Vec<Piece>>) {
+    if motions.len() < SPLIT_FROM {
+        return violation_pieces(conditions, s, motions, BOUNDARY_TOL, duration);
+    }
+    let size = motions.len().div_ceil(PARTS);
+    let runs: Vec<&[Vec<Motion>]> = motions.chunks(size).collect();
+    let part = |k: usize| {
+        let beyond = (k > 0, k + 1 < runs.len());
+        pieces_within(&for_scenario(s), &mut sweeps(s, runs[k], BOUNDARY_TOL, duration), true, beyond)
+    };
+    let parts = crate::parallel::map_with(runs.len(), || (), |_, k| part(k));
+    let mut per: Vec<Vec<Piece>> = vec![Vec::new(); conditions.len()];
+    let mut overall = Vec::new();
+    for (part_overall, part_per) in parts {
+        part_overall.into_iter().for_each(|p| push_merged(&mut overall, p));
+        for (out, pieces) in per.iter_mut().zip(part_per) {
+            pieces.into_iter().for_each(|p| push_merged(out, p));
+        }
+    }
+    (overall, per)
+}
+
 /// Verification of every trajectory of the scenario (what `cablenav verify SCENARIO --all`
 /// reports), in file order: exact, or point-wise with step `pointwise`. The trajectories are
-/// verified in parallel on native targets (each one single-threaded, as [`verify_trajectory`]),
-/// in order on wasm. The first error (in file order) is returned.
+/// verified in parallel on native targets (each as [`verify_trajectory`], a long one in two runs
+/// of pieces), in order on wasm. The first error (in file order) is returned.
 pub fn verify_all(s: &Scenario, pointwise: Option<f64>) -> Result<Vec<VerifyReport>> {
     verify_all_counted(s, pointwise, &AtomicUsize::new(0))
 }
