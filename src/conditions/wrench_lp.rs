@@ -272,11 +272,6 @@ fn law_sum<const K: usize>(row: &[Bern], c: &[[f64; K]]) -> Bern {
     level.pop().unwrap_or_else(|| Bern::constant(0.0))
 }
 
-/// [`law_sum`] for affine ψ_k.
-fn affine_sum(row: &[Bern], c: &[[f64; 2]]) -> Bern {
-    law_sum(row, c)
-}
-
 /// The least value of a polynomial on its piece (its Bernstein coefficients' least, less its
 /// error).
 fn least(p: &Bern) -> f64 {
@@ -480,7 +475,7 @@ impl WrenchFeasibilityLp {
         let mut support = Bern::from_bernstein(constant.to_vec());
         for r in 0..n {
             let c: Vec<[f64; 2]> = weights.iter().map(|b| [y[r] * b[0], y[r] * b[1]]).collect();
-            support = support.add(&affine_sum(&nn[r], &c));
+            support = support.add(&law_sum(&nn[r], &c));
         }
         let excess = Bern::linear_combination(&(0..n).map(|r| (&piece.load[r], y[r])).collect::<Vec<_>>()).sub(&piece.w.mul(&support));
         // the reach's least value on the piece: (Dy)ᵀE⁻¹(Dy) is a polynomial
@@ -582,7 +577,7 @@ impl Along<'_> {
         let n = shared.rows.len();
         // q_r = W Σ_k f_k s_k n_rk − load_r, within err_r of J̃(λ)f − ℓ̃ (the ε_k of 1/L_k)
         let scaled: Vec<[f64; 2]> = inv.iter().zip(f).map(|(il, fk)| [fk * il.s.c[0], fk * il.s.c[1]]).collect();
-        let q: Vec<Bern> = (0..n).map(|r| w.mul(&affine_sum(&shared.rows[r], &scaled)).elevate(shared.degree).sub(&shared.load[r])).collect();
+        let q: Vec<Bern> = (0..n).map(|r| w.mul(&law_sum(&shared.rows[r], &scaled)).elevate(shared.degree).sub(&shared.load[r])).collect();
         let err: Vec<f64> = (0..n).map(|r| inv.iter().zip(f).enumerate().map(|(k, (il, fk))| fk.abs() * shared.size[r][k] * il.eps).sum()).collect();
         let scale = q.iter().map(Bern::max_abs).fold(0.0, f64::max);
         rays.iter().all(|v| {
