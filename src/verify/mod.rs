@@ -557,6 +557,11 @@ fn check_cables(s: &Scenario, name: &str, cables: PoseCables, wrench: Option<Wre
 mod tests {
     use super::*;
 
+    /// The preset scenario file `name` (static/scenarios/).
+    fn read(name: &str) -> String {
+        std::fs::read_to_string(format!("{}/static/scenarios/{name}", env!("CARGO_MANIFEST_DIR"))).unwrap()
+    }
+
     /// Whether two sections agree: the same intervals and boundaries within `tol`, the same active
     /// constraints and sides.
     fn agree(a: &Sections, b: &Sections, tol: f64) -> bool {
@@ -573,7 +578,6 @@ mod tests {
     /// presets' trajectories, nor on a piecewise one whose pieces meet where a boundary may lie.
     #[test]
     fn settled_intervals_change_no_section() {
-        let read = |name: &str| std::fs::read_to_string(format!("{}/static/scenarios/{name}", env!("CARGO_MANIFEST_DIR"))).unwrap();
         let mut piecewise: serde_json::Value = serde_json::from_str(&read("cdpr7-tree.json")).unwrap();
         let piece = |a: [f64; 3], b: [f64; 3]| serde_json::json!({"translation": {"line": [a, b]}, "orientation": {"slerp": ["end", "end"]}});
         piecewise["format"] = serde_json::json!("cablenav-scenario/2");
@@ -598,5 +602,30 @@ mod tests {
             }
         }
         assert!(infeasible >= 3, "the trajectories must leave something to settle");
+    }
+
+    /// A trajectory of [`SPLIT_FROM`] pieces or more, verified in [`PARTS`] runs, has the sections
+    /// of one run over all its pieces: a zigzag through cdpr7-tree's crown in nine pieces, violated
+    /// on and off along both runs.
+    #[test]
+    fn runs_of_pieces_change_no_section() {
+        let mut zigzag: serde_json::Value = serde_json::from_str(&read("cdpr7-tree.json")).unwrap();
+        let corners = [[1.5, 2.3, 3.0], [2.0, 1.5, 1.0], [2.5, 1.5, 1.0], [2.0, 1.0, 2.0]];
+        let pieces: Vec<serde_json::Value> = (0..9)
+            .map(|k| serde_json::json!({"translation": {"line": [corners[k % 4], corners[(k + 1) % 4]]}, "orientation": {"slerp": ["end", "end"]}}))
+            .collect();
+        zigzag["format"] = serde_json::json!("cablenav-scenario/2");
+        zigzag["trajectories"] = serde_json::json!([{"name": "zigzag", "pieces": pieces}]);
+        let s = Scenario::from_json(&zigzag.to_string()).unwrap();
+        let conditions = for_scenario(&s);
+        let motions = one_link(Motion::trajectory(&s.trajectories[0]));
+        assert!(motions.len() >= SPLIT_FROM, "{} pieces", motions.len());
+        let label = |k: usize| conditions[k].label();
+        let (overall, per) = pieces_in_parts(&conditions, &s, &motions, None);
+        let in_runs = sections(&overall, &per, &label, BOUNDARY_TOL);
+        let (overall, per) = violation_pieces(&conditions, &s, &motions, BOUNDARY_TOL, None);
+        let in_one = sections(&overall, &per, &label, BOUNDARY_TOL);
+        assert!(in_one.infeasible.len() >= 2 && !in_one.feasible.is_empty(), "{in_one:?}");
+        assert!(agree(&in_runs, &in_one, 2.0 * BOUNDARY_TOL), "{in_runs:?} vs {in_one:?}");
     }
 }
