@@ -104,6 +104,10 @@ fn scale(points: &[&V]) -> f64 {
     points.iter().map(|p| p.abs().max()).sum()
 }
 
+/// Nodes a tube's store makes room for at first: the root and the two levels below it (a
+/// cable–cable pair of CoGiRo's general_1 needs at most two).
+const EXPECTED_NODES: usize = 7;
+
 /// Centre and radius of a ball holding X̂/w over the piece whose coefficients are `c` (X̂₀, X̂₁,
 /// X̂₂, w, each `len` long) with error bounds `err`, or `None` when a weight is not certainly
 /// positive. The control points X̂_j/w_j are in the ball; so is the curve (convex hull).
@@ -155,13 +159,14 @@ impl Pieces {
         let n = tip.iter().map(Bern::degree).max().unwrap_or(0).max(w.degree());
         let polys = [&tip[0], &tip[1], &tip[2], w].map(|p| if p.degree() == n { Cow::Borrowed(p) } else { Cow::Owned(p.elevate(n)) });
         let nodes = 2 << DEPTH;
-        let mut coeffs = Vec::with_capacity(nodes * 4 * (n + 1));
+        // room for the root and two levels below it, what most pieces need; more as they come
+        let mut coeffs = Vec::with_capacity(EXPECTED_NODES * 4 * (n + 1));
         coeffs.extend(polys.iter().flat_map(|p| p.c.iter().copied()));
         let errs = polys.map(|p| p.err);
         let ball = hull_ball(&coeffs, &errs, n + 1);
         let mut slot = vec![u32::MAX; nodes];
         slot[1] = 0;
-        let (mut all_errs, mut balls) = (Vec::with_capacity(nodes), Vec::with_capacity(nodes));
+        let (mut all_errs, mut balls) = (Vec::with_capacity(EXPECTED_NODES), Vec::with_capacity(EXPECTED_NODES));
         all_errs.push(errs);
         balls.push(ball);
         Pieces { len: n + 1, slot, coeffs, errs: all_errs, balls }
