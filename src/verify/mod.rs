@@ -289,7 +289,8 @@ const PARTS: usize = 2;
 
 /// [`violation_pieces`] of the scenario's own `conditions` along a trajectory's `motions` at
 /// [`BOUNDARY_TOL`]; from [`SPLIT_FROM`] pieces on, in [`PARTS`] runs of consecutive pieces,
-/// each with conditions of its own, verified in parallel on native targets (in order on wasm).
+/// each with conditions of its own, verified in parallel on native targets (the first run on the
+/// calling thread, [`crate::parallel::map_parts`]; in order on wasm).
 /// The runs are the same on every target and for any number of threads, and each starts afresh
 /// (what a condition keeps from piece to piece, as the last certified tensions, stays within its
 /// run), so the answer does not depend on the schedule.
@@ -303,7 +304,7 @@ fn pieces_in_parts(conditions: &[Box<dyn Condition>], s: &Scenario, motions: &[V
         let beyond = (k > 0, k + 1 < runs.len());
         pieces_within(&for_scenario(s), &mut sweeps(s, runs[k], BOUNDARY_TOL, duration), true, beyond)
     };
-    let parts = crate::parallel::map_with(runs.len(), || (), |_, k| part(k));
+    let parts = crate::parallel::map_parts(runs.len(), part);
     let mut per: Vec<Vec<Piece>> = vec![Vec::new(); conditions.len()];
     let mut overall = Vec::new();
     for (part_overall, part_per) in parts {
