@@ -69,6 +69,18 @@ pub struct Bern {
     pub err: f64,
 }
 
+/// The ratio, scale and direction of Horner's scheme for a Bernstein sum of degree `n` at x:
+/// Σ c_j C(n,j) x^j (1−x)^(n−j) = (1−x)^n Σ c_j C(n,j) r^j with r = x/(1−x) up to the middle
+/// (coefficients taken from c_n down), x^n Σ c_j C(n,j) r^(n−j) with r = (1−x)/x past it (from c_0
+/// up, `forward`), so that r ≤ 1 either way.
+fn horner_ratio(x: f64, n: usize) -> (f64, f64, bool) {
+    if x <= 0.5 {
+        (x / (1.0 - x), (1.0 - x).powi(n as i32), false)
+    } else {
+        ((1.0 - x) / x, x.powi(n as i32), true)
+    }
+}
+
 fn max_abs(c: &[f64]) -> f64 {
     c.iter().fold(0.0, |m, x| m.max(x.abs()))
 }
@@ -286,7 +298,7 @@ impl Bern {
     pub fn value(&self, x: f64) -> f64 {
         let n = self.degree();
         let row = pascal_row(n);
-        let (r, scale, forward) = if x <= 0.5 { (x / (1.0 - x), (1.0 - x).powi(n as i32), false) } else { ((1.0 - x) / x, x.powi(n as i32), true) };
+        let (r, scale, forward) = horner_ratio(x, n);
         let (mut acc, c) = (0.0, &self.c[..]);
         for k in 0..=n {
             // highest power first: c_n (or c_0 when running backwards)
@@ -310,8 +322,7 @@ impl Bern {
             _ => {}
         }
         let row = pascal_row(n - 2);
-        let power = n as i32 - 2;
-        let (r, scale, forward) = if x <= 0.5 { (x / (1.0 - x), (1.0 - x).powi(power), false) } else { ((1.0 - x) / x, x.powi(power), true) };
+        let (r, scale, forward) = horner_ratio(x, n - 2);
         let (mut b0, mut b1, mut b2) = (0.0, 0.0, 0.0);
         for k in 0..=n - 2 {
             let j = if forward { k } else { n - 2 - k };
