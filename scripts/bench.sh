@@ -335,12 +335,16 @@ ROUNDS=5
 ONE_THREAD_CMD="RAYON_NUM_THREADS=1 $NATIVE_CMD -- cogiro/general-1/exact-sections"
 say "CoGiRo general_1 in $ROUNDS rounds: before, two threads, one thread ($ONE_THREAD_CMD)"
 : > "$TMP/rounds.txt"
+# one run of general_1 by the command "$2..." (a benchmark binary, perhaps behind env), its result
+# line labelled "$1"
+round() {
+  local label=$1; shift
+  "$@" cogiro/general-1/exact-sections | grep '^BENCH ' | sed "s/^BENCH native /BENCH $label /" >> "$TMP/rounds.txt"
+}
 for _ in $(seq "$ROUNDS"); do
-  if [ -n "$BEFORE" ]; then
-    target/bench-before/target/release/examples/bench cogiro/general-1/exact-sections | grep '^BENCH ' | sed 's/^BENCH native /BENCH round-before /' >> "$TMP/rounds.txt"
-  fi
-  target/release/examples/bench cogiro/general-1/exact-sections | grep '^BENCH ' | sed 's/^BENCH native /BENCH round-native /' >> "$TMP/rounds.txt"
-  RAYON_NUM_THREADS=1 target/release/examples/bench cogiro/general-1/exact-sections | grep '^BENCH ' | sed 's/^BENCH native /BENCH round-one-thread /' >> "$TMP/rounds.txt"
+  if [ -n "$BEFORE" ]; then round round-before target/bench-before/target/release/examples/bench; fi
+  round round-native target/release/examples/bench
+  round round-one-thread env RAYON_NUM_THREADS=1 target/release/examples/bench
 done
 say "wasm benchmark (node): $WASM_CMD"
 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner \
