@@ -229,7 +229,7 @@ fn body_point(position: &[Bern; 3], rotation: &[[Bern; 3]; 3], b: &Vector3<f64>)
 
 /// v·v for a vector of polynomials.
 fn norm2(v: [&Bern; 3]) -> Bern {
-    v[0].mul(v[0]).add(&v[1].mul(v[1])).add(&v[2].mul(v[2]))
+    Bern::sum_of_products(&[(v[0], v[0], 1.0), (v[1], v[1], 1.0), (v[2], v[2], 1.0)])
 }
 
 /// A motion's polynomials on a sub-interval of λ (all of [0, 1] or a piece being refined),

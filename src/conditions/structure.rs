@@ -9,7 +9,8 @@ use nalgebra::Vector3;
 
 /// a × b for polynomial vectors.
 pub(crate) fn cross(a: &[Bern; 3], b: &[Bern; 3]) -> [Bern; 3] {
-    [a[1].mul(&b[2]).sub(&a[2].mul(&b[1])), a[2].mul(&b[0]).sub(&a[0].mul(&b[2])), a[0].mul(&b[1]).sub(&a[1].mul(&b[0]))]
+    let component = |i: usize, j: usize| Bern::sum_of_products(&[(&a[i], &b[j], 1.0), (&a[j], &b[i], -1.0)]);
+    [component(1, 2), component(2, 0), component(0, 1)]
 }
 
 /// M̂ c for a constant vector c.

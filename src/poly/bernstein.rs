@@ -191,8 +191,10 @@ impl Bern {
         if k == 0.0 {
             return Bern::constant(0.0);
         }
-        let mut c = self.c.clone();
-        c.iter_mut().for_each(|x| *x *= k);
+        let mut c = zeros(self.c.len());
+        for (z, x) in c.iter_mut().zip(&self.c) {
+            *z = x * k;
+        }
         Bern { err: self.err * k.abs() + U * max_abs(&c), c }
     }
 
@@ -209,7 +211,7 @@ impl Bern {
         let c: &mut [f64] = &mut coeffs;
         // the C(n, j)-scaled coefficients of `other` once, then a plain convolution
         let (bm, bn) = (pascal_row(m), pascal_row(n));
-        let scaled: Coeffs = other.c.iter().zip(bn.iter()).map(|(y, bj)| y * bj).collect();
+        let scaled = binomial_scaled(&other.c, &bn);
         for (i, (x, bi)) in self.c.iter().zip(bm.iter()).enumerate() {
             let ai = x * bi;
             for (ck, y) in c[i..].iter_mut().zip(&scaled[..]) {
@@ -228,6 +230,47 @@ impl Bern {
         let (ma, mb) = (self.max_abs(), other.max_abs());
         let err = self.err * mb + other.err * ma + self.err * other.err + (m.min(n) + 6) as f64 * U * ma * mb;
         Bern { c: coeffs, err }
+    }
+
+    /// Σ k_i · p_i · q_i for constants k_i (taken as exact), in one pass: the products of the
+    /// highest degree are convolved into one buffer (no polynomial per product, no addition
+    /// after), those of a lower degree are multiplied apart and added. Each coefficient is then
+    /// one sum of at most L = Σ_i (min(deg p_i, deg q_i) + 1) products, whose magnitudes over
+    /// C(N, k) sum to at most Σ_i |k_i| max|p_i| max|q_i| (Vandermonde), so its rounding is
+    /// within (L + 7)·u of that: the same analysis as [`Bern::mul`] with the sum's length and one
+    /// rounding more for k_i. An empty sum is the constant 0.
+    pub fn sum_of_products(terms: &[(&Bern, &Bern, f64)]) -> Bern {
+        let top = terms.iter().map(|(p, q, _)| p.degree() + q.degree()).max().unwrap_or(0);
+        if top > MAX_DEGREE {
+            return terms.iter().fold(Bern::constant(0.0), |acc, (p, q, k)| acc.add(&p.mul(q).scale(*k)));
+        }
+        let mut c = zeros(top + 1);
+        let (mut err, mut mag, mut length) = (0.0, 0.0, 0usize);
+        let mut lower: SmallVec<[Bern; 2]> = SmallVec::new();
+        for &(p, q, k) in terms {
+            let (m, n) = (p.degree(), q.degree());
+            if m + n < top {
+                lower.push(p.mul(q).scale(k));
+                continue;
+            }
+            let (ma, mb) = (p.max_abs(), q.max_abs());
+            err += k.abs() * (p.err * mb + q.err * ma + p.err * q.err);
+            mag += k.abs() * ma * mb;
+            length += m.min(n) + 1;
+            let (bm, bn) = (&pascal()[m], &pascal()[n]);
+            let scaled = binomial_scaled(&q.c, bn);
+            for (i, (x, bi)) in p.c.iter().zip(bm.iter()).enumerate() {
+                let ai = k * x * bi;
+                for (ck, y) in c[i..].iter_mut().zip(&scaled[..]) {
+                    *ck += ai * y;
+                }
+            }
+        }
+        for (ck, q) in c.iter_mut().zip(&inverse_pascal()[top]) {
+            *ck *= q;
+        }
+        let sum = Bern { c, err: err + (length + 7) as f64 * U * mag };
+        lower.iter().fold(sum, |acc, p| acc.add(p))
     }
 
     /// Σ k_i · p_i for constants k_i (taken as exact), at the largest degree among the p_i, in
@@ -420,10 +463,12 @@ pub fn halve(c: &[f64], left: &mut [f64], right: &mut [f64]) -> f64 {
     right.copy_from_slice(c);
     left[0] = right[0];
     for (level, out) in left.iter_mut().enumerate().skip(1) {
-        for k in 0..=(n - level) {
-            right[k] = 0.5 * (right[k] + right[k + 1]);
+        // the level's n − level + 1 averages, over the n − level + 2 values left of the last
+        let row = &mut right[..=n - level + 1];
+        for k in 0..row.len() - 1 {
+            row[k] = 0.5 * (row[k] + row[k + 1]);
         }
-        *out = right[0];
+        *out = row[0];
     }
     (2 * n + 2) as f64 * U * max_abs(c)
 }
@@ -459,6 +504,16 @@ fn elevate_into(c: &[f64], out: &mut [f64]) {
             *o = (lo..=hi).map(|j| bm[j] * br[k - j] / bn[k] * c[j]).sum();
         }
     }
+}
+
+/// The coefficients `c` times the binomial row `b` (C(n, j) c_j), filled in place rather than
+/// collected (a collection checks its capacity at every element).
+fn binomial_scaled(c: &[f64], b: &[f64]) -> Coeffs {
+    let mut out = zeros(c.len());
+    for ((o, x), bj) in out.iter_mut().zip(c).zip(b) {
+        *o = x * bj;
+    }
+    out
 }
 
 /// Row n of the binomial table: borrowed from the table up to [`MAX_DEGREE`], computed past it
@@ -548,6 +603,46 @@ mod tests {
         }
         assert!(sum.err > 0.0 && sum.err < 1e-13, "{}", sum.err);
         assert_eq!(Bern::linear_combination(&[]).c[..], [0.0]);
+    }
+
+    /// A sum of products equals the products summed (within both error bounds), products of
+    /// unequal degrees included, and its bound covers the error against the exact
+    /// coefficients: on integer-valued Bernstein coefficients small enough that every step of
+    /// the reference below is exact in f64.
+    #[test]
+    fn a_sum_of_products_is_the_products_summed() {
+        let (a, b) = (Bern::from_bernstein(vec![3.0, -1.0, 4.0, 1.0, -5.0]), Bern::from_bernstein(vec![-2.0, 6.0, 5.0, -3.0]));
+        let (c, d) = (Bern::from_monomial(&[0.3, -2.0, 5.0, -1.0, 0.7, 0.1]), Bern::from_monomial(&[1.5, 0.25]));
+        let terms = [(&a, &b, 1.0), (&a, &a, -0.5), (&c, &d, 2.0), (&d, &d, 3.0)];
+        let sum = Bern::sum_of_products(&terms);
+        let reference = terms.iter().fold(Bern::constant(0.0), |acc, (p, q, k)| acc.add(&p.mul(q).scale(*k)));
+        assert_eq!(sum.degree(), 8);
+        for (x, y) in sum.c.iter().zip(&reference.c) {
+            assert!((x - y).abs() <= sum.err + reference.err, "{sum:?} vs {reference:?}");
+        }
+        // exact coefficients of a·b − 2 a² (degree 7): Σ_{i+j=k} C(4,i)C(3,j) a_i b_j / C(7,k) and
+        // Σ C(4,i)C(4,j) a_i a_j / C(8,k) raised by one degree — compared in the scaled form,
+        // integers below 2^53
+        let exact = Bern::sum_of_products(&[(&a, &b, 1.0), (&a, &a, -2.0)]);
+        let scaled = |p: &Bern, q: &Bern| -> Vec<f64> {
+            let (m, n) = (p.degree(), q.degree());
+            let mut out = vec![0.0; m + n + 1];
+            for i in 0..=m {
+                for j in 0..=n {
+                    out[i + j] += binomial(m, i) * binomial(n, j) * p.c[i] * q.c[j];
+                }
+            }
+            out
+        };
+        let (ab, aa) = (scaled(&a, &b), scaled(&a, &a));
+        for k in 0..=8 {
+            // a·b of degree 7 raised to 8: C(8,k) c_k = C(7,k) c'_k + C(7,k−1) c'_(k−1) on scaled forms
+            let ab8 = ab.get(k).copied().unwrap_or(0.0) + if k > 0 { ab[k - 1] } else { 0.0 };
+            let want = (ab8 - 2.0 * aa[k]) / binomial(8, k);
+            assert!((exact.c[k] - want).abs() <= exact.err, "coefficient {k}: {} vs {want} (err {})", exact.c[k], exact.err);
+        }
+        assert!(exact.err > 0.0 && exact.err < 1e-12, "{}", exact.err);
+        assert_eq!(Bern::sum_of_products(&[]).c[..], [0.0]);
     }
 
     #[test]
