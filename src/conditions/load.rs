@@ -250,11 +250,15 @@ fn inertial_rows(local: &Local, d: &Dynamics, com: &[Bern; 3], r: &[Bern; 3], mo
             let u = times_const(m, &(d.inertia * sp.body));
             let omega = sp.rate.mul(&w2);
             let alpha_square = sp.rate.derivative().mul(&w2).mul(w);
-            let image = |s: &Bern| u.each_ref().map(|p| p.mul(&s.mul(w)));
+            let image = |s: &Bern| {
+                let sw = s.mul(w);
+                u.each_ref().map(|p| p.mul(&sw))
+            };
             let i_omega = image(&omega);
             // Ω̂ × i_omega = (θ'w²)²·w·(k × M̂ I_b k_b)
             let k_cross_u = cross(&[0, 1, 2].map(|i| Bern::constant(sp.axis[i])), &u);
-            let gyro = k_cross_u.each_ref().map(|p| p.mul(&omega.mul(&omega).mul(w)));
+            let spin_square = omega.mul(&omega).mul(w);
+            let gyro = k_cross_u.each_ref().map(|p| p.mul(&spin_square));
             ([i_omega.each_ref().map(|p| p.mul(w)), image(&alpha_square)], gyro)
         }
         None => {
