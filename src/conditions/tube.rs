@@ -14,7 +14,6 @@ use super::subtract;
 use crate::poly::{halve, Bern};
 use crate::query::{point_segment_dist2, segment_segment_dist};
 use nalgebra::Vector3;
-use std::borrow::Cow;
 use std::cell::RefCell;
 
 type V = Vector3<f64>;
@@ -157,12 +156,14 @@ impl Pieces {
     /// The root piece of the point X̂/w.
     fn new(tip: &[Bern; 3], w: &Bern) -> Pieces {
         let n = tip.iter().map(Bern::degree).max().unwrap_or(0).max(w.degree());
-        let polys = [&tip[0], &tip[1], &tip[2], w].map(|p| if p.degree() == n { Cow::Borrowed(p) } else { Cow::Owned(p.elevate(n)) });
         let nodes = 2 << DEPTH;
         // room for the root and two levels below it, what most pieces need; more as they come
         let mut coeffs = Vec::with_capacity(EXPECTED_NODES * 4 * (n + 1));
-        coeffs.extend(polys.iter().flat_map(|p| p.c.iter().copied()));
-        let errs = polys.map(|p| p.err);
+        coeffs.resize(4 * (n + 1), 0.0);
+        let mut errs = [0.0; 4];
+        for ((p, out), e) in [&tip[0], &tip[1], &tip[2], w].into_iter().zip(coeffs.chunks_exact_mut(n + 1)).zip(&mut errs) {
+            *e = p.elevate_to(out);
+        }
         let ball = hull_ball(&coeffs, &errs, n + 1);
         let mut slot = vec![u32::MAX; nodes];
         slot[1] = 0;

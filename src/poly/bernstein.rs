@@ -132,13 +132,24 @@ impl Bern {
 
     /// The same polynomial with degree raised to `n` (≥ current degree).
     pub fn elevate(&self, n: usize) -> Bern {
-        let m = self.degree();
-        if n <= m {
+        if n <= self.degree() {
             return self.clone();
         }
         let mut c = zeros(n + 1);
-        elevate_into(&self.c, &mut c);
-        Bern { c, err: self.err + (m + 4) as f64 * U * self.max_abs() }
+        let err = self.elevate_to(&mut c);
+        Bern { c, err }
+    }
+
+    /// Writes the coefficients of [`Bern::elevate`] to degree `out.len() − 1` (at least this
+    /// degree) into `out`, without building a polynomial, and returns their error bound.
+    pub fn elevate_to(&self, out: &mut [f64]) -> f64 {
+        let m = self.degree();
+        if out.len() == m + 1 {
+            out.copy_from_slice(&self.c);
+            return self.err;
+        }
+        elevate_into(&self.c, out);
+        self.err + (m + 4) as f64 * U * self.max_abs()
     }
 
     fn combine(&self, other: &Bern, sign: f64) -> Bern {
