@@ -42,6 +42,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod command;
+pub mod axes;
 pub mod conditions;
 pub mod error;
 pub mod lattice;

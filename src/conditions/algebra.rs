@@ -5,6 +5,7 @@
 //! written naturally (e.g. e·s > 0) and compared with zero by their numerators. Sums bring both
 //! terms to the larger power of w first.
 
+use crate::axes::per_axis;
 use crate::poly::Bern;
 use nalgebra::Vector3;
 
@@ -106,7 +107,7 @@ impl Alg {
 
     /// aᵀ G b for a symmetric matrix G.
     pub fn dot_metric(&mut self, a: &HVec, g: &nalgebra::Matrix3<f64>, b: &HVec) -> H {
-        let gb: HVec = [0, 1, 2].map(|i| {
+        let gb: HVec = per_axis(|i| {
             let mut acc = b[0].scale(g[(i, 0)]);
             for j in 1..3 {
                 acc = self.add(&acc, &b[j].scale(g[(i, j)]));

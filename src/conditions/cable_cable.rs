@@ -1,6 +1,7 @@
 //! Cable–cable clearance: the minimum distance between two cable segments must be at least the
 //! clearance.
 
+use crate::axes::per_axis;
 use super::algebra::{hvec_const, HVec, H};
 use super::primitives::{segment_segment, ALL_ENDS};
 use super::{on_undecided, subtract, Condition, Cost, Kind, PoseCheck, Sweep};
@@ -54,7 +55,7 @@ impl Condition for CableCable {
             _ => {
                 let w = &sweep.motion().weight;
                 let (a, b) = (ci.start_hat(w), cj.start_hat(w));
-                [0, 1, 2].map(|i| H { p: b[i].sub(&a[i]), k: 1 })
+                per_axis(|i| H { p: b[i].sub(&a[i]), k: 1 })
             }
         };
         on_undecided(sweep, &undecided, &[self.i, self.j], |alg, _, s, tol, (a, b)| {

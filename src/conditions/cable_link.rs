@@ -3,6 +3,7 @@
 //! away from the body's surface, i.e. farther than radius + clearance from its segment. Along a
 //! motion both segments move, so this is the cable–cable primitive with a moving offset.
 
+use crate::axes::per_axis;
 use super::algebra::{HVec, H};
 use super::primitives::{point_segment, segment_segment, ALL_ENDS};
 use super::{on_undecided, Condition, Cost, Kind, PoseCheck, Sweep};
@@ -57,11 +58,11 @@ impl Condition for CableLink {
         let d = b1 - b0;
         // r̂ = B̂0 − Â = P̂ + M̂ b0 − Â (Â = a·w for a base anchor) and d̂ = M̂ (b1 − b0), both over w
         let row = |i: usize, v: &Vector3<f64>| [(&m.rotation[i][0], v[0]), (&m.rotation[i][1], v[1]), (&m.rotation[i][2], v[2])];
-        let r: [Bern; 3] = [0, 1, 2].map(|i| {
+        let r: [Bern; 3] = per_axis(|i| {
             let [x, y, z] = row(i, &b0);
             Bern::linear_combination(&[(&m.position[i], 1.0), (&start[i], -1.0), x, y, z])
         });
-        let dir: [Bern; 3] = [0, 1, 2].map(|i| Bern::linear_combination(&row(i, &d)));
+        let dir: [Bern; 3] = per_axis(|i| Bern::linear_combination(&row(i, &d)));
         let point = d == Vector3::zeros();
         let c = self.radius + self.clearance;
         on_undecided(sweep, &[(0.0, 1.0)], &[self.segment], |alg, _, s, tol, (a, b)| {

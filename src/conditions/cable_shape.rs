@@ -6,6 +6,7 @@
 //! the cable vector (a point's offset from it, a face's corner offsets, the offset solids' cable
 //! line).
 
+use crate::axes::per_axis;
 use super::algebra::{hvec_const, Alg, HVec, H};
 use super::offset::{cone_near, cylinder_near, ellipsoid_clear, Start};
 use super::primitives::{point_segment, segment_cone, segment_face, segment_segment, ConeSolid, ALL_ENDS};
@@ -148,7 +149,7 @@ impl Condition for CableShape {
             };
             let from_start = |alg: &mut Alg, p: &V| -> HVec {
                 match from {
-                    Start::Moving(_) => [0, 1, 2].map(|i| alg.sub(&H::constant(p[i]), &start[i])),
+                    Start::Moving(_) => per_axis(|i| alg.sub(&H::constant(p[i]), &start[i])),
                     Start::Fixed(a) => hvec_const(&(p - a)),
                 }
             };

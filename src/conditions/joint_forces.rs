@@ -25,6 +25,7 @@
 //! root's parent) is a polynomial over w^(a + arm + axis), the same power along the row whatever
 //! the force.
 
+use crate::axes::per_axis;
 use std::rc::Rc;
 
 use super::{body_point, Sweep};
@@ -71,7 +72,7 @@ struct Ops<T> {
 
 /// a × b in the caller's arithmetic.
 fn cross<T>(a: &[T; 3], b: &[T; 3], ops: &Ops<T>) -> [T; 3] {
-    [0, 1, 2].map(|i| {
+    per_axis(|i| {
         let (j, k) = ((i + 1) % 3, (i + 2) % 3);
         (ops.sub)(&(ops.mul)(&a[j], &b[k]), &(ops.mul)(&a[k], &b[j]))
     })
@@ -129,17 +130,17 @@ fn add_point_force_along(chain: &Chain, sweep: &Sweep, on: usize, f: &[Bern; 3],
             continue;
         }
         let motion = &sweep.links[l];
-        let arm: [Bern; 3] = [0, 1, 2].map(|i| x[i].sub(&motion.position[i]));
+        let arm: [Bern; 3] = per_axis(|i| x[i].sub(&motion.position[i]));
         let mut moment = cross(&arm, f, &ops);
         if let Some(m) = m {
-            moment = [0, 1, 2].map(|i| moment[i].add(&m[i]));
+            moment = per_axis(|i| moment[i].add(&m[i]));
         }
         let parent = link.parent.map(|p| &sweep.links[p]);
         let axis = |frame: Frame, e: &Vector3<f64>| -> [Bern; 3] {
             match (frame, parent) {
                 (Frame::Parent, None) => e.map(Bern::constant).into(),
-                (Frame::Parent, Some(p)) => [0, 1, 2].map(|i| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&p.rotation[i][k].scale(e[k])))),
-                _ => [0, 1, 2].map(|i| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&motion.rotation[i][k].scale(e[k])))),
+                (Frame::Parent, Some(p)) => per_axis(|i| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&p.rotation[i][k].scale(e[k])))),
+                _ => per_axis(|i| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&motion.rotation[i][k].scale(e[k])))),
             }
         };
         for (k, v) in joint_rows(&link.joint, f, &moment, &axis, &ops).into_iter().enumerate() {
@@ -249,7 +250,7 @@ pub(super) fn load_numerators(chain: &Chain, sweep: &Sweep) -> Vec<Bern> {
         let m = &sweep.links[l];
         match frame {
             PointFrame::Platform => body_point(&m.position, &m.rotation, c),
-            PointFrame::World => [0, 1, 2].map(|i| Bern::linear_combination(&[(&m.position[i], 1.0), (&m.weight, c[i])])),
+            PointFrame::World => per_axis(|i| Bern::linear_combination(&[(&m.position[i], 1.0), (&m.weight, c[i])])),
         }
     };
     let constant = |v: Vector3<f64>| -> [Bern; 3] { v.map(Bern::constant).into() };
@@ -258,7 +259,7 @@ pub(super) fn load_numerators(chain: &Chain, sweep: &Sweep) -> Vec<Bern> {
     }
     if let Some(load) = &chain.load {
         let w = &sweep.links[load.link].weight;
-        let moment: [Bern; 3] = [0, 1, 2].map(|i| w.scale(load.nominal[3 + i]));
+        let moment: [Bern; 3] = per_axis(|i| w.scale(load.nominal[3 + i]));
         add_point_force_along(chain, sweep, load.link, &constant(load.nominal.fixed_rows::<3>(0).into()), &point(load.link, &load.point, load.frame), Some(&moment), &mut out);
     }
     if chain.joint_forces.iter().any(|t| *t != 0.0) {

@@ -14,6 +14,7 @@
 //! The rows are returned scaled as the structure matrix's rows are (forces times w, moments times
 //! w²) and over a common w^q: [`LoadPolys::rows`] = D_w ℓ · w^q.
 
+use crate::axes::{each_axis, per_axis, per_component};
 use super::structure::{cross, point_offset, times_const};
 use super::Local;
 use crate::model::motion::{Param, Spin};
@@ -50,7 +51,7 @@ pub(crate) struct Inertial {
 impl Inertial {
     /// The rows under `law`: g·g'·accel + g²·square.
     pub(crate) fn under(&self, law: &TimeLaw) -> [Bern; 6] {
-        std::array::from_fn(|j| law.accel.mul(&self.accel[j]).add(&law.square.mul(&self.square[j])))
+        per_component(|j| law.accel.mul(&self.accel[j]).add(&law.square.mul(&self.square[j])))
     }
 
     /// The rows on [a, b] ⊆ [0, 1] in the same parameter (values kept).
@@ -77,7 +78,7 @@ impl LoadPolys {
 
 /// Six rows restricted to [a, b] ⊆ [0, 1].
 fn restrict_rows(rows: &[Bern; 6], a: f64, b: f64) -> [Bern; 6] {
-    rows.each_ref().map(|p| p.restrict(a, b))
+    per_component(|j| rows[j].restrict(a, b))
 }
 
 /// Scales a polynomial per unit of the whole motion's λ̈ (`power` 1) or λ̇² (`power` 2) restricted
@@ -173,7 +174,7 @@ pub(crate) fn reference_law(sweep: &super::Sweep) -> Option<TimeLaw> {
 }
 
 fn mat_vec(m: &[[Bern; 3]; 3], v: &[Bern; 3]) -> [Bern; 3] {
-    [0, 1, 2].map(|i| m[i][0].mul(&v[0]).add(&m[i][1].mul(&v[1])).add(&m[i][2].mul(&v[2])))
+    per_axis(|i| m[i][0].mul(&v[0]).add(&m[i][1].mul(&v[1])).add(&m[i][2].mul(&v[2])))
 }
 
 /// The load along the motion of `local` (expanded on all of [0, 1]), with the inertial rows when
@@ -183,18 +184,18 @@ pub(crate) fn load_polys(local: &Local, load: &Load, timed: bool, spin: Option<&
     let w2 = w.mul(w);
     let w0 = &load.wrench.nominal;
     let Some(dynamics) = &load.dynamics else {
-        return LoadPolys { rows: std::array::from_fn(|j| if j < 3 { w.scale(w0[j]) } else { w2.scale(w0[j]) }), inertial: None, scale: None };
+        return LoadPolys { rows: per_component(|j| if j < 3 { w.scale(w0[j]) } else { w2.scale(w0[j]) }), inertial: None, scale: None };
     };
     // a point mass balances forces only: its moment rows stay zero, unexpanded
     let moments = load.rows().iter().any(|&r| r >= 3);
     // r̃ = (x_c − c)·w: from the wrench point to the centre of mass (P̂ cancels)
     let (com, at) = (times_const(&local.rotation, &dynamics.com), point_offset(local, &load.wrench));
-    let r: [Bern; 3] = [0, 1, 2].map(|i| com[i].sub(&at[i]));
+    let r: [Bern; 3] = per_axis(|i| com[i].sub(&at[i]));
     let weight = dynamics.gravity * dynamics.mass;
-    let weight_b: [Bern; 3] = [0, 1, 2].map(|i| Bern::constant(weight[i]));
+    let weight_b: [Bern; 3] = per_axis(|i| Bern::constant(weight[i]));
     // static rows, q = 0: force (w0 + m g)·w, moment w0·w² + (r̃ × m g)·w
     let static_moment = cross(&r, &weight_b);
-    let statics: [Bern; 6] = std::array::from_fn(|j| {
+    let statics: [Bern; 6] = per_component(|j| {
         if j < 3 {
             w.scale(w0[j] + weight[j])
         } else if moments {
@@ -209,7 +210,7 @@ pub(crate) fn load_polys(local: &Local, load: &Load, timed: bool, spin: Option<&
     let inertial = inertial_rows(local, dynamics, &com, &r, moments, spin);
     // everything over w⁴: the static rows times w⁴
     let w4 = w2.mul(&w2);
-    LoadPolys { rows: statics.each_ref().map(|p| p.mul(&w4)), inertial: Some(inertial), scale: Some(w4) }
+    LoadPolys { rows: per_component(|j| statics[j].mul(&w4)), inertial: Some(inertial), scale: Some(w4) }
 }
 
 /// The d'Alembert rows over w⁴ (D_w-scaled), per unit g·g' and per unit g²: force −m Ã·w²,
@@ -227,18 +228,18 @@ fn inertial_rows(local: &Local, d: &Dynamics, com: &[Bern; 3], r: &[Bern; 3], mo
     let ddw = dw.derivative();
     let w2 = w.mul(w);
     // centre of mass numerator X̂ = P̂ + M̂ c_b; its acceleration's two parts
-    let x: [Bern; 3] = [0, 1, 2].map(|i| local.position[i].add(&com[i]));
-    let parts: [[Bern; 2]; 3] = x.each_ref().map(|x| {
+    let x: [Bern; 3] = per_axis(|i| local.position[i].add(&com[i]));
+    let parts: [[Bern; 2]; 3] = each_axis(&x, |x| {
         let x1 = x.derivative();
         let x2 = x1.derivative();
         let first = x1.mul(w).sub(&x.mul(&dw)); // X̂'w − X̂w'
         let second = x2.mul(w).sub(&x.mul(&ddw)); // X̂''w − X̂w''
         [first.mul(w), second.mul(w).sub(&dw.mul(&first).scale(2.0))]
     });
-    let accel: [[Bern; 3]; 2] = [0, 1].map(|k| parts.each_ref().map(|p| p[k].clone()));
+    let accel: [[Bern; 3]; 2] = [0, 1].map(|k| each_axis(&parts, |p| p[k].clone()));
     let force = |a: &[Bern; 3], j: usize| a[j].mul(&w2).scale(-d.mass);
     if !moments {
-        let rows = |a: &[Bern; 3]| std::array::from_fn(|j| if j < 3 { force(a, j) } else { Bern::constant(0.0) });
+        let rows = |a: &[Bern; 3]| per_component(|j| if j < 3 { force(a, j) } else { Bern::constant(0.0) });
         return Inertial { accel: rows(&accel[0]), square: rows(&accel[1]) };
     }
     let m = &local.rotation;
@@ -252,37 +253,37 @@ fn inertial_rows(local: &Local, d: &Dynamics, com: &[Bern; 3], r: &[Bern; 3], mo
             let alpha_square = sp.rate.derivative().mul(&w2).mul(w);
             let image = |s: &Bern| {
                 let sw = s.mul(w);
-                u.each_ref().map(|p| p.mul(&sw))
+                each_axis(&u, |p| p.mul(&sw))
             };
             let i_omega = image(&omega);
             // Ω̂ × i_omega = (θ'w²)²·w·(k × M̂ I_b k_b)
-            let k_cross_u = cross(&[0, 1, 2].map(|i| Bern::constant(sp.axis[i])), &u);
+            let k_cross_u = cross(&per_axis(|i| Bern::constant(sp.axis[i])), &u);
             let spin_square = omega.mul(&omega).mul(w);
-            let gyro = k_cross_u.each_ref().map(|p| p.mul(&spin_square));
-            ([i_omega.each_ref().map(|p| p.mul(w)), image(&alpha_square)], gyro)
+            let gyro = each_axis(&k_cross_u, |p| p.mul(&spin_square));
+            ([each_axis(&i_omega, |p| p.mul(w)), image(&alpha_square)], gyro)
         }
         None => {
             // Ω̂ = axial vector of the skew part of M̂'M̂ᵀ
-            let dm: [[Bern; 3]; 3] = m.each_ref().map(|row| row.each_ref().map(Bern::derivative));
+            let dm: [[Bern; 3]; 3] = each_axis(m, |row| each_axis(row, Bern::derivative));
             let a = |i: usize, j: usize| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&dm[i][k].mul(&m[j][k])));
             let omega: [Bern; 3] = [a(2, 1).sub(&a(1, 2)).scale(0.5), a(0, 2).sub(&a(2, 0)).scale(0.5), a(1, 0).sub(&a(0, 1)).scale(0.5)];
             // α̃ per unit g²
-            let alpha_square: [Bern; 3] = omega.each_ref().map(|o| o.derivative().mul(w).sub(&o.mul(&dw).scale(2.0)));
+            let alpha_square: [Bern; 3] = each_axis(&omega, |o| o.derivative().mul(w).sub(&o.mul(&dw).scale(2.0)));
             // M̂ I_b M̂ᵀ v for a polynomial vector v
             let inertia_times = |v: &[Bern; 3]| {
-                let body: [Bern; 3] = [0, 1, 2].map(|i| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&m[k][i].mul(&v[k]))));
-                let ib: [Bern; 3] = [0, 1, 2].map(|i| Bern::linear_combination(&[(&body[0], d.inertia[(i, 0)]), (&body[1], d.inertia[(i, 1)]), (&body[2], d.inertia[(i, 2)])]));
+                let body: [Bern; 3] = per_axis(|i| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&m[k][i].mul(&v[k]))));
+                let ib: [Bern; 3] = per_axis(|i| Bern::linear_combination(&[(&body[0], d.inertia[(i, 0)]), (&body[1], d.inertia[(i, 1)]), (&body[2], d.inertia[(i, 2)])]));
                 mat_vec(m, &ib)
             };
             let i_omega = inertia_times(&omega);
             let gyro = cross(&omega, &i_omega);
-            ([i_omega.each_ref().map(|p| p.mul(w)), inertia_times(&alpha_square)], gyro)
+            ([each_axis(&i_omega, |p| p.mul(w)), inertia_times(&alpha_square)], gyro)
         }
     };
     let rows = |part: usize| -> [Bern; 6] {
         let (acc, i_alpha) = (&accel[part], &i_alpha[part]);
         let r_x_a = cross(r, acc);
-        std::array::from_fn(|j| {
+        per_component(|j| {
             if j < 3 {
                 force(acc, j)
             } else {

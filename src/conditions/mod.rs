@@ -42,6 +42,7 @@ pub use speed::PlatformSpeed;
 pub use winch::{Rate, WinchLimit, WinchPolys};
 pub use wrench_lp::WrenchFeasibilityLp;
 
+use crate::axes::{each_axis, per_axis, per_component};
 use std::cell::OnceCell;
 use std::rc::Rc;
 
@@ -76,8 +77,8 @@ impl SweptCable {
     fn new(base: Vector3<f64>, start: Option<[Bern; 3]>, tip: &[Bern; 3], w: &Bern) -> SweptCable {
         let w_at = |d: usize| w.elevate(d.max(w.degree()));
         let s = match &start {
-            None => [0, 1, 2].map(|i| algebra::H { p: Bern::linear_combination(&[(&tip[i], 1.0), (&w_at(tip[i].degree()), -base[i])]), k: 1 }),
-            Some(a) => [0, 1, 2].map(|i| algebra::H { p: tip[i].sub(&a[i]), k: 1 }),
+            None => per_axis(|i| algebra::H { p: Bern::linear_combination(&[(&tip[i], 1.0), (&w_at(tip[i].degree()), -base[i])]), k: 1 }),
+            Some(a) => per_axis(|i| algebra::H { p: tip[i].sub(&a[i]), k: 1 }),
         };
         let tube = SweptCable::tube(base, start.as_ref(), tip, w);
         SweptCable { base, start, s, tube }
@@ -100,14 +101,14 @@ impl SweptCable {
     pub fn start_hat(&self, w: &Bern) -> [Bern; 3] {
         match &self.start {
             Some(a) => a.clone(),
-            None => [0, 1, 2].map(|i| w.scale(self.base[i])),
+            None => per_axis(|i| w.scale(self.base[i])),
         }
     }
 
     /// Its end X̂ = Ŝ + ŝ over `w`.
     pub fn tip_hat(&self, w: &Bern) -> [Bern; 3] {
         let start = self.start_hat(w);
-        [0, 1, 2].map(|i| self.s[i].p.add(&start[i]))
+        per_axis(|i| self.s[i].p.add(&start[i]))
     }
 }
 
@@ -161,12 +162,12 @@ impl Sweep {
         let w = &links[0].weight;
         let row_degree = |i: usize| links.iter().flat_map(|m| m.rotation[i].iter().chain([&m.position[i]])).map(Bern::degree).fold(w.degree(), usize::max);
         let n = [row_degree(0), row_degree(1), row_degree(2)];
-        let lifted: Vec<([Bern; 3], [[Bern; 3]; 3])> = links.iter().map(|m| ([0, 1, 2].map(|i| m.position[i].elevate(n[i])), [0, 1, 2].map(|i| m.rotation[i].each_ref().map(|p| p.elevate(n[i]))))).collect();
+        let lifted: Vec<([Bern; 3], [[Bern; 3]; 3])> = links.iter().map(|m| (per_axis(|i| m.position[i].elevate(n[i])), per_axis(|i| each_axis(&m.rotation[i], |p| p.elevate(n[i]))))).collect();
         // an anchor's X̂ (one power of w): P̂ + M̂ b on a link, b·w on the base
         let point = |a: &Anchor| -> [Bern; 3] {
             match a.link {
                 Some(l) => body_point(&lifted[l].0, &lifted[l].1, &a.point),
-                None => [0, 1, 2].map(|i| w.elevate(n[i]).scale(a.point[i])),
+                None => per_axis(|i| w.elevate(n[i]).scale(a.point[i])),
             }
         };
         let cables = robot.segments().iter().map(|seg| SweptCable::new(seg.from.point, seg.from.link.map(|_| point(&seg.from)), &point(&seg.to), w)).collect();
@@ -191,11 +192,11 @@ impl Sweep {
             .cables
             .iter()
             .map(|c| {
-                let start = c.start.as_ref().map(|p| p.each_ref().map(|p| p.restrict(a, b)));
-                let s: HVec = c.s.each_ref().map(|h| algebra::H { p: h.p.restrict(a, b), k: h.k });
+                let start = c.start.as_ref().map(|p| each_axis(p, |p| p.restrict(a, b)));
+                let s: HVec = each_axis(&c.s, |h| algebra::H { p: h.p.restrict(a, b), k: h.k });
                 let tip: [Bern; 3] = match &start {
-                    None => [0, 1, 2].map(|i| Bern::linear_combination(&[(&s[i].p, 1.0), (w, c.base[i])])),
-                    Some(st) => [0, 1, 2].map(|i| s[i].p.add(&st[i])),
+                    None => per_axis(|i| Bern::linear_combination(&[(&s[i].p, 1.0), (w, c.base[i])])),
+                    Some(st) => per_axis(|i| s[i].p.add(&st[i])),
                 };
                 let tube = SweptCable::tube(c.base, start.as_ref(), &tip, w);
                 SweptCable { base: c.base, start, tube, s }
@@ -224,7 +225,7 @@ impl Sweep {
 /// X̂ = P̂ + M̂ b: the point `b` of a body (its frame) along the body's motion, over the motion's
 /// weight as its position P̂ and rotation M̂ are.
 fn body_point(position: &[Bern; 3], rotation: &[[Bern; 3]; 3], b: &Vector3<f64>) -> [Bern; 3] {
-    [0, 1, 2].map(|i| Bern::linear_combination(&[(&position[i], 1.0), (&rotation[i][0], b[0]), (&rotation[i][1], b[1]), (&rotation[i][2], b[2])]))
+    per_axis(|i| Bern::linear_combination(&[(&position[i], 1.0), (&rotation[i][0], b[0]), (&rotation[i][1], b[1]), (&rotation[i][2], b[2])]))
 }
 
 /// v·v for a vector of polynomials.
@@ -262,7 +263,7 @@ impl Local {
             rotation: m.rotation.clone(),
             weight: m.weight.clone(),
             cables: sweep.cables.iter().map(|c| (c.base, [c.s[0].p.clone(), c.s[1].p.clone(), c.s[2].p.clone()])).collect(),
-            load: LoadPolys { rows: std::array::from_fn(|_| Bern::constant(0.0)), inertial: None, scale: None },
+            load: LoadPolys { rows: per_component(|_| Bern::constant(0.0)), inertial: None, scale: None },
             law: reference_law(sweep),
             inertial: OnceCell::new(),
         };
@@ -285,14 +286,14 @@ impl Local {
     pub(crate) fn restrict(&self, a: f64, b: f64) -> Local {
         let r = |p: &Bern| p.restrict(a, b);
         Local {
-            position: self.position.each_ref().map(r),
-            rotation: self.rotation.each_ref().map(|row| row.each_ref().map(r)),
+            position: each_axis(&self.position, r),
+            rotation: each_axis(&self.rotation, |row| each_axis(row, r)),
             weight: r(&self.weight),
-            cables: self.cables.iter().map(|(base, s)| (*base, s.each_ref().map(r))).collect(),
+            cables: self.cables.iter().map(|(base, s)| (*base, each_axis(s, r))).collect(),
             load: self.load.restrict(a, b),
             law: self.law.as_ref().map(|l| TimeLaw { square: r(&l.square), accel: r(&l.accel) }),
             // the rows under the law, restricted if they were built
-            inertial: self.inertial.get().map(|rows| OnceCell::from(rows.as_ref().map(|rows| rows.each_ref().map(r)))).unwrap_or_default(),
+            inertial: self.inertial.get().map(|rows| OnceCell::from(rows.as_ref().map(|rows| per_component(|j| r(&rows[j]))))).unwrap_or_default(),
         }
     }
 }

@@ -18,6 +18,7 @@
 //! The ellipsoid, whose offset surface is not a quadric, is handled through Lagrange duality (see
 //! [`ellipsoid_clear`]).
 
+use crate::axes::per_axis;
 use super::algebra::{HVec, H};
 use super::exists::{exists, Atom, Clause, VPoly};
 use crate::poly::{Bern, Partition};
@@ -50,9 +51,9 @@ impl Start {
         match self {
             Start::Fixed(a) => {
                 let e = a - origin;
-                [0, 1, 2].map(|i| w.scale(e[i]))
+                per_axis(|i| w.scale(e[i]))
             }
-            Start::Moving(p) => [0, 1, 2].map(|i| p[i].sub(&w.scale(origin[i]))),
+            Start::Moving(p) => per_axis(|i| p[i].sub(&w.scale(origin[i]))),
         }
     }
 
@@ -111,7 +112,7 @@ struct CableLine {
 impl CableLine {
     fn new(a: &Start, s: &HVec, w: &Bern, origin: &V, (u0, u1): (f64, f64)) -> CableLine {
         let e = a.offset(w, origin);
-        let x = [0, 1, 2].map(|i| VPoly::linear(e[i].add(&s[i].p.scale(u0)), s[i].p.scale(u1 - u0)));
+        let x = per_axis(|i| VPoly::linear(e[i].add(&s[i].p.scale(u0)), s[i].p.scale(u1 - u0)));
         CableLine { x, w: VPoly::of(w.clone()) }
     }
 
@@ -181,7 +182,7 @@ fn with_restricted<T>(a: &Start, s: &HVec, w: &Bern, lo: f64, hi: f64, f: impl F
     if lo == 0.0 && hi == 1.0 {
         return f(a, s, w);
     }
-    let rs: HVec = [0, 1, 2].map(|i| H { p: s[i].p.restrict(lo, hi), k: s[i].k });
+    let rs: HVec = per_axis(|i| H { p: s[i].p.restrict(lo, hi), k: s[i].k });
     f(&a.restrict(lo, hi), &rs, &w.restrict(lo, hi))
 }
 
@@ -271,10 +272,10 @@ fn ellipsoid_clauses(a: &Start, s: &HVec, w: &Bern, frame: &EllipsoidFrame, c: f
     };
     let line = CableLine::new(a, s, w, &frame.center, range);
     // p_i(v) = (1 − v)(1 + m_i t) = 1 + (m_i − 1) v
-    let p: [VPoly; 3] = [0, 1, 2].map(|i| VPoly::in_v(&[1.0, m[i] - 1.0]));
+    let p: [VPoly; 3] = per_axis(|i| VPoly::in_v(&[1.0, m[i] - 1.0]));
     let v_1mv = VPoly::in_v(&[0.0, 1.0, -1.0]);
     // A_i = m_i v (1 − v) Π_{j≠i} p_j;  B = (v + c²(1 − v)) Π p_j
-    let coef: [VPoly; 3] = [0, 1, 2].map(|i| v_1mv.mul(&p[(i + 1) % 3]).mul(&p[(i + 2) % 3]).scale(m[i]));
+    let coef: [VPoly; 3] = per_axis(|i| v_1mv.mul(&p[(i + 1) % 3]).mul(&p[(i + 2) % 3]).scale(m[i]));
     let b = VPoly::in_v(&[c * c, 1.0 - c * c]).mul(&p[0]).mul(&p[1]).mul(&p[2]);
     let mut alpha = VPoly::in_v(&[0.0]);
     let mut beta = VPoly::in_v(&[0.0]);

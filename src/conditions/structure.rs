@@ -2,6 +2,7 @@
 //! motion's weight w, and the minors the wrench conditions are written in. Shared by the 6-cable
 //! tension conditions and the m-cable closure and static-feasibility conditions.
 
+use crate::axes::per_axis;
 use super::Local;
 use crate::model::{PointFrame, Wrench};
 use crate::poly::Bern;
@@ -15,14 +16,14 @@ pub(crate) fn cross(a: &[Bern; 3], b: &[Bern; 3]) -> [Bern; 3] {
 
 /// M̂ c for a constant vector c.
 pub(crate) fn times_const(m: &[[Bern; 3]; 3], c: &Vector3<f64>) -> [Bern; 3] {
-    [0, 1, 2].map(|i| Bern::linear_combination(&[(&m[i][0], c[0]), (&m[i][1], c[1]), (&m[i][2], c[2])]))
+    per_axis(|i| Bern::linear_combination(&[(&m[i][0], c[0]), (&m[i][1], c[1]), (&m[i][2], c[2])]))
 }
 
 /// The wrench's application point relative to the platform origin, times w: M̂·P for a point
 /// held in the platform frame, w·P for one held world-parallel (so c̃ = P̂ + this).
 pub(crate) fn point_offset(m: &Local, wrench: &Wrench) -> [Bern; 3] {
     match wrench.frame {
-        PointFrame::World => [0, 1, 2].map(|i| m.weight.scale(wrench.point[i])),
+        PointFrame::World => per_axis(|i| m.weight.scale(wrench.point[i])),
         PointFrame::Platform => times_const(&m.rotation, &wrench.point),
     }
 }
@@ -34,12 +35,12 @@ pub(crate) fn structure_numerators(m: &Local, wrench: &Wrench, rows: &[usize]) -
     let w = &m.weight;
     // c̃ = c·w, the application point.
     let offset = point_offset(m, wrench);
-    let c: [Bern; 3] = [0, 1, 2].map(|i| m.position[i].add(&offset[i]));
+    let c: [Bern; 3] = per_axis(|i| m.position[i].add(&offset[i]));
     let mut out: Vec<Vec<Bern>> = vec![Vec::with_capacity(m.cables.len()); rows.len()];
     let moments = rows.iter().any(|&r| r >= 3);
     for (base, s) in &m.cables {
         // r̃ = a·w − c̃; (x − c) × s = r × s because s × s = 0.
-        let moment = moments.then(|| cross(&[0, 1, 2].map(|i| w.scale(base[i]).sub(&c[i])), s));
+        let moment = moments.then(|| cross(&per_axis(|i| w.scale(base[i]).sub(&c[i])), s));
         for (k, &row) in rows.iter().enumerate() {
             out[k].push(match (row, &moment) {
                 (0..3, _) => s[row].clone(),

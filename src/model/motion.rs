@@ -14,6 +14,7 @@
 //!   (π/8) wide; on a piece starting at γ0 the angle is γ0 + 2·atan(hλ), and a rotation by ψ about an axis k is the
 //!   quaternion (1, tan(ψ/2)·k) up to scale.
 
+use crate::axes::{each_axis, per_axis};
 use super::pose::{Coord, Pose};
 use super::trajectory::{Orientation, Segment, Trajectory, Translation};
 use crate::poly::{binomial, Bern};
@@ -223,9 +224,9 @@ fn rotation_of(n: &QuatPoly) -> ([[Bern; 3]; 3], Bern) {
 
 fn translation_bernstein(tr: &Translation) -> [Bern; 3] {
     match tr {
-        Translation::Polynomial(c) => [0, 1, 2].map(|i| Bern::from_monomial(&c[i])),
-        Translation::Bezier(points) => [0, 1, 2].map(|i| Bern::from_bernstein(points.iter().map(|p| p[i]).collect())),
-        Translation::Line(a, b) => [0, 1, 2].map(|i| Bern::from_bernstein(vec![a[i], b[i]])),
+        Translation::Polynomial(c) => per_axis(|i| Bern::from_monomial(&c[i])),
+        Translation::Bezier(points) => per_axis(|i| Bern::from_bernstein(points.iter().map(|p| p[i]).collect())),
+        Translation::Line(a, b) => per_axis(|i| Bern::from_bernstein(vec![a[i], b[i]])),
     }
 }
 
@@ -350,7 +351,7 @@ impl Motion {
                 });
                 // every coordinate's numerator over the common den^degree
                 let degree = translation.iter().map(Bern::degree).max().unwrap_or(0);
-                let position = [0, 1, 2].map(|i| position[i].mul(&power(&den, degree - translation[i].degree())));
+                let position = per_axis(|i| position[i].mul(&power(&den, degree - translation[i].degree())));
                 Motion::from_rational(position, power(&den, degree), &n, param)
             })
             .collect()
@@ -402,9 +403,9 @@ impl Motion {
         super::turn::turn_stretches(angle, profile)
             .iter()
             .map(|s| {
-                let position = whole.each_ref().map(|p| p.restrict(s.a, s.b));
+                let position = each_axis(&whole, |p| p.restrict(s.a, s.b));
                 let (c, sn, one) = (Bern::from_monomial(&s.cos), Bern::from_monomial(&s.sin), Bern::constant(1.0));
-                let rotation = [0, 1, 2].map(|i| [0, 1, 2].map(|j| Bern::linear_combination(&[(&one, r0[(i, j)] + r0k2[(i, j)]), (&sn, r0k[(i, j)]), (&c, -r0k2[(i, j)])])));
+                let rotation = per_axis(|i| per_axis(|j| Bern::linear_combination(&[(&one, r0[(i, j)] + r0k2[(i, j)]), (&sn, r0k[(i, j)]), (&c, -r0k2[(i, j)])])));
                 // θ = angle·s(t) on the stretch, t = a + (b − a)λ: its rate in λ, exactly
                 let rate = super::turn::angle_on(angle, profile, s.a, s.b).derivative();
                 let spin = Some(Spin { axis: q0 * axis.into_inner(), body: axis.into_inner(), rate });
@@ -427,7 +428,7 @@ impl Motion {
         let pose = Pose::from_coords(c);
         if !coord.is_angle() {
             let i = coord.index();
-            let position = [0, 1, 2].map(|k| {
+            let position = per_axis(|k| {
                 if k == i {
                     Bern::from_bernstein(vec![lo, hi])
                 } else {
@@ -437,7 +438,7 @@ impl Motion {
             return vec![Motion::from_parts(position, &quat_const(&pose.rotation), Param::Linear { lo, hi })];
         }
         let pieces = (((hi - lo).abs() / ANGLE_PIECE).ceil() as usize).max(1);
-        let position = [0, 1, 2].map(|k| Bern::constant(c[k]));
+        let position = per_axis(|k| Bern::constant(c[k]));
         (0..pieces)
             .map(|k| {
                 let start = lo + (hi - lo) * k as f64 / pieces as f64;
@@ -470,9 +471,9 @@ impl Motion {
             return self.clone();
         }
         let w = &self.weight;
-        let position = [0, 1, 2].map(|i| Bern::linear_combination(&[(w, p[i]), (&self.position[0], r[(i, 0)]), (&self.position[1], r[(i, 1)]), (&self.position[2], r[(i, 2)])]));
+        let position = per_axis(|i| Bern::linear_combination(&[(w, p[i]), (&self.position[0], r[(i, 0)]), (&self.position[1], r[(i, 1)]), (&self.position[2], r[(i, 2)])]));
         let m = &self.rotation;
-        let rotation = [0, 1, 2].map(|i| [0, 1, 2].map(|c| Bern::linear_combination(&[(&m[0][c], r[(i, 0)]), (&m[1][c], r[(i, 1)]), (&m[2][c], r[(i, 2)])])));
+        let rotation = per_axis(|i| per_axis(|c| Bern::linear_combination(&[(&m[0][c], r[(i, 0)]), (&m[1][c], r[(i, 1)]), (&m[2][c], r[(i, 2)])])));
         let spin = self.spin.as_ref().map(|sp| Spin { axis: r * sp.axis, ..sp.clone() });
         Motion { position, rotation, weight: w.clone(), param: self.param, spin }
     }
@@ -481,8 +482,8 @@ impl Motion {
     /// (P̂ ↦ P̂ + M̂·t, M̂ ↦ M̂·r).
     pub fn then(&self, t: &nalgebra::Vector3<f64>, r: &nalgebra::Matrix3<f64>) -> Motion {
         let m = &self.rotation;
-        let position = [0, 1, 2].map(|i| Bern::linear_combination(&[(&self.position[i], 1.0), (&m[i][0], t[0]), (&m[i][1], t[1]), (&m[i][2], t[2])]));
-        let rotation = [0, 1, 2].map(|i| [0, 1, 2].map(|c| Bern::linear_combination(&[(&m[i][0], r[(0, c)]), (&m[i][1], r[(1, c)]), (&m[i][2], r[(2, c)])])));
+        let position = per_axis(|i| Bern::linear_combination(&[(&self.position[i], 1.0), (&m[i][0], t[0]), (&m[i][1], t[1]), (&m[i][2], t[2])]));
+        let rotation = per_axis(|i| per_axis(|c| Bern::linear_combination(&[(&m[i][0], r[(0, c)]), (&m[i][1], r[(1, c)]), (&m[i][2], r[(2, c)])])));
         let spin = self.spin.as_ref().map(|sp| Spin { body: r.transpose() * sp.body, ..sp.clone() });
         Motion { position, rotation, weight: self.weight.clone(), param: self.param, spin }
     }
@@ -491,10 +492,10 @@ impl Motion {
     /// P̂ = P̂·ŵ_j + M̂·(location·ŵ_j + P̂_j), M̂ = M̂·M̂_j over the product of the weights.
     pub fn compose(&self, location: &nalgebra::Vector3<f64>, joint: &Motion) -> Motion {
         let wj = &joint.weight;
-        let position = [0, 1, 2].map(|i| {
+        let position = per_axis(|i| {
             (0..3).fold(self.position[i].mul(wj), |acc, k| acc.add(&self.rotation[i][k].mul(&joint.position[k].add(&wj.scale(location[k])))))
         });
-        let rotation = [0, 1, 2].map(|i| [0, 1, 2].map(|c| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&self.rotation[i][k].mul(&joint.rotation[k][c])))));
+        let rotation = per_axis(|i| per_axis(|c| (0..3).fold(Bern::constant(0.0), |acc, k| acc.add(&self.rotation[i][k].mul(&joint.rotation[k][c])))));
         Motion { position, rotation, weight: self.weight.mul(wj), param: self.param, spin: None }
     }
 
@@ -502,8 +503,8 @@ impl Motion {
     /// positive polynomial `f`).
     pub fn times(&self, f: &Bern) -> Motion {
         Motion {
-            position: self.position.each_ref().map(|p| p.mul(f)),
-            rotation: self.rotation.each_ref().map(|row| row.each_ref().map(|p| p.mul(f))),
+            position: each_axis(&self.position, |p| p.mul(f)),
+            rotation: each_axis(&self.rotation, |row| each_axis(row, |p| p.mul(f))),
             weight: self.weight.mul(f),
             param: self.param,
             spin: self.spin.clone(),
@@ -513,8 +514,8 @@ impl Motion {
     /// A frame that does not move, written over the weight `w` of the motions beside it.
     pub fn fixed((p, r): &(nalgebra::Vector3<f64>, nalgebra::Matrix3<f64>), w: &Bern, param: Param) -> Motion {
         Motion {
-            position: [0, 1, 2].map(|i| w.scale(p[i])),
-            rotation: [0, 1, 2].map(|i| [0, 1, 2].map(|j| w.scale(r[(i, j)]))),
+            position: per_axis(|i| w.scale(p[i])),
+            rotation: per_axis(|i| per_axis(|j| w.scale(r[(i, j)]))),
             weight: w.clone(),
             param,
             spin: None,
@@ -529,8 +530,8 @@ impl Motion {
         };
         let r = |p: &Bern| p.restrict(a, b);
         Motion {
-            position: self.position.each_ref().map(r),
-            rotation: self.rotation.each_ref().map(|row| row.each_ref().map(r)),
+            position: each_axis(&self.position, r),
+            rotation: each_axis(&self.rotation, |row| each_axis(row, r)),
             weight: r(&self.weight),
             param: Param::Trajectory { psi, h, t0, t1, within: (c + (d - c) * a, c + (d - c) * b), centred },
             // dθ/dλ' = (b − a)·dθ/dλ
