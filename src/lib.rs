@@ -41,8 +41,8 @@
 // (partial_cmp) hides that intent, so the lint is off for the crate.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-pub mod command;
 pub mod axes;
+pub mod command;
 pub mod conditions;
 pub mod error;
 pub mod lattice;

@@ -1,10 +1,10 @@
 //! Cable–cable clearance: the minimum distance between two cable segments must be at least the
 //! clearance.
 
-use crate::axes::per_axis;
 use super::algebra::{hvec_const, HVec, H};
 use super::primitives::{segment_segment, ALL_ENDS};
 use super::{on_undecided, subtract, Condition, Cost, Kind, PoseCheck, Sweep};
+use crate::axes::{each_axis, per_axis};
 use crate::poly::Partition;
 use crate::query::cables::PoseCables;
 use crate::query::segment_segment_dist;
@@ -59,7 +59,7 @@ impl Condition for CableCable {
             }
         };
         on_undecided(sweep, &undecided, &[self.i, self.j], |alg, _, s, tol, (a, b)| {
-            let r = if (a, b) == (0.0, 1.0) || r.iter().all(|h| h.k == 0) { r.clone() } else { r.each_ref().map(|h| H { p: h.p.restrict(a, b), k: h.k }) };
+            let r = if (a, b) == (0.0, 1.0) || r.iter().all(|h| h.k == 0) { r.clone() } else { each_axis(&r, |h| H { p: h.p.restrict(a, b), k: h.k }) };
             segment_segment(alg, &r, s[0], s[1], self.clearance, ends, tol)
         })
     }

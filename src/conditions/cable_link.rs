@@ -3,10 +3,10 @@
 //! away from the body's surface, i.e. farther than radius + clearance from its segment. Along a
 //! motion both segments move, so this is the cable–cable primitive with a moving offset.
 
-use crate::axes::per_axis;
 use super::algebra::{HVec, H};
 use super::primitives::{point_segment, segment_segment, ALL_ENDS};
 use super::{on_undecided, Condition, Cost, Kind, PoseCheck, Sweep};
+use crate::axes::{each_axis, per_axis};
 use crate::poly::{Bern, Partition};
 use crate::query::cables::PoseCables;
 use crate::query::{point_segment_dist2, segment_segment_dist};
@@ -66,7 +66,7 @@ impl Condition for CableLink {
         let point = d == Vector3::zeros();
         let c = self.radius + self.clearance;
         on_undecided(sweep, &[(0.0, 1.0)], &[self.segment], |alg, _, s, tol, (a, b)| {
-            let local = |v: &[Bern; 3]| -> HVec { v.each_ref().map(|p| H { p: if (a, b) == (0.0, 1.0) { p.clone() } else { p.restrict(a, b) }, k: 1 }) };
+            let local = |v: &[Bern; 3]| -> HVec { each_axis(v, |p| H { p: if (a, b) == (0.0, 1.0) { p.clone() } else { p.restrict(a, b) }, k: 1 }) };
             let r = local(&r);
             if point {
                 point_segment(alg, &r, s[0], c, None, tol)

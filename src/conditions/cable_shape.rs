@@ -6,12 +6,12 @@
 //! the cable vector (a point's offset from it, a face's corner offsets, the offset solids' cable
 //! line).
 
-use crate::axes::per_axis;
 use super::algebra::{hvec_const, Alg, HVec, H};
 use super::offset::{cone_near, cylinder_near, ellipsoid_clear, Start};
 use super::primitives::{point_segment, segment_cone, segment_face, segment_segment, ConeSolid, ALL_ENDS};
 use super::tube::Bound;
 use super::{on_undecided, Condition, Cost, Kind, PoseCheck, Sweep};
+use crate::axes::{each_axis, per_axis};
 use crate::poly::{Partition, Truth};
 use crate::query::cables::PoseCables;
 use crate::query::{
@@ -138,9 +138,9 @@ impl Condition for CableShape {
             let s = s[0];
             // the start over the piece: as fractions (Â/w, or a constant), for the offset solids'
             // tests as it comes, and a fixed point's offset p − start
-            let hat = moving.as_ref().map(|hat| hat.each_ref().map(|p| if (lo, hi) == (0.0, 1.0) { p.clone() } else { p.restrict(lo, hi) }));
+            let hat = moving.as_ref().map(|hat| each_axis(hat, |p| if (lo, hi) == (0.0, 1.0) { p.clone() } else { p.restrict(lo, hi) }));
             let start: HVec = match &hat {
-                Some(hat) => hat.each_ref().map(|p| H { p: p.clone(), k: 1 }),
+                Some(hat) => each_axis(hat, |p| H { p: p.clone(), k: 1 }),
                 None => hvec_const(&a),
             };
             let from = match hat {

@@ -25,10 +25,10 @@
 //! root's parent) is a polynomial over w^(a + arm + axis), the same power along the row whatever
 //! the force.
 
-use crate::axes::per_axis;
 use std::rc::Rc;
 
 use super::{body_point, Sweep};
+use crate::axes::{each_axis, per_axis};
 use crate::model::chain::Frame as LinkFrame;
 use crate::model::{CableSegment, Chain, Joint, PointFrame};
 use crate::poly::Bern;
@@ -226,12 +226,12 @@ fn cable_numerators(chain: &Chain, segments: &[CableSegment], sweep: &Sweep) -> 
     let mut column = vec![Bern::constant(0.0); n];
     for (c, (cable, seg)) in sweep.cables.iter().zip(segments).enumerate().filter(|(_, (_, seg))| pulls(seg)) {
         column.iter_mut().for_each(|v| *v = Bern::constant(0.0));
-        let s: [Bern; 3] = cable.s.each_ref().map(|h| h.p.clone());
+        let s: [Bern; 3] = each_axis(&cable.s, |h| h.p.clone());
         if let Some(l) = seg.to.link {
             add_point_force_along(chain, sweep, l, &s, &cable.tip_hat(w), None, &mut column);
         }
         if let Some(l) = seg.from.link {
-            add_point_force_along(chain, sweep, l, &s.each_ref().map(|p| p.scale(-1.0)), &cable.start_hat(w), None, &mut column);
+            add_point_force_along(chain, sweep, l, &each_axis(&s, |p| p.scale(-1.0)), &cable.start_hat(w), None, &mut column);
         }
         for (row, v) in rows.iter_mut().zip(column.iter_mut()) {
             row[c] = std::mem::replace(v, Bern::constant(0.0));

@@ -14,9 +14,9 @@
 //! The rows are returned scaled as the structure matrix's rows are (forces times w, moments times
 //! w²) and over a common w^q: [`LoadPolys::rows`] = D_w ℓ · w^q.
 
-use crate::axes::{each_axis, per_axis, per_component};
 use super::structure::{cross, point_offset, times_const};
 use super::Local;
+use crate::axes::{each_axis, per_axis, per_component};
 use crate::model::motion::{Param, Spin};
 use crate::model::{Dynamics, Load};
 use crate::poly::Bern;

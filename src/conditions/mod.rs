@@ -42,10 +42,10 @@ pub use speed::PlatformSpeed;
 pub use winch::{Rate, WinchLimit, WinchPolys};
 pub use wrench_lp::WrenchFeasibilityLp;
 
-use crate::axes::{each_axis, per_axis, per_component};
 use std::cell::OnceCell;
 use std::rc::Rc;
 
+use crate::axes::{each_axis, per_axis, per_component};
 use crate::model::{Anchor, Bounds, Load, Motion, Robot};
 use crate::poly::{Bern, Partition, Truth};
 use crate::query::cables::{attached_inside, PoseCables};

@@ -18,9 +18,9 @@
 //! The ellipsoid, whose offset surface is not a quadric, is handled through Lagrange duality (see
 //! [`ellipsoid_clear`]).
 
-use crate::axes::per_axis;
 use super::algebra::{HVec, H};
 use super::exists::{exists, Atom, Clause, VPoly};
+use crate::axes::{each_axis, per_axis};
 use crate::poly::{Bern, Partition};
 use crate::query::EllipsoidFrame;
 use nalgebra::Vector3;
@@ -42,7 +42,7 @@ impl Start {
     fn restrict(&self, lo: f64, hi: f64) -> Start {
         match self {
             Start::Fixed(a) => Start::Fixed(*a),
-            Start::Moving(p) => Start::Moving(p.each_ref().map(|q| q.restrict(lo, hi))),
+            Start::Moving(p) => Start::Moving(each_axis(p, |q| q.restrict(lo, hi))),
         }
     }
 

@@ -6,6 +6,7 @@
 
 use super::load::sweep_law;
 use super::{Condition, Kind, PoseCheck, Sweep};
+use crate::axes::each_axis;
 use crate::poly::{Bern, Partition, Truth};
 use crate::query::cables::PoseCables;
 
@@ -31,7 +32,7 @@ impl Condition for PlatformSpeed {
         };
         let m = sweep.motion();
         let (w, dw) = (&m.weight, m.weight.derivative());
-        let rate: [Bern; 3] = m.position.each_ref().map(|p| p.derivative().mul(w).sub(&p.mul(&dw)));
+        let rate: [Bern; 3] = each_axis(&m.position, |p| p.derivative().mul(w).sub(&p.mul(&dw)));
         let speed2 = rate[0].mul(&rate[0]).add(&rate[1].mul(&rate[1])).add(&rate[2].mul(&rate[2]));
         let w2 = w.mul(w);
         let margin = w2.mul(&w2).scale(self.limit * self.limit).sub(&law.square.mul(&speed2));

@@ -2,8 +2,8 @@
 //! motion's weight w, and the minors the wrench conditions are written in. Shared by the 6-cable
 //! tension conditions and the m-cable closure and static-feasibility conditions.
 
-use crate::axes::per_axis;
 use super::Local;
+use crate::axes::per_axis;
 use crate::model::{PointFrame, Wrench};
 use crate::poly::Bern;
 use nalgebra::Vector3;

@@ -10,9 +10,9 @@
 //!
 //! A motion without time (a ray, an untimed trajectory) is at rest: the limits hold.
 
-use crate::axes::per_axis;
 use super::load::{per_part_unit, sweep_law, TimeLaw};
 use super::{Condition, Kind, PoseCheck, Sweep};
+use crate::axes::{each_axis, per_axis};
 use crate::poly::{Bern, Partition, Truth};
 use crate::query::cables::{cable_rates, PoseCables};
 
@@ -76,7 +76,7 @@ impl WinchLimit {
         let s = &sweep.cables[self.cable].s;
         let st: [&Bern; 3] = [&s[0].p, &s[1].p, &s[2].p];
         let dw = w.derivative();
-        let d: [Bern; 3] = st.map(|c| c.derivative());
+        let d: [Bern; 3] = each_axis(&st, |c| c.derivative());
         let hat: [Bern; 3] = per_axis(|i| d[i].mul(w).sub(&st[i].mul(&dw)));
         let dot = |a: [&Bern; 3], b: [&Bern; 3]| a[0].mul(b[0]).add(&a[1].mul(b[1])).add(&a[2].mul(b[2]));
         let p = dot(st, st);

@@ -14,9 +14,9 @@
 //!   (π/8) wide; on a piece starting at γ0 the angle is γ0 + 2·atan(hλ), and a rotation by ψ about an axis k is the
 //!   quaternion (1, tan(ψ/2)·k) up to scale.
 
-use crate::axes::{each_axis, per_axis};
 use super::pose::{Coord, Pose};
 use super::trajectory::{Orientation, Segment, Trajectory, Translation};
+use crate::axes::{each_axis, per_axis};
 use crate::poly::{binomial, Bern};
 use nalgebra::{Quaternion, UnitQuaternion};
 use std::f64::consts::FRAC_PI_2;
